@@ -1,0 +1,49 @@
+//! Engine models on the core: the crank train of Awrejcewicz & Kudra (variant 1) and Farahanchi's
+//! roller slider crank (variant 2), behind one interface the FMU drives.
+
+mod parameters;
+
+pub use parameters::{Inputs, ModelError, Outputs, Parameters};
+
+use serde::{Deserialize, Serialize};
+
+/// What happened at an event, in the impact log's words (`impact`, `slide`, `release`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum EngineEventKind {
+    Impact,
+    Slide,
+    Release,
+}
+
+/// One row of the impact log (DESIGN.md §4), in SI units.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct EngineEvent {
+    pub time: f64,
+    /// rad, in [0, 4π).
+    pub crank_angle: f64,
+    pub kind: EngineEventKind,
+    /// 1..4 (variant 2: 1 = lower wall, 3 = upper wall).
+    pub corner: u8,
+    /// m/s, normal approach speed −ḣ⁻ (≥ 0 for an impact).
+    pub normal_velocity_before: f64,
+    /// m/s, ḣ⁺.
+    pub normal_velocity_after: f64,
+    /// J, kinetic energy dissipated by this event.
+    pub energy_lost: f64,
+    /// m, pin position along the cylinder axis.
+    pub position: f64,
+}
+
+/// A model variant as the FMU drives it: built from parameters, advanced with held inputs.
+pub trait EngineModel: Sized + Clone {
+    /// Builds the model at `start_time` in the initial state of DESIGN.md §4, or refuses the
+    /// parameters with a message naming the offending one.
+    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError>;
+
+    /// Advances to exactly `t_end` with `inputs` held, appending every event to `events`.
+    /// On error the model may be left anywhere: the caller restores its own copy.
+    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError>;
+
+    /// Writes the kinematic and force outputs (everything but the impact statistics).
+    fn write_outputs(&self, out: &mut Outputs);
+}
