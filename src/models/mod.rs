@@ -2,8 +2,10 @@
 //! roller slider crank (variant 2), behind one interface the FMU drives.
 
 mod parameters;
+mod roller_forcing;
 
 pub use parameters::{Inputs, ModelError, Outputs, Parameters};
+pub use roller_forcing::{Forcing, Jet, SliderCrank};
 
 use serde::{Deserialize, Serialize};
 
