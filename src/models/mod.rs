@@ -2,9 +2,11 @@
 //! roller slider crank (variant 2), behind one interface the FMU drives.
 
 mod parameters;
+mod roller;
 mod roller_forcing;
 
 pub use parameters::{Inputs, ModelError, Outputs, Parameters};
+pub use roller::{Roller, RollerSystem};
 pub use roller_forcing::{Forcing, Jet, SliderCrank};
 
 use serde::{Deserialize, Serialize};
