@@ -7,7 +7,7 @@ mod roller_forcing;
 
 pub use parameters::{Inputs, ModelError, Outputs, Parameters};
 pub use roller::{Roller, RollerSystem};
-pub use roller_forcing::{Forcing, Jet, SliderCrank};
+pub use roller_forcing::{Forcing, Jet, SliderCrank, SlidingRegion};
 
 use serde::{Deserialize, Serialize};
 

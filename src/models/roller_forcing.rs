@@ -24,6 +24,19 @@ pub enum Forcing {
     Corrected,
 }
 
+/// Where sliding is possible over a crank cycle, as the regions of Fig 2.10 classify (ρ, λ).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum SlidingRegion {
+    /// I: part of the cycle on the upper wall, part on the lower (Figs 2.4–2.6).
+    Both,
+    /// II: the whole cycle on the upper wall, and an interval on the lower too (Fig 2.7).
+    UpperAlwaysLowerSometimes,
+    /// III: the whole cycle on the upper wall, never on the lower (Fig 2.9).
+    UpperOnly,
+    /// Any other pattern (not met in the thesis's parameter range).
+    Other,
+}
+
 /// A value and its first two derivatives with respect to τ.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Jet {
@@ -113,6 +126,23 @@ impl SliderCrank {
         let lower = a * (-limit.d2 - self.free_acceleration(tau, -limit.value, -limit.d1, lambda)) / cos_phi;
         (upper, lower)
     }
+    /// The region of Fig 2.10 for (λ, ρ), from the signs of f_u, f_l on `samples` crank angles.
+    pub fn sliding_region(&self, lambda: f64, rho: f64, samples: usize) -> SlidingRegion {
+        let (mut upper_always, mut upper_some, mut lower_some) = (true, false, false);
+        for k in 0..samples {
+            let (fu, fl) = self.constraint_forces(2.0 * std::f64::consts::PI * k as f64 / samples as f64, lambda, rho);
+            upper_always &= fu > 0.0;
+            upper_some |= fu > 0.0;
+            lower_some |= fl > 0.0;
+        }
+        match (upper_always, upper_some, lower_some) {
+            (true, _, true) => SlidingRegion::UpperAlwaysLowerSometimes,
+            (true, _, false) => SlidingRegion::UpperOnly,
+            (false, true, true) => SlidingRegion::Both,
+            _ => SlidingRegion::Other,
+        }
+    }
+
     /// Torque the drive must apply to hold the crank speed, over M l² Ω², at ψ with rates ψ', ψ''.
     /// Power balance of the consistent kinetic energy T (module doc; crank inertia does no work at
     /// constant speed, frictionless walls do none while sliding): τ Ω = dT/dt + c₂ (ω_rod − Ω)², i.e.
@@ -343,6 +373,16 @@ mod tests {
             loss += lambda * (1.0 + sc.rod_angle(t).d1).powi(2) * dt;
         }
         assert!((work - loss).abs() < 1e-9 && loss > 1.0);
+    }
+
+    /// The three examples of Fig 2.10's regions.
+    #[test]
+    fn fig_2_10_regions_of_the_thesis_examples() {
+        let sc = thesis(Forcing::Printed);
+        assert_eq!(sc.sliding_region(0.01, 0.01, 2000), SlidingRegion::Both);
+        assert_eq!(sc.sliding_region(0.1, 0.01, 2000), SlidingRegion::Both);
+        assert_eq!(sc.sliding_region(0.267, 0.02, 2000), SlidingRegion::UpperAlwaysLowerSometimes);
+        assert_eq!(sc.sliding_region(0.35, 0.01, 2000), SlidingRegion::UpperOnly);
     }
 
     /// Symmetries at ρ = λ = 0 (section 2.6): f_u = −f_l, and f_u is odd in θ, so it vanishes at 0 and
