@@ -21,6 +21,10 @@ def _axes(rows, title):
     return fig, axes
 
 
+def _legend(ax):
+    ax.legend(loc="lower right", bbox_to_anchor=(1, 1), ncol=4, fontsize="small", frameon=False)
+
+
 def _save(fig, path):
     fig.tight_layout()
     fig.savefig(path, dpi=120)
@@ -44,7 +48,7 @@ def piston_motion(phase, result, path, title="Piston secondary motion over one e
     states.set_ylim(0.4, 4.6)
     states.set_ylabel("sliding contact")
     forces.set_ylabel("contact force [kN]")
-    forces.legend(loc="upper right", ncol=4, fontsize="small")
+    _legend(forces)
     return _save(fig, path)
 
 
@@ -62,8 +66,9 @@ def impacts(phase, result, events, path, title="Impacts over one engine cycle"):
         per_impact.plot(np.degrees(events["crank_angle"][mine]), events["normal_velocity_before"][mine] * 1e3,
                         "o", ms=3, label=f"K{corner}")
     per_impact.set_ylabel("impact velocity [mm/s]")
-    per_impact.set_yscale("log")
-    per_impact.legend(loc="upper right", ncol=4, fontsize="small")
+    if np.any(events["normal_velocity_before"][is_impact] > 0):  # bounce sequences span decades
+        per_impact.set_yscale("log")
+    _legend(per_impact)
     return _save(fig, path)
 
 

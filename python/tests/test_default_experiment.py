@@ -21,7 +21,7 @@ def run(fmu_file):
 def test_runs_to_the_default_stop_time_with_finite_outputs(run, unpacked_fmu):
     result, _ = run
     _, md = unpacked_fmu
-    assert result["time"][-1] == pytest.approx(md.defaultExperiment.stopTime, abs=1e-12)
+    assert result["time"][-1] == pytest.approx(float(md.defaultExperiment.stopTime), abs=1e-12)
     for name in result.dtype.names:
         assert np.all(np.isfinite(result[name])), name
 

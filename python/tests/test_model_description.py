@@ -1,6 +1,6 @@
 """The packaged FMU as a host sees it before running it: fmpy's validation and the variable contract (DESIGN.md §4)."""
 
-import fmpy
+from fmpy.validation import validate_fmu
 
 INPUTS = {"crank_speed": "rad/s", "gas_pressure": "Pa", "load_torque": None}
 REAL_OUTPUTS = [
@@ -18,7 +18,7 @@ PARAMETERS = [
 
 
 def test_fmpy_validation_finds_no_problem(fmu_file):
-    assert fmpy.validate_fmu(fmu_file) == []
+    assert validate_fmu(fmu_file) == []
 
 
 def test_co_simulation_capabilities(unpacked_fmu):
