@@ -2,7 +2,15 @@
 //! roller slider crank (variant 2), behind one interface the FMU drives.
 
 mod parameters;
+pub mod crank_drive;
+pub mod crank_efficiency;
+pub mod crank_kinematics;
+pub mod crank_linkage;
+pub mod crank_train;
+pub mod pressure;
 
+pub use crank_efficiency::{EfficiencyCalibration, EfficiencyTarget};
+pub use crank_train::CrankTrain;
 pub use parameters::{Inputs, ModelError, Outputs, Parameters};
 
 use serde::{Deserialize, Serialize};
