@@ -99,7 +99,8 @@ fn main() {
     let ball = Ball { mass: 1.0, gravity: 9.81, restitution: 1.0, floor: Floor::Fixed };
     let wall = DoublePendulum { masses: [1.0, 1.0], lengths: [1.0, 1.0], gravity: 9.81, wall: -0.3, restitution: 1.0 };
     let shake = Ball { mass: 1.0, gravity: 9.81, restitution: 0.8, floor: Floor::Oscillating { amplitude: 0.01, angular_frequency: 50.0 } };
-    let cases: [(&str, Box<dyn Fn(EventLocator) -> Outcome>); 3] = [
+    type Case<'a> = (&'a str, Box<dyn Fn(EventLocator) -> Outcome + 'a>);
+    let cases: [Case; 3] = [
         ("ball, e = 1", Box::new(|l| run(&ball, Vector1::new(1.0), Vector1::zeros(), 1e-2, 500.0, l))),
         ("double pendulum vs wall, e = 1", Box::new(|l| run(&wall, Vector2::new(0.6, 0.9), Vector2::zeros(), 1e-2, 500.0, l))),
         ("ball on shaking floor, e = 0.8", Box::new(|l| run(&shake, Vector1::zeros(), Vector1::new(0.5), 1e-3, 50.0, l))),
