@@ -54,20 +54,23 @@ fn partly_elastic_impacts_bounce_a_few_times_before_each_sliding_phase() {
 
 #[test]
 fn large_clearance_elastic_impacts_stay_bounded_at_the_same_phases() {
-    let reference = side_changes(&run(&paper(0.0, 0.08008), &inputs(), 2, 1, 1440));
-    let trace = run(&paper(0.9, 0.08040), &inputs(), 2, 2, 1440);
+    let plastic = run(&paper(0.0, 0.08008), &inputs(), 2, 1, 1440);
+    let reference = side_changes(&plastic);
     let params = paper(0.9, 0.08040);
-    // Lateral velocity scale of the kinematics: the crank sweeps the clearance D − d at speed ω.
-    let scale = SPEED * (params.bore - params.piston_diameter);
+    let trace = run(&params, &inputs(), 2, 2, 1440);
+    // No blow-up: the largest side force of the cycle, acting on the piston alone across the whole
+    // clearance, bounds the lateral speed it can build: v = √(2 F (D − d) / m3).
+    let side = plastic.samples.iter().map(|o| o.side_force.abs()).fold(0.0, f64::max);
+    let scale = (2.0 * side * (params.bore - params.piston_diameter) / params.piston_mass).sqrt();
     let speeds: Vec<f64> = impacts(&trace.events).map(|e| e.normal_velocity_before).collect();
     let max = speeds.iter().cloned().fold(0.0, f64::max);
     let landings = impacts_per_landing(&trace.events);
     eprintln!(
-        "e = 0.9, D = 0.08040: {} impacts in 2 cycles, max impact velocity {max:.4} m/s (ω(D−d) = {scale:.4}), impacts per landing {landings:?}, side changes at {:.1?}",
+        "e = 0.9, D = 0.08040: {} impacts in 2 cycles, max impact velocity {max:.3} m/s (bound {scale:.3} from side force {side:.0} N), impacts per landing {landings:?}, side changes at {:.1?}",
         speeds.len(),
         side_changes(&trace)
     );
-    assert!(max > 0.0 && max < 10.0 * scale, "impact velocity {max} m/s against scale {scale}");
+    assert!(max > 0.0 && max < scale, "impact velocity {max} m/s against bound {scale}");
     // Each side change of the plastic case has impacts within 40° of crank angle.
     for angle in reference {
         let near = impacts(&trace.events).any(|e| {

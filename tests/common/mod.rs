@@ -53,9 +53,10 @@ pub fn wall(out: &Outputs) -> Option<i8> {
     }
 }
 
-/// Changes of the adjoined wall over the trace, and the angles (deg, mod 720) at which they happen.
+/// Changes of the adjoined wall over a trace of whole steady cycles, taken as periodic (the wall at the
+/// start is the last one adjoined), as the angles (deg, mod 720) at which they happen.
 pub fn side_changes(trace: &Trace) -> Vec<f64> {
-    let mut last = None;
+    let mut last = trace.samples.iter().rev().find_map(wall);
     let mut changes = Vec::new();
     for out in &trace.samples {
         if let Some(w) = wall(out) {
