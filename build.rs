@@ -160,7 +160,8 @@ fn main() {
     println!("cargo:rerun-if-changed={TABLE}");
     println!("cargo:rerun-if-changed=build.rs");
     let source = std::fs::read_to_string(TABLE).expect("read modelDescription/variables.xml");
-    let table: Table = quick_xml::de::from_str(&source).expect("parse modelDescription/variables.xml");
+    let table: Table =
+        quick_xml::de::from_str(&source).expect("parse modelDescription/variables.xml");
     let guid = guid_of(&source);
     let variables = resolve(&table);
     check(&variables);
@@ -169,8 +170,10 @@ fn main() {
     let out = Path::new(&out_dir);
     let xml = model_description(&table, &variables, &guid).expect("write modelDescription.xml");
     std::fs::write(out.join("modelDescription.xml"), xml).expect("write modelDescription.xml");
-    std::fs::write(out.join("variables.rs"), variables_rs(&variables, &guid)).expect("write variables.rs");
-    std::fs::write(out.join("parameter_defaults.rs"), defaults_rs(&variables)).expect("write parameter_defaults.rs");
+    std::fs::write(out.join("variables.rs"), variables_rs(&variables, &guid))
+        .expect("write variables.rs");
+    std::fs::write(out.join("parameter_defaults.rs"), defaults_rs(&variables))
+        .expect("write parameter_defaults.rs");
 }
 
 fn resolve(table: &Table) -> Vec<Resolved<'_>> {
@@ -187,7 +190,9 @@ fn resolve(table: &Table) -> Vec<Resolved<'_>> {
             };
             let unit = a.declared_type.as_deref().map(|t| {
                 let def = table.types.types.iter().find(|d| d.name == t);
-                def.unwrap_or_else(|| panic!("{}: unknown type {t}", a.name)).unit.as_str()
+                def.unwrap_or_else(|| panic!("{}: unknown type {t}", a.name))
+                    .unit
+                    .as_str()
             });
             Resolved { kind, a, vr, unit }
         })
@@ -206,7 +211,11 @@ fn check(variables: &[Resolved]) {
         match a.causality.as_str() {
             "input" | "parameter" => assert!(a.start.is_some(), "{} needs a start value", a.name),
             "output" => {
-                assert!(a.start.is_none(), "output {} is calculated: no start", a.name);
+                assert!(
+                    a.start.is_none(),
+                    "output {} is calculated: no start",
+                    a.name
+                );
                 assert!(
                     matches!(a.initial_deps.as_deref(), Some("none" | "knowns")),
                     "output {} needs initialDeps=\"none\" or \"knowns\"",
@@ -216,7 +225,11 @@ fn check(variables: &[Resolved]) {
             other => panic!("{}: causality {other} is not used by PistonSlap", a.name),
         }
         if v.kind == "String" {
-            assert!(a.causality == "parameter", "String {} must be a parameter", a.name);
+            assert!(
+                a.causality == "parameter",
+                "String {} must be a parameter",
+                a.name
+            );
         }
     }
 }
@@ -225,7 +238,9 @@ fn check(variables: &[Resolved]) {
 fn guid_of(source: &str) -> String {
     let seed = format!("{}\n{}", env!("CARGO_PKG_VERSION"), source);
     let hash = |basis: u64| {
-        seed.bytes().fold(basis, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3))
+        seed.bytes().fold(basis, |h, b| {
+            (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
+        })
     };
     let (a, b) = (hash(0xcbf2_9ce4_8422_2325), hash(0x6c62_272e_07bb_0142));
     format!(
@@ -305,79 +320,107 @@ fn model_description(table: &Table, variables: &[Resolved], guid: &str) -> io::R
 
 /// Log categories: (name, description). The FMI layer accepts exactly these in fmi2SetDebugLogging.
 const LOG_CATEGORIES: [(&str, &str); 3] = [
-    ("logStatusError", "Errors: refused calls, bad parameters, failed steps"),
-    ("logStatusFatal", "Fatal errors: a caught panic; the instance must be freed"),
-    ("logEvents", "Debug: impacts and sliding starts/releases during doStep"),
+    (
+        "logStatusError",
+        "Errors: refused calls, bad parameters, failed steps",
+    ),
+    (
+        "logStatusFatal",
+        "Fatal errors: a caught panic; the instance must be freed",
+    ),
+    (
+        "logEvents",
+        "Debug: impacts and sliding starts/releases during doStep",
+    ),
 ];
 
 fn write_units(w: &mut Writer<Vec<u8>>, table: &Table) -> io::Result<()> {
-    w.create_element("UnitDefinitions").write_inner_content(|w| {
-        for u in &table.units.units {
-            w.create_element("Unit").with_attribute(("name", u.name.as_str())).write_inner_content(|w| {
-                let exponents = [("kg", &u.kg), ("m", &u.m), ("s", &u.s), ("rad", &u.rad)];
-                let present = exponents.iter().filter_map(|(k, v)| v.as_deref().map(|v| (*k, v)));
-                w.create_element("BaseUnit").with_attributes(present).write_empty()?;
-                for d in &u.display {
-                    w.create_element("DisplayUnit")
-                        .with_attributes([("name", d.name.as_str()), ("factor", d.factor.as_str())])
-                        .write_empty()?;
-                }
-                Ok(())
-            })?;
-        }
-        Ok(())
-    })?;
+    w.create_element("UnitDefinitions")
+        .write_inner_content(|w| {
+            for u in &table.units.units {
+                w.create_element("Unit")
+                    .with_attribute(("name", u.name.as_str()))
+                    .write_inner_content(|w| {
+                        let exponents = [("kg", &u.kg), ("m", &u.m), ("s", &u.s), ("rad", &u.rad)];
+                        let present = exponents
+                            .iter()
+                            .filter_map(|(k, v)| v.as_deref().map(|v| (*k, v)));
+                        w.create_element("BaseUnit")
+                            .with_attributes(present)
+                            .write_empty()?;
+                        for d in &u.display {
+                            w.create_element("DisplayUnit")
+                                .with_attributes([
+                                    ("name", d.name.as_str()),
+                                    ("factor", d.factor.as_str()),
+                                ])
+                                .write_empty()?;
+                        }
+                        Ok(())
+                    })?;
+            }
+            Ok(())
+        })?;
     Ok(())
 }
 
 fn write_types(w: &mut Writer<Vec<u8>>, table: &Table) -> io::Result<()> {
-    w.create_element("TypeDefinitions").write_inner_content(|w| {
-        for t in &table.types.types {
-            w.create_element("SimpleType").with_attribute(("name", t.name.as_str())).write_inner_content(|w| {
-                let mut real = w
-                    .create_element("Real")
-                    .with_attributes([("quantity", t.quantity.as_str()), ("unit", t.unit.as_str())]);
-                if let Some(d) = &t.display_unit {
-                    real = real.with_attribute(("displayUnit", d.as_str()));
-                }
-                real.write_empty()?;
-                Ok(())
-            })?;
-        }
-        Ok(())
-    })?;
+    w.create_element("TypeDefinitions")
+        .write_inner_content(|w| {
+            for t in &table.types.types {
+                w.create_element("SimpleType")
+                    .with_attribute(("name", t.name.as_str()))
+                    .write_inner_content(|w| {
+                        let mut real = w.create_element("Real").with_attributes([
+                            ("quantity", t.quantity.as_str()),
+                            ("unit", t.unit.as_str()),
+                        ]);
+                        if let Some(d) = &t.display_unit {
+                            real = real.with_attribute(("displayUnit", d.as_str()));
+                        }
+                        real.write_empty()?;
+                        Ok(())
+                    })?;
+            }
+            Ok(())
+        })?;
     Ok(())
 }
 
 fn write_variables(w: &mut Writer<Vec<u8>>, variables: &[Resolved]) -> io::Result<()> {
-    w.create_element("ModelVariables").write_inner_content(|w| {
-        for v in variables {
-            let a = v.a;
-            let vr = v.vr.to_string();
-            let mut sv = w.create_element("ScalarVariable").with_attributes([
-                ("name", a.name.as_str()),
-                ("valueReference", vr.as_str()),
-                ("description", a.description.as_str()),
-                ("causality", a.causality.as_str()),
-                ("variability", v.variability()),
-            ]);
-            if a.causality == "parameter" {
-                sv = sv.with_attribute(("initial", "exact"));
+    w.create_element("ModelVariables")
+        .write_inner_content(|w| {
+            for v in variables {
+                let a = v.a;
+                let vr = v.vr.to_string();
+                let mut sv = w.create_element("ScalarVariable").with_attributes([
+                    ("name", a.name.as_str()),
+                    ("valueReference", vr.as_str()),
+                    ("description", a.description.as_str()),
+                    ("causality", a.causality.as_str()),
+                    ("variability", v.variability()),
+                ]);
+                if a.causality == "parameter" {
+                    sv = sv.with_attribute(("initial", "exact"));
+                }
+                sv.write_inner_content(|w| {
+                    let optional = [
+                        ("declaredType", &a.declared_type),
+                        ("start", &a.start),
+                        ("min", &a.min),
+                        ("max", &a.max),
+                    ];
+                    let present = optional
+                        .iter()
+                        .filter_map(|(k, v)| v.as_deref().map(|v| (*k, v)));
+                    w.create_element(v.kind)
+                        .with_attributes(present)
+                        .write_empty()?;
+                    Ok(())
+                })?;
             }
-            sv.write_inner_content(|w| {
-                let optional = [
-                    ("declaredType", &a.declared_type),
-                    ("start", &a.start),
-                    ("min", &a.min),
-                    ("max", &a.max),
-                ];
-                let present = optional.iter().filter_map(|(k, v)| v.as_deref().map(|v| (*k, v)));
-                w.create_element(v.kind).with_attributes(present).write_empty()?;
-                Ok(())
-            })?;
-        }
-        Ok(())
-    })?;
+            Ok(())
+        })?;
     Ok(())
 }
 
@@ -385,48 +428,71 @@ fn write_variables(w: &mut Writer<Vec<u8>>, variables: &[Resolved]) -> io::Resul
 /// (dependencies=""). Initially the impact statistics are constants, the kinematics and forces depend on
 /// the inputs and the parameters (except the log file name).
 fn write_structure(w: &mut Writer<Vec<u8>>, variables: &[Resolved]) -> io::Result<()> {
-    let outputs: Vec<&Resolved> = variables.iter().filter(|v| v.a.causality == "output").collect();
+    let outputs: Vec<&Resolved> = variables
+        .iter()
+        .filter(|v| v.a.causality == "output")
+        .collect();
     let knowns: Vec<String> = variables
         .iter()
         .filter(|v| matches!(v.a.causality.as_str(), "input" | "parameter") && v.kind != "String")
         .map(|v| (v.vr + 1).to_string())
         .collect();
     let knowns = knowns.join(" ");
-    w.create_element("ModelStructure").write_inner_content(|w| {
-        w.create_element("Outputs").write_inner_content(|w| {
-            for v in &outputs {
-                let index = (v.vr + 1).to_string();
-                w.create_element("Unknown")
-                    .with_attributes([("index", index.as_str()), ("dependencies", "")])
-                    .write_empty()?;
-            }
+    w.create_element("ModelStructure")
+        .write_inner_content(|w| {
+            w.create_element("Outputs").write_inner_content(|w| {
+                for v in &outputs {
+                    let index = (v.vr + 1).to_string();
+                    w.create_element("Unknown")
+                        .with_attributes([("index", index.as_str()), ("dependencies", "")])
+                        .write_empty()?;
+                }
+                Ok(())
+            })?;
+            w.create_element("InitialUnknowns")
+                .write_inner_content(|w| {
+                    for v in &outputs {
+                        let index = (v.vr + 1).to_string();
+                        let deps = if v.a.initial_deps.as_deref() == Some("knowns") {
+                            knowns.as_str()
+                        } else {
+                            ""
+                        };
+                        w.create_element("Unknown")
+                            .with_attributes([("index", index.as_str()), ("dependencies", deps)])
+                            .write_empty()?;
+                    }
+                    Ok(())
+                })?;
             Ok(())
         })?;
-        w.create_element("InitialUnknowns").write_inner_content(|w| {
-            for v in &outputs {
-                let index = (v.vr + 1).to_string();
-                let deps = if v.a.initial_deps.as_deref() == Some("knowns") { knowns.as_str() } else { "" };
-                w.create_element("Unknown")
-                    .with_attributes([("index", index.as_str()), ("dependencies", deps)])
-                    .write_empty()?;
-            }
-            Ok(())
-        })?;
-        Ok(())
-    })?;
     Ok(())
 }
 
 /// The dispatch functions and the table, as Rust source.
 fn variables_rs(variables: &[Resolved], guid: &str) -> String {
     let mut s = String::new();
-    writeln!(s, "/// Fingerprint of the variable table, also in modelDescription.xml.").unwrap();
+    writeln!(
+        s,
+        "/// Fingerprint of the variable table, also in modelDescription.xml."
+    )
+    .unwrap();
     writeln!(s, "pub const GUID: &str = {guid:?};").unwrap();
     writeln!(s, "/// Log categories accepted by fmi2SetDebugLogging.").unwrap();
     let names: Vec<&str> = LOG_CATEGORIES.iter().map(|(n, _)| *n).collect();
-    writeln!(s, "pub const LOG_CATEGORIES: [&str; {}] = {names:?};", names.len()).unwrap();
+    writeln!(
+        s,
+        "pub const LOG_CATEGORIES: [&str; {}] = {names:?};",
+        names.len()
+    )
+    .unwrap();
     writeln!(s, "/// Every variable, indexed by value reference.").unwrap();
-    writeln!(s, "pub static VARIABLES: [Variable; {}] = [", variables.len()).unwrap();
+    writeln!(
+        s,
+        "pub static VARIABLES: [Variable; {}] = [",
+        variables.len()
+    )
+    .unwrap();
     for v in variables {
         let a = v.a;
         writeln!(
@@ -451,9 +517,19 @@ fn variables_rs(variables: &[Resolved], guid: &str) -> String {
     ] {
         let of_kind: Vec<&Resolved> = variables.iter().filter(|v| v.kind == kind).collect();
         let used = |owner: &str| of_kind.iter().any(|v| v.owner() == owner);
-        let arg = |owner: &str| if used(owner) { owner.to_string() } else { format!("_{owner}") };
+        let arg = |owner: &str| {
+            if used(owner) {
+                owner.to_string()
+            } else {
+                format!("_{owner}")
+            }
+        };
         let field_ty = of_kind.first().map(|v| v.rust_type()).unwrap_or("f64");
-        writeln!(s, "/// The {kind} variable `vr`, or None if `vr` is not one.").unwrap();
+        writeln!(
+            s,
+            "/// The {kind} variable `vr`, or None if `vr` is not one."
+        )
+        .unwrap();
         writeln!(
             s,
             "pub(crate) fn get_{rust}<'a>(vr: u32, {}: &'a Parameters, {}: &'a Inputs, {}: &'a Outputs) -> \
@@ -464,10 +540,21 @@ fn variables_rs(variables: &[Resolved], guid: &str) -> String {
         )
         .unwrap();
         for v in &of_kind {
-            writeln!(s, "        {} => Some({}.{}{get_expr}),", v.vr, v.owner(), v.a.name).unwrap();
+            writeln!(
+                s,
+                "        {} => Some({}.{}{get_expr}),",
+                v.vr,
+                v.owner(),
+                v.a.name
+            )
+            .unwrap();
         }
         writeln!(s, "        _ => None,\n    }}\n}}").unwrap();
-        writeln!(s, "/// The settable (input or parameter) {kind} variable `vr`, or None.").unwrap();
+        writeln!(
+            s,
+            "/// The settable (input or parameter) {kind} variable `vr`, or None."
+        )
+        .unwrap();
         writeln!(
             s,
             "pub(crate) fn {rust}_mut<'a>(vr: u32, {}: &'a mut Parameters, {}: &'a mut Inputs) -> \
@@ -477,7 +564,14 @@ fn variables_rs(variables: &[Resolved], guid: &str) -> String {
         )
         .unwrap();
         for v in of_kind.iter().filter(|v| v.owner() != "outputs") {
-            writeln!(s, "        {} => Some(&mut {}.{}),", v.vr, v.owner(), v.a.name).unwrap();
+            writeln!(
+                s,
+                "        {} => Some(&mut {}.{}),",
+                v.vr,
+                v.owner(),
+                v.a.name
+            )
+            .unwrap();
         }
         writeln!(s, "        _ => None,\n    }}\n}}").unwrap();
     }
@@ -488,7 +582,11 @@ fn variables_rs(variables: &[Resolved], guid: &str) -> String {
 fn defaults_rs(variables: &[Resolved]) -> String {
     let mut s = String::new();
     for (owner, ty) in [("parameters", "Parameters"), ("inputs", "Inputs")] {
-        writeln!(s, "impl Default for {ty} {{\n    fn default() -> Self {{\n        Self {{").unwrap();
+        writeln!(
+            s,
+            "impl Default for {ty} {{\n    fn default() -> Self {{\n        Self {{"
+        )
+        .unwrap();
         for v in variables.iter().filter(|v| v.owner() == owner) {
             let start = v.a.start.as_deref().unwrap_or_default();
             let value = match v.kind {
@@ -507,7 +605,8 @@ fn defaults_rs(variables: &[Resolved]) -> String {
     for v in variables.iter().filter(|v| v.owner() == "parameters") {
         let a = v.a;
         let bound = |b: &Option<String>, parse: &dyn Fn(&str) -> String| {
-            b.as_deref().map_or("None".to_string(), |b| format!("Some({})", parse(b)))
+            b.as_deref()
+                .map_or("None".to_string(), |b| format!("Some({})", parse(b)))
         };
         match v.kind {
             "Real" => {
@@ -545,5 +644,7 @@ fn defaults_rs(variables: &[Resolved]) -> String {
 
 fn capitalize(word: &str) -> String {
     let mut chars = word.chars();
-    chars.next().map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
+    chars
+        .next()
+        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }

@@ -73,18 +73,28 @@ impl<E: EngineModel> Simulation<E> {
 
     /// Advances to exactly `t_end` with `inputs` held. All or nothing: on error `self` is unchanged.
     pub fn step(&mut self, inputs: &Inputs, t_end: f64) -> Result<(), ModelError> {
-        let held = [("crank_speed", inputs.crank_speed), ("gas_pressure", inputs.gas_pressure), ("load_torque", inputs.load_torque)];
+        let held = [
+            ("crank_speed", inputs.crank_speed),
+            ("gas_pressure", inputs.gas_pressure),
+            ("load_torque", inputs.load_torque),
+        ];
         if let Some((name, value)) = held.iter().find(|(_, v)| !v.is_finite()) {
             return Err(ModelError(format!("input {name} = {value} is not finite")));
         }
         if !(t_end.is_finite() && t_end > self.time) {
-            return Err(ModelError(format!("step end {t_end} s is not after the current time {} s", self.time)));
+            return Err(ModelError(format!(
+                "step end {t_end} s is not after the current time {} s",
+                self.time
+            )));
         }
         let mut model = self.model.clone();
         let mut events = Vec::new();
-        model
-            .advance(inputs, t_end, &mut events)
-            .map_err(|e| ModelError(format!("step from t = {} s to {t_end} s failed: {e}", self.time)))?;
+        model.advance(inputs, t_end, &mut events).map_err(|e| {
+            ModelError(format!(
+                "step from t = {} s to {t_end} s failed: {e}",
+                self.time
+            ))
+        })?;
         let mut log = self.log.clone();
         if let Some(log) = &mut log {
             log.append(&events)?;

@@ -5,7 +5,8 @@
 use crate::models::{Inputs, Outputs, Parameters};
 
 /// The shipped `modelDescription.xml`, generated from the same table as the dispatch.
-pub const MODEL_DESCRIPTION_XML: &str = include_str!(concat!(env!("OUT_DIR"), "/modelDescription.xml"));
+pub const MODEL_DESCRIPTION_XML: &str =
+    include_str!(concat!(env!("OUT_DIR"), "/modelDescription.xml"));
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
@@ -69,11 +70,22 @@ mod tests {
     #[test]
     fn start_values_are_the_rust_defaults() {
         let (p, i, o) = (Parameters::default(), Inputs::default(), Outputs::default());
-        for (vr, v) in VARIABLES.iter().enumerate().filter(|(_, v)| v.causality != Causality::Output) {
+        for (vr, v) in VARIABLES
+            .iter()
+            .enumerate()
+            .filter(|(_, v)| v.causality != Causality::Output)
+        {
             let vr = vr as u32;
             match v.kind {
-                Kind::Real => assert_eq!(get_real(vr, &p, &i, &o), v.start.parse().ok(), "{}", v.name),
-                Kind::Integer => assert_eq!(get_integer(vr, &p, &i, &o), v.start.parse().ok(), "{}", v.name),
+                Kind::Real => {
+                    assert_eq!(get_real(vr, &p, &i, &o), v.start.parse().ok(), "{}", v.name)
+                }
+                Kind::Integer => assert_eq!(
+                    get_integer(vr, &p, &i, &o),
+                    v.start.parse().ok(),
+                    "{}",
+                    v.name
+                ),
                 Kind::String => assert_eq!(get_string(vr, &p, &i, &o), Some(v.start), "{}", v.name),
             }
         }
@@ -83,11 +95,32 @@ mod tests {
     fn the_contract_of_design_md_is_in_the_table() {
         let names: Vec<&str> = VARIABLES.iter().map(|v| v.name).collect();
         for name in [
-            "crank_speed", "gas_pressure", "load_torque", "impact_velocity", "impact_count", "impacts_in_step",
-            "max_impact_velocity_in_step", "impact_energy_in_step", "impact_energy_total", "last_impact_corner",
-            "last_impact_crank_angle", "piston_lateral", "piston_lateral_velocity", "piston_tilt", "piston_axial",
-            "crank_angle", "rod_angle", "crank_torque", "contact_state_1", "contact_state_4", "contact_force_1",
-            "contact_force_4", "side_force", "model_variant", "restitution", "impact_log",
+            "crank_speed",
+            "gas_pressure",
+            "load_torque",
+            "impact_velocity",
+            "impact_count",
+            "impacts_in_step",
+            "max_impact_velocity_in_step",
+            "impact_energy_in_step",
+            "impact_energy_total",
+            "last_impact_corner",
+            "last_impact_crank_angle",
+            "piston_lateral",
+            "piston_lateral_velocity",
+            "piston_tilt",
+            "piston_axial",
+            "crank_angle",
+            "rod_angle",
+            "crank_torque",
+            "contact_state_1",
+            "contact_state_4",
+            "contact_force_1",
+            "contact_force_4",
+            "side_force",
+            "model_variant",
+            "restitution",
+            "impact_log",
         ] {
             assert!(names.contains(&name), "{name} missing");
         }

@@ -13,12 +13,23 @@ impl EngineModel for Engine {
         let name = match params.model_variant {
             1 => "1 (crank train)",
             2 => "2 (roller slider crank)",
-            other => return Err(ModelError(format!("model_variant = {other} is not one of 1..=2"))),
+            other => {
+                return Err(ModelError(format!(
+                    "model_variant = {other} is not one of 1..=2"
+                )))
+            }
         };
-        Err(ModelError(format!("model_variant = {name} is not available in this build")))
+        Err(ModelError(format!(
+            "model_variant = {name} is not available in this build"
+        )))
     }
 
-    fn advance(&mut self, _inputs: &Inputs, _t_end: f64, _events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+    fn advance(
+        &mut self,
+        _inputs: &Inputs,
+        _t_end: f64,
+        _events: &mut Vec<EngineEvent>,
+    ) -> Result<(), ModelError> {
         match *self {}
     }
 

@@ -2,9 +2,12 @@
 //! independently of the physics: a shuttle moving laterally at constant speed between the liner walls
 //! x = ±c, c = (bore − piston_diameter)/2, with Newton restitution `restitution` at each wall.
 //! It starts at x = 0 with ẋ = `SHUTTLE_SPEED`; crank angle = crank_angle_start + ∫ crank_speed dt.
-//! A negative `gas_pressure` makes `advance` fail (to test error handling). Never shipped.
+//! A negative `gas_pressure` makes `advance` fail, `load_torque` = 42 makes it panic (to test error
+//! handling). Never shipped.
 
-use crate::models::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
+use crate::models::{
+    EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters,
+};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -34,7 +37,16 @@ impl EngineModel for Shuttle {
         })
     }
 
-    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+    fn advance(
+        &mut self,
+        inputs: &Inputs,
+        t_end: f64,
+        events: &mut Vec<EngineEvent>,
+    ) -> Result<(), ModelError> {
+        assert!(
+            inputs.load_torque != 42.0,
+            "shuttle: load_torque = 42 panics (to test panic containment)"
+        );
         if inputs.gas_pressure < 0.0 {
             // Move first so that a caller that does not restore its copy would be caught.
             self.time = t_end;
@@ -42,7 +54,11 @@ impl EngineModel for Shuttle {
         }
         while self.time < t_end {
             let wall = self.half_clearance * self.v.signum();
-            let to_wall = if self.v == 0.0 { f64::INFINITY } else { (wall - self.x) / self.v };
+            let to_wall = if self.v == 0.0 {
+                f64::INFINITY
+            } else {
+                (wall - self.x) / self.v
+            };
             let dt = to_wall.min(t_end - self.time);
             self.time += dt;
             self.crank_angle += inputs.crank_speed * dt;
