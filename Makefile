@@ -1,0 +1,42 @@
+# PistonSlap: `make demo` builds, packages and simulates the FMU; `make test` runs the Rust and the fmpy tests.
+
+PYTHON ?= python3
+VENV := .venv
+VENV_PYTHON := $(VENV)/bin/python
+VENV_STAMP := $(VENV)/.installed
+FMU := target/fmu/PistonSlap.fmu
+
+# The Python package is used from the source tree; plots render without a display.
+export PYTHONPATH := $(CURDIR)/python
+export MPLBACKEND := Agg
+
+.PHONY: fmu venv demo test bench clean
+
+# cargo decides what to rebuild, so this always asks it.
+fmu:
+	cargo build --release
+	cargo run --release --bin package_fmu
+
+# Created once from PyPI; again only when python/requirements.txt changes.
+$(VENV_STAMP): python/requirements.txt
+	$(PYTHON) -m venv $(VENV)
+	$(VENV_PYTHON) -m pip install --quiet --disable-pip-version-check -r python/requirements.txt
+	touch $@
+
+venv: $(VENV_STAMP)
+
+demo: fmu venv
+	$(VENV_PYTHON) -m pistonslap.demo --out out
+
+# The Rust tests, then the fmpy tests against the packaged FMU; fails if either fails.
+test: fmu venv
+	cargo test --release
+	$(VENV_PYTHON) -m pytest python/tests
+
+bench:
+	cargo bench
+
+clean:
+	cargo clean
+	rm -rf out $(VENV) python/.pytest_cache
+	find python -name __pycache__ -type d -prune -exec rm -rf {} +

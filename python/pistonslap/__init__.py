@@ -1,0 +1,21 @@
+"""Python side of PistonSlap: run the packaged FMU with fmpy, read its impact log, plot the results."""
+
+from .fmu import (
+    CYCLE,
+    fmu_path,
+    input_signals,
+    last_cycle,
+    read_impact_log,
+    simulate,
+    simulate_with_events,
+)
+
+__all__ = [
+    "CYCLE",
+    "fmu_path",
+    "input_signals",
+    "last_cycle",
+    "read_impact_log",
+    "simulate",
+    "simulate_with_events",
+]

@@ -1,0 +1,99 @@
+"""Running the packaged FMU: where it is, fmpy with PistonSlap's defaults, the impact log as an array."""
+
+import csv
+import os
+import tempfile
+from pathlib import Path
+
+import fmpy
+import numpy as np
+
+#: One four-stroke engine cycle in crank angle (rad); firing TDC at 0 mod 4π (DESIGN.md §3).
+CYCLE = 4 * np.pi
+
+_REPO = Path(__file__).resolve().parents[2]
+
+#: Rows of the `impact_log` CSV (DESIGN.md §4), in the order of its header.
+EVENT_DTYPE = np.dtype([
+    ("time", "f8"),
+    ("crank_angle", "f8"),
+    ("kind", "U8"),
+    ("corner", "i4"),
+    ("normal_velocity_before", "f8"),
+    ("normal_velocity_after", "f8"),
+    ("energy_lost", "f8"),
+    ("position", "f8"),
+])
+
+
+def fmu_path() -> Path:
+    """The packaged FMU: `$PISTONSLAP_FMU` if set, else `target/fmu/PistonSlap.fmu` of this checkout."""
+    return Path(os.environ.get("PISTONSLAP_FMU", _REPO / "target" / "fmu" / "PistonSlap.fmu"))
+
+
+def simulate(stop_time=None, output_interval=None, start_values=None, input=None, output=None, **fmpy_kwargs):
+    """Runs the FMU through `fmpy.simulate_fmu` and returns its structured array (`time` + recorded variables).
+
+    `stop_time=None` runs the FMU's default experiment; `output=None` records every output;
+    `output_interval` is also the communication step (fmpy steps from one output point to the next).
+    """
+    return fmpy.simulate_fmu(
+        str(fmu_path()),
+        stop_time=stop_time,
+        output_interval=output_interval,
+        start_values=dict(start_values or {}),
+        input=input,
+        output=output,
+        **fmpy_kwargs,
+    )
+
+
+def simulate_with_events(log_path=None, start_values=None, **kwargs):
+    """Like `simulate`, with the FMU's `impact_log` switched on; returns `(result, events)`.
+
+    The log goes to `log_path` when given (and stays there), else to a temporary file.
+    """
+    with tempfile.TemporaryDirectory() as tmp:
+        log = Path(log_path) if log_path is not None else Path(tmp) / "impact_log.csv"
+        values = dict(start_values or {}, impact_log=str(log))
+        result = simulate(start_values=values, **kwargs)
+        return result, read_impact_log(log)
+
+
+def read_impact_log(path) -> np.ndarray:
+    """The `impact_log` CSV as a structured array of `EVENT_DTYPE` (one row per impact, slide or release)."""
+    with open(path, newline="") as f:
+        reader = csv.reader(f)
+        header = tuple(next(reader))
+        if header != EVENT_DTYPE.names:
+            raise ValueError(f"{path}: header {header} is not the impact log's {EVENT_DTYPE.names}")
+        types = [EVENT_DTYPE[name].type for name in EVENT_DTYPE.names]
+        rows = [tuple(t(value) for t, value in zip(types, row)) for row in reader]
+    return np.array(rows, dtype=EVENT_DTYPE)
+
+
+def input_signals(time, **signals) -> np.ndarray:
+    """Input signals for fmpy: a structured array with `time` and one column per named input.
+
+    fmpy interpolates them linearly and samples them at the start of each communication step,
+    where the FMU holds them over the step.
+    """
+    time = np.asarray(time, dtype=float)
+    table = np.zeros(len(time), dtype=[("time", "f8")] + [(name, "f8") for name in signals])
+    table["time"] = time
+    for name, values in signals.items():
+        table[name] = values
+    return table
+
+
+def last_cycle(crank_angle):
+    """The last complete engine cycle in a record of the accumulated crank angle.
+
+    Returns `(mask, phase)`: which samples lie in it, and the crank angle from the start of their cycle
+    (firing TDC, crank angle 0 mod 4π), in [0, 4π]. A record shorter than one cycle is returned whole.
+    """
+    crank_angle = np.asarray(crank_angle)
+    start = (np.floor(crank_angle[-1] / CYCLE) - 1) * CYCLE
+    if start < crank_angle[0]:
+        return np.ones(len(crank_angle), dtype=bool), crank_angle - np.floor(crank_angle[0] / CYCLE) * CYCLE
+    return (crank_angle >= start) & (crank_angle <= start + CYCLE), crank_angle - start

@@ -1,0 +1,48 @@
+"""The packaged FMU as a host sees it before running it: fmpy's validation and the variable contract (DESIGN.md §4)."""
+
+from fmpy.validation import validate_fmu
+
+INPUTS = {"crank_speed": "rad/s", "gas_pressure": "Pa", "load_torque": None}
+REAL_OUTPUTS = [
+    "impact_velocity", "max_impact_velocity_in_step", "impact_energy_in_step", "impact_energy_total",
+    "last_impact_crank_angle", "piston_lateral", "piston_lateral_velocity", "piston_tilt", "piston_axial",
+    "crank_angle", "rod_angle", "crank_torque", "side_force",
+] + [f"contact_force_{i}" for i in range(1, 5)]
+INTEGER_OUTPUTS = ["impact_count", "impacts_in_step", "last_impact_corner"] + [f"contact_state_{i}" for i in range(1, 5)]
+PARAMETERS = [
+    "model_variant", "crank_mode", "pressure_source", "roller_forcing", "peak_pressure", "crank_radius", "rod_length",
+    "crank_com", "rod_com", "piston_com", "crank_mass", "rod_mass", "piston_mass", "crank_inertia", "rod_inertia",
+    "piston_inertia", "piston_diameter", "skirt_length", "pin_height", "bore", "pin_offset", "restitution",
+    "damping_main", "damping_crank_pin", "damping_piston_pin", "gravity", "crank_angle_start", "impact_log",
+]
+
+
+def test_fmpy_validation_finds_no_problem(fmu_file):
+    assert validate_fmu(fmu_file) == []
+
+
+def test_co_simulation_capabilities(unpacked_fmu):
+    _, md = unpacked_fmu
+    cs = md.coSimulation
+    assert md.fmiVersion == "2.0" and cs is not None
+    assert cs.canGetAndSetFMUstate and cs.canSerializeFMUstate
+    assert cs.canHandleVariableCommunicationStepSize
+    assert md.defaultExperiment is not None and md.defaultExperiment.stopTime is not None
+
+
+def test_variable_contract(unpacked_fmu):
+    _, md = unpacked_fmu
+    variables = {v.name: v for v in md.modelVariables}
+    for name, unit in INPUTS.items():
+        assert variables[name].causality == "input" and variables[name].type == "Real"
+        assert unit is None or variables[name].unit == unit
+    for name in REAL_OUTPUTS + INTEGER_OUTPUTS:
+        assert variables[name].causality == "output", name
+        assert variables[name].type == ("Real" if name in REAL_OUTPUTS else "Integer"), name
+    for name in PARAMETERS:
+        assert variables[name].causality == "parameter", name
+    assert variables["impact_log"].type == "String"
+    # SI inside, the engine's everyday units for display
+    display = {u.name: {d.name for d in u.displayUnits} for u in md.unitDefinitions}
+    assert "rpm" in display["rad/s"] and "bar" in display["Pa"]
+    assert "mm" in display["m"] and {"um", "µm"} & display["m"]

@@ -1,0 +1,313 @@
+//! Crank, rod and piston as a triple physical pendulum (A&K sections 6–7) in SI units, with the four
+//! piston corners against the liner as unilateral constraints.
+//!
+//! Coordinates φ = (φ1, φ2, φ3): absolute angles of crank, rod and piston axis, each link pointing along
+//! `e(φ) = (−sin φ, cos φ)` (A&K eq 25; y is the cylinder axis away from the crank, x lateral). Body k's
+//! centre of mass lies at `Σ_{j<k} L_j e(φ_j) + b_k e(φ_k) + c_k n(φ_k)`, `n(φ) = (cos φ, sin φ)`, with
+//! `L = (l1, l2)`, `b = (ey1, ey2, ey3)` and `c = (0, 0, −a)`: the piston's mass is symmetric about its
+//! axis, which lies the pin offset `a` on the −x side of the pin O3.
+//!
+//! Lagrange's equations `d/dt ∂T/∂φ̇ − ∂T/∂φ = Q` with `T = ½ Σ m_k |ṙ_k|² + J_k φ̇_k²` read
+//! `M φ̈ = f` with `M = Σ m_k J_kᵀ J_k + diag(J_zk)` and `f = Q − Σ m_k J_kᵀ J̇_k φ̇`, `J_k = ∂r_k/∂φ`. They
+//! reproduce A&K eqs 22–24/33–34 (times M1, with `p(φ) = −(M1 sin φ1, M2 sin φ2, M3 sin φ3)`) for a = 0.
+//! The generalized forces Q: gravity `−g` along y; viscous joint torques `−C φ̇` (A&K's C matrix:
+//! main bearing c̄1 on φ̇1, crank pin c̄2 on φ̇2 − φ̇1, piston pin c̄3 on φ̇3 − φ̇2); the gas force `(0, −F)`
+//! at the point of the piston axis level with the pin, `O3 − a n(φ3)`, which gives A&K eq 32 plus the
+//! pin-offset moment `F a cos φ3` on φ3; a load torque `−M0` on φ1.
+//!
+//! Corners (A&K eq 26): `x_K = x_O3 − z sin φ3 + w cos φ3` with z = h (K1, K3) or h − s (K2, K4) and
+//! w = −(d/2 + a) (K1, K2) or d/2 − a (K3, K4); gaps `h_i = D/2 + x_K` (K1, K2, wall −D/2) and
+//! `D/2 − x_K` (K3, K4), in metres, so a multiplier is the normal contact force in newtons.
+
+use super::Parameters;
+use crate::dynamics::Evaluation;
+use nalgebra::{Matrix3, Vector2, Vector3, Vector4};
+use serde::{Deserialize, Serialize};
+
+/// Geometry, inertia and damping of the crank train (DESIGN.md §4 parameters), SI.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Linkage {
+    /// (l1, l2).
+    links: [f64; 2],
+    /// Centre-of-mass offsets along each link (ey1, ey2, ey3).
+    along: [f64; 3],
+    /// Centre-of-mass offsets across each link (0, 0, −a).
+    across: [f64; 3],
+    masses: [f64; 3],
+    inertias: [f64; 3],
+    /// (c̄1, c̄2, c̄3).
+    damping: [f64; 3],
+    gravity: f64,
+    pin_offset: f64,
+    bore: f64,
+    /// Per corner: z (distance from the pin along the axis), w (offset across it), wall side σ.
+    corners: [(f64, f64, f64); 4],
+}
+
+/// Generalized forces that vary with the host's inputs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Loads {
+    /// Gas force on the piston toward the crank, N.
+    pub gas_force: f64,
+    /// Load torque opposing crank rotation, N·m.
+    pub load_torque: f64,
+}
+
+fn along(phi: f64) -> Vector2<f64> {
+    Vector2::new(-phi.sin(), phi.cos())
+}
+
+fn across(phi: f64) -> Vector2<f64> {
+    Vector2::new(phi.cos(), phi.sin())
+}
+
+impl Linkage {
+    /// Takes the parameters as given; `CrankTrain::new` validates them first.
+    pub fn new(p: &Parameters) -> Self {
+        let a = p.pin_offset;
+        let (h, s, half) = (p.pin_height, p.skirt_length, 0.5 * p.piston_diameter);
+        Self {
+            links: [p.crank_radius, p.rod_length],
+            along: [p.crank_com, p.rod_com, p.piston_com],
+            across: [0.0, 0.0, -a],
+            masses: [p.crank_mass, p.rod_mass, p.piston_mass],
+            inertias: [p.crank_inertia, p.rod_inertia, p.piston_inertia],
+            damping: [p.damping_main, p.damping_crank_pin, p.damping_piston_pin],
+            gravity: p.gravity,
+            pin_offset: a,
+            bore: p.bore,
+            corners: [(h, -(half + a), 1.0), (h - s, -(half + a), 1.0), (h, half - a, -1.0), (h - s, half - a, -1.0)],
+        }
+    }
+
+    /// Pin O3 position (x, y), m.
+    pub fn pin(&self, phi: &Vector3<f64>) -> Vector2<f64> {
+        self.links[0] * along(phi[0]) + self.links[1] * along(phi[1])
+    }
+
+    /// Corner gaps h(φ), m.
+    pub fn gaps(&self, phi: &Vector3<f64>) -> Vector4<f64> {
+        let x_pin = self.pin(phi).x;
+        let (s3, c3) = phi[2].sin_cos();
+        Vector4::from_fn(|i, _| {
+            let (z, w, side) = self.corners[i];
+            0.5 * self.bore + side * (x_pin - z * s3 + w * c3)
+        })
+    }
+
+    /// M, f, h, J = ∂h/∂φ and d = φ̇ᵀ ∂²h/∂φ² φ̇ at (φ, φ̇); the constraints are scleronomic in φ.
+    pub fn evaluate(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, loads: Loads) -> Evaluation<3, 4> {
+        let e = [along(phi[0]), along(phi[1]), along(phi[2])];
+        let n = [across(phi[0]), across(phi[1]), across(phi[2])];
+        let weight = Vector2::new(0.0, -self.gravity);
+        let mut mass = Matrix3::from_diagonal(&Vector3::from(self.inertias));
+        let mut force = Vector3::zeros();
+        for k in 0..3 {
+            // Columns of J_k and the velocity-product acceleration J̇_k φ̇.
+            let mut columns = [Vector2::zeros(); 3];
+            let mut bias = Vector2::zeros();
+            for j in 0..k {
+                columns[j] = -self.links[j] * n[j];
+                bias -= self.links[j] * phid[j] * phid[j] * e[j];
+            }
+            let body = self.along[k] * e[k] + self.across[k] * n[k];
+            columns[k] = -self.along[k] * n[k] + self.across[k] * e[k];
+            bias -= phid[k] * phid[k] * body;
+            let applied = self.masses[k] * (weight - bias);
+            for i in 0..=k {
+                force[i] += columns[i].dot(&applied);
+                for j in 0..=k {
+                    mass[(i, j)] += self.masses[k] * columns[i].dot(&columns[j]);
+                }
+            }
+        }
+        // Gas force (0, −F) at O3 − a n(φ3): J_P columns −l1 n1, −l2 n2, −a e3.
+        let gas = Vector2::new(0.0, -loads.gas_force);
+        force[0] -= self.links[0] * n[0].dot(&gas) + loads.load_torque;
+        force[1] -= self.links[1] * n[1].dot(&gas);
+        force[2] -= self.pin_offset * e[2].dot(&gas);
+        let [c1, c2, c3] = self.damping;
+        let (crank_pin, piston_pin) = (phid[1] - phid[0], phid[2] - phid[1]);
+        force[0] += c2 * crank_pin - c1 * phid[0];
+        force[1] += c3 * piston_pin - c2 * crank_pin;
+        force[2] -= c3 * piston_pin;
+
+        let (s3, c3) = (phi[2].sin(), phi[2].cos());
+        let [l1, l2] = self.links;
+        let mut gap_jacobian = nalgebra::Matrix4x3::zeros();
+        let mut gap_bias = Vector4::zeros();
+        for (i, &(z, w, side)) in self.corners.iter().enumerate() {
+            gap_jacobian[(i, 0)] = -side * l1 * e[0].y;
+            gap_jacobian[(i, 1)] = -side * l2 * e[1].y;
+            gap_jacobian[(i, 2)] = -side * (z * c3 + w * s3);
+            gap_bias[i] = side
+                * (l1 * n[0].y * phid[0] * phid[0] + l2 * n[1].y * phid[1] * phid[1] + (z * s3 - w * c3) * phid[2] * phid[2]);
+        }
+        Evaluation {
+            mass,
+            force,
+            gap: self.gaps(phi),
+            gap_jacobian,
+            gap_time_rate: Vector4::zeros(),
+            gap_bias,
+        }
+    }
+
+    /// Kinetic and gravitational potential energy (zero at the crank axis level), J.
+    pub fn energy(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) -> (f64, f64) {
+        let mass = self.evaluate(phi, phid, Loads { gas_force: 0.0, load_torque: 0.0 }).mass;
+        let kinetic = 0.5 * phid.dot(&(mass * phid));
+        let potential = (0..3).map(|k| self.masses[k] * self.gravity * self.centre_of_mass(phi, k).y).sum();
+        (kinetic, potential)
+    }
+
+    fn centre_of_mass(&self, phi: &Vector3<f64>, k: usize) -> Vector2<f64> {
+        let joints: Vector2<f64> = (0..k).map(|j| self.links[j] * along(phi[j])).sum();
+        joints + self.along[k] * along(phi[k]) + self.across[k] * across(phi[k])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn linkage(pin_offset: f64) -> Linkage {
+        Linkage::new(&Parameters { pin_offset, ..Parameters::default() })
+    }
+
+    /// States away from any symmetry, including a tilted piston.
+    fn states() -> Vec<(Vector3<f64>, Vector3<f64>)> {
+        vec![
+            (Vector3::new(0.3, -0.07, 0.002), Vector3::new(125.0, -30.0, 4.0)),
+            (Vector3::new(2.1, 0.2, -0.4), Vector3::new(-80.0, 12.0, -9.0)),
+            (Vector3::new(-1.2, 0.25, 0.9), Vector3::new(1.0, 2.0, 3.0)),
+        ]
+    }
+
+    const LOADS: Loads = Loads { gas_force: 3.0e4, load_torque: 24.7 };
+
+    /// Kinetic energy from finite differences of the body positions: independent of M.
+    fn kinetic_by_differences(l: &Linkage, phi: &Vector3<f64>, phid: &Vector3<f64>) -> f64 {
+        let dt = 1e-6;
+        (0..3)
+            .map(|k| {
+                let v = (l.centre_of_mass(&(phi + phid * dt), k) - l.centre_of_mass(&(phi - phid * dt), k)) / (2.0 * dt);
+                0.5 * (l.masses[k] * v.norm_squared() + l.inertias[k] * phid[k] * phid[k])
+            })
+            .sum()
+    }
+
+    #[test]
+    fn mass_matrix_is_symmetric_positive_definite_and_matches_the_kinetic_energy() {
+        for a in [0.0, 0.002] {
+            let l = linkage(a);
+            for (phi, phid) in states() {
+                let m = l.evaluate(&phi, &phid, LOADS).mass;
+                assert!((m - m.transpose()).norm() < 1e-15);
+                assert!(m.symmetric_eigenvalues().min() > 0.0);
+                // T is quadratic in φ̇: M_ij by polarization of T from positions.
+                let unit = |i: usize| Vector3::from_fn(|r, _| if r == i { 1.0 } else { 0.0 });
+                for i in 0..3 {
+                    for j in 0..3 {
+                        let t = |v: Vector3<f64>| kinetic_by_differences(&l, &phi, &v);
+                        let mij = t(unit(i) + unit(j)) - t(unit(i)) - t(unit(j));
+                        assert!((mij - m[(i, j)]).abs() < 1e-8 * m.norm(), "M[{i},{j}] {mij} vs {}", m[(i, j)]);
+                    }
+                }
+            }
+        }
+    }
+
+    /// f from Lagrange's equations by finite differences: f = Q_nc − ∂V/∂φ − (∂(Mφ̇)/∂φ) φ̇ + ∂T/∂φ.
+    #[test]
+    fn force_matches_lagrange_equations_by_finite_differences() {
+        let eps = 1e-6;
+        for a in [0.0, 0.002] {
+            let l = linkage(a);
+            for (phi, phid) in states() {
+                let free = Loads { gas_force: 0.0, load_torque: 0.0 };
+                let mass_at = |p: &Vector3<f64>| l.evaluate(p, &phid, free).mass;
+                let dp = (mass_at(&(phi + phid * eps)) - mass_at(&(phi - phid * eps))) * phid / (2.0 * eps);
+                let mut lagrange = -dp;
+                for i in 0..3 {
+                    let step = Vector3::from_fn(|r, _| if r == i { eps } else { 0.0 });
+                    let (kp, vp) = l.energy(&(phi + step), &phid);
+                    let (km, vm) = l.energy(&(phi - step), &phid);
+                    lagrange[i] += (kp - km - (vp - vm)) / (2.0 * eps);
+                }
+                // Non-conservative forces: virtual work of damping, gas and load, written out directly.
+                let [c1, c2, c3] = l.damping;
+                let damping = Vector3::new(
+                    -c1 * phid[0] + c2 * (phid[1] - phid[0]),
+                    -c2 * (phid[1] - phid[0]) + c3 * (phid[2] - phid[1]),
+                    -c3 * (phid[2] - phid[1]),
+                );
+                let gas_point = |p: &Vector3<f64>| l.pin(p).y - a * p[2].sin();
+                let gas = Vector3::from_fn(|i, _| {
+                    let step = Vector3::from_fn(|r, _| if r == i { eps } else { 0.0 });
+                    -LOADS.gas_force * (gas_point(&(phi + step)) - gas_point(&(phi - step))) / (2.0 * eps)
+                });
+                let expected = lagrange + damping + gas - Vector3::new(LOADS.load_torque, 0.0, 0.0);
+                let f = l.evaluate(&phi, &phid, LOADS).force;
+                assert!((f - expected).norm() < 1e-6 * f.norm().max(1.0), "f {f} vs {expected}");
+            }
+        }
+    }
+
+    #[test]
+    fn matches_the_printed_triple_pendulum_for_zero_pin_offset() {
+        // A&K eqs 22b, 24, 32–34 in physical units (multiplied back by M1).
+        let p = Parameters::default();
+        let l = linkage(0.0);
+        let (m1, m2, m3) = (p.crank_mass, p.rod_mass, p.piston_mass);
+        let (l1, l2, e1, e2, e3, g) = (p.crank_radius, p.rod_length, p.crank_com, p.rod_com, p.piston_com, p.gravity);
+        let b = [p.crank_inertia + e1 * e1 * m1 + l1 * l1 * (m2 + m3), p.rod_inertia + e2 * e2 * m2 + l2 * l2 * m3, p.piston_inertia + e3 * e3 * m3];
+        let (n12, n13, n23) = (m2 * e2 * l1 + m3 * l1 * l2, m3 * e3 * l1, m3 * e3 * l2);
+        let big_m = [m1 * g * e1 + (m2 + m3) * g * l1, m2 * g * e2 + m3 * g * l2, m3 * g * e3];
+        let (c1, c2, c3) = (p.damping_main, p.damping_crank_pin, p.damping_piston_pin);
+        let damping = Matrix3::new(c1 + c2, -c2, 0.0, -c2, c2 + c3, -c3, 0.0, -c3, c3);
+        for (phi, phid) in states() {
+            let c = |i: usize, j: usize| (phi[i] - phi[j]).cos();
+            let s = |i: usize, j: usize| (phi[i] - phi[j]).sin();
+            let mass = Matrix3::new(b[0], n12 * c(0, 1), n13 * c(0, 2), n12 * c(0, 1), b[1], n23 * c(1, 2), n13 * c(0, 2), n23 * c(1, 2), b[2]);
+            let gyro = Matrix3::new(0.0, n12 * s(0, 1), n13 * s(0, 2), -n12 * s(0, 1), 0.0, n23 * s(1, 2), -n13 * s(0, 2), -n23 * s(1, 2), 0.0);
+            let squares = phid.component_mul(&phid);
+            let restoring = -Vector3::new(big_m[0] * phi[0].sin(), big_m[1] * phi[1].sin(), big_m[2] * phi[2].sin());
+            let f_e = Vector3::new(LOADS.gas_force * l1 * phi[0].sin() - LOADS.load_torque, LOADS.gas_force * l2 * phi[1].sin(), 0.0);
+            let printed_force = f_e - gyro * squares - damping * phid - restoring;
+            let ev = l.evaluate(&phi, &phid, LOADS);
+            assert!((ev.mass - mass).norm() < 1e-14);
+            assert!((ev.force - printed_force).norm() < 1e-9 * printed_force.norm());
+            // Eq 28 times l1.
+            let (d, big_d, h, sk) = (p.piston_diameter, p.bore, p.pin_height, p.skirt_length);
+            let common = l1 * phi[0].sin() + l2 * phi[1].sin();
+            let printed_gaps = Vector4::new(
+                big_d / 2.0 - common - h * phi[2].sin() - d / 2.0 * phi[2].cos(),
+                big_d / 2.0 - common + (sk - h) * phi[2].sin() - d / 2.0 * phi[2].cos(),
+                big_d / 2.0 + common + h * phi[2].sin() - d / 2.0 * phi[2].cos(),
+                big_d / 2.0 + common - (sk - h) * phi[2].sin() - d / 2.0 * phi[2].cos(),
+            );
+            assert!((ev.gap - printed_gaps).norm() < 1e-15);
+        }
+    }
+
+    #[test]
+    fn gap_jacobian_and_bias_match_finite_differences() {
+        let eps = 1e-5;
+        for a in [0.0, 0.002] {
+            let l = linkage(a);
+            for (phi, phid) in states() {
+                let ev = l.evaluate(&phi, &phid, LOADS);
+                for i in 0..3 {
+                    let step = Vector3::from_fn(|r, _| if r == i { eps } else { 0.0 });
+                    let column = (l.gaps(&(phi + step)) - l.gaps(&(phi - step))) / (2.0 * eps);
+                    assert!((column - ev.gap_jacobian.column(i)).norm() < 1e-9);
+                }
+                // d = d²/dτ² h(φ + φ̇ τ) at τ = 0.
+                let tau = 1e-4 / phid.norm();
+                let second = (l.gaps(&(phi + phid * tau)) - 2.0 * l.gaps(&phi) + l.gaps(&(phi - phid * tau))) / (tau * tau);
+                assert!((second - ev.gap_bias).norm() < 1e-5 * ev.gap_bias.norm().max(1.0), "{second} vs {}", ev.gap_bias);
+            }
+        }
+    }
+}

@@ -1,0 +1,307 @@
+//! Variant 1: the piston – connecting rod – crankshaft system of Awrejcewicz & Kudra on the core,
+//! as the FMU drives it (prescribed crank speed, or a free crank under a load torque).
+
+use super::crank_drive::{Engine, FreeCrank, GasPressure, PrescribedCrank};
+use super::crank_kinematics::SliderCrank;
+use super::crank_linkage::Linkage;
+use super::pressure::FourStrokePressure;
+use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
+use crate::dynamics::{Event, EventKind, Stepper, StepperOptions};
+use nalgebra::{Vector2, Vector3, Vector4};
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// The crank train in one of its two crank modes.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct CrankTrain {
+    drive: Drive,
+    geometry: SliderCrank,
+    /// The initial state is rebuilt with the first step's crank speed (DESIGN.md §4: nominal kinematics).
+    started: bool,
+    options: StepperOptions,
+}
+
+#[derive(Clone, Debug, Serialize, Deserialize)]
+enum Drive {
+    Prescribed(Stepper<PrescribedCrank, 2, 4>),
+    Free(Stepper<FreeCrank, 3, 4>),
+}
+
+fn check(ok: bool, message: impl FnOnce() -> String) -> Result<(), ModelError> {
+    if ok {
+        Ok(())
+    } else {
+        Err(ModelError(message()))
+    }
+}
+
+/// Refuses parameters the crank train cannot run with, naming the parameter.
+fn validate(p: &Parameters) -> Result<(), ModelError> {
+    check(p.crank_mode == 1 || p.crank_mode == 2, || format!("crank_mode ({}) must be 1 (prescribed speed) or 2 (free crank)", p.crank_mode))?;
+    check(p.pressure_source == 1 || p.pressure_source == 2, || format!("pressure_source ({}) must be 1 (gas_pressure input) or 2 (built-in curve)", p.pressure_source))?;
+    let positive = [
+        ("crank_radius", p.crank_radius),
+        ("rod_length", p.rod_length),
+        ("crank_mass", p.crank_mass),
+        ("rod_mass", p.rod_mass),
+        ("piston_mass", p.piston_mass),
+        ("crank_inertia", p.crank_inertia),
+        ("rod_inertia", p.rod_inertia),
+        ("piston_inertia", p.piston_inertia),
+        ("piston_diameter", p.piston_diameter),
+        ("skirt_length", p.skirt_length),
+        ("bore", p.bore),
+    ];
+    for (name, value) in positive {
+        check(value > 0.0 && value.is_finite(), || format!("{name} ({value}) must be positive and finite"))?;
+    }
+    let non_negative = [
+        ("peak_pressure", p.peak_pressure),
+        ("damping_main", p.damping_main),
+        ("damping_crank_pin", p.damping_crank_pin),
+        ("damping_piston_pin", p.damping_piston_pin),
+    ];
+    for (name, value) in non_negative {
+        check(value >= 0.0 && value.is_finite(), || format!("{name} ({value}) must be non-negative and finite"))?;
+    }
+    let finite = [
+        ("crank_com", p.crank_com),
+        ("rod_com", p.rod_com),
+        ("piston_com", p.piston_com),
+        ("pin_height", p.pin_height),
+        ("pin_offset", p.pin_offset),
+        ("gravity", p.gravity),
+        ("crank_angle_start", p.crank_angle_start),
+    ];
+    for (name, value) in finite {
+        check(value.is_finite(), || format!("{name} ({value}) must be finite"))?;
+    }
+    check((0.0..=1.0).contains(&p.restitution), || format!("restitution ({}) must lie in [0, 1]", p.restitution))?;
+    check(p.bore > p.piston_diameter, || format!("bore ({} m) must exceed piston_diameter ({} m)", p.bore, p.piston_diameter))?;
+    // The corner description (A&K eq 26) holds while the piston cannot turn across the bore.
+    let diagonal = p.piston_diameter.hypot(p.skirt_length);
+    check(p.bore < diagonal, || format!("bore ({} m) must be below the piston diagonal √(piston_diameter² + skirt_length²) ({diagonal} m)", p.bore))?;
+    check(p.pin_offset.abs() < 0.5 * p.piston_diameter, || format!("pin_offset ({} m) must be smaller than piston_diameter/2 ({} m)", p.pin_offset, 0.5 * p.piston_diameter))?;
+    check(p.rod_length > p.crank_radius + p.pin_offset.abs(), || {
+        format!("rod_length ({} m) must exceed crank_radius + |pin_offset| ({} m)", p.rod_length, p.crank_radius + p.pin_offset.abs())
+    })
+}
+
+fn dynamics_error(e: impl std::fmt::Display) -> ModelError {
+    ModelError(format!("crank train: {e}"))
+}
+
+impl CrankTrain {
+    /// Builds with explicit integrator options (the FMU uses the core's defaults).
+    pub fn with_options(params: &Parameters, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
+        validate(params)?;
+        check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
+        let pressure = match params.pressure_source {
+            1 => GasPressure::Held(Inputs::default().gas_pressure),
+            _ => GasPressure::BuiltIn(FourStrokePressure::new(params.peak_pressure, params.rod_length / params.crank_radius)),
+        };
+        let engine = Engine {
+            linkage: Linkage::new(params),
+            pressure,
+            crown_area: 0.25 * PI * params.piston_diameter * params.piston_diameter,
+            restitution: params.restitution,
+        };
+        let geometry = SliderCrank { crank_radius: params.crank_radius, rod_length: params.rod_length, pin_offset: params.pin_offset };
+        let speed = Inputs::default().crank_speed;
+        let drive = if params.crank_mode == 1 {
+            Drive::Prescribed(Self::prescribed(engine, &geometry, params.crank_angle_start, start_time, speed, &options)?)
+        } else {
+            let system = FreeCrank { engine, load_torque: Inputs::default().load_torque };
+            Drive::Free(Self::free(system, &geometry, params.crank_angle_start, start_time, speed, &options)?)
+        };
+        Ok(Self { drive, geometry, started: false, options })
+    }
+
+    /// Nominal slider-crank state at crank angle φ1 turning at ω: (φ2, φ3 = 0) and their rates.
+    fn nominal(geometry: &SliderCrank, crank_angle: f64, speed: f64) -> (Vector2<f64>, Vector2<f64>) {
+        let s = geometry.at(crank_angle);
+        (Vector2::new(s.rod_angle, 0.0), Vector2::new(s.rod_rate * speed, 0.0))
+    }
+
+    fn prescribed(engine: Engine, geometry: &SliderCrank, angle: f64, time: f64, speed: f64, options: &StepperOptions) -> Result<Stepper<PrescribedCrank, 2, 4>, ModelError> {
+        let (q, qd) = Self::nominal(geometry, angle, speed);
+        Stepper::new(PrescribedCrank::new(engine, angle, time, speed), time, q, qd, options.clone()).map_err(dynamics_error)
+    }
+
+    fn free(system: FreeCrank, geometry: &SliderCrank, angle: f64, time: f64, speed: f64, options: &StepperOptions) -> Result<Stepper<FreeCrank, 3, 4>, ModelError> {
+        let (q, qd) = Self::nominal(geometry, angle, speed);
+        let (q, qd) = (Vector3::new(angle, q[0], q[1]), Vector3::new(speed, qd[0], qd[1]));
+        Stepper::new(system, time, q, qd, options.clone()).map_err(dynamics_error)
+    }
+
+    /// Restarts from the initial state with the first step's crank speed (both modes).
+    fn start(&mut self, speed: f64) -> Result<(), ModelError> {
+        self.drive = match &self.drive {
+            Drive::Prescribed(s) => {
+                let sys = s.system();
+                let (angle, time) = (sys.crank_angle(s.time()), s.time());
+                Drive::Prescribed(Self::prescribed(sys.engine.clone(), &self.geometry, angle, time, speed, &self.options)?)
+            }
+            Drive::Free(s) => Drive::Free(Self::free(s.system().clone(), &self.geometry, s.position()[0], s.time(), speed, &self.options)?),
+        };
+        self.started = true;
+        Ok(())
+    }
+
+    /// Full coordinates φ = (φ1, φ2, φ3) and rates now.
+    pub fn state(&self) -> (Vector3<f64>, Vector3<f64>) {
+        match &self.drive {
+            Drive::Prescribed(s) => s.system().full_state(s.time(), s.position(), s.velocity()),
+            Drive::Free(s) => (*s.position(), *s.velocity()),
+        }
+    }
+
+    /// Kinetic plus gravitational potential energy of the links, J.
+    pub fn mechanical_energy(&self) -> f64 {
+        let (phi, phid) = self.state();
+        let (kinetic, potential) = self.engine().linkage.energy(&phi, &phid);
+        kinetic + potential
+    }
+
+    /// Corner gaps h_i, m.
+    pub fn gaps(&self) -> Vector4<f64> {
+        self.engine().linkage.gaps(&self.state().0)
+    }
+
+    /// Contact forces λ_i, N, and whether each corner is in persistent contact.
+    pub fn contacts(&self) -> (Vector4<f64>, [bool; 4]) {
+        match &self.drive {
+            Drive::Prescribed(s) => (s.multipliers(), std::array::from_fn(|i| s.in_contact(i))),
+            Drive::Free(s) => (s.multipliers(), std::array::from_fn(|i| s.in_contact(i))),
+        }
+    }
+
+    pub fn time(&self) -> f64 {
+        match &self.drive {
+            Drive::Prescribed(s) => s.time(),
+            Drive::Free(s) => s.time(),
+        }
+    }
+
+    fn engine(&self) -> &Engine {
+        match &self.drive {
+            Drive::Prescribed(s) => &s.system().engine,
+            Drive::Free(s) => &s.system().engine,
+        }
+    }
+
+    fn engine_mut(&mut self) -> &mut Engine {
+        match &mut self.drive {
+            Drive::Prescribed(s) => &mut s.system_mut().engine,
+            Drive::Free(s) => &mut s.system_mut().engine,
+        }
+    }
+
+    /// Core events as impact-log rows; `angle` gives φ1 at an event.
+    fn log<const N: usize>(&self, raw: &[Event<N>], angle: impl Fn(&Event<N>) -> Vector3<f64>, events: &mut Vec<EngineEvent>) {
+        for e in raw {
+            let phi = angle(e);
+            events.push(EngineEvent {
+                time: e.time,
+                crank_angle: phi[0].rem_euclid(4.0 * PI),
+                kind: match e.kind {
+                    EventKind::Impact => EngineEventKind::Impact,
+                    EventKind::Slide => EngineEventKind::Slide,
+                    EventKind::Release => EngineEventKind::Release,
+                },
+                corner: e.constraint as u8 + 1,
+                normal_velocity_before: -e.velocity_before,
+                normal_velocity_after: e.velocity_after,
+                energy_lost: e.energy_lost,
+                position: self.engine().linkage.pin(&phi).y,
+            });
+        }
+    }
+}
+
+impl EngineModel for CrankTrain {
+    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
+        Self::with_options(params, start_time, StepperOptions::default())
+    }
+
+    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        for (name, value) in [("crank_speed", inputs.crank_speed), ("gas_pressure", inputs.gas_pressure), ("load_torque", inputs.load_torque)] {
+            check(value.is_finite(), || format!("input {name} ({value}) must be finite"))?;
+        }
+        if !self.started {
+            self.start(inputs.crank_speed)?;
+        }
+        if let GasPressure::Held(p) = &mut self.engine_mut().pressure {
+            *p = inputs.gas_pressure;
+        }
+        match &mut self.drive {
+            Drive::Prescribed(s) => {
+                let now = s.time();
+                s.system_mut().hold_speed(now, inputs.crank_speed);
+                s.advance(t_end).map_err(dynamics_error)?;
+            }
+            Drive::Free(s) => {
+                s.system_mut().load_torque = inputs.load_torque;
+                s.advance(t_end).map_err(dynamics_error)?;
+            }
+        }
+        match &self.drive {
+            Drive::Prescribed(s) => {
+                let sys = s.system();
+                self.log(s.events(), |e| Vector3::new(sys.crank_angle(e.time), e.q[0], e.q[1]), events);
+            }
+            Drive::Free(s) => self.log(s.events(), |e| e.q, events),
+        }
+        match &mut self.drive {
+            Drive::Prescribed(s) => s.clear_events(),
+            Drive::Free(s) => s.clear_events(),
+        }
+        Ok(())
+    }
+
+    fn write_outputs(&self, out: &mut Outputs) {
+        let (phi, phid) = self.state();
+        let linkage = &self.engine().linkage;
+        let pin = linkage.pin(&phi);
+        let (forces, in_contact) = self.contacts();
+        out.piston_lateral = pin.x;
+        // ẋ_O3 = −l1 cos φ1 φ̇1 − l2 cos φ2 φ̇2.
+        out.piston_lateral_velocity = -self.geometry.crank_radius * phi[0].cos() * phid[0] - self.geometry.rod_length * phi[1].cos() * phid[1];
+        out.piston_tilt = phi[2];
+        out.piston_axial = pin.y;
+        out.crank_angle = phi[0];
+        out.rod_angle = phi[1];
+        out.crank_torque = match &self.drive {
+            Drive::Prescribed(s) => s.system().drive_torque(s.time(), s.position(), s.velocity(), &s.acceleration(), &forces),
+            // The external torque on the crank: the load, opposing rotation.
+            Drive::Free(s) => -s.system().load_torque,
+        };
+        [out.contact_state_1, out.contact_state_2, out.contact_state_3, out.contact_state_4] = in_contact.map(i32::from);
+        [out.contact_force_1, out.contact_force_2, out.contact_force_3, out.contact_force_4] = [forces[0], forces[1], forces[2], forces[3]];
+        // K1, K2 touch the −D/2 wall (push toward +x), K3, K4 the +D/2 wall.
+        out.side_force = forces[0] + forces[1] - forces[2] - forces[3];
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn refuses_parameters_naming_them() {
+        let cases: [(Parameters, &str); 6] = [
+            (Parameters { bore: 0.079, ..Parameters::default() }, "bore (0.079 m) must exceed piston_diameter (0.08 m)"),
+            (Parameters { bore: 0.2, ..Parameters::default() }, "piston diagonal"),
+            (Parameters { restitution: 1.2, ..Parameters::default() }, "restitution"),
+            (Parameters { rod_mass: 0.0, ..Parameters::default() }, "rod_mass"),
+            (Parameters { rod_length: 0.03, ..Parameters::default() }, "rod_length"),
+            (Parameters { crank_mode: 3, ..Parameters::default() }, "crank_mode"),
+        ];
+        for (params, expected) in cases {
+            let message = validate(&params).unwrap_err().0;
+            assert!(message.contains(expected), "{message}");
+        }
+        assert!(validate(&Parameters::default()).is_ok());
+        assert!(validate(&Parameters { damping_main: f64::NAN, ..Parameters::default() }).unwrap_err().0.contains("damping_main"));
+    }
+}
