@@ -129,6 +129,7 @@ struct Resolved<'a> {
     a: &'a Attributes,
     vr: usize,
     unit: Option<&'a str>,
+    display_unit: Option<&'a str>,
 }
 
 impl Resolved<'_> {
@@ -188,13 +189,13 @@ fn resolve(table: &Table) -> Vec<Resolved<'_>> {
                 Variable::Integer(a) => ("Integer", a),
                 Variable::String(a) => ("String", a),
             };
-            let unit = a.declared_type.as_deref().map(|t| {
+            let declared = a.declared_type.as_deref().map(|t| {
                 let def = table.types.types.iter().find(|d| d.name == t);
                 def.unwrap_or_else(|| panic!("{}: unknown type {t}", a.name))
-                    .unit
-                    .as_str()
             });
-            Resolved { kind, a, vr, unit }
+            let unit = declared.map(|d| d.unit.as_str());
+            let display_unit = declared.and_then(|d| d.display_unit.as_deref());
+            Resolved { kind, a, vr, unit, display_unit }
         })
         .collect()
 }
@@ -404,8 +405,14 @@ fn write_variables(w: &mut Writer<Vec<u8>>, variables: &[Resolved]) -> io::Resul
                     sv = sv.with_attribute(("initial", "exact"));
                 }
                 sv.write_inner_content(|w| {
+                    // unit and displayUnit repeat the declared type's: hosts that do not resolve
+                    // declaredType (fmpy's ModelVariable.unit) still see them.
+                    let unit = v.unit.map(str::to_string);
+                    let display_unit = v.display_unit.map(str::to_string);
                     let optional = [
                         ("declaredType", &a.declared_type),
+                        ("unit", &unit),
+                        ("displayUnit", &display_unit),
                         ("start", &a.start),
                         ("min", &a.min),
                         ("max", &a.max),

@@ -1,39 +1,36 @@
-//! The model variants behind one type: `model_variant` 1 → crank train, 2 → roller slider crank.
-//! Each variant wires itself in here when its model lands (a variant, an arm in each match).
+//! The model variants behind one type, chosen by `model_variant`: 1 → crank train (Awrejcewicz &
+//! Kudra), 2 → roller slider crank (Farahanchi).
 
-use crate::models::{EngineEvent, EngineModel, Inputs, ModelError, Outputs, Parameters};
+use crate::models::{CrankTrain, EngineEvent, EngineModel, Inputs, ModelError, Outputs, Parameters, Roller};
 use serde::{Deserialize, Serialize};
 
-/// The engine model the FMU runs, chosen by `model_variant`.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub enum Engine {}
+/// The engine model the FMU runs.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub enum Engine {
+    CrankTrain(CrankTrain),
+    Roller(Roller),
+}
 
 impl EngineModel for Engine {
-    fn new(params: &Parameters, _start_time: f64) -> Result<Self, ModelError> {
-        let name = match params.model_variant {
-            1 => "1 (crank train)",
-            2 => "2 (roller slider crank)",
-            other => {
-                return Err(ModelError(format!(
-                    "model_variant = {other} is not one of 1..=2"
-                )))
-            }
-        };
-        Err(ModelError(format!(
-            "model_variant = {name} is not available in this build"
-        )))
+    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
+        match params.model_variant {
+            1 => CrankTrain::new(params, start_time).map(Engine::CrankTrain),
+            2 => Roller::new(params, start_time).map(Engine::Roller),
+            other => Err(ModelError(format!("model_variant = {other} is not one of 1..=2"))),
+        }
     }
 
-    fn advance(
-        &mut self,
-        _inputs: &Inputs,
-        _t_end: f64,
-        _events: &mut Vec<EngineEvent>,
-    ) -> Result<(), ModelError> {
-        match *self {}
+    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        match self {
+            Engine::CrankTrain(m) => m.advance(inputs, t_end, events),
+            Engine::Roller(m) => m.advance(inputs, t_end, events),
+        }
     }
 
-    fn write_outputs(&self, _out: &mut Outputs) {
-        match *self {}
+    fn write_outputs(&self, out: &mut Outputs) {
+        match self {
+            Engine::CrankTrain(m) => m.write_outputs(out),
+            Engine::Roller(m) => m.write_outputs(out),
+        }
     }
 }
