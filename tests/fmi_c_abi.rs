@@ -12,11 +12,18 @@ fn vr(name: &str) -> String {
 
 #[test]
 fn a_c_host_runs_one_cycle() {
-    // The test binary lives in <target>/<profile>/deps, the cdylib in <target>/<profile>.
+    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    // The test binary lives in <target>/<profile>/deps, the cdylib in <target>/<profile>. `cargo test`
+    // does not link the cdylib, so build it (a no-op when fresh) with this test's profile.
     let exe = std::env::current_exe().unwrap();
     let lib_dir = exe.parent().and_then(|deps| deps.parent()).unwrap().to_path_buf();
-    assert!(lib_dir.join("libpistonslap.so").is_file(), "no cdylib in {}", lib_dir.display());
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+    let profile = if lib_dir.ends_with("release") { "release" } else { "dev" };
+    let built = Command::new(env!("CARGO"))
+        .args(["build", "--lib", "--profile", profile])
+        .current_dir(&root)
+        .status()
+        .expect("cargo");
+    assert!(built.success() && lib_dir.join("libpistonslap.so").is_file(), "no cdylib in {}", lib_dir.display());
     let host = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("c_host");
     let compiled = Command::new("gcc")
         .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-o"])

@@ -3,9 +3,12 @@
 
 use super::abi;
 use super::description::{self, GUID, VARIABLES};
+use super::instance::Model;
 use super::types::*;
 use crate::simulation::test_model::{Shuttle, SHUTTLE_SPEED};
+use crate::simulation::Engine;
 use std::ffi::{c_char, c_int, c_void, CStr, CString};
+use std::marker::PhantomData;
 use std::ptr::{null, null_mut};
 use std::sync::Mutex;
 
@@ -57,15 +60,18 @@ fn vr(name: &str) -> u32 {
         .unwrap_or_else(|| panic!("{name}")) as u32
 }
 
-/// A host holding one instance of the FMU with the shuttle model.
-struct Host {
+/// A host holding one instance of the FMU with engine model `E`.
+struct Host<E: Model> {
     c: fmi2Component,
     log: Box<Log>,
+    model: PhantomData<E>,
 }
+
+type ShuttleHost = Host<Shuttle>;
 
 const RESOURCES: &CStr = c"file:///tmp/pistonslap/resources";
 
-impl Host {
+impl<E: Model> Host<E> {
     fn new() -> Self {
         Self::try_new(
             c"test",
@@ -85,7 +91,7 @@ impl Host {
         let log = Box::new(Log::default());
         let functions = callbacks(&log);
         let c = unsafe {
-            abi::instantiate::<Shuttle>(
+            abi::instantiate::<E>(
                 name.as_ptr(),
                 fmu_type,
                 guid.as_ptr(),
@@ -103,7 +109,7 @@ impl Host {
                 .collect::<Vec<_>>()
                 .join("\n"))
         } else {
-            Ok(Self { c, log })
+            Ok(Self { c, log, model: PhantomData })
         }
     }
 
@@ -118,7 +124,7 @@ impl Host {
 
     fn setup(&self, start: f64, stop: Option<f64>) -> Status {
         unsafe {
-            abi::setup_experiment::<Shuttle>(
+            abi::setup_experiment::<E>(
                 self.c,
                 FMI2_FALSE,
                 0.0,
@@ -129,24 +135,24 @@ impl Host {
         }
     }
     fn enter(&self) -> Status {
-        unsafe { abi::enter_initialization_mode::<Shuttle>(self.c) }
+        unsafe { abi::enter_initialization_mode::<E>(self.c) }
     }
     fn exit(&self) -> Status {
-        unsafe { abi::exit_initialization_mode::<Shuttle>(self.c) }
+        unsafe { abi::exit_initialization_mode::<E>(self.c) }
     }
     fn step(&self, t: f64, h: f64) -> Status {
-        unsafe { abi::do_step::<Shuttle>(self.c, t, h) }
+        unsafe { abi::do_step::<E>(self.c, t, h) }
     }
     fn set_real(&self, name: &str, value: f64) -> Status {
-        unsafe { abi::set_real::<Shuttle>(self.c, &vr(name), 1, &value) }
+        unsafe { abi::set_real::<E>(self.c, &vr(name), 1, &value) }
     }
     fn set_integer(&self, name: &str, value: i32) -> Status {
-        unsafe { abi::set_integer::<Shuttle>(self.c, &vr(name), 1, &value) }
+        unsafe { abi::set_integer::<E>(self.c, &vr(name), 1, &value) }
     }
     fn real(&self, name: &str) -> f64 {
         let mut value = f64::NAN;
         assert_eq!(
-            unsafe { abi::get_real::<Shuttle>(self.c, &vr(name), 1, &mut value) },
+            unsafe { abi::get_real::<E>(self.c, &vr(name), 1, &mut value) },
             Status::Ok,
             "{name}"
         );
@@ -155,7 +161,7 @@ impl Host {
     fn integer(&self, name: &str) -> i32 {
         let mut value = -1;
         assert_eq!(
-            unsafe { abi::get_integer::<Shuttle>(self.c, &vr(name), 1, &mut value) },
+            unsafe { abi::get_integer::<E>(self.c, &vr(name), 1, &mut value) },
             Status::Ok,
             "{name}"
         );
@@ -175,17 +181,17 @@ impl Host {
     fn get_state(&self) -> fmi2FMUstate {
         let mut state = null_mut();
         assert_eq!(
-            unsafe { abi::get_fmu_state::<Shuttle>(self.c, &mut state) },
+            unsafe { abi::get_fmu_state::<E>(self.c, &mut state) },
             Status::Ok
         );
         state
     }
     fn set_state(&self, state: fmi2FMUstate) -> Status {
-        unsafe { abi::set_fmu_state::<Shuttle>(self.c, state) }
+        unsafe { abi::set_fmu_state::<E>(self.c, state) }
     }
     fn free_state(&self, mut state: fmi2FMUstate) {
         assert_eq!(
-            unsafe { abi::free_fmu_state::<Shuttle>(self.c, &mut state) },
+            unsafe { abi::free_fmu_state::<E>(self.c, &mut state) },
             Status::Ok
         );
         assert!(state.is_null());
@@ -193,12 +199,12 @@ impl Host {
     fn serialize(&self, state: fmi2FMUstate) -> Vec<u8> {
         let mut size = 0;
         assert_eq!(
-            unsafe { abi::serialized_fmu_state_size::<Shuttle>(self.c, state, &mut size) },
+            unsafe { abi::serialized_fmu_state_size::<E>(self.c, state, &mut size) },
             Status::Ok
         );
         let mut bytes = vec![0u8; size];
         let status = unsafe {
-            abi::serialize_fmu_state::<Shuttle>(
+            abi::serialize_fmu_state::<E>(
                 self.c,
                 state,
                 bytes.as_mut_ptr() as *mut c_char,
@@ -211,7 +217,7 @@ impl Host {
     fn deserialize(&self, bytes: &[u8]) -> (Status, fmi2FMUstate) {
         let mut state = null_mut();
         let status = unsafe {
-            abi::deserialize_fmu_state::<Shuttle>(
+            abi::deserialize_fmu_state::<E>(
                 self.c,
                 bytes.as_ptr() as *const c_char,
                 bytes.len(),
@@ -257,15 +263,15 @@ impl Host {
     }
 }
 
-impl Drop for Host {
+impl<E: Model> Drop for Host<E> {
     fn drop(&mut self) {
-        unsafe { abi::free_instance::<Shuttle>(self.c) }
+        unsafe { abi::free_instance::<E>(self.c) }
     }
 }
 
 #[test]
 fn a_full_cycle_gives_the_closed_form_impacts() {
-    let host = Host::initialized();
+    let host = ShuttleHost::initialized();
     assert_eq!(host.real("piston_lateral_velocity"), SHUTTLE_SPEED);
     host.run(0.0, 0.1, 1e-3);
     // Impacts at 4, 20 and 52 ms with e = 0.5 (see the shuttle): three, the last on the +x wall.
@@ -283,7 +289,7 @@ fn a_full_cycle_gives_the_closed_form_impacts() {
 
 #[test]
 fn calls_in_states_the_standard_forbids_are_refused_and_change_nothing() {
-    let host = Host::new();
+    let host = ShuttleHost::new();
     assert_eq!(host.step(0.0, 1e-3), Status::Error);
     host.logged("fmi2DoStep is not allowed in state Instantiated");
     assert_eq!(host.exit(), Status::Error);
@@ -329,7 +335,7 @@ fn calls_in_states_the_standard_forbids_are_refused_and_change_nothing() {
 
 #[test]
 fn null_pointers_unknown_references_and_wrong_types_are_refused() {
-    let host = Host::initialized();
+    let host = ShuttleHost::initialized();
     let mut x = 0.0;
     let mut i = 0;
     unsafe {
@@ -420,7 +426,7 @@ fn null_pointers_unknown_references_and_wrong_types_are_refused() {
 
 #[test]
 fn non_finite_inputs_bad_steps_and_wrong_times_leave_the_state_unchanged() {
-    let host = Host::initialized();
+    let host = ShuttleHost::initialized();
     host.run(0.0, 0.01, 1e-3);
     let before = host.output_bits();
     for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
@@ -450,7 +456,7 @@ fn non_finite_inputs_bad_steps_and_wrong_times_leave_the_state_unchanged() {
 fn instantiate_checks_its_arguments() {
     let guid = CString::new(GUID).unwrap();
     let refused = |name: &CStr, fmu_type, guid: &CStr, resources: *const c_char, why: &str| {
-        let err = Host::try_new(name, fmu_type, guid, resources)
+        let err = ShuttleHost::try_new(name, fmu_type, guid, resources)
             .err()
             .expect(why);
         assert!(err.contains(why), "{err:?} should contain {why:?}");
@@ -521,7 +527,7 @@ fn instantiate_checks_its_arguments() {
 
 #[test]
 fn bad_parameters_are_refused_at_exit_initialization_mode_by_name() {
-    let host = Host::new();
+    let host = ShuttleHost::new();
     assert_eq!(host.enter(), Status::Ok);
     assert_eq!(
         host.set_real("piston_mass", -0.4),
@@ -548,7 +554,7 @@ fn bad_parameters_are_refused_at_exit_initialization_mode_by_name() {
 
 #[test]
 fn a_failed_step_is_an_error_and_a_saved_state_continues() {
-    let host = Host::initialized();
+    let host = ShuttleHost::initialized();
     host.run(0.0, 0.01, 1e-3);
     let state = host.get_state();
     let before = host.output_bits();
@@ -573,7 +579,7 @@ fn a_failed_step_is_an_error_and_a_saved_state_continues() {
 
 #[test]
 fn a_restored_state_continues_bit_identically_also_through_bytes_and_other_instances() {
-    let host = Host::initialized();
+    let host = ShuttleHost::initialized();
     host.run(0.0, 0.015, 1e-3);
     let state = host.get_state();
     host.run(0.015, 0.1, 5e-3);
@@ -585,7 +591,7 @@ fn a_restored_state_continues_bit_identically_also_through_bytes_and_other_insta
     assert_eq!(host.output_bits(), reference);
 
     let bytes = host.serialize(state);
-    let other = Host::new();
+    let other = ShuttleHost::new();
     let (status, copy) = other.deserialize(&bytes);
     assert_eq!(status, Status::Ok);
     assert_eq!(
@@ -615,7 +621,7 @@ fn a_restored_state_continues_bit_identically_also_through_bytes_and_other_insta
 
 #[test]
 fn corrupt_or_foreign_state_bytes_are_refused() {
-    let host = Host::initialized();
+    let host = ShuttleHost::initialized();
     host.run(0.0, 0.03, 1e-3);
     let state = host.get_state();
     let bytes = host.serialize(state);
@@ -669,7 +675,7 @@ fn corrupt_or_foreign_state_bytes_are_refused() {
 
 #[test]
 fn a_panic_is_contained_as_fatal() {
-    let host = Host::initialized();
+    let host = ShuttleHost::initialized();
     assert_eq!(host.set_real("load_torque", 42.0), Status::Ok);
     assert_eq!(host.step(0.0, 1e-3), Status::Fatal);
     host.logged("internal error (panic");
@@ -687,7 +693,7 @@ fn a_panic_is_contained_as_fatal() {
 
 #[test]
 fn strings_status_queries_and_debug_logging() {
-    let host = Host::new();
+    let host = ShuttleHost::new();
     let path = std::env::temp_dir().join(format!("pistonslap_fmi_{}.csv", std::process::id()));
     let path_c = CString::new(path.to_str().unwrap()).unwrap();
     unsafe {
@@ -767,7 +773,7 @@ fn instances_in_threads_are_independent() {
         let handles: Vec<_> = (0..4)
             .map(|k| {
                 scope.spawn(move || {
-                    let host = Host::initialized();
+                    let host = ShuttleHost::initialized();
                     host.run(0.0, 0.1, [1e-3, 2e-3, 5e-3, 1e-2][k]);
                     (
                         host.integer("impact_count"),
@@ -790,4 +796,52 @@ fn instances_in_threads_are_independent() {
         energies.iter().all(|e| (e - energies[0]).abs() < 1e-18),
         "{energies:?}"
     );
+}
+
+#[test]
+fn both_engine_variants_continue_bit_identically_after_restore_and_through_bytes() {
+    for variant in [1, 2] {
+        let host = Host::<Engine>::new();
+        assert_eq!(host.enter(), Status::Ok);
+        assert_eq!(host.set_integer("model_variant", variant), Status::Ok);
+        if variant == 2 {
+            // The thesis's mechanism (ξ = 0.303, α = 1.9, β = 0.4719 with l = M = 1, ρ = 0.02, λ = 0.05)
+            // at 60 rad/s, which slaps within a few crank turns.
+            for (name, value) in [
+                ("crank_radius", 0.303),
+                ("rod_length", 1.0),
+                ("rod_mass", 1.9),
+                ("piston_mass", 1.0),
+                ("rod_inertia", 0.4719),
+                ("damping_crank_pin", 0.05),
+                ("bore", 0.12),
+                ("restitution", 0.9),
+                ("crank_speed", 60.0),
+            ] {
+                assert_eq!(host.set_real(name, value), Status::Ok, "{name}");
+            }
+        }
+        assert_eq!(host.exit(), Status::Ok, "{:?}", host.messages());
+        host.run(0.0, 0.05, 1e-3);
+        let impacts_before = host.integer("impact_count");
+        let state = host.get_state();
+        let bytes = host.serialize(state);
+        host.run(0.05, 0.1, 1e-3);
+        let reference = host.output_bits();
+        assert!(host.integer("impact_count") > impacts_before, "variant {variant}: impacts after the save");
+
+        assert_eq!(host.set_state(state), Status::Ok);
+        assert_eq!(host.integer("impact_count"), impacts_before);
+        host.run(0.05, 0.1, 1e-3);
+        assert_eq!(host.output_bits(), reference, "variant {variant}: restore in place");
+
+        let other = Host::<Engine>::new();
+        let (status, copy) = other.deserialize(&bytes);
+        assert_eq!(status, Status::Ok, "{:?}", other.messages());
+        assert_eq!(other.set_state(copy), Status::Ok);
+        other.run(0.05, 0.1, 1e-3);
+        assert_eq!(other.output_bits(), reference, "variant {variant}: through {} bytes", bytes.len());
+        host.free_state(state);
+        other.free_state(copy);
+    }
 }
