@@ -254,7 +254,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// Advances to exactly `t_end`, appending to the event record. Re-examines the contact set first,
     /// since `system_mut` may have changed held inputs (an active constraint now approaching → impact).
     pub fn advance(&mut self, t_end: f64) -> Result<(), DynamicsError> {
-        if !(t_end >= self.state.t) || !t_end.is_finite() {
+        if !t_end.is_finite() || t_end < self.state.t {
             return Err(DynamicsError::InvalidArgument { time: self.state.t, reason: "the end time is before the current time or not finite" });
         }
         self.reexamine()?;
@@ -423,7 +423,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                         EventLocator::StepHalving => br.lo, // located on the RK4 map below
                     },
                 };
-                if earliest.map_or(true, |(t, ..)| estimate < t) {
+                if earliest.is_none_or(|(t, ..)| estimate < t) {
                     earliest = Some((estimate, i, w, start.expect("matched above")));
                 }
             }
@@ -487,7 +487,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// Resolves the closed constraints at the current instant (Fig. 1 at a discontinuity point):
     /// 1. if any approaches (`ḣ < −ε_ḣ`), the generalized Newton impact over all of `closed`;
     /// 2. persistent contact for those now at rest (`|ḣ| < ε_ḣ`, or caught by the Zeno guard)
-    ///    whose multiplier is non-negative, by the sliding complementarity problem;
+    ///    whose multiplier is non-negative, by the sliding complementarity problem; one still
+    ///    approaching (−ε_ḣ ≤ ḣ < 0) that sliding refuses gets the impact of 1. after all;
     /// 3. projection of `q` and `q̇` onto the new active set, which becomes the held set.
     ///
     /// Constraints in `release` (a multiplier just crossed zero) may not stay in contact.
@@ -498,33 +499,44 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let (mut ev, mut frame) = frame_at(&self.system, t, &q, &v)?;
         let mut hd = ev.gap_jacobian * v + ev.gap_time_rate;
 
-        let approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
-        if approaching != 0 {
-            let e = SVector::<f64, M>::from_fn(|i, _| self.system.restitution(i));
-            let impulse = impact::newton_impulses(&frame, &hd, &e, closed)
-                .ok_or(DynamicsError::MultipleImpact { time: t, constraints: closed })?;
-            let v_plus = v + frame.minv_jt * impulse;
-            let lost = impact::energy_lost(&ev.gap_jacobian, &impulse, &v, &v_plus);
-            let hd_plus = hd + frame.w * impulse;
-            for i in members::<M>(closed).filter(|&i| impulse[i] > 0.0 || contains(approaching, i)) {
-                self.record(EventKind::Impact, i, hd[i], hd_plus[i], lost[i], q);
-            }
-            (v, hd) = (v_plus, hd_plus);
-            (ev, frame) = frame_at(&self.system, t, &q, &v)?;
-        }
-
+        let mut approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
+        let mut impacted: Set = 0;
         let eligible = closed & !release;
-        let mut candidates = eligible & select::<M>(|i| hd[i] < opts.velocity_tolerance);
         let zeno_apex = ZENO_APEX_FACTOR * opts.gap_tolerance;
         let support = loop {
-            let (lambda, support) =
-                frame.sliding(&ev, candidates).ok_or(DynamicsError::ContactUnresolved { time: t, constraints: candidates })?;
-            let hdd = Frame::gap_acceleration(&ev, &(frame.free_acc + frame.minv_jt * lambda));
-            let zeno = eligible & !candidates & select::<M>(|i| hd[i] > 0.0 && hdd[i] < 0.0 && hd[i] * hd[i] < -2.0 * zeno_apex * hdd[i]);
-            if zeno == 0 {
+            if approaching != 0 {
+                let e = SVector::<f64, M>::from_fn(|i, _| self.system.restitution(i));
+                let impulse = impact::newton_impulses(&frame, &hd, &e, closed)
+                    .ok_or(DynamicsError::MultipleImpact { time: t, constraints: closed })?;
+                let v_plus = v + frame.minv_jt * impulse;
+                let lost = impact::energy_lost(&ev.gap_jacobian, &impulse, &v, &v_plus);
+                let hd_plus = hd + frame.w * impulse;
+                for i in members::<M>(closed).filter(|&i| impulse[i] > 0.0 || contains(approaching, i)) {
+                    self.record(EventKind::Impact, i, hd[i], hd_plus[i], lost[i], q);
+                }
+                (v, hd) = (v_plus, hd_plus);
+                (ev, frame) = frame_at(&self.system, t, &q, &v)?;
+                impacted |= approaching;
+            }
+
+            let mut candidates = eligible & select::<M>(|i| hd[i] < opts.velocity_tolerance);
+            let support = loop {
+                let (lambda, support) =
+                    frame.sliding(&ev, candidates).ok_or(DynamicsError::ContactUnresolved { time: t, constraints: candidates })?;
+                let hdd = Frame::gap_acceleration(&ev, &(frame.free_acc + frame.minv_jt * lambda));
+                let zeno = eligible & !candidates & select::<M>(|i| hd[i] > 0.0 && hdd[i] < 0.0 && hd[i] * hd[i] < -2.0 * zeno_apex * hdd[i]);
+                if zeno == 0 {
+                    break support;
+                }
+                candidates |= zeno;
+            };
+            // An approach slower than ε_ḣ that sliding refuses (its force would pull) still needs
+            // the impact law, or the gap closes at the next instant with nothing to resolve it.
+            let grazing = closed & !support & !impacted & select::<M>(|i| hd[i] < 0.0);
+            if grazing == 0 {
                 break support;
             }
-            candidates |= zeno;
+            approaching = grazing;
         };
 
         let (mut q_new, mut v_new) = (q, v);
