@@ -75,3 +75,20 @@ fn rod_landing_flat_bounces_flat() {
     assert!(impacts.iter().all(|ev| (ev.time - gap / v).abs() < 1e-12 && (ev.velocity_after - e * v).abs() < 1e-12));
     assert!((s.velocity() - Vector3::new(0.0, e * v, 0.0)).norm() < 1e-12);
 }
+
+/// A tumbling rod dropped on the floor bounces, accumulates impacts at both ends and comes to
+/// rest flat (sin θ = 0) on both: λ = (mg/2, mg/2). The floor is frictionless, so ẋ never changes.
+#[test]
+fn tumbling_rod_comes_to_rest_on_both_ends() {
+    let (m, g) = (1.2, 9.81);
+    let rod = Rod { mass: m, length: 1.0, gravity: g, restitution: 0.5 };
+    let mut s = Stepper::new(rod, 0.0, Vector3::new(0.0, 1.0, 0.3), Vector3::new(0.5, 0.0, 4.0), StepperOptions { step: 1e-4, ..Default::default() })
+        .unwrap();
+    s.advance(3.0).unwrap();
+    assert!(s.in_contact(0) && s.in_contact(1), "events: {}", s.events().len());
+    assert!((s.multipliers() - Vector2::new(0.5 * m * g, 0.5 * m * g)).norm() < 1e-9, "λ = {}", s.multipliers());
+    let (q, v) = (s.position(), s.velocity());
+    assert!(q[1].abs() < 1e-12 && q[2].sin().abs() < 1e-12);
+    assert!((v - Vector3::new(0.5, 0.0, 0.0)).norm() < 1e-12, "v = {v}");
+    assert!((q[0] - 1.5).abs() < 1e-9, "x = ẋ t");
+}

@@ -76,3 +76,17 @@ fn inadmissible_and_non_finite_states_are_errors() {
     let ball = Ball { mass: 1.0, gravity: G, restitution: 1.0, floor: Floor::Fixed };
     assert!(matches!(Stepper::new(ball, 0.0, Vector1::new(1.0), Vector1::zeros(), bad), Err(DynamicsError::InvalidArgument { .. })));
 }
+
+/// The FMU saves and restores the stepper by value: a clone continues exactly like the original.
+#[test]
+fn a_cloned_stepper_continues_identically() {
+    fn plain_value<T: Clone + serde::Serialize + serde::de::DeserializeOwned>(_: &T) {}
+    let ball = Ball { mass: 1.0, gravity: G, restitution: 0.7, floor: Floor::Oscillating { amplitude: 0.01, angular_frequency: 40.0 } };
+    let mut a = Stepper::new(ball, 0.0, Vector1::new(0.05), Vector1::zeros(), StepperOptions { step: 1e-3, ..Default::default() }).unwrap();
+    a.advance(0.7).unwrap();
+    let mut b = a.clone();
+    plain_value(&b);
+    a.advance(2.0).unwrap();
+    b.advance(2.0).unwrap();
+    assert_eq!((a.position(), a.velocity(), a.events()), (b.position(), b.velocity(), b.events()));
+}

@@ -4,6 +4,7 @@
 mod common;
 
 use common::*;
+use pistonslap::models::pressure::FourStrokePressure;
 use pistonslap::models::{Inputs, Parameters};
 
 fn paper(restitution: f64, bore: f64) -> Parameters {
@@ -81,4 +82,24 @@ fn large_clearance_elastic_impacts_stay_bounded_at_the_same_phases() {
     }
     assert!(landings.iter().all(|&n| n < 500), "accumulation must end in sliding: {landings:?}");
     assert_forces_admissible(&trace);
+}
+
+#[test]
+fn host_pressure_gauge_reproduces_the_built_in_curve_and_absolute_pressure_loses_two_side_changes() {
+    // DESIGN.md §6.3: the gas force needs the pressure difference across the piston. The host feeds
+    // the built-in curve through `gas_pressure`, held over 0.5° steps; then the same plus 1 bar.
+    let built_in = side_changes(&run(&paper(0.0, 0.08008), &inputs(), 2, 1, 1440));
+    let params = Parameters { pressure_source: 1, ..paper(0.0, 0.08008) };
+    let curve = FourStrokePressure::new(params.peak_pressure, params.rod_length / params.crank_radius);
+    let host = |offset: f64| {
+        let trace = run_with(&params, |angle| Inputs { gas_pressure: curve.gauge(angle) + offset, ..inputs() }, 2, 1, 1440);
+        side_changes(&trace)
+    };
+    let (gauge, absolute) = (host(0.0), host(1e5));
+    eprintln!("host pressure: gauge {gauge:.1?}, absolute {absolute:.1?}");
+    assert_eq!(gauge.len(), built_in.len());
+    for (a, b) in gauge.iter().zip(&built_in) {
+        assert!((a - b).abs() < 2.0, "gauge input {gauge:.1?} vs built-in {built_in:.1?}");
+    }
+    assert_eq!(absolute.len(), 4, "{absolute:.1?}");
 }

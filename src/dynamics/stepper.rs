@@ -511,7 +511,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 let v_plus = v + frame.minv_jt * impulse;
                 let lost = impact::energy_lost(&ev.gap_jacobian, &impulse, &v, &v_plus);
                 let hd_plus = hd + frame.w * impulse;
-                for i in members::<M>(closed).filter(|&i| impulse[i] > 0.0 || contains(approaching, i)) {
+                // Recorded: every approaching constraint, and any other that took a real impulse
+                // (one that changes its own ḣ by more than ε_ḣ), e.g. a sliding one pushed harder.
+                let pushed = select::<M>(|i| impulse[i] * frame.w[(i, i)] > opts.velocity_tolerance);
+                for i in members::<M>(closed & (approaching | pushed)) {
                     self.record(EventKind::Impact, i, hd[i], hd_plus[i], lost[i], q);
                 }
                 (v, hd) = (v_plus, hd_plus);

@@ -17,20 +17,27 @@ pub struct Trace {
 
 /// Simulates `cycles` four-stroke cycles after `warm_up` cycles, sampling every `per_cycle`-th of a cycle.
 pub fn run(params: &Parameters, inputs: &Inputs, warm_up: usize, cycles: usize, per_cycle: usize) -> Trace {
+    run_with(params, |_| inputs.clone(), warm_up, cycles, per_cycle)
+}
+
+/// As [`run`], with the inputs of each step chosen from the crank angle at its start (a host's
+/// zero-order hold).
+pub fn run_with(params: &Parameters, inputs: impl Fn(f64) -> Inputs, warm_up: usize, cycles: usize, per_cycle: usize) -> Trace {
     let mut model = CrankTrain::new(params, 0.0).expect("parameters accepted");
     let dt = CYCLE / per_cycle as f64;
     let mut events = Vec::new();
-    for k in 1..=warm_up * per_cycle {
-        model.advance(inputs, k as f64 * dt, &mut events).expect("warm-up step");
-    }
-    events.clear();
-    let start = warm_up * per_cycle;
     let mut samples = Vec::new();
-    for k in 1..=cycles * per_cycle {
-        model.advance(inputs, (start + k) as f64 * dt, &mut events).expect("step");
-        let mut out = Outputs::default();
-        model.write_outputs(&mut out);
-        samples.push(out);
+    for k in 1..=(warm_up + cycles) * per_cycle {
+        if k == warm_up * per_cycle + 1 {
+            events.clear();
+        }
+        let held = inputs(model.state().0[0]);
+        model.advance(&held, k as f64 * dt, &mut events).expect("step");
+        if k > warm_up * per_cycle {
+            let mut out = Outputs::default();
+            model.write_outputs(&mut out);
+            samples.push(out);
+        }
     }
     Trace { samples, events }
 }
