@@ -91,4 +91,9 @@ fn tumbling_rod_comes_to_rest_on_both_ends() {
     assert!(q[1].abs() < 1e-12 && q[2].sin().abs() < 1e-12);
     assert!((v - Vector3::new(0.5, 0.0, 0.0)).norm() < 1e-12, "v = {v}");
     assert!((q[0] - 1.5).abs() < 1e-9, "x = ẋ t");
+    // Energy balance: T + V at the start (y = 1, ẋ = 0.5, θ̇ = 4, I = m/12) less the final ½ m ẋ²
+    // is what the recorded events dissipated.
+    let lost: f64 = s.events().iter().map(|ev| ev.energy_lost).sum();
+    let initial = 0.5 * m * 0.25 + 0.5 * (m / 12.0) * 16.0 + m * g * 1.0;
+    assert!((lost - (initial - 0.5 * m * 0.25)).abs() < 1e-9, "lost {lost}");
 }

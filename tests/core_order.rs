@@ -65,3 +65,20 @@ fn step_halving_locates_the_ball() {
     assert_eq!(s.events().len(), 1);
     assert!((s.events()[0].time - t1).abs() < 1e-12 / (2.0 * 9.81f64).sqrt() + 1e-15);
 }
+
+/// A crossing and return inside one step (both ends of the step admissible): a ball thrown down
+/// at 1 m/s from 1 mm against an upward pull of 100 m/s² would dip 4 mm below the floor within
+/// the first 20 ms of a 50 ms step. Closed form: y = y₀ − v t + a t²/2 reaches 0 at
+/// t = (v − √(v² − 2 a y₀))/a with ḣ⁻ = −√(v² − 2 a y₀).
+#[test]
+fn a_dip_inside_one_step_is_found() {
+    let (y0, v, a) = (1e-3, 1.0, 100.0);
+    let ball = Ball { mass: 1.0, gravity: -a, restitution: 0.5, floor: Floor::Fixed };
+    let mut s = Stepper::new(ball, 0.0, Vector1::new(y0), Vector1::new(-v), StepperOptions { step: 0.05, ..Default::default() }).unwrap();
+    s.advance(0.05).unwrap();
+    let root = (v * v - 2.0 * a * y0).sqrt();
+    let ev = s.events().first().expect("the dip is an impact");
+    assert_eq!(ev.kind, EventKind::Impact);
+    assert!((ev.time - (v - root) / a).abs() < 1e-13, "at {}", ev.time);
+    assert!((ev.velocity_before + root).abs() < 1e-10);
+}
