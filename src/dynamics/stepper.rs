@@ -1,12 +1,28 @@
-//! INTERFACE STUB (session coordinator): the signatures every other module codes against.
-//! The core helper replaces the bodies (and may split the file into rk4/events/impact/contact).
-#![allow(unused_variables)]
+//! The event-driven integrator (A&K section 5, Fig. 1): RK4 with the contact set held between
+//! events; at each event the impact law and the sliding law decide the new contact set.
 
-use super::System;
+use super::contact::{bit, contains, members, select, Frame, Set};
+use super::events::{self, Bracket, EventLocator, Located, Start};
+use super::rk4::{self, Hermite5};
+use super::{impact, Evaluation, System};
 use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
 use std::fmt;
-use std::marker::PhantomData;
+
+/// Zeno guard: after an impact a closed constraint whose free flight would rise no higher than
+/// `ZENO_APEX_FACTOR · ε_h` (apex `ḣ⁺² / (2|ḧ|)` with `ḧ < 0` the gap acceleration under the
+/// current contact forces) is put into persistent contact instead of flying. Such a flight is
+/// below what event location resolves, and with `e < 1` the bounces before it decay
+/// geometrically, so an accumulation of impacts always ends in sliding after a bounded number of
+/// events. The time given up is at most `2 ḣ⁺ / (|ḧ| (1 − e))` (≈ 6e-5 s for a ball under
+/// gravity with e = 0.5 and the default ε_h).
+pub const ZENO_APEX_FACTOR: f64 = 1e3;
+
+/// Default bound on the events handled in one `advance` (see `Stepper::set_event_budget`).
+pub const DEFAULT_EVENT_BUDGET: usize = 10_000;
+
+/// Constraints that can be enumerated by the complementarity solvers (2^M supports).
+const MAX_CONSTRAINTS: usize = 16;
 
 /// Tolerances and the nominal step of the event-driven integrator.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -47,73 +63,510 @@ pub struct Event<const N: usize> {
     pub velocity_before: f64,
     /// ḣ⁺.
     pub velocity_after: f64,
-    /// ½q̇⁻ᵀMq̇⁻ − ½q̇⁺ᵀMq̇⁺.
+    /// ½q̇⁻ᵀMq̇⁻ − ½q̇⁺ᵀMq̇⁺ due to this constraint's impulse (an impact, or the projection onto
+    /// ḣ = 0 when sliding starts); negative when a moving constraint does work.
     pub energy_lost: f64,
     /// Configuration at the event.
     pub q: SVector<f64, N>,
 }
 
-/// What the core cannot resolve, as a value.
+/// What the core cannot resolve, as a value. Constraint sets are bitmasks (bit i = constraint i).
 #[derive(Clone, Debug, PartialEq)]
 pub enum DynamicsError {
+    /// A state, force or multiplier became NaN or infinite.
     NonFinite { time: f64 },
+    /// The inertia matrix is not positive definite.
+    SingularMass { time: f64 },
+    /// The constraints held closed have dependent gradients (more than the motion allows).
+    DependentContacts { time: f64, constraints: u32 },
+    /// The paper's "multiple impact exception": no impulses satisfy the generalized Newton law.
+    MultipleImpact { time: f64, constraints: u32 },
+    /// No non-negative contact forces keep the closed constraints admissible.
+    ContactUnresolved { time: f64, constraints: u32 },
+    /// A constraint is violated by more than ε_h where it must be admissible.
+    Penetration { time: f64, constraint: usize, gap: f64 },
+    /// More events than the budget in one `advance` (an unresolved accumulation).
+    EventBudget { time: f64, events: usize },
+    /// A refused argument: bad options, or an end time before the current time.
+    InvalidArgument { time: f64, reason: &'static str },
+}
+
+/// Prints a constraint bitmask as `{0, 2}`.
+struct Constraints(u32);
+
+impl fmt::Display for Constraints {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let list: Vec<String> = (0..32).filter(|i| self.0 & (1 << i) != 0).map(|i| i.to_string()).collect();
+        write!(f, "{{{}}}", list.join(", "))
+    }
 }
 
 impl fmt::Display for DynamicsError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{self:?}")
+        use DynamicsError::*;
+        match *self {
+            NonFinite { time } => write!(f, "at t = {time} s: the state became non-finite (NaN or infinity)"),
+            SingularMass { time } => write!(f, "at t = {time} s: the inertia matrix is not positive definite"),
+            DependentContacts { time, constraints } => {
+                write!(f, "at t = {time} s: constraints {} held closed have dependent gradients", Constraints(constraints))
+            }
+            MultipleImpact { time, constraints } => write!(
+                f,
+                "at t = {time} s: multiple impact exception, no impulses on constraints {} satisfy the generalized Newton law",
+                Constraints(constraints)
+            ),
+            ContactUnresolved { time, constraints } => write!(
+                f,
+                "at t = {time} s: no non-negative contact forces on constraints {} keep them admissible",
+                Constraints(constraints)
+            ),
+            Penetration { time, constraint, gap } => {
+                write!(f, "at t = {time} s: constraint {constraint} is violated, gap {gap:e} below the tolerance")
+            }
+            EventBudget { time, events } => {
+                write!(f, "at t = {time} s: more than {events} events in one step (accumulation not resolved)")
+            }
+            InvalidArgument { time, reason } => write!(f, "at t = {time} s: {reason}"),
+        }
     }
 }
 
 impl std::error::Error for DynamicsError {}
 
+/// Everything the loop needs at one `(t, q, q̇)` with a given contact set.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+struct Sample<const N: usize, const M: usize> {
+    t: f64,
+    q: SVector<f64, N>,
+    v: SVector<f64, N>,
+    acc: SVector<f64, N>,
+    lambda: SVector<f64, M>,
+    gap: SVector<f64, M>,
+    /// ḣ = J q̇ + ∂h/∂t.
+    hd: SVector<f64, M>,
+}
+
+/// Which function of constraint `i` an event watches.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Watch {
+    Gap,
+    Multiplier,
+}
+
+impl<const N: usize, const M: usize> Sample<N, M> {
+    fn watched(&self, i: usize, w: Watch) -> f64 {
+        match w {
+            Watch::Gap => self.gap[i],
+            Watch::Multiplier => self.lambda[i],
+        }
+    }
+}
+
+fn frame_at<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    t: f64,
+    q: &SVector<f64, N>,
+    v: &SVector<f64, N>,
+) -> Result<(Evaluation<N, M>, Frame<N, M>), DynamicsError> {
+    let ev = sys.evaluate(t, q, v);
+    let frame = Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: t })?;
+    Ok((ev, frame))
+}
+
+fn sample<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    t: f64,
+    q: SVector<f64, N>,
+    v: SVector<f64, N>,
+    active: Set,
+) -> Result<Sample<N, M>, DynamicsError> {
+    let (ev, frame) = frame_at(sys, t, &q, &v)?;
+    let (acc, lambda) =
+        frame.constrained(&ev, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })?;
+    let hd = ev.gap_jacobian * v + ev.gap_time_rate;
+    let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd };
+    let finite = |x: &[f64]| x.iter().all(|v| v.is_finite());
+    if [s.q.as_slice(), s.v.as_slice(), s.acc.as_slice(), s.lambda.as_slice(), s.gap.as_slice(), s.hd.as_slice()]
+        .into_iter()
+        .all(finite)
+    {
+        Ok(s)
+    } else {
+        Err(DynamicsError::NonFinite { time: t })
+    }
+}
+
+/// One RK4 step from `s0` to `t` with the contact set `active` held.
+fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    s0: &Sample<N, M>,
+    t: f64,
+    active: Set,
+) -> Result<Sample<N, M>, DynamicsError> {
+    let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
+        let (ev, frame) = frame_at(sys, t, q, v)?;
+        let (acc, _) = frame.constrained(&ev, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })?;
+        Ok(acc)
+    };
+    let (q, v) = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
+    sample(sys, t, q, v, active)
+}
+
 /// The event-driven integrator: owns the system and its state.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Stepper<S, const N: usize, const M: usize> {
     system: S,
-    _todo: PhantomData<[f64; N]>,
+    options: StepperOptions,
+    locator: EventLocator,
+    event_budget: usize,
+    /// Constraints in persistent contact (bitmask).
+    active: u32,
+    state: Sample<N, M>,
+    events: Vec<Event<N>>,
 }
 
 impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
+    /// Starts at `(t0, q0, q̇0)`. Constraints closed at the start are resolved as at any event
+    /// (impact if approaching, sliding if the contact force is non-negative), and recorded.
     pub fn new(system: S, t0: f64, q0: SVector<f64, N>, qd0: SVector<f64, N>, options: StepperOptions) -> Result<Self, DynamicsError> {
-        todo!()
+        let positive = |x: f64| x.is_finite() && x > 0.0;
+        let reason = if M > MAX_CONSTRAINTS {
+            Some("too many constraints for the complementarity solver (at most 16)")
+        } else if !positive(options.step) {
+            Some("the step must be positive and finite")
+        } else if ![options.gap_tolerance, options.velocity_tolerance, options.multiplier_tolerance].into_iter().all(positive) {
+            Some("the tolerances must be positive and finite")
+        } else if !t0.is_finite() {
+            Some("the start time must be finite")
+        } else {
+            None
+        };
+        if let Some(reason) = reason {
+            return Err(DynamicsError::InvalidArgument { time: t0, reason });
+        }
+        let state = sample(&system, t0, q0, qd0, 0)?;
+        let mut stepper =
+            Self { system, options, locator: EventLocator::default(), event_budget: DEFAULT_EVENT_BUDGET, active: 0, state, events: Vec::new() };
+        stepper.reexamine()?;
+        Ok(stepper)
     }
+
     /// Advances to exactly `t_end`, appending to the event record. Re-examines the contact set first,
     /// since `system_mut` may have changed held inputs (an active constraint now approaching → impact).
     pub fn advance(&mut self, t_end: f64) -> Result<(), DynamicsError> {
-        todo!()
+        if !(t_end >= self.state.t) || !t_end.is_finite() {
+            return Err(DynamicsError::InvalidArgument { time: self.state.t, reason: "the end time is before the current time or not finite" });
+        }
+        self.reexamine()?;
+        let mut handled = 0;
+        while self.state.t < t_end {
+            let t = self.state.t;
+            let t1 = if t_end - t <= self.options.step { t_end } else { t + self.options.step };
+            if self.step(t1)? {
+                handled += 1;
+                if handled > self.event_budget {
+                    return Err(DynamicsError::EventBudget { time: self.state.t, events: self.event_budget });
+                }
+            }
+        }
+        Ok(())
     }
+
     pub fn time(&self) -> f64 {
-        todo!()
+        self.state.t
     }
     pub fn position(&self) -> &SVector<f64, N> {
-        todo!()
+        &self.state.q
     }
     pub fn velocity(&self) -> &SVector<f64, N> {
-        todo!()
+        &self.state.v
     }
-    /// q̈ at the current state with the current contact set.
+    /// q̈ at the current state with the current contact set (as of `new` or the last `advance`).
     pub fn acceleration(&self) -> SVector<f64, N> {
-        todo!()
+        self.state.acc
     }
     /// Whether constraint `i` is in persistent (sliding) contact.
     pub fn in_contact(&self, i: usize) -> bool {
-        todo!()
+        i < M && contains(self.active, i)
     }
     /// λ at the current state (0 for open constraints).
     pub fn multipliers(&self) -> SVector<f64, M> {
-        todo!()
+        self.state.lambda
+    }
+    /// `h(q, t)` at the current state.
+    pub fn gaps(&self) -> SVector<f64, M> {
+        self.state.gap
+    }
+    /// `ḣ = J q̇ + ∂h/∂t` at the current state.
+    pub fn gap_rates(&self) -> SVector<f64, M> {
+        self.state.hd
+    }
+    /// `T = ½ q̇ᵀ M q̇` at the current state.
+    pub fn kinetic_energy(&self) -> f64 {
+        let s = &self.state;
+        0.5 * s.v.dot(&(self.system.evaluate(s.t, &s.q, &s.v).mass * s.v))
     }
     pub fn events(&self) -> &[Event<N>] {
-        todo!()
+        &self.events
     }
     pub fn clear_events(&mut self) {
-        todo!()
+        self.events.clear();
     }
     pub fn system(&self) -> &S {
         &self.system
     }
     pub fn system_mut(&mut self) -> &mut S {
         &mut self.system
+    }
+    pub fn options(&self) -> &StepperOptions {
+        &self.options
+    }
+    pub fn locator(&self) -> EventLocator {
+        self.locator
+    }
+    /// Chooses how events are located (default: dense output).
+    pub fn set_locator(&mut self, locator: EventLocator) {
+        self.locator = locator;
+    }
+    /// Bounds the events handled in one `advance` (default `DEFAULT_EVENT_BUDGET`); beyond it
+    /// `advance` returns `DynamicsError::EventBudget` instead of spinning.
+    pub fn set_event_budget(&mut self, events: usize) {
+        self.event_budget = events;
+    }
+
+    /// Refreshes the state after possible changes through `system_mut` and resolves every
+    /// closed constraint: an active one now approaching gets an impact, a pulling one is released.
+    fn reexamine(&mut self) -> Result<(), DynamicsError> {
+        let s = &self.state;
+        self.state = sample(&self.system, s.t, s.q, s.v, self.active)?;
+        let eps = self.options.gap_tolerance;
+        if let Some(i) = (0..M).find(|&i| !contains(self.active, i) && self.state.gap[i] < -eps) {
+            return Err(DynamicsError::Penetration { time: self.state.t, constraint: i, gap: self.state.gap[i] });
+        }
+        let closed = self.active | select::<M>(|i| self.state.gap[i] <= eps);
+        self.settle(closed, 0)
+    }
+
+    /// One RK4 step towards `t1`, stopping at the first event. Returns whether an event was handled.
+    fn step(&mut self, t1: f64) -> Result<bool, DynamicsError> {
+        let (sys, s0, active) = (&self.system, &self.state, self.active);
+        let s1 = rk4_to(sys, s0, t1, active)?;
+        let dense = Hermite5 { t0: s0.t, dt: t1 - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: s1.q, v1: s1.v, a1: s1.acc };
+        match self.first_event(&dense, s1)? {
+            Ok(s1) => {
+                self.state = s1;
+                if active != 0 {
+                    self.stabilize()?;
+                }
+                Ok(false)
+            }
+            Err((s, i, watch)) => {
+                self.state = s;
+                let closed = self.active | bit(i) | select::<M>(|j| self.state.gap[j] <= self.options.gap_tolerance);
+                let release = if watch == Watch::Multiplier { bit(i) } else { 0 };
+                self.settle(closed, release)?;
+                Ok(true)
+            }
+        }
+    }
+
+    fn tolerance(&self, watch: Watch) -> f64 {
+        match watch {
+            Watch::Gap => self.options.gap_tolerance,
+            Watch::Multiplier => self.options.multiplier_tolerance,
+        }
+    }
+
+    /// The earliest event in the step `self.state → s1`: `Ok(s1)` if none, else `Err` with the
+    /// state at the event (on the RK4 map, within tolerance) and what crossed.
+    #[allow(clippy::type_complexity)]
+    fn first_event(
+        &self,
+        dense: &Hermite5<N>,
+        s1: Sample<N, M>,
+    ) -> Result<Result<Sample<N, M>, (Sample<N, M>, usize, Watch)>, DynamicsError> {
+        let (sys, s0, active) = (&self.system, &self.state, self.active);
+        let watch_of = |i| if contains(active, i) { Watch::Multiplier } else { Watch::Gap };
+        let on_dense = |t: f64, i: usize, w: Watch| -> Result<f64, DynamicsError> {
+            let (q, v) = dense.at(t);
+            match w {
+                Watch::Gap => Ok(sys.gaps(t, &q)[i]),
+                Watch::Multiplier => Ok(sample(sys, t, q, v, active)?.lambda[i]),
+            }
+        };
+        let mut end = s1;
+        // A located event is checked against the others at its own state; if one of them has
+        // already crossed there, the search repeats on the shorter step (at most M times).
+        for _ in 0..=M {
+            let mut earliest: Option<(f64, usize, Watch, Start)> = None;
+            for i in 0..M {
+                let w = watch_of(i);
+                let tol = self.tolerance(w);
+                let (g0, g1) = (s0.watched(i, w), end.watched(i, w));
+                let dip = w == Watch::Gap && s0.hd[i] < 0.0 && end.hd[i] > 0.0;
+                if g1 >= -tol && !dip {
+                    continue;
+                }
+                let start = match self.locator {
+                    EventLocator::DenseOutput => events::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (end.t, g1), tol)?,
+                    EventLocator::StepHalving if g1 < -tol && g0 > 0.0 => {
+                        Some(Start::Within(Bracket { lo: s0.t, g_lo: g0, hi: end.t, g_hi: g1 }))
+                    }
+                    EventLocator::StepHalving if g1 < -tol => Some(Start::Immediate),
+                    EventLocator::StepHalving => None,
+                };
+                let estimate = match start {
+                    None => continue,
+                    Some(Start::Immediate) => s0.t,
+                    Some(Start::Within(br)) => match self.locator {
+                        EventLocator::DenseOutput => pick(events::illinois(|t| on_dense(t, i, w), br, 0.25 * tol, None)?, w),
+                        EventLocator::StepHalving => br.lo, // located on the RK4 map below
+                    },
+                };
+                if earliest.map_or(true, |(t, ..)| estimate < t) {
+                    earliest = Some((estimate, i, w, start.expect("matched above")));
+                }
+            }
+            let Some((estimate, i, w, start)) = earliest else { return Ok(Ok(end)) };
+            let br = match start {
+                Start::Immediate => return Ok(Err((s0.clone(), i, w))),
+                Start::Within(br) => br,
+            };
+            let s = self.locate_on_rk4(br, estimate, i, w)?;
+            let crossed_before = (0..M).any(|j| j != i && s.watched(j, watch_of(j)) < -self.tolerance(watch_of(j)));
+            if !crossed_before {
+                return Ok(Err((s, i, w)));
+            }
+            end = s;
+        }
+        // Only reachable with round-off ties between constraints: take the last located state.
+        let j = (0..M).find(|&j| end.watched(j, watch_of(j)) < 0.0).unwrap_or(0);
+        Ok(Err((end, j, watch_of(j))))
+    }
+
+    /// The state where `g_i` crosses zero, on the RK4 map from the step start: Illinois started
+    /// at the dense-output estimate (usually accepted at once), or bisection (step halving).
+    fn locate_on_rk4(&self, br: Bracket, estimate: f64, i: usize, w: Watch) -> Result<Sample<N, M>, DynamicsError> {
+        let (sys, s0, active) = (&self.system, &self.state, self.active);
+        let tol = self.tolerance(w);
+        let mut last: Option<Sample<N, M>> = None;
+        let mut g = |t: f64| -> Result<f64, DynamicsError> {
+            let s = rk4_to(sys, s0, t, active)?;
+            let gt = s.watched(i, w);
+            last = Some(s);
+            Ok(gt)
+        };
+        let located = match self.locator {
+            EventLocator::DenseOutput => events::illinois(&mut g, br, tol, Some(estimate))?,
+            EventLocator::StepHalving => events::bisect(&mut g, br, tol)?,
+        };
+        let t = pick(located, w);
+        match last {
+            Some(s) if s.t == t => Ok(s),
+            _ => rk4_to(sys, s0, t, active),
+        }
+    }
+
+    /// Keeps active constraints on the manifold against RK4 drift: after each accepted step in
+    /// persistent contact, one M-metric Newton projection of `q` onto `h_A = 0` and of `q̇` onto
+    /// `ḣ_A = 0`. The corrections are O(dt⁵) per step, so the order of the method is kept.
+    fn stabilize(&mut self) -> Result<(), DynamicsError> {
+        let (s, active) = (&self.state, self.active);
+        let (_, frame) = frame_at(&self.system, s.t, &s.q, &s.v)?;
+        let dependent = DynamicsError::DependentContacts { time: s.t, constraints: active };
+        let (dq, _) = frame.projection(&s.gap, active).ok_or(dependent.clone())?;
+        let (dv, _) = frame.projection(&s.hd, active).ok_or(dependent)?;
+        self.state = sample(&self.system, s.t, s.q + dq, s.v + dv, active)?;
+        Ok(())
+    }
+
+    fn record(&mut self, kind: EventKind, constraint: usize, before: f64, after: f64, energy_lost: f64, q: SVector<f64, N>) {
+        self.events.push(Event { time: self.state.t, kind, constraint, velocity_before: before, velocity_after: after, energy_lost, q });
+    }
+
+    /// Resolves the closed constraints at the current instant (Fig. 1 at a discontinuity point):
+    /// 1. if any approaches (`ḣ < −ε_ḣ`), the generalized Newton impact over all of `closed`;
+    /// 2. persistent contact for those now at rest (`|ḣ| < ε_ḣ`, or caught by the Zeno guard)
+    ///    whose multiplier is non-negative, by the sliding complementarity problem; one still
+    ///    approaching (−ε_ḣ ≤ ḣ < 0) that sliding refuses gets the impact of 1. after all;
+    /// 3. projection of `q` and `q̇` onto the new active set, which becomes the held set.
+    ///
+    /// Constraints in `release` (a multiplier just crossed zero) may not stay in contact.
+    fn settle(&mut self, closed: Set, release: Set) -> Result<(), DynamicsError> {
+        let Sample { t, q, mut v, .. } = self.state;
+        let was_active = self.active;
+        let opts = self.options.clone();
+        let (mut ev, mut frame) = frame_at(&self.system, t, &q, &v)?;
+        let mut hd = ev.gap_jacobian * v + ev.gap_time_rate;
+
+        let mut approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
+        let mut impacted: Set = 0;
+        let eligible = closed & !release;
+        let zeno_apex = ZENO_APEX_FACTOR * opts.gap_tolerance;
+        let support = loop {
+            if approaching != 0 {
+                let e = SVector::<f64, M>::from_fn(|i, _| self.system.restitution(i));
+                let impulse = impact::newton_impulses(&frame, &hd, &e, closed)
+                    .ok_or(DynamicsError::MultipleImpact { time: t, constraints: closed })?;
+                let v_plus = v + frame.minv_jt * impulse;
+                let lost = impact::energy_lost(&ev.gap_jacobian, &impulse, &v, &v_plus);
+                let hd_plus = hd + frame.w * impulse;
+                for i in members::<M>(closed).filter(|&i| impulse[i] > 0.0 || contains(approaching, i)) {
+                    self.record(EventKind::Impact, i, hd[i], hd_plus[i], lost[i], q);
+                }
+                (v, hd) = (v_plus, hd_plus);
+                (ev, frame) = frame_at(&self.system, t, &q, &v)?;
+                impacted |= approaching;
+            }
+
+            let mut candidates = eligible & select::<M>(|i| hd[i] < opts.velocity_tolerance);
+            let support = loop {
+                let (lambda, support) =
+                    frame.sliding(&ev, candidates).ok_or(DynamicsError::ContactUnresolved { time: t, constraints: candidates })?;
+                let hdd = Frame::gap_acceleration(&ev, &(frame.free_acc + frame.minv_jt * lambda));
+                let zeno = eligible & !candidates & select::<M>(|i| hd[i] > 0.0 && hdd[i] < 0.0 && hd[i] * hd[i] < -2.0 * zeno_apex * hdd[i]);
+                if zeno == 0 {
+                    break support;
+                }
+                candidates |= zeno;
+            };
+            // An approach slower than ε_ḣ that sliding refuses (its force would pull) still needs
+            // the impact law, or the gap closes at the next instant with nothing to resolve it.
+            let grazing = closed & !support & !impacted & select::<M>(|i| hd[i] < 0.0);
+            if grazing == 0 {
+                break support;
+            }
+            approaching = grazing;
+        };
+
+        let (mut q_new, mut v_new) = (q, v);
+        if support != 0 {
+            let dependent = DynamicsError::DependentContacts { time: t, constraints: support };
+            let (dq, _) = frame.projection(&ev.gap, support).ok_or(dependent.clone())?;
+            let (dv, impulse) = frame.projection(&hd, support).ok_or(dependent)?;
+            v_new = v + dv;
+            let lost = impact::energy_lost(&ev.gap_jacobian, &impulse, &v, &v_new);
+            let hd_after = hd + frame.w * impulse;
+            for i in members::<M>(support & !was_active) {
+                self.record(EventKind::Slide, i, hd[i], hd_after[i], lost[i], q);
+            }
+            q_new += dq;
+        }
+        for i in members::<M>(was_active & !support) {
+            self.record(EventKind::Release, i, hd[i], hd[i], 0.0, q);
+        }
+        self.active = support;
+        self.state = sample(&self.system, t, q_new, v_new, support)?;
+        Ok(())
+    }
+}
+
+/// The time of a located crossing; a collapsed bracket resolves to its admissible end: before
+/// the gap crossing (h ≥ 0), after the multiplier crossing (λ ≤ 0, so the release is real).
+fn pick(located: Located, w: Watch) -> f64 {
+    match (located, w) {
+        (Located::Root(t), _) => t,
+        (Located::Collapsed(br), Watch::Gap) => br.lo,
+        (Located::Collapsed(br), Watch::Multiplier) => br.hi,
     }
 }

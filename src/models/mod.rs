@@ -8,10 +8,14 @@ pub mod crank_kinematics;
 pub mod crank_linkage;
 pub mod crank_train;
 pub mod pressure;
+mod roller;
+mod roller_forcing;
 
 pub use crank_efficiency::{EfficiencyCalibration, EfficiencyTarget};
 pub use crank_train::CrankTrain;
 pub use parameters::{Inputs, ModelError, Outputs, Parameters};
+pub use roller::{Roller, RollerSystem};
+pub use roller_forcing::{Forcing, Jet, SliderCrank, SlidingRegion};
 
 use serde::{Deserialize, Serialize};
 

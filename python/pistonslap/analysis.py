@@ -1,0 +1,350 @@
+"""Farahanchi's roller slider crank (model_variant 2) analysed as in the thesis, chapters 2-4.
+
+    python -m pistonslap.analysis case --lam 0.05 --rho 0.015 [--e 0.9] [--forcing 1] [--cycles 1500] --out DIR
+    python -m pistonslap.analysis forces --out DIR      constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)
+    python -m pistonslap.analysis thesis --out DIR      chapter 4: the 20 runs, a summary table and figure sheets
+
+The FMU runs in the thesis's units: rod_length = 1 m, piston_mass = 1 kg and crank_speed = 1 rad/s make its
+parameters the thesis's xi, alpha, beta, lambda (damping_crank_pin) and rho ((bore - piston_diameter)/2), and
+time the crank angle. Every impact comes from the impact log; its normal speed v (m/s) is the thesis's relative
+rate |psi' - psi_wall'| times l*Lambda*Omega, from which psi' at impact is recovered.
+"""
+
+import argparse
+import csv
+import subprocess
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+from .fmu import simulate_with_events
+
+#: xi = r/l, alpha = m/M, beta = J_r/(M l^2) of the thesis's Ford engine (section 4.1).
+XI, ALPHA, BETA = 0.3030, 1.9, 0.4719
+CRANK_CYCLE = 2 * np.pi
+#: Piston diameter of the thesis runs; the bore adds the clearance 2*rho (only their difference matters).
+_DIAMETER = 0.08
+
+#: The thesis's classification of its chapter-4 runs (section 4.3, 4.4): (lambda, rho, e) -> response;
+#: None where the thesis shows the impact profile but does not name the response type.
+THESIS_RESPONSES = {
+    (0.025, 0.010, 0.9): "transient chaos", (0.025, 0.015, 0.9): "transient chaos", (0.025, 0.020, 0.9): "chaos",
+    (0.050, 0.010, 0.9): "chaos", (0.050, 0.015, 0.9): "periodic", (0.050, 0.020, 0.9): "chaos",
+    (0.075, 0.010, 0.9): "transient chaos", (0.075, 0.015, 0.9): "chaos", (0.075, 0.020, 0.9): "chaos",
+    (0.15, 0.010, 0.9): None, (0.15, 0.015, 0.9): None, (0.15, 0.020, 0.9): None,
+    (0.20, 0.010, 0.9): None, (0.20, 0.015, 0.9): "chaos", (0.20, 0.020, 0.9): None,
+    (0.25, 0.010, 0.9): "periodic", (0.25, 0.015, 0.9): "periodic", (0.25, 0.020, 0.9): "periodic",
+    (0.050, 0.020, 0.7): "transient chaos", (0.050, 0.020, 0.5): "periodic",
+}
+
+_REPO = Path(__file__).resolve().parents[2]
+
+
+def thesis_start_values(lam, rho, e, forcing=1):
+    """FMU start values that make the run the thesis's (lambda, rho, e) with roller_forcing = `forcing`."""
+    return {
+        "model_variant": 2, "roller_forcing": forcing, "crank_mode": 1,
+        "crank_radius": XI, "rod_length": 1.0, "rod_mass": ALPHA, "piston_mass": 1.0, "rod_inertia": BETA,
+        "damping_crank_pin": lam, "piston_diameter": _DIAMETER, "bore": _DIAMETER + 2 * rho,
+        "restitution": e, "crank_angle_start": 0.0, "crank_speed": 1.0,
+    }
+
+
+@dataclass
+class Run:
+    """One simulated case, in thesis units: every impact and sliding start of `cycles` crank cycles."""
+    lam: float
+    rho: float
+    e: float
+    forcing: int
+    cycles: int
+    #: per impact: crank cycle index, crank angle mod 2*pi, wall (+1 upper, -1 lower), psi' before the
+    #: impact, relative approach rate |psi' - psi_wall'|, location x = axial position / l in [1 - xi, 1 + xi]
+    cycle: np.ndarray = field(repr=False)
+    theta: np.ndarray = field(repr=False)
+    wall: np.ndarray = field(repr=False)
+    rate: np.ndarray = field(repr=False)
+    approach: np.ndarray = field(repr=False)
+    location: np.ndarray = field(repr=False)
+    #: crank cycle index of every sliding start
+    slide_cycle: np.ndarray = field(repr=False)
+
+    def window(self, first_cycle):
+        """Mask of the impacts from crank cycle `first_cycle` on (the statistics after the transient)."""
+        return self.cycle >= first_cycle
+
+
+def impacts_from_log(events, rho):
+    """Thesis quantities of the impact-log rows of a run in thesis units (l = 1, Omega = 1, start at 0)."""
+    impacts = events[events["kind"] == "impact"]
+    theta = impacts["time"]  # crank angle, accumulated
+    big = np.sqrt(1 - XI**2 * np.sin(theta) ** 2)
+    wall = np.where(impacts["corner"] == 3, 1, -1)
+    approach = impacts["normal_velocity_before"] / big
+    # psi_max' = rho xi^2 sin cos / Lambda^3; psi_min' = -psi_max'; approach is toward the wall
+    wall_rate = rho * XI**2 * np.sin(theta) * np.cos(theta) / big**3
+    rate = wall * (wall_rate + approach)
+    slides = events[events["kind"] == "slide"]
+    return dict(
+        cycle=np.floor(theta / CRANK_CYCLE).astype(int), theta=np.mod(theta, CRANK_CYCLE), wall=wall,
+        rate=rate, approach=approach, location=impacts["position"], slide_cycle=np.floor(slides["time"] / CRANK_CYCLE).astype(int),
+    )
+
+
+def _progress_printer(label, stop_time):
+    """fmpy step_finished callback printing the percentage done, every 10 %."""
+    state = {"next": 0.1}
+
+    def step_finished(time, recorder):
+        if time >= state["next"] * stop_time:
+            print(f"\r{label}: {100 * time / stop_time:3.0f} %", end="" if time < stop_time else "\n", file=sys.stderr, flush=True)
+            state["next"] += 0.1
+        return True
+
+    return step_finished
+
+
+def simulate_case(lam, rho, e, forcing=1, cycles=1530, progress=True, log_path=None):
+    """Runs the FMU for `cycles` crank cycles from psi = psi' = 0 at theta = 0 and returns the `Run`."""
+    stop_time = cycles * CRANK_CYCLE
+    label = f"lambda={lam} rho={rho} e={e}"
+    _, events = simulate_with_events(
+        log_path=log_path, start_values=thesis_start_values(lam, rho, e, forcing), stop_time=stop_time,
+        output_interval=CRANK_CYCLE, output=["impact_count"],
+        step_finished=_progress_printer(label, stop_time) if progress else None,
+    )
+    return Run(lam=lam, rho=rho, e=e, forcing=forcing, cycles=cycles, **impacts_from_log(events, rho))
+
+
+@dataclass
+class Response:
+    """The steady response by recurrence of the impacts: `kind` is 'periodic', 'transient chaos' or 'chaos';
+    `period` in crank cycles and `settled` (first crank cycle of the recurring pattern) when it recurs."""
+    kind: str
+    period: int = 0
+    settled: int = 0
+
+    def __str__(self):
+        if self.kind == "chaos":
+            return "chaos"
+        return f"{self.kind} (period {self.period}, settled at cycle {self.settled})"
+
+
+def _cycle_patterns(run):
+    """Per crank cycle: the impacts as an array of (wall, theta, psi') rows, in order."""
+    order = np.argsort(run.cycle, kind="stable")
+    rows = np.column_stack([run.wall, run.theta, run.rate])[order]
+    bounds = np.searchsorted(run.cycle[order], np.arange(run.cycles + 1))
+    return [rows[bounds[k]:bounds[k + 1]] for k in range(run.cycles)]
+
+
+def classify(run, transient=30, max_period=16, tolerance=1e-3, min_repeats=10):
+    """Classifies the response by the recurrence of each crank cycle's impacts (the points of the Poincare
+    section and their lower-wall counterparts): cycle k recurs with period p when cycle k + p has the same
+    walls in the same order, at crank angles (rad) and rates (in units of rho) within `tolerance`. The smallest p whose recurrence
+    holds from some cycle to the end, for at least `min_repeats` periods, gives a periodic response;
+    'transient chaos' when it settled only after the `transient` cycles the thesis allows for decay."""
+    patterns = _cycle_patterns(run)
+    n = len(patterns)
+
+    # crank angle in rad, rates relative to the clearance rho (psi' is of order rho)
+    scale = np.array([1.0, run.rho])
+
+    def same(a, b):
+        return a.shape == b.shape and (
+            a.size == 0 or (np.array_equal(a[:, 0], b[:, 0]) and (np.abs(a[:, 1:] - b[:, 1:]) / scale).max() < tolerance))
+
+    best = None
+    for p in range(1, max_period + 1):
+        k = n - p - 1
+        while k >= 0 and same(patterns[k], patterns[k + p]):
+            k -= 1
+        settled = k + 1
+        if n - settled >= p * (min_repeats + 1) and (best is None or settled < best[1]):
+            best = (p, settled)
+    if best is None:
+        return Response("chaos")
+    period, settled = best
+    return Response("periodic" if settled <= transient else "transient chaos", period, settled)
+
+
+def impact_profile(run, first_cycle, bins=40):
+    """Eq 3.6: over j bins of x in [1 - xi, 1 + xi], the sum of |psi'| of the impacts in each bin over the
+    total number N of impacts (both walls); returns (bin edges, upper profile >= 0, lower profile <= 0)."""
+    edges = np.linspace(1 - XI, 1 + XI, bins + 1)
+    mask = run.window(first_cycle)
+    total = max(int(mask.sum()), 1)
+    profiles = []
+    for wall in (1, -1):
+        mine = mask & (run.wall == wall)
+        sums, _ = np.histogram(run.location[mine], bins=edges, weights=np.abs(run.rate[mine]))
+        profiles.append(wall * sums / total)
+    return edges, profiles[0], profiles[1]
+
+
+def impact_spectra(run, first_cycle, bins=72):
+    """Eq 3.7: over j bins of the crank angle in [0, 2*pi), the sum of |psi'| of each wall's impacts per bin
+    over the total number N of impacts; returns (bin edges, upper spectrum, lower spectrum), both >= 0."""
+    edges = np.linspace(0, CRANK_CYCLE, bins + 1)
+    mask = run.window(first_cycle)
+    total = max(int(mask.sum()), 1)
+    spectra = []
+    for wall in (1, -1):
+        mine = mask & (run.wall == wall)
+        sums, _ = np.histogram(run.theta[mine], bins=edges, weights=np.abs(run.rate[mine]))
+        spectra.append(sums / total)
+    return edges, spectra[0], spectra[1]
+
+
+def poincare_points(run, first_cycle):
+    """Eq 3.4: (theta, psi') of the upper-wall impacts with psi' > 0."""
+    mine = run.window(first_cycle) & (run.wall == 1) & (run.rate > 0)
+    return run.theta[mine], run.rate[mine]
+
+
+def summary(run, response, first_cycle):
+    """One row of the summary table."""
+    mask = run.window(first_cycle)
+    cycles = run.cycles - first_cycle
+    row = {"lambda": run.lam, "rho": run.rho, "e": run.e, "forcing": run.forcing, "response": str(response)}
+    for name, wall in (("upper", 1), ("lower", -1)):
+        mine = mask & (run.wall == wall)
+        row[f"impacts_per_cycle_{name}"] = mine.sum() / cycles
+        row[f"mean_impact_rate_{name}"] = float(np.abs(run.rate[mine]).mean()) if mine.any() else 0.0
+    row["slides_per_cycle"] = (run.slide_cycle >= first_cycle).sum() / cycles
+    thesis = THESIS_RESPONSES.get((run.lam, run.rho, run.e))
+    row["thesis"] = thesis or "not stated"
+    row["agrees"] = "" if thesis is None else ("yes" if response.kind == thesis else "no")
+    return row
+
+
+def write_csv(path, header, rows):
+    with open(path, "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(header)
+        writer.writerows(rows)
+    return path
+
+
+def _case_name(run):
+    return f"lam{run.lam:g}_rho{run.rho:g}_e{run.e:g}_f{run.forcing}"
+
+
+def write_case(run, out, transient=30):
+    """Classifies `run` and writes its impacts, profile, spectra and Poincare section as CSV and PNG."""
+    from . import roller_plots
+
+    out.mkdir(parents=True, exist_ok=True)
+    name = _case_name(run)
+    response = classify(run, transient)
+    write_csv(out / f"{name}_impacts.csv", ["cycle", "theta", "wall", "psi_rate", "approach_rate", "x"],
+              zip(run.cycle, run.theta, run.wall, run.rate, run.approach, run.location))
+    edges, upper, lower = impact_profile(run, transient)
+    write_csv(out / f"{name}_profile.csv", ["x_from", "x_to", "upper", "lower"], zip(edges[:-1], edges[1:], upper, lower))
+    sedges, supper, slower = impact_spectra(run, transient)
+    write_csv(out / f"{name}_spectra.csv", ["theta_from", "theta_to", "upper", "lower"], zip(sedges[:-1], sedges[1:], supper, slower))
+    title = f"λ={run.lam:g} ρ={run.rho:g} e={run.e:g}: {response}"
+    roller_plots.case_sheet(poincare_points(run, transient), (edges, upper, lower), (sedges, supper, slower), title, out / f"{name}.png")
+    return response, summary(run, response, transient)
+
+
+def constraint_force_csv(lam, rho, forcing, samples=720):
+    """f_u, f_l of eq 2.29 over one crank cycle, from the crate's `roller_forces` example (cargo)."""
+    return _cargo_example(["cycle", str(lam), str(rho), str(forcing), str(samples)])
+
+
+def sliding_regions_csv(forcing, rho_max=0.03, lambda_max=0.4, n=120):
+    """The regions of Fig 2.10 over (rho, lambda), from the crate's `roller_forces` example (cargo)."""
+    return _cargo_example(["regions", str(forcing), str(rho_max), str(lambda_max), str(n)])
+
+
+def _cargo_example(args):
+    text = subprocess.run(["cargo", "run", "--quiet", "--release", "--example", "roller_forces", "--", *args],
+                          cwd=_REPO, check=True, capture_output=True, text=True).stdout
+    rows = list(csv.reader(text.splitlines()))
+    return rows[0], rows[1:]
+
+
+#: Figures 2.4-2.9: (rho, lambda) of each constraint-force plot.
+FORCE_FIGURES = {"2.4": (0.01, 0.01), "2.5": (0.01, 0.1), "2.6": (0.01, 0.25), "2.7": (0.02, 0.267), "2.9": (0.01, 0.35)}
+
+
+def write_forces(out):
+    """Constraint forces of Figs 2.4-2.9 and the region map of Fig 2.10, both forms of f, as CSV and PNG."""
+    from . import roller_plots
+
+    out.mkdir(parents=True, exist_ok=True)
+    curves = {}
+    for fig, (rho, lam) in FORCE_FIGURES.items():
+        for forcing in (1, 2):
+            header, rows = constraint_force_csv(lam, rho, forcing)
+            write_csv(out / f"forces_fig{fig}_f{forcing}.csv", header, rows)
+            curves[fig, forcing] = np.array(rows, dtype=float)
+    regions = {}
+    for forcing in (1, 2):
+        header, rows = sliding_regions_csv(forcing)
+        write_csv(out / f"sliding_regions_f{forcing}.csv", header, rows)
+        regions[forcing] = rows
+    return roller_plots.forces_sheet(FORCE_FIGURES, curves, regions, out / "constraint_forces.png")
+
+
+#: Chapter 4's runs: both 3x3 (lambda, rho) grids at e = 0.9, then e = 0.7, 0.5 at (0.05, 0.02).
+THESIS_RUNS = [(lam, rho, 0.9) for lam in (0.025, 0.05, 0.075, 0.15, 0.20, 0.25) for rho in (0.010, 0.015, 0.020)] + [
+    (0.05, 0.02, 0.7), (0.05, 0.02, 0.5)]
+
+
+def write_thesis(out, transient=30, cycles=1500, forcing=1):
+    """Chapter 4: every run of THESIS_RUNS with `transient` + `cycles` crank cycles; a summary table (CSV and
+    markdown) and figure sheets of the impact profiles and Poincare sections."""
+    from . import roller_plots
+
+    out.mkdir(parents=True, exist_ok=True)
+    runs, rows = [], []
+    for lam, rho, e in THESIS_RUNS:
+        run = simulate_case(lam, rho, e, forcing, transient + cycles)
+        response, row = write_case(run, out / "cases", transient)
+        print(f"lambda={lam} rho={rho} e={e}: {response} (thesis: {row['thesis']})")
+        runs.append((run, response))
+        rows.append(row)
+    header = list(rows[0])
+    write_csv(out / "summary.csv", header, [[row[k] for k in header] for row in rows])
+    with open(out / "summary.md", "w") as f:
+        f.write("| " + " | ".join(header) + " |\n|" + "---|" * len(header) + "\n")
+        for row in rows:
+            f.write("| " + " | ".join(f"{row[k]:.4g}" if isinstance(row[k], float) else str(row[k]) for k in header) + " |\n")
+    sheet = roller_plots.thesis_sheet([(run, response, impact_profile(run, transient), poincare_points(run, transient))
+                                       for run, response in runs], out / "thesis_sheet.png")
+    return out / "summary.md", sheet
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    sub = parser.add_subparsers(dest="command", required=True)
+    case = sub.add_parser("case", help="one run: impacts, Poincare section, impact profile and spectra")
+    case.add_argument("--lam", type=float, required=True, help="damping parameter lambda")
+    case.add_argument("--rho", type=float, required=True, help="clearance rho")
+    case.add_argument("--e", type=float, default=0.9, help="coefficient of restitution")
+    for p in (case, sub.add_parser("thesis", help="chapter 4: 20 runs, summary table, figure sheets")):
+        p.add_argument("--forcing", type=int, default=1, choices=(1, 2), help="roller_forcing (1 = as printed)")
+        p.add_argument("--transient", type=int, default=30, help="crank cycles before the statistics")
+        p.add_argument("--cycles", type=int, default=1500, help="crank cycles of statistics")
+    sub.add_parser("forces", help="constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)")
+    for p in sub.choices.values():
+        p.add_argument("--out", type=Path, default=Path("out/thesis"), help="output folder")
+    args = parser.parse_args(argv)
+
+    if args.command == "case":
+        run = simulate_case(args.lam, args.rho, args.e, args.forcing, args.transient + args.cycles)
+        response, row = write_case(run, args.out, args.transient)
+        print(f"{response}; {row}")
+    elif args.command == "forces":
+        print(f"wrote {write_forces(args.out)}")
+    else:
+        for path in write_thesis(args.out, args.transient, args.cycles, args.forcing):
+            print(f"wrote {path}")
+
+
+if __name__ == "__main__":
+    main()

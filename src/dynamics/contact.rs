@@ -1,0 +1,164 @@
+//! Contact mechanics in the metric of the inertia matrix: the Delassus matrix `W = J M⁻¹ Jᵀ`,
+//! the multipliers of persistent contact (A&K eqs 15–20 for several constraints) and the small
+//! linear complementarity problems that both the impact law and the sliding law reduce to.
+
+use super::Evaluation;
+use nalgebra::{Cholesky, SMatrix, SVector};
+
+/// A set of constraints as a bitmask: bit `i` is constraint `i` (serde-friendly, no heap).
+pub(crate) type Set = u32;
+
+pub(crate) fn bit(i: usize) -> Set {
+    1 << i
+}
+
+pub(crate) fn contains(set: Set, i: usize) -> bool {
+    set & bit(i) != 0
+}
+
+/// Indices in `set`, ascending.
+pub(crate) fn members<const M: usize>(set: Set) -> impl Iterator<Item = usize> {
+    (0..M).filter(move |&i| contains(set, i))
+}
+
+/// The set of indices `i < M` for which `pred(i)` holds.
+pub(crate) fn select<const M: usize>(pred: impl Fn(usize) -> bool) -> Set {
+    (0..M).filter(|&i| pred(i)).fold(0, |s, i| s | bit(i))
+}
+
+/// A pivot of the Cholesky factor this small relative to its diagonal entry means the constraints
+/// of the set are linearly dependent (e.g. more closed constraints than degrees of freedom).
+const DEPENDENT_PIVOT: f64 = 1e-10;
+
+/// Relative tolerance of the complementarity checks (against round-off, not physics).
+const COMPLEMENTARITY_TOL: f64 = 1e-9;
+
+/// The constraint geometry at one state.
+pub(crate) struct Frame<const N: usize, const M: usize> {
+    /// `M⁻¹ Jᵀ`: column `i` is the velocity change per unit impulse on constraint `i`.
+    pub minv_jt: SMatrix<f64, N, M>,
+    /// `W = J M⁻¹ Jᵀ`: the change of `ḣ` per unit impulse (symmetric, positive semi-definite).
+    pub w: SMatrix<f64, M, M>,
+    /// `M⁻¹ f`: the acceleration without contact forces.
+    pub free_acc: SVector<f64, N>,
+}
+
+impl<const N: usize, const M: usize> Frame<N, M> {
+    /// `None` when the inertia matrix is not positive definite.
+    pub fn new(ev: &Evaluation<N, M>) -> Option<Self> {
+        let chol = Cholesky::new(ev.mass)?;
+        let minv_jt = chol.solve(&ev.gap_jacobian.transpose());
+        Some(Self { w: ev.gap_jacobian * minv_jt, minv_jt, free_acc: chol.solve(&ev.force) })
+    }
+
+    /// `ḧ = J q̈ + d` for the acceleration `acc`.
+    pub fn gap_acceleration(ev: &Evaluation<N, M>, acc: &SVector<f64, N>) -> SVector<f64, M> {
+        ev.gap_jacobian * acc + ev.gap_bias
+    }
+
+    /// `ḧ` with no contact force: the constant term of the sliding complementarity problem.
+    pub fn free_gap_acceleration(&self, ev: &Evaluation<N, M>) -> SVector<f64, M> {
+        Self::gap_acceleration(ev, &self.free_acc)
+    }
+
+    /// Acceleration and multipliers with the set `active` held closed (eqs 15–20):
+    /// `ḧ_A = 0` gives `W_AA λ_A = −(J_A M⁻¹ f + d_A)`, then `q̈ = M⁻¹ (f + Jᵀ λ)`.
+    /// `None` when the active constraints are dependent.
+    pub fn constrained(&self, ev: &Evaluation<N, M>, active: Set) -> Option<(SVector<f64, N>, SVector<f64, M>)> {
+        if active == 0 {
+            return Some((self.free_acc, SVector::zeros()));
+        }
+        let lambda = solve_on(&self.w, &-self.free_gap_acceleration(ev), active)?;
+        Some((self.free_acc + self.minv_jt * lambda, lambda))
+    }
+
+    /// The M-metric projection that zeroes `r` on `set`: `δ = −M⁻¹ J_Sᵀ W_SS⁻¹ r_S` (applied to
+    /// `q` with `r = h` it is a Newton step onto the constraint manifold, to `q̇` with `r = ḣ`
+    /// an inelastic impulse). Also returns the impulse `W_SS⁻¹ r_S` (with its sign flipped).
+    pub fn projection(&self, r: &SVector<f64, M>, set: Set) -> Option<(SVector<f64, N>, SVector<f64, M>)> {
+        let impulse = -solve_on(&self.w, r, set)?;
+        Some((self.minv_jt * impulse, impulse))
+    }
+
+    /// The sliding law over `candidates`: `λ ≥ 0`, `ḧ = W λ + ḧ_free ≥ 0`, `λᵢ ḧᵢ = 0`.
+    pub fn sliding(&self, ev: &Evaluation<N, M>, candidates: Set) -> Option<(SVector<f64, M>, Set)> {
+        solve_lcp(&self.w, &self.free_gap_acceleration(ev), candidates)
+    }
+}
+
+/// Solves `W_SS x_S = r_S` with `x = 0` outside `S`, without heap: the rows and columns outside
+/// `S` are replaced by the identity. `None` when `W_SS` is singular.
+pub(crate) fn solve_on<const M: usize>(w: &SMatrix<f64, M, M>, r: &SVector<f64, M>, set: Set) -> Option<SVector<f64, M>> {
+    let mut a = SMatrix::<f64, M, M>::identity();
+    let mut rhs = SVector::<f64, M>::zeros();
+    for i in members::<M>(set) {
+        rhs[i] = r[i];
+        for j in members::<M>(set) {
+            a[(i, j)] = w[(i, j)];
+        }
+    }
+    let chol = Cholesky::new(a)?;
+    let l = chol.l_dirty();
+    if members::<M>(set).any(|i| l[(i, i)] * l[(i, i)] <= DEPENDENT_PIVOT * w[(i, i)]) {
+        return None;
+    }
+    Some(chol.solve(&rhs))
+}
+
+/// The linear complementarity problem `x ≥ 0`, `y = W x + b ≥ 0`, `xᵢ yᵢ = 0` over `set`
+/// (`x = 0` outside it), by enumerating the supports `S ⊆ set` from the smallest. For `W`
+/// positive definite on `set` the solution is unique; supports with dependent constraints are
+/// skipped. `M ≤ 4` in our models, so this is at most 16 tiny solves. Returns `x` and its support.
+pub(crate) fn solve_lcp<const M: usize>(w: &SMatrix<f64, M, M>, b: &SVector<f64, M>, set: Set) -> Option<(SVector<f64, M>, Set)> {
+    let scale = members::<M>(set).fold(0.0_f64, |s, i| s.max(b[i].abs()));
+    let w_max = members::<M>(set).fold(0.0_f64, |s, i| s.max(w[(i, i)]));
+    let tol_y = COMPLEMENTARITY_TOL * scale + f64::MIN_POSITIVE;
+    let tol_x = if w_max > 0.0 { tol_y / w_max } else { tol_y };
+    for size in 0..=set.count_ones() {
+        let mut support = set;
+        loop {
+            if support.count_ones() == size {
+                if let Some(x) = solve_on(w, &-b, support) {
+                    let y = w * x + b;
+                    let pushes = members::<M>(support).all(|i| x[i] >= -tol_x);
+                    let admissible = members::<M>(set & !support).all(|i| y[i] >= -tol_y);
+                    if pushes && admissible {
+                        return Some((x.map(|v| v.max(0.0)), support));
+                    }
+                }
+            }
+            if support == 0 {
+                break;
+            }
+            support = (support - 1) & set;
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use nalgebra::{Matrix2, Vector2};
+
+    /// Hand-solved 2×2 LCPs: both active, one active, none.
+    #[test]
+    fn lcp_small_cases() {
+        let w = Matrix2::new(2.0, 1.0, 1.0, 2.0);
+        // b = (−3, −3): x = (1, 1), y = 0.
+        let (x, s) = solve_lcp(&w, &Vector2::new(-3.0, -3.0), 0b11).unwrap();
+        assert_eq!(s, 0b11);
+        assert!((x - Vector2::new(1.0, 1.0)).norm() < 1e-14);
+        // b = (−2, 0.5): x = (1, 0), y2 = 1.5 ≥ 0; the equality solve would give x2 < 0.
+        let (x, s) = solve_lcp(&w, &Vector2::new(-2.0, 0.5), 0b11).unwrap();
+        assert_eq!(s, 0b01);
+        assert!((x - Vector2::new(1.0, 0.0)).norm() < 1e-14);
+        // b ≥ 0: nothing pushes.
+        assert_eq!(solve_lcp(&w, &Vector2::new(1.0, 0.0), 0b11).unwrap().1, 0);
+        // Dependent constraints: only the subsets with one of them are tried.
+        let rank1 = Matrix2::new(1.0, 1.0, 1.0, 1.0);
+        let (x, s) = solve_lcp(&rank1, &Vector2::new(-1.0, -1.0), 0b11).unwrap();
+        assert_eq!(s.count_ones(), 1);
+        assert!((x.sum() - 1.0).abs() < 1e-14);
+    }
+}

@@ -1,0 +1,182 @@
+//! Event detection and location: a watched function `g` (a gap `hᵢ` of a free constraint, or a
+//! multiplier `λᵢ` of a sliding one) crossing from positive to below `−tol` within a step.
+
+use serde::{Deserialize, Serialize};
+
+/// How the time of an event inside a step is found.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum EventLocator {
+    /// Illinois root finding on the quintic Hermite extension of the step (cheap: no RK4 steps),
+    /// then confirmed on the RK4 map itself, corrected there by Illinois if needed.
+    #[default]
+    DenseOutput,
+    /// The paper's scheme (A&K section 5): bisect the RK4 step until `|g| ≤ tol`.
+    StepHalving,
+}
+
+/// An interval with `g(lo) > 0` and `g(hi) < 0`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Bracket {
+    pub lo: f64,
+    pub g_lo: f64,
+    pub hi: f64,
+    pub g_hi: f64,
+}
+
+impl Bracket {
+    /// No float lies strictly between the ends.
+    fn collapsed(&self) -> bool {
+        let mid = self.lo + 0.5 * (self.hi - self.lo);
+        mid <= self.lo || mid >= self.hi
+    }
+
+    fn shrink(&mut self, t: f64, g: f64) {
+        if g > 0.0 {
+            (self.lo, self.g_lo) = (t, g);
+        } else {
+            (self.hi, self.g_hi) = (t, g);
+        }
+    }
+}
+
+/// Where a crossing starts.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Start {
+    /// `g` is already at zero at the step start and goes below `−tol`: the event is now.
+    Immediate,
+    Within(Bracket),
+}
+
+/// The result of a root search: a time with `|g| ≤ tol`, or a bracket that shrank to adjacent
+/// floats first (a very steep `g`); the caller picks the admissible end.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Located {
+    Root(f64),
+    Collapsed(Bracket),
+}
+
+/// Samples per step when scanning the dense output for the first crossing.
+const SCAN_SAMPLES: usize = 8;
+const MAX_ITERATIONS: usize = 200;
+
+/// The first sub-interval of `[t0, t1]` where `g` goes from positive to below `−tol`, scanning
+/// `SCAN_SAMPLES` points of the dense output: this finds the earliest of several roots and a
+/// crossing-and-return inside one step (a grazing dip) that the end values alone would miss.
+pub(crate) fn first_crossing<E>(
+    mut g: impl FnMut(f64) -> Result<f64, E>,
+    (t0, g0): (f64, f64),
+    (t1, g1): (f64, f64),
+    tol: f64,
+) -> Result<Option<Start>, E> {
+    let mut positive = (g0 > 0.0).then_some((t0, g0));
+    for k in 1..=SCAN_SAMPLES {
+        let (t, gt) = if k == SCAN_SAMPLES {
+            (t1, g1)
+        } else {
+            let t = t0 + (t1 - t0) * k as f64 / SCAN_SAMPLES as f64;
+            (t, g(t)?)
+        };
+        if gt < -tol {
+            return Ok(Some(match positive {
+                Some((lo, g_lo)) => Start::Within(Bracket { lo, g_lo, hi: t, g_hi: gt }),
+                None => Start::Immediate,
+            }));
+        }
+        if gt > 0.0 {
+            positive = Some((t, gt));
+        }
+    }
+    Ok(None)
+}
+
+/// Illinois (regula falsi with halving of a twice-retained end), optionally starting from a
+/// good `guess`. Superlinear, and never leaves the bracket.
+pub(crate) fn illinois<E>(
+    mut g: impl FnMut(f64) -> Result<f64, E>,
+    mut br: Bracket,
+    tol: f64,
+    mut guess: Option<f64>,
+) -> Result<Located, E> {
+    // +1: lo was kept last time, −1: hi was kept.
+    let mut kept = 0i8;
+    for _ in 0..MAX_ITERATIONS {
+        if br.collapsed() {
+            break;
+        }
+        let secant = (br.lo * br.g_hi - br.hi * br.g_lo) / (br.g_hi - br.g_lo);
+        let t = match guess.take() {
+            Some(t) if t > br.lo && t < br.hi => t,
+            _ if secant > br.lo && secant < br.hi => secant,
+            _ => br.lo + 0.5 * (br.hi - br.lo),
+        };
+        let gt = g(t)?;
+        if gt.abs() <= tol {
+            return Ok(Located::Root(t));
+        }
+        if gt > 0.0 {
+            if kept == -1 {
+                br.g_hi *= 0.5;
+            }
+            kept = -1;
+        } else {
+            if kept == 1 {
+                br.g_lo *= 0.5;
+            }
+            kept = 1;
+        }
+        br.shrink(t, gt);
+    }
+    Ok(Located::Collapsed(br))
+}
+
+/// Plain bisection: the paper's step halving when `g` is evaluated by RK4 steps from the start.
+pub(crate) fn bisect<E>(mut g: impl FnMut(f64) -> Result<f64, E>, mut br: Bracket, tol: f64) -> Result<Located, E> {
+    while !br.collapsed() {
+        let t = br.lo + 0.5 * (br.hi - br.lo);
+        let gt = g(t)?;
+        if gt.abs() <= tol {
+            return Ok(Located::Root(t));
+        }
+        br.shrink(t, gt);
+    }
+    Ok(Located::Collapsed(br))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::convert::Infallible;
+
+    fn run(f: impl Fn(f64) -> f64, locate: impl Fn(&dyn Fn(f64) -> Result<f64, Infallible>, Bracket) -> Located) -> (f64, usize) {
+        let calls = std::cell::Cell::new(0);
+        let g = |t: f64| {
+            calls.set(calls.get() + 1);
+            Ok(f(t))
+        };
+        let br = Bracket { lo: 0.0, g_lo: f(0.0), hi: 1.0, g_hi: f(1.0) };
+        match locate(&g, br) {
+            Located::Root(t) => (t, calls.get()),
+            Located::Collapsed(b) => (b.lo, calls.get()),
+        }
+    }
+
+    /// Both finders hit the root of a cubic to the tolerance; Illinois in far fewer calls.
+    #[test]
+    fn finders_locate_a_known_root() {
+        let f = |t: f64| (0.3 - t) * (1.0 + t * t);
+        let (ti, ni) = run(f, |g, br| illinois(g, br, 1e-13, None).unwrap());
+        let (tb, nb) = run(f, |g, br| bisect(g, br, 1e-13).unwrap());
+        assert!((ti - 0.3).abs() < 1e-12 && (tb - 0.3).abs() < 1e-12);
+        assert!(ni < 15 && nb > 30, "illinois {ni} calls, bisection {nb}");
+    }
+
+    #[test]
+    fn scan_finds_a_dip_inside_the_step() {
+        let f = |t: f64| (t - 0.5) * (t - 0.5) - 0.01; // negative on (0.4, 0.6)
+        let found = first_crossing(|t| Ok::<_, Infallible>(f(t)), (0.0, f(0.0)), (1.0, f(1.0)), 1e-12).unwrap();
+        match found {
+            Some(Start::Within(b)) => assert!(b.lo < 0.4 && b.hi > 0.4 && b.hi <= 0.6),
+            other => panic!("{other:?}"),
+        }
+    }
+}

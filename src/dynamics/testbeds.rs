@@ -1,0 +1,187 @@
+//! Small systems with closed-form behaviour, shared by the integration tests (`tests/core_*.rs`)
+//! and the benchmark (`benches/core.rs`). Public because a bench cannot see `cfg(test)` code;
+//! the engine models do not use them.
+
+use super::{Evaluation, System};
+use nalgebra::{Matrix1, Matrix2, Matrix3, RowVector2, SMatrix, Vector1, Vector2, Vector3};
+use serde::{Deserialize, Serialize};
+
+/// Prescribed motion `y_f(t)` of the surface a [`Ball`] hits (a rheonomic constraint).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+pub enum Floor {
+    Fixed,
+    /// `y_f = velocity · t`.
+    Moving { velocity: f64 },
+    /// `y_f = amplitude · sin(ω t)`.
+    Oscillating { amplitude: f64, angular_frequency: f64 },
+}
+
+impl Floor {
+    /// `(y_f, ẏ_f, ÿ_f)` at `t`.
+    pub fn motion(&self, t: f64) -> (f64, f64, f64) {
+        match *self {
+            Floor::Fixed => (0.0, 0.0, 0.0),
+            Floor::Moving { velocity } => (velocity * t, velocity, 0.0),
+            Floor::Oscillating { amplitude: a, angular_frequency: w } => {
+                let (s, c) = (w * t).sin_cos();
+                (a * s, a * w * c, -a * w * w * s)
+            }
+        }
+    }
+}
+
+/// A point mass on a line above a floor, under gravity: `q = y`, `h = y − y_f(t)`, `λ` = the
+/// floor's normal force. With `gravity = 0` it is a ball against a moving wall.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Ball {
+    pub mass: f64,
+    pub gravity: f64,
+    pub restitution: f64,
+    pub floor: Floor,
+}
+
+impl System<1, 1> for Ball {
+    fn evaluate(&self, t: f64, q: &Vector1<f64>, _qd: &Vector1<f64>) -> Evaluation<1, 1> {
+        let (yf, vf, af) = self.floor.motion(t);
+        Evaluation {
+            mass: Matrix1::new(self.mass),
+            force: Vector1::new(-self.mass * self.gravity),
+            gap: Vector1::new(q[0] - yf),
+            gap_jacobian: Matrix1::new(1.0),
+            gap_time_rate: Vector1::new(-vf),
+            gap_bias: Vector1::new(-af),
+        }
+    }
+    fn gaps(&self, t: f64, q: &Vector1<f64>) -> Vector1<f64> {
+        Vector1::new(q[0] - self.floor.motion(t).0)
+    }
+    fn restitution(&self, _: usize) -> f64 {
+        self.restitution
+    }
+}
+
+/// A uniform planar rod (mass `m`, length `L`) above the floor `y = 0` under gravity,
+/// `q = (x, y, θ)` of its centre; constraint `i` keeps end `i` above the floor:
+/// `h₀ = y − (L/2) sin θ`, `h₁ = y + (L/2) sin θ`. The ends couple translation and rotation.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Rod {
+    pub mass: f64,
+    pub length: f64,
+    pub gravity: f64,
+    pub restitution: f64,
+}
+
+impl Rod {
+    /// Central moment of inertia `m L² / 12`.
+    pub fn inertia(&self) -> f64 {
+        self.mass * self.length * self.length / 12.0
+    }
+}
+
+impl System<3, 2> for Rod {
+    fn evaluate(&self, t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> Evaluation<3, 2> {
+        let half = 0.5 * self.length;
+        let (s, c) = q[2].sin_cos();
+        let spin = half * s * qd[2] * qd[2];
+        Evaluation {
+            mass: Matrix3::from_diagonal(&Vector3::new(self.mass, self.mass, self.inertia())),
+            force: Vector3::new(0.0, -self.mass * self.gravity, 0.0),
+            gap: self.gaps(t, q),
+            gap_jacobian: SMatrix::<f64, 2, 3>::new(0.0, 1.0, -half * c, 0.0, 1.0, half * c),
+            gap_time_rate: Vector2::zeros(),
+            gap_bias: Vector2::new(spin, -spin),
+        }
+    }
+    fn gaps(&self, _t: f64, q: &Vector3<f64>) -> Vector2<f64> {
+        let rise = 0.5 * self.length * q[2].sin();
+        Vector2::new(q[1] - rise, q[1] + rise)
+    }
+    fn restitution(&self, _: usize) -> f64 {
+        self.restitution
+    }
+}
+
+/// A point mass in the plane inside a wedge of two walls through the origin,
+/// `hᵢ = nᵢ · q ≥ 0` with unit inward normals `nᵢ`, under a constant force field `g`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Wedge {
+    pub mass: f64,
+    pub gravity: Vector2<f64>,
+    pub normals: [Vector2<f64>; 2],
+    pub restitution: f64,
+}
+
+impl Wedge {
+    fn jacobian(&self) -> Matrix2<f64> {
+        Matrix2::from_rows(&[self.normals[0].transpose(), self.normals[1].transpose()])
+    }
+}
+
+impl System<2, 2> for Wedge {
+    fn evaluate(&self, t: f64, q: &Vector2<f64>, _qd: &Vector2<f64>) -> Evaluation<2, 2> {
+        Evaluation {
+            mass: Matrix2::identity() * self.mass,
+            force: self.gravity * self.mass,
+            gap: self.gaps(t, q),
+            gap_jacobian: self.jacobian(),
+            gap_time_rate: Vector2::zeros(),
+            gap_bias: Vector2::zeros(),
+        }
+    }
+    fn gaps(&self, _t: f64, q: &Vector2<f64>) -> Vector2<f64> {
+        self.jacobian() * q
+    }
+    fn restitution(&self, _: usize) -> f64 {
+        self.restitution
+    }
+}
+
+/// A double pendulum of point masses `m₁`, `m₂` on massless rods `l₁`, `l₂`, angles `θ₁`, `θ₂`
+/// from the downward vertical, whose tip may not pass the wall `x = −wall`:
+/// `h = l₁ sin θ₁ + l₂ sin θ₂ + wall ≥ 0`. Its inertia matrix couples the two angles.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct DoublePendulum {
+    pub masses: [f64; 2],
+    pub lengths: [f64; 2],
+    pub gravity: f64,
+    pub wall: f64,
+    pub restitution: f64,
+}
+
+impl DoublePendulum {
+    pub fn mass_matrix(&self, q: &Vector2<f64>) -> Matrix2<f64> {
+        let ([m1, m2], [l1, l2]) = (self.masses, self.lengths);
+        let coupling = m2 * l1 * l2 * (q[0] - q[1]).cos();
+        Matrix2::new((m1 + m2) * l1 * l1, coupling, coupling, m2 * l2 * l2)
+    }
+
+    /// Total mechanical energy `T + V`.
+    pub fn energy(&self, q: &Vector2<f64>, qd: &Vector2<f64>) -> f64 {
+        let ([m1, m2], [l1, l2]) = (self.masses, self.lengths);
+        let potential = -(m1 + m2) * self.gravity * l1 * q[0].cos() - m2 * self.gravity * l2 * q[1].cos();
+        0.5 * qd.dot(&(self.mass_matrix(q) * qd)) + potential
+    }
+}
+
+impl System<2, 1> for DoublePendulum {
+    fn evaluate(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 1> {
+        let ([m1, m2], [l1, l2], g) = (self.masses, self.lengths, self.gravity);
+        let (s1, c1) = q[0].sin_cos();
+        let (s2, c2) = q[1].sin_cos();
+        let cross = m2 * l1 * l2 * (q[0] - q[1]).sin();
+        Evaluation {
+            mass: self.mass_matrix(q),
+            force: Vector2::new(-cross * qd[1] * qd[1] - (m1 + m2) * g * l1 * s1, cross * qd[0] * qd[0] - m2 * g * l2 * s2),
+            gap: self.gaps(t, q),
+            gap_jacobian: RowVector2::new(l1 * c1, l2 * c2),
+            gap_time_rate: Vector1::zeros(),
+            gap_bias: Vector1::new(-l1 * s1 * qd[0] * qd[0] - l2 * s2 * qd[1] * qd[1]),
+        }
+    }
+    fn gaps(&self, _t: f64, q: &Vector2<f64>) -> Vector1<f64> {
+        Vector1::new(self.lengths[0] * q[0].sin() + self.lengths[1] * q[1].sin() + self.wall)
+    }
+    fn restitution(&self, _: usize) -> f64 {
+        self.restitution
+    }
+}

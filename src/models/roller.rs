@@ -1,0 +1,253 @@
+//! Variant 2: Farahanchi's slider crank with a roller piston in a clearance (thesis ch. 2), on the
+//! nonsmooth core.
+//!
+//! The core integrates the thesis's own dimensionless system (eqs 3.1–3.3): time is the crank angle
+//! θ, the coordinate ψ, the constraints h_lower = ψ − ψ_min(θ) ≥ 0 (corner 1) and
+//! h_upper = ψ_max(θ) − ψ ≥ 0 (corner 3). The core's restitution on ḣ is eq 2.17, restitution
+//! relative to the moving wall. Working in θ makes the thesis's step (0.005) and sliding threshold
+//! (|ψ' − ψ_max'| < 0.005 after an impact, Appendix B) hold at every crank speed; in SI that threshold
+//! is a normal speed of 0.005 l Λ Ω.
+//!
+//! The FMU's dimensional parameters map as DESIGN.md §4 says: ξ = r/l, α = m/M, β = J_r/(M l²),
+//! ρ = Δ/l with Δ = (bore − piston_diameter)/2, λ = c₂/(M l² Ω) with Ω the `crank_speed` input. As in
+//! the thesis there is no gravity, no gas force and no piston-pin damping, and the crank speed is
+//! prescribed (crank_mode = 1 only). Lateral positions are linearized like the model: y = l Λ ψ, so
+//! the walls are at y = ±Δ exactly.
+
+use super::roller_forcing::{Forcing, SliderCrank};
+use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
+use crate::dynamics::{Evaluation, Event, EventKind, Stepper, StepperOptions, System};
+use nalgebra::{SMatrix, SVector, Vector1, Vector2};
+use serde::{Deserialize, Serialize};
+use std::f64::consts::PI;
+
+/// Constraint index of the lower wall (ψ = ψ_min, corner 1).
+pub const LOWER: usize = 0;
+/// Constraint index of the upper wall (ψ = ψ_max, corner 3).
+pub const UPPER: usize = 1;
+
+/// The thesis's step (Appendix B), in radians of crank angle.
+pub const THESIS_STEP: f64 = 0.005;
+/// The thesis's sliding threshold on the post-impact relative rate |ψ' − ψ_wall'| (Appendix B).
+pub const THESIS_SLIDING_THRESHOLD: f64 = 0.005;
+
+/// Eqs 2.13–2.17 as a core `System`: time = crank angle, q = ψ, everything over M l² Ω².
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct RollerSystem {
+    pub mechanism: SliderCrank,
+    /// ρ = Δ/l.
+    pub rho: f64,
+    /// λ = c₂/(M l² Ω), held with the crank speed.
+    pub lambda: f64,
+    pub restitution: f64,
+}
+
+impl System<1, 2> for RollerSystem {
+    fn evaluate(&self, t: f64, q: &Vector1<f64>, qd: &Vector1<f64>) -> Evaluation<1, 2> {
+        let limit = self.mechanism.psi_max(t, self.rho);
+        let force = self.mechanism.forcing(t, self.lambda) - self.lambda * qd[0] - self.mechanism.stiffness(t) * q[0];
+        Evaluation {
+            mass: SMatrix::<f64, 1, 1>::new(self.mechanism.inertia()),
+            force: Vector1::new(force),
+            gap: Vector2::new(limit.value + q[0], limit.value - q[0]),
+            gap_jacobian: SMatrix::<f64, 2, 1>::new(1.0, -1.0),
+            gap_time_rate: Vector2::new(limit.d1, limit.d1),
+            gap_bias: Vector2::new(limit.d2, limit.d2),
+        }
+    }
+
+    fn gaps(&self, t: f64, q: &Vector1<f64>) -> Vector2<f64> {
+        let limit = self.mechanism.psi_max(t, self.rho).value;
+        Vector2::new(limit + q[0], limit - q[0])
+    }
+
+    fn restitution(&self, _constraint: usize) -> f64 {
+        self.restitution
+    }
+}
+
+/// The roller slider crank as the FMU drives it: SI in and out, the thesis's variables inside.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Roller {
+    stepper: Stepper<RollerSystem, 1, 2>,
+    options: StepperOptions,
+    crank_radius: f64,
+    rod_length: f64,
+    piston_mass: f64,
+    damping: f64,
+    /// Held crank speed Ω, rad/s; 0 before the first step.
+    crank_speed: f64,
+    /// SI time at the stepper's current crank angle.
+    time: f64,
+}
+
+fn require(ok: bool, name: &str, range: &str) -> Result<(), ModelError> {
+    if ok {
+        Ok(())
+    } else {
+        Err(ModelError(format!("model_variant 2: parameter {name} must be {range}")))
+    }
+}
+
+fn core_error(error: impl std::fmt::Display) -> ModelError {
+    ModelError(format!("model_variant 2: {error}"))
+}
+
+/// Corner number of the impact log for a constraint index.
+pub fn corner(constraint: usize) -> u8 {
+    if constraint == LOWER {
+        1
+    } else {
+        3
+    }
+}
+
+impl Roller {
+    /// The core's stepper in thesis units (for analysis and tests).
+    pub fn stepper(&self) -> &Stepper<RollerSystem, 1, 2> {
+        &self.stepper
+    }
+
+    fn mechanism(&self) -> &SliderCrank {
+        &self.stepper.system().mechanism
+    }
+
+    /// Metres of lateral motion per radian of ψ, and m/s of normal speed per unit of ḣ in θ-time.
+    fn lateral_scale(&self, theta: f64) -> f64 {
+        self.rod_length * self.mechanism().cos_phi(theta).value
+    }
+
+    /// Pin position along the cylinder axis: r cos θ + l cos(φ − ψ).
+    fn axial_position(&self, theta: f64, psi: f64) -> f64 {
+        let phi = self.mechanism().rod_angle(theta).value;
+        self.crank_radius * theta.cos() + self.rod_length * (phi - psi).cos()
+    }
+
+    /// Holds a new crank speed: λ changes with Ω, and ψ' = ψ̇/Ω is rescaled so ψ̇ stays continuous.
+    fn hold_crank_speed(&mut self, omega: f64) -> Result<(), ModelError> {
+        if omega == self.crank_speed {
+            return Ok(());
+        }
+        let mut system = self.stepper.system().clone();
+        system.lambda = self.damping / (self.piston_mass * self.rod_length * self.rod_length * omega);
+        let rate = if self.crank_speed > 0.0 { self.crank_speed / omega } else { 0.0 };
+        let (theta, q, qd) = (self.stepper.time(), *self.stepper.position(), *self.stepper.velocity() * rate);
+        self.stepper = Stepper::new(system, theta, q, qd, self.options.clone()).map_err(core_error)?;
+        self.crank_speed = omega;
+        Ok(())
+    }
+
+    fn engine_event(&self, event: &Event<1>, theta_start: f64) -> EngineEvent {
+        let omega = self.crank_speed;
+        let speed = self.lateral_scale(event.time) * omega;
+        EngineEvent {
+            time: self.time + (event.time - theta_start) / omega,
+            crank_angle: event.time.rem_euclid(4.0 * PI),
+            kind: match event.kind {
+                EventKind::Impact => EngineEventKind::Impact,
+                EventKind::Slide => EngineEventKind::Slide,
+                EventKind::Release => EngineEventKind::Release,
+            },
+            corner: corner(event.constraint),
+            normal_velocity_before: -event.velocity_before * speed,
+            normal_velocity_after: event.velocity_after * speed,
+            energy_lost: event.energy_lost * self.piston_mass * (self.rod_length * omega).powi(2),
+            position: self.axial_position(event.time, event.q[0]),
+        }
+    }
+}
+
+impl EngineModel for Roller {
+    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
+        let p = params;
+        let clearance = (p.bore - p.piston_diameter) / 2.0;
+        require(p.crank_mode == 1, "crank_mode", "1 (the thesis's crank turns at a prescribed speed)")?;
+        require(p.roller_forcing == 1 || p.roller_forcing == 2, "roller_forcing", "1 (as printed) or 2 (corrected)")?;
+        require(p.crank_radius > 0.0 && p.crank_radius.is_finite(), "crank_radius", "> 0")?;
+        require(p.rod_length > p.crank_radius && p.rod_length.is_finite(), "rod_length", "> crank_radius")?;
+        require(p.rod_mass >= 0.0 && p.rod_mass.is_finite(), "rod_mass", ">= 0")?;
+        require(p.piston_mass > 0.0 && p.piston_mass.is_finite(), "piston_mass", "> 0")?;
+        require(p.rod_inertia >= 0.0 && p.rod_inertia.is_finite(), "rod_inertia", ">= 0")?;
+        require(p.damping_crank_pin >= 0.0 && p.damping_crank_pin.is_finite(), "damping_crank_pin", ">= 0")?;
+        require((0.0..=1.0).contains(&p.restitution), "restitution", "in [0, 1]")?;
+        // The model is linear in ψ ≤ ρ/Λ: beyond a few degrees it no longer describes the mechanism.
+        require(clearance > 0.0 && clearance <= 0.05 * p.rod_length, "bore", "larger than piston_diameter by at most 10 % of rod_length")?;
+        require(p.crank_angle_start.is_finite() && start_time.is_finite(), "crank_angle_start", "finite")?;
+        let (l, mass) = (p.rod_length, p.piston_mass);
+        let system = RollerSystem {
+            mechanism: SliderCrank {
+                xi: p.crank_radius / l,
+                alpha: p.rod_mass / mass,
+                beta: p.rod_inertia / (mass * l * l),
+                forcing: if p.roller_forcing == 1 { Forcing::Printed } else { Forcing::Corrected },
+            },
+            rho: clearance / l,
+            lambda: 0.0,
+            restitution: p.restitution,
+        };
+        let options = StepperOptions {
+            step: THESIS_STEP,
+            velocity_tolerance: THESIS_SLIDING_THRESHOLD,
+            ..StepperOptions::default()
+        };
+        let stepper = Stepper::new(system, p.crank_angle_start, SVector::zeros(), SVector::zeros(), options.clone()).map_err(core_error)?;
+        Ok(Self {
+            stepper,
+            options,
+            crank_radius: p.crank_radius,
+            rod_length: l,
+            piston_mass: mass,
+            damping: p.damping_crank_pin,
+            crank_speed: 0.0,
+            time: start_time,
+        })
+    }
+
+    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        let omega = inputs.crank_speed;
+        if !(omega.is_finite() && omega > 0.0) {
+            return Err(ModelError(format!("model_variant 2: crank_speed must be finite and > 0, got {omega}")));
+        }
+        if t_end <= self.time {
+            return Ok(());
+        }
+        self.hold_crank_speed(omega)?;
+        let theta_start = self.stepper.time();
+        self.stepper.clear_events();
+        self.stepper.advance(theta_start + omega * (t_end - self.time)).map_err(core_error)?;
+        events.extend(self.stepper.events().iter().map(|e| self.engine_event(e, theta_start)));
+        self.stepper.clear_events();
+        self.time = t_end;
+        Ok(())
+    }
+
+    fn write_outputs(&self, out: &mut Outputs) {
+        let theta = self.stepper.time();
+        let psi = self.stepper.position()[0];
+        let dpsi = self.stepper.velocity()[0];
+        let omega = self.crank_speed;
+        let mechanism = self.mechanism();
+        let cos_phi = mechanism.cos_phi(theta);
+        let l = self.rod_length;
+        // Wall force F = M l Ω² λ_core / Λ (the core's multiplier acts on ψ, the wall on y = l Λ ψ).
+        let forces = self.stepper.multipliers() * (self.piston_mass * l * omega * omega / cos_phi.value);
+        out.piston_lateral = l * cos_phi.value * psi;
+        out.piston_lateral_velocity = l * omega * (cos_phi.d1 * psi + cos_phi.value * dpsi);
+        out.piston_tilt = 0.0;
+        out.piston_axial = self.axial_position(theta, psi);
+        out.crank_angle = theta;
+        out.rod_angle = psi - mechanism.rod_angle(theta).value;
+        let psi_jet = [psi, dpsi, self.stepper.acceleration()[0]];
+        let lambda = self.stepper.system().lambda;
+        out.crank_torque = mechanism.drive_torque(theta, psi_jet, lambda) * self.piston_mass * (l * omega).powi(2);
+        out.contact_state_1 = i32::from(self.stepper.in_contact(LOWER));
+        out.contact_state_2 = 0;
+        out.contact_state_3 = i32::from(self.stepper.in_contact(UPPER));
+        out.contact_state_4 = 0;
+        out.contact_force_1 = forces[LOWER];
+        out.contact_force_2 = 0.0;
+        out.contact_force_3 = forces[UPPER];
+        out.contact_force_4 = 0.0;
+        out.side_force = forces[LOWER] - forces[UPPER];
+    }
+}
