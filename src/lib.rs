@@ -7,3 +7,5 @@
 
 pub mod dynamics;
 pub mod models;
+pub mod fmi;
+pub mod simulation;

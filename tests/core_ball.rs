@@ -65,6 +65,9 @@ fn inelastic_ball_accumulates_then_rests() {
     assert!(slides[0].time <= t_inf + 1e-9 && slides[0].time > t_inf - 2.0 * u_max / (G * (1.0 - e)), "slide at {}", slides[0].time);
     // Bounded work: log(u_max / v0) / log(e) + 1 impacts.
     assert!(impacts.len() <= ((u_max / v0).ln() / e.ln()).ceil() as usize + 2, "{} impacts", impacts.len());
+    // All the potential energy m g H went into the recorded impacts and the final projection.
+    let lost: f64 = s.events().iter().map(|ev| ev.energy_lost).sum();
+    assert!((lost - 2.0 * G * HEIGHT).abs() < 1e-9, "lost {lost}");
     // Resting contact: on the floor, at rest, λ = m g.
     assert!(s.in_contact(0));
     assert!(s.position()[0].abs() < 1e-12 && s.velocity()[0].abs() < 1e-12);

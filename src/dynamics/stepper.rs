@@ -254,7 +254,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// Advances to exactly `t_end`, appending to the event record. Re-examines the contact set first,
     /// since `system_mut` may have changed held inputs (an active constraint now approaching → impact).
     pub fn advance(&mut self, t_end: f64) -> Result<(), DynamicsError> {
-        if !(t_end >= self.state.t) || !t_end.is_finite() {
+        if !t_end.is_finite() || t_end < self.state.t {
             return Err(DynamicsError::InvalidArgument { time: self.state.t, reason: "the end time is before the current time or not finite" });
         }
         self.reexamine()?;
@@ -423,7 +423,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                         EventLocator::StepHalving => br.lo, // located on the RK4 map below
                     },
                 };
-                if earliest.map_or(true, |(t, ..)| estimate < t) {
+                if earliest.is_none_or(|(t, ..)| estimate < t) {
                     earliest = Some((estimate, i, w, start.expect("matched above")));
                 }
             }
@@ -511,7 +511,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 let v_plus = v + frame.minv_jt * impulse;
                 let lost = impact::energy_lost(&ev.gap_jacobian, &impulse, &v, &v_plus);
                 let hd_plus = hd + frame.w * impulse;
-                for i in members::<M>(closed).filter(|&i| impulse[i] > 0.0 || contains(approaching, i)) {
+                // Recorded: every approaching constraint, and any other that took a real impulse
+                // (one that changes its own ḣ by more than ε_ḣ), e.g. a sliding one pushed harder.
+                let pushed = select::<M>(|i| impulse[i] * frame.w[(i, i)] > opts.velocity_tolerance);
+                for i in members::<M>(closed & (approaching | pushed)) {
                     self.record(EventKind::Impact, i, hd[i], hd_plus[i], lost[i], q);
                 }
                 (v, hd) = (v_plus, hd_plus);

@@ -18,6 +18,8 @@ impl fmt::Display for ModelError {
 impl std::error::Error for ModelError {}
 
 /// Model parameters; defaults are Awrejcewicz & Kudra section 8 unless DESIGN.md says otherwise.
+/// `Default` and the range checks are generated from the start, min and max values of
+/// `modelDescription/variables.xml`, so the FMU's XML and the Rust defaults cannot disagree.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Parameters {
     pub model_variant: i32,
@@ -50,41 +52,6 @@ pub struct Parameters {
     pub impact_log: String,
 }
 
-impl Default for Parameters {
-    fn default() -> Self {
-        Self {
-            model_variant: 1,
-            crank_mode: 1,
-            pressure_source: 2,
-            roller_forcing: 2,
-            peak_pressure: 8e6,
-            crank_radius: 0.04,
-            rod_length: 0.15,
-            crank_com: 0.0,
-            rod_com: 0.12,
-            piston_com: 0.01,
-            crank_mass: 10.0,
-            rod_mass: 1.0,
-            piston_mass: 0.4,
-            crank_inertia: 1.0,
-            rod_inertia: 0.0075,
-            piston_inertia: 0.001,
-            piston_diameter: 0.08,
-            skirt_length: 0.08,
-            pin_height: 0.04,
-            bore: 0.08008,
-            pin_offset: 0.0,
-            restitution: 0.5,
-            damping_main: 0.0288,
-            damping_crank_pin: 0.00576,
-            damping_piston_pin: 0.00288,
-            gravity: 9.81,
-            crank_angle_start: 0.0,
-            impact_log: String::new(),
-        }
-    }
-}
-
 /// Continuous inputs, held constant over a communication step.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Inputs {
@@ -94,12 +61,6 @@ pub struct Inputs {
     pub gas_pressure: f64,
     /// N·m, opposing rotation, used when `crank_mode = 2`.
     pub load_torque: f64,
-}
-
-impl Default for Inputs {
-    fn default() -> Self {
-        Self { crank_speed: 125.66, gas_pressure: 0.0, load_torque: 0.0 }
-    }
 }
 
 /// Outputs (DESIGN.md §4). Impact statistics are filled by the caller from the event record;
@@ -130,4 +91,142 @@ pub struct Outputs {
     pub contact_force_3: f64,
     pub contact_force_4: f64,
     pub side_force: f64,
+}
+
+// `impl Default for Parameters`, `impl Default for Inputs` and `Parameters::check_ranges`.
+include!(concat!(env!("OUT_DIR"), "/parameter_defaults.rs"));
+
+impl Parameters {
+    /// Refuses what no model can run: a value outside its physical range (negative masses or lengths,
+    /// `restitution` outside [0, 1], an unknown variant or mode), a bore not larger than the piston, a
+    /// crank not shorter than the rod. The message names the parameter. Model-specific checks are the
+    /// models' own (`EngineModel::new`).
+    pub fn validate(&self) -> Result<(), ModelError> {
+        self.check_ranges()?;
+        if self.bore <= self.piston_diameter {
+            return Err(ModelError(format!(
+                "bore = {} m must exceed piston_diameter = {} m (the clearance is (bore − piston_diameter)/2)",
+                self.bore, self.piston_diameter
+            )));
+        }
+        if self.crank_radius >= self.rod_length {
+            return Err(ModelError(format!(
+                "crank_radius = {} m must be shorter than rod_length = {} m",
+                self.crank_radius, self.rod_length
+            )));
+        }
+        Ok(())
+    }
+}
+
+fn check_real(
+    name: &str,
+    value: f64,
+    min: Option<f64>,
+    max: Option<f64>,
+    positive: bool,
+    unit: &str,
+) -> Result<(), ModelError> {
+    let refuse = |range: String| {
+        Err(ModelError(format!(
+            "{name} = {value} {unit} is out of range: {range}"
+        )))
+    };
+    if !value.is_finite() {
+        return refuse("must be finite".into());
+    }
+    if positive && value <= 0.0 {
+        return refuse(format!("must be > 0 {unit}"));
+    }
+    match (min, max) {
+        (Some(lo), Some(hi)) if !(lo..=hi).contains(&value) => {
+            refuse(format!("must be in [{lo}, {hi}]"))
+        }
+        (Some(lo), _) if value < lo => refuse(format!("must be ≥ {lo} {unit}")),
+        (_, Some(hi)) if value > hi => refuse(format!("must be ≤ {hi} {unit}")),
+        _ => Ok(()),
+    }
+}
+
+fn check_integer(
+    name: &str,
+    value: i32,
+    min: Option<i32>,
+    max: Option<i32>,
+) -> Result<(), ModelError> {
+    let below = min.is_some_and(|lo| value < lo);
+    let above = max.is_some_and(|hi| value > hi);
+    if below || above {
+        let lo = min.map_or("−∞".to_string(), |v| v.to_string());
+        let hi = max.map_or("∞".to_string(), |v| v.to_string());
+        return Err(ModelError(format!(
+            "{name} = {value} is not one of {lo}..={hi}"
+        )));
+    }
+    Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn refused(change: impl FnOnce(&mut Parameters), name: &str) {
+        let mut p = Parameters::default();
+        change(&mut p);
+        let err = p.validate().expect_err(name);
+        assert!(
+            err.0.contains(name),
+            "message {:?} should name {name}",
+            err.0
+        );
+    }
+
+    #[test]
+    fn defaults_are_the_design_values_and_valid() {
+        let p = Parameters::default();
+        assert_eq!(
+            (
+                p.model_variant,
+                p.crank_mode,
+                p.pressure_source,
+                p.roller_forcing
+            ),
+            (1, 1, 2, 2)
+        );
+        assert_eq!(
+            (p.bore, p.piston_diameter, p.restitution, p.peak_pressure),
+            (0.08008, 0.08, 0.5, 8e6)
+        );
+        assert_eq!(p.impact_log, "");
+        assert_eq!(Inputs::default().crank_speed, 125.66);
+        p.validate().unwrap();
+    }
+
+    #[test]
+    fn out_of_range_parameters_are_refused_by_name() {
+        refused(|p| p.piston_mass = -0.4, "piston_mass");
+        refused(|p| p.rod_mass = 0.0, "rod_mass");
+        refused(|p| p.crank_radius = -0.04, "crank_radius");
+        refused(|p| p.skirt_length = -1e-3, "skirt_length");
+        refused(|p| p.restitution = 1.5, "restitution");
+        refused(|p| p.restitution = -0.1, "restitution");
+        refused(|p| p.model_variant = 3, "model_variant");
+        refused(|p| p.crank_mode = 0, "crank_mode");
+        refused(|p| p.damping_main = -1.0, "damping_main");
+        refused(|p| p.gravity = f64::NAN, "gravity");
+        refused(|p| p.bore = 0.079, "bore");
+        refused(|p| p.crank_radius = 0.2, "crank_radius");
+    }
+
+    #[test]
+    fn boundary_values_are_accepted() {
+        let mut p = Parameters {
+            restitution: 0.0,
+            skirt_length: 0.0,
+            ..Parameters::default()
+        };
+        p.validate().unwrap();
+        p.restitution = 1.0;
+        p.validate().unwrap();
+    }
 }

@@ -1,0 +1,424 @@
+//! One FMU instance and the FMI 2.0 Co-Simulation state machine (standard §4.2.4), in safe code.
+//!
+//! Every operation first checks that the standard allows it in the current state; a forbidden call,
+//! a bad argument or an unknown value reference is *refused*: `Err` with a message, nothing changed.
+//! A *failure* of the model (parameters refused at fmi2ExitInitializationMode, a step that cannot be
+//! computed) puts the instance in the error state, as the standard says; its state is still the one
+//! before the call, so fmi2SetFMUstate or fmi2Reset continue from there.
+
+use super::description::{self, Causality, Kind, GUID};
+use super::logger::Logger;
+use super::state_bytes;
+use super::types::Status;
+use crate::models::{EngineModel, Inputs, ModelError, Parameters};
+use crate::simulation::Simulation;
+use serde::{de::DeserializeOwned, Deserialize, Serialize};
+use std::fmt;
+
+/// What the FMU layer needs of an engine model: run it, and save it in an FMU state.
+pub trait Model: EngineModel + Serialize + DeserializeOwned {}
+impl<E: EngineModel + Serialize + DeserializeOwned> Model for E {}
+
+/// The states of the standard's Co-Simulation state machine that a synchronous FMU can be in
+/// (named as in the standard).
+#[allow(clippy::enum_variant_names)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Mode {
+    Instantiated,
+    InitializationMode,
+    StepComplete,
+    Terminated,
+    Error,
+    Fatal,
+}
+
+impl fmt::Display for Mode {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Debug::fmt(self, f)
+    }
+}
+
+use Mode::*;
+
+/// Allowed states per function group (standard §4.2.4 table; stepInProgress, stepFailed and
+/// stepCanceled cannot occur: fmi2DoStep is synchronous and never returns fmi2Discard).
+pub const CONFIGURE: &[Mode] = &[Instantiated];
+pub const GET: &[Mode] = &[InitializationMode, StepComplete, Terminated, Error];
+pub const SET: &[Mode] = &[Instantiated, InitializationMode, StepComplete];
+pub const STATE: &[Mode] = &[
+    Instantiated,
+    InitializationMode,
+    StepComplete,
+    Terminated,
+    Error,
+];
+pub const STEP: &[Mode] = &[StepComplete];
+pub const STATUS: &[Mode] = &[StepComplete, Terminated];
+pub const INPUT_DERIVATIVES: &[Mode] = &[Instantiated, InitializationMode, StepComplete];
+pub const OUTPUT_DERIVATIVES: &[Mode] = &[StepComplete, Terminated, Error];
+
+/// A refused or failed call: the status to return and the message to log.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Refusal {
+    pub status: Status,
+    pub message: String,
+}
+
+impl Refusal {
+    pub fn error(message: impl Into<String>) -> Self {
+        Self {
+            status: Status::Error,
+            message: message.into(),
+        }
+    }
+    pub fn discard(message: impl Into<String>) -> Self {
+        Self {
+            status: Status::Discard,
+            message: message.into(),
+        }
+    }
+}
+
+pub type Outcome<T = ()> = Result<T, Refusal>;
+
+/// Where the instance is in its life, with the data each phase has.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+enum Phase<E> {
+    Instantiated,
+    InitializationMode,
+    StepComplete(Simulation<E>),
+    Terminated(Simulation<E>),
+}
+
+/// Everything an FMU state saves: phase, experiment, variables, simulation.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub struct Core<E> {
+    phase: Phase<E>,
+    start_time: f64,
+    stop_time: Option<f64>,
+    parameters: Parameters,
+    inputs: Inputs,
+}
+
+impl<E> Default for Core<E> {
+    fn default() -> Self {
+        Self {
+            phase: Phase::Instantiated,
+            start_time: 0.0,
+            stop_time: None,
+            parameters: Parameters::default(),
+            inputs: Inputs::default(),
+        }
+    }
+}
+
+/// A value the host sets: one of FMI's variable types.
+pub enum Value<'a> {
+    Real(f64),
+    Integer(i32),
+    String(&'a str),
+}
+
+impl Value<'_> {
+    fn kind(&self) -> Kind {
+        match self {
+            Value::Real(_) => Kind::Real,
+            Value::Integer(_) => Kind::Integer,
+            Value::String(_) => Kind::String,
+        }
+    }
+}
+
+pub struct Instance<E> {
+    pub logger: Logger,
+    /// Set by a model failure (Error) or a caught panic (Fatal); overrides the phase.
+    failure: Option<Mode>,
+    core: Core<E>,
+}
+
+/// Relative tolerance on the communication point: hosts accumulate t += h in floating point.
+const TIME_TOLERANCE: f64 = 1e-9;
+
+impl<E: Model> Instance<E> {
+    pub fn new(logger: Logger) -> Self {
+        Self {
+            logger,
+            failure: None,
+            core: Core::default(),
+        }
+    }
+
+    pub fn mode(&self) -> Mode {
+        self.failure.unwrap_or(match self.core.phase {
+            Phase::Instantiated => Instantiated,
+            Phase::InitializationMode => InitializationMode,
+            Phase::StepComplete(_) => StepComplete,
+            Phase::Terminated(_) => Terminated,
+        })
+    }
+
+    /// Refuses `function` unless the current state is one of `allowed`.
+    pub fn require(&self, function: &str, allowed: &[Mode]) -> Outcome {
+        let mode = self.mode();
+        if allowed.contains(&mode) {
+            return Ok(());
+        }
+        let allowed: Vec<String> = allowed.iter().map(Mode::to_string).collect();
+        Err(Refusal::error(format!(
+            "{function} is not allowed in state {mode} (allowed in: {})",
+            if allowed.is_empty() {
+                "none".to_string()
+            } else {
+                allowed.join(", ")
+            }
+        )))
+    }
+
+    /// After a caught panic: the instance can only be freed.
+    pub fn set_fatal(&mut self) {
+        self.failure = Some(Fatal);
+    }
+
+    pub fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> Outcome {
+        self.require("fmi2SetupExperiment", CONFIGURE)?;
+        if !start.is_finite() {
+            return Err(Refusal::error(format!("startTime = {start} is not finite")));
+        }
+        if let Some(stop) = stop.filter(|s| !(s.is_finite() && *s >= start)) {
+            return Err(Refusal::error(format!(
+                "stopTime = {stop} must be finite and ≥ startTime = {start}"
+            )));
+        }
+        self.core.start_time = start;
+        self.core.stop_time = stop;
+        Ok(())
+    }
+
+    pub fn enter_initialization_mode(&mut self) -> Outcome {
+        self.require("fmi2EnterInitializationMode", CONFIGURE)?;
+        self.core.phase = Phase::InitializationMode;
+        Ok(())
+    }
+
+    /// Builds the simulation from the parameters: bad parameters are a failure naming the parameter.
+    pub fn exit_initialization_mode(&mut self) -> Outcome {
+        self.require("fmi2ExitInitializationMode", &[InitializationMode])?;
+        let sim = Simulation::start(&self.core.parameters, self.core.start_time)
+            .map_err(|e| self.fail(e))?;
+        self.core.phase = Phase::StepComplete(sim);
+        Ok(())
+    }
+
+    pub fn terminate(&mut self) -> Outcome {
+        self.require("fmi2Terminate", STEP)?;
+        if let Phase::StepComplete(sim) =
+            std::mem::replace(&mut self.core.phase, Phase::Instantiated)
+        {
+            self.core.phase = Phase::Terminated(sim);
+        }
+        Ok(())
+    }
+
+    /// Back to the state after fmi2Instantiate (debug-logging settings are kept).
+    pub fn reset(&mut self) -> Outcome {
+        self.require("fmi2Reset", STATE)?;
+        self.core = Core::default();
+        self.failure = None;
+        Ok(())
+    }
+
+    /// Checks every (value reference, value) pair before changing anything: all or nothing.
+    pub fn set(&mut self, function: &str, values: &[(u32, Value)]) -> Outcome {
+        self.require(function, SET)?;
+        for (vr, value) in values {
+            self.check_settable(*vr, value)?;
+        }
+        let (p, i) = (&mut self.core.parameters, &mut self.core.inputs);
+        for (vr, value) in values {
+            let missing = || Refusal::error(format!("value reference {vr} has no field")); // excluded above
+            match value {
+                Value::Real(x) => *description::real_mut(*vr, p, i).ok_or_else(missing)? = *x,
+                Value::Integer(x) => *description::integer_mut(*vr, p, i).ok_or_else(missing)? = *x,
+                Value::String(s) => {
+                    *description::string_mut(*vr, p, i).ok_or_else(missing)? = (*s).to_string()
+                }
+            }
+        }
+        Ok(())
+    }
+
+    fn check_settable(&self, vr: u32, value: &Value) -> Outcome {
+        let v = typed_variable(vr, value.kind())?;
+        match v.causality {
+            Causality::Output => {
+                return Err(Refusal::error(format!("{} (value reference {vr}) is an output: it cannot be set", v.name)))
+            }
+            Causality::Parameter if !matches!(self.mode(), Instantiated | InitializationMode) => {
+                return Err(Refusal::error(format!(
+                    "{} is a fixed parameter: set it before fmi2ExitInitializationMode (state is {})",
+                    v.name,
+                    self.mode()
+                )))
+            }
+            _ => {}
+        }
+        match value {
+            Value::Real(x) if !x.is_finite() => Err(Refusal::error(format!(
+                "{} = {x} refused: values must be finite",
+                v.name
+            ))),
+            _ => Ok(()),
+        }
+    }
+
+    /// Reads variables of one kind. In initialization mode the outputs are the initial ones of a
+    /// simulation built from the current parameters.
+    pub fn get<T>(
+        &self,
+        function: &str,
+        vrs: &[u32],
+        kind: Kind,
+        read: impl for<'a> Fn(u32, &'a Parameters, &'a Inputs, &'a crate::models::Outputs) -> Option<T>,
+    ) -> Outcome<Vec<T>> {
+        self.require(function, GET)?;
+        for &vr in vrs {
+            typed_variable(vr, kind)?;
+        }
+        let preview;
+        let outputs = match &self.core.phase {
+            Phase::StepComplete(sim) | Phase::Terminated(sim) => sim.outputs(),
+            _ if vrs.iter().any(|&vr| is_output(vr)) => {
+                preview = Simulation::<E>::new(&self.core.parameters, self.core.start_time)
+                    .map_err(|e| {
+                        Refusal::error(format!("cannot compute the initial outputs: {e}"))
+                    })?;
+                preview.outputs()
+            }
+            _ => &crate::models::Outputs::default(),
+        };
+        let (p, i) = (&self.core.parameters, &self.core.inputs);
+        vrs.iter()
+            .map(|&vr| {
+                read(vr, p, i, outputs)
+                    .ok_or_else(|| Refusal::error(format!("value reference {vr} has no field")))
+            })
+            .collect()
+    }
+
+    /// fmi2GetBoolean / fmi2SetBoolean: PistonSlap has no Boolean variable, so any value reference is
+    /// refused (an empty list is fine).
+    pub fn booleans(&self, function: &str, allowed: &[Mode], vrs: &[u32]) -> Outcome {
+        self.require(function, allowed)?;
+        match vrs.first() {
+            None => Ok(()),
+            Some(&vr) => Err(match description::variable(vr) {
+                Some(v) => Refusal::error(format!(
+                    "{} (value reference {vr}) is a {:?} variable, not Boolean",
+                    v.name, v.kind
+                )),
+                None => Refusal::error(format!("unknown value reference {vr}")),
+            }),
+        }
+    }
+
+    /// Advances from `t` (which must be the current time) to exactly `t + h` with the inputs held.
+    pub fn do_step(&mut self, t: f64, h: f64) -> Outcome {
+        self.require("fmi2DoStep", STEP)?;
+        let Phase::StepComplete(sim) = &mut self.core.phase else {
+            unreachable!("checked by require")
+        };
+        let now = sim.time();
+        if !(h.is_finite() && h > 0.0) {
+            return Err(Refusal::error(format!(
+                "communicationStepSize = {h} must be finite and > 0"
+            )));
+        }
+        if !t.is_finite() || (t - now).abs() > TIME_TOLERANCE * now.abs().max(1.0) {
+            return Err(Refusal::error(format!(
+                "currentCommunicationPoint = {t} s is not the FMU's current time {now} s"
+            )));
+        }
+        let t_end = t + h;
+        if t_end <= now {
+            return Err(Refusal::error(format!(
+                "step {h} s is too small to advance from {now} s"
+            )));
+        }
+        if let Some(stop) = self
+            .core
+            .stop_time
+            .filter(|s| t_end > s + TIME_TOLERANCE * s.abs().max(1.0))
+        {
+            return Err(Refusal::error(format!(
+                "step to {t_end} s goes beyond stopTime = {stop} s"
+            )));
+        }
+        match sim.step(&self.core.inputs, t_end) {
+            Ok(()) => {
+                for e in sim.step_events() {
+                    self.logger.debug("logEvents", &format!("{e:?}"));
+                }
+                Ok(())
+            }
+            Err(e) => Err(self.fail(e)),
+        }
+    }
+
+    /// The time of the simulation (start time before initialization).
+    pub fn time(&self) -> f64 {
+        match &self.core.phase {
+            Phase::StepComplete(sim) | Phase::Terminated(sim) => sim.time(),
+            _ => self.core.start_time,
+        }
+    }
+
+    pub fn state(&self, function: &str) -> Outcome<Core<E>> {
+        self.require(function, STATE)?;
+        Ok(self.core.clone())
+    }
+
+    /// Restores a saved state (and cuts the impact log back to it); leaves the error state.
+    pub fn set_state(&mut self, core: &Core<E>) -> Outcome {
+        self.require("fmi2SetFMUstate", STATE)?;
+        if let Phase::StepComplete(sim) | Phase::Terminated(sim) = &core.phase {
+            sim.rewind_log()
+                .map_err(|e| Refusal::error(format!("cannot restore the impact log: {e}")))?;
+        }
+        self.core = core.clone();
+        self.failure = None;
+        Ok(())
+    }
+
+    pub fn serialize(&self, function: &str, core: &Core<E>) -> Outcome<Vec<u8>> {
+        self.require(function, STATE)?;
+        state_bytes::encode(core, GUID).map_err(Refusal::error)
+    }
+
+    pub fn deserialize(&self, bytes: &[u8]) -> Outcome<Core<E>> {
+        self.require("fmi2DeSerializeFMUstate", STATE)?;
+        state_bytes::decode(bytes, GUID)
+            .map_err(|e| Refusal::error(format!("refused state bytes: {e}")))
+    }
+
+    fn fail(&mut self, e: ModelError) -> Refusal {
+        self.failure = Some(Error);
+        Refusal::error(e.0)
+    }
+}
+
+fn is_output(vr: u32) -> bool {
+    description::variable(vr).is_some_and(|v| v.causality == Causality::Output)
+}
+
+/// The variable `vr`, refused when unknown or not of `kind`.
+fn typed_variable(vr: u32, kind: Kind) -> Outcome<&'static description::Variable> {
+    let v = description::variable(vr)
+        .ok_or_else(|| Refusal::error(format!("unknown value reference {vr}")))?;
+    if v.kind != kind {
+        return Err(Refusal::error(format!(
+            "{} (value reference {vr}) is a {:?} variable, not {kind:?}",
+            v.name, v.kind
+        )));
+    }
+    Ok(v)
+}

@@ -1,0 +1,96 @@
+//! Messages to the host's logger callback, filtered by fmi2SetDebugLogging.
+
+use super::description::LOG_CATEGORIES;
+use super::types::{fmi2CallbackLogger, fmi2ComponentEnvironment, Status};
+use std::ffi::{c_int, CString};
+
+/// Where an instance's messages go: the host's callback with its environment pointer.
+pub struct Logger {
+    callback: fmi2CallbackLogger,
+    environment: fmi2ComponentEnvironment,
+    instance_name: CString,
+    /// Per category of `LOG_CATEGORIES`: whether debug logging is on for it.
+    enabled: [bool; LOG_CATEGORIES.len()],
+}
+
+impl Logger {
+    pub fn new(
+        callback: fmi2CallbackLogger,
+        environment: fmi2ComponentEnvironment,
+        instance_name: &str,
+        on: bool,
+    ) -> Self {
+        Self {
+            callback,
+            environment,
+            instance_name: c_string(instance_name),
+            enabled: [on; LOG_CATEGORIES.len()],
+        }
+    }
+
+    /// fmi2SetDebugLogging: no categories = all of them; an unknown name is refused, nothing changed.
+    pub fn set_debug_logging(&mut self, on: bool, categories: &[String]) -> Result<(), String> {
+        if categories.is_empty() {
+            self.enabled = [on; LOG_CATEGORIES.len()];
+            return Ok(());
+        }
+        let mut enabled = self.enabled;
+        for name in categories {
+            let i = LOG_CATEGORIES
+                .iter()
+                .position(|c| c == name)
+                .ok_or_else(|| {
+                    format!(
+                        "unknown log category {name:?}; known: {}",
+                        LOG_CATEGORIES.join(", ")
+                    )
+                })?;
+            enabled[i] = on;
+        }
+        self.enabled = enabled;
+        Ok(())
+    }
+
+    /// Errors and fatal errors always reach the host: a refused call must say why.
+    pub fn status(&self, status: Status, message: &str) {
+        let category = if status == Status::Fatal {
+            "logStatusFatal"
+        } else {
+            "logStatusError"
+        };
+        self.send(status, category, message);
+    }
+
+    /// A debug message, sent only when its category is enabled.
+    pub fn debug(&self, category: &str, message: &str) {
+        if LOG_CATEGORIES
+            .iter()
+            .zip(self.enabled)
+            .any(|(c, on)| on && *c == category)
+        {
+            self.send(Status::Ok, category, message);
+        }
+    }
+
+    fn send(&self, status: Status, category: &str, message: &str) {
+        let (category, message) = (c_string(category), c_string(message));
+        // The message goes through "%s": a '%' in it must not be read as a format directive.
+        // SAFETY: the callback and environment are the host's, given at fmi2Instantiate; the strings
+        // are NUL-terminated and outlive the call.
+        unsafe {
+            (self.callback)(
+                self.environment,
+                self.instance_name.as_ptr(),
+                status as c_int,
+                category.as_ptr(),
+                c"%s".as_ptr(),
+                message.as_ptr(),
+            );
+        }
+    }
+}
+
+/// A C string of `s`, with any interior NUL replaced (messages may quote host input).
+fn c_string(s: &str) -> CString {
+    CString::new(s.replace('\0', "\u{2400}")).unwrap_or_default()
+}

@@ -1,0 +1,185 @@
+//! The byte form of a serialized FMU state (fmi2SerializeFMUstate), safe code:
+//!
+//! | bytes | content |
+//! |---|---|
+//! | 8 | magic `PSLAPFMU` |
+//! | 4 | format version (u32 LE) |
+//! | 2 + n | GUID length (u16 LE) and GUID (UTF-8) of the model description that wrote it |
+//! | 8 | payload length (u64 LE) |
+//! | m | payload: the state in the [`codec`](super::codec) format |
+//! | 4 | CRC-32 (IEEE) of everything before it |
+//!
+//! Decoding checks each field in this order and names the first that is wrong: foreign, truncated
+//! or corrupted bytes are an error, never a crash.
+
+use super::codec;
+use serde::{de::DeserializeOwned, Serialize};
+
+const MAGIC: &[u8; 8] = b"PSLAPFMU";
+/// Bump when the layout of the saved state changes.
+pub const FORMAT_VERSION: u32 = 1;
+
+pub fn encode<T: Serialize>(state: &T, guid: &str) -> Result<Vec<u8>, String> {
+    let payload = codec::to_bytes(state).map_err(|e| format!("cannot encode the state: {e}"))?;
+    let guid_len = u16::try_from(guid.len()).map_err(|_| "GUID too long".to_string())?;
+    let mut out = Vec::with_capacity(payload.len() + guid.len() + 26);
+    out.extend_from_slice(MAGIC);
+    out.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
+    out.extend_from_slice(&guid_len.to_le_bytes());
+    out.extend_from_slice(guid.as_bytes());
+    out.extend_from_slice(&(payload.len() as u64).to_le_bytes());
+    out.extend_from_slice(&payload);
+    let crc = crc32(&out);
+    out.extend_from_slice(&crc.to_le_bytes());
+    Ok(out)
+}
+
+pub fn decode<T: DeserializeOwned>(bytes: &[u8], guid: &str) -> Result<T, String> {
+    let mut r = Reader(bytes);
+    if r.take(MAGIC.len())? != MAGIC {
+        return Err("not a PistonSlap FMU state (wrong magic)".into());
+    }
+    let version = u32::from_le_bytes(r.array()?);
+    if version != FORMAT_VERSION {
+        return Err(format!(
+            "state format version {version}, this FMU reads {FORMAT_VERSION}"
+        ));
+    }
+    let guid_len = u16::from_le_bytes(r.array()?);
+    let written_by = r.take(usize::from(guid_len))?;
+    if written_by != guid.as_bytes() {
+        let shown = String::from_utf8_lossy(written_by);
+        return Err(format!(
+            "state written by a model with GUID {shown}, this FMU is {guid}"
+        ));
+    }
+    let payload_len = u64::from_le_bytes(r.array()?);
+    let expected = r.0.len().checked_sub(4);
+    if expected.map(|n| n as u64) != Some(payload_len) {
+        return Err(format!(
+            "payload length {payload_len} does not match the {} bytes given",
+            bytes.len()
+        ));
+    }
+    let body_len = bytes.len() - 4;
+    let crc = u32::from_le_bytes(
+        bytes[body_len..]
+            .try_into()
+            .map_err(|_| "truncated".to_string())?,
+    );
+    if crc32(&bytes[..body_len]) != crc {
+        return Err("checksum mismatch: the state bytes are corrupted".into());
+    }
+    codec::from_bytes(&r.0[..r.0.len() - 4]).map_err(|e| format!("cannot decode the state: {e}"))
+}
+
+struct Reader<'a>(&'a [u8]);
+
+impl<'a> Reader<'a> {
+    fn take(&mut self, n: usize) -> Result<&'a [u8], String> {
+        if n > self.0.len() {
+            return Err(format!("truncated state: {} bytes", self.0.len()));
+        }
+        let (head, tail) = self.0.split_at(n);
+        self.0 = tail;
+        Ok(head)
+    }
+    fn array<const N: usize>(&mut self) -> Result<[u8; N], String> {
+        let mut a = [0; N];
+        a.copy_from_slice(self.take(N)?);
+        Ok(a)
+    }
+}
+
+/// CRC-32 (IEEE 802.3, reflected, polynomial 0xEDB88320): detects every single-bit flip and every
+/// burst up to 32 bits.
+fn crc32(bytes: &[u8]) -> u32 {
+    const TABLE: [u32; 256] = {
+        let mut table = [0u32; 256];
+        let mut i = 0;
+        while i < 256 {
+            let mut c = i as u32;
+            let mut k = 0;
+            while k < 8 {
+                c = if c & 1 != 0 {
+                    0xEDB8_8320 ^ (c >> 1)
+                } else {
+                    c >> 1
+                };
+                k += 1;
+            }
+            table[i] = c;
+            i += 1;
+        }
+        table
+    };
+    !bytes.iter().fold(!0u32, |c, &b| {
+        TABLE[((c ^ u32::from(b)) & 0xff) as usize] ^ (c >> 8)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const GUID: &str = "{test}";
+
+    fn sample() -> Vec<u8> {
+        encode(
+            &(vec![0.1f64, -2.5, 1e-9], "log.csv".to_string(), Some(3u8)),
+            GUID,
+        )
+        .unwrap()
+    }
+
+    type Sample = (Vec<f64>, String, Option<u8>);
+
+    #[test]
+    fn crc32_of_the_standard_check_string() {
+        assert_eq!(crc32(b"123456789"), 0xCBF4_3926);
+    }
+
+    #[test]
+    fn round_trip() {
+        let back: Sample = decode(&sample(), GUID).unwrap();
+        assert_eq!(
+            back,
+            (vec![0.1, -2.5, 1e-9], "log.csv".to_string(), Some(3))
+        );
+    }
+
+    #[test]
+    fn every_truncation_every_bit_flip_and_a_foreign_guid_are_refused() {
+        let bytes = sample();
+        for n in 0..bytes.len() {
+            assert!(decode::<Sample>(&bytes[..n], GUID).is_err(), "prefix {n}");
+        }
+        for i in 0..bytes.len() * 8 {
+            let mut flipped = bytes.clone();
+            flipped[i / 8] ^= 1 << (i % 8);
+            assert!(decode::<Sample>(&flipped, GUID).is_err(), "bit {i}");
+        }
+        let err = decode::<Sample>(&bytes, "{other}").unwrap_err();
+        assert!(err.contains("GUID"), "{err}");
+    }
+
+    #[test]
+    fn random_bytes_are_refused() {
+        // xorshift: deterministic noise of many lengths, some starting with the right magic.
+        let mut x = 0x9E37_79B9_7F4A_7C15u64;
+        for len in 0..400 {
+            let mut noise: Vec<u8> = (0..len)
+                .map(|_| {
+                    x ^= x << 13;
+                    x ^= x >> 7;
+                    x ^= x << 17;
+                    x as u8
+                })
+                .collect();
+            if len % 2 == 0 && len >= 8 {
+                noise[..8].copy_from_slice(MAGIC);
+            }
+            assert!(decode::<Sample>(&noise, GUID).is_err());
+        }
+    }
+}

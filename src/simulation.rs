@@ -1,0 +1,126 @@
+//! The facade the FMI layer drives: a validated model, its time, its outputs (including the impact
+//! statistics computed from the event rows) and the impact log. No FFI and no FMI words: the FMI
+//! layer maps its calls and errors onto this.
+
+mod engine;
+mod impact_log;
+mod statistics;
+
+pub use engine::Engine;
+pub use impact_log::ImpactLog;
+
+use crate::models::{EngineEvent, EngineModel, Inputs, ModelError, Outputs, Parameters};
+use serde::{Deserialize, Serialize};
+use statistics::ImpactStatistics;
+
+/// A running simulation of engine model `E` (the FMU runs [`Engine`]).
+///
+/// Clone + Serialize + Deserialize: it is the whole simulation state an FMU state saves, including
+/// the impact statistics, the events of the last step and the log cursor.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Simulation<E = Engine> {
+    model: E,
+    time: f64,
+    outputs: Outputs,
+    statistics: ImpactStatistics,
+    step_events: Vec<EngineEvent>,
+    log: Option<ImpactLog>,
+}
+
+impl<E: EngineModel> Simulation<E> {
+    /// Validates the parameters (generic ranges, then the model's own checks) and builds the model at
+    /// `start_time` with its initial outputs. Touches no file: the impact log starts with [`Self::start_log`].
+    pub fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
+        if !start_time.is_finite() {
+            return Err(ModelError(format!("start time {start_time} is not finite")));
+        }
+        params.validate()?;
+        let model = E::new(params, start_time)?;
+        let mut sim = Self {
+            model,
+            time: start_time,
+            outputs: Outputs::default(),
+            statistics: ImpactStatistics::default(),
+            step_events: Vec::new(),
+            log: None,
+        };
+        sim.write_outputs();
+        Ok(sim)
+    }
+
+    /// Builds as [`Self::new`] and creates the impact log when `impact_log` names a file: an unwritable
+    /// path is an error here, not at the first impact.
+    pub fn start(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
+        let mut sim = Self::new(params, start_time)?;
+        if !params.impact_log.is_empty() {
+            sim.log = Some(ImpactLog::create(&params.impact_log)?);
+        }
+        Ok(sim)
+    }
+
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    pub fn outputs(&self) -> &Outputs {
+        &self.outputs
+    }
+
+    /// The events of the last step, in order.
+    pub fn step_events(&self) -> &[EngineEvent] {
+        &self.step_events
+    }
+
+    /// Advances to exactly `t_end` with `inputs` held. All or nothing: on error `self` is unchanged.
+    pub fn step(&mut self, inputs: &Inputs, t_end: f64) -> Result<(), ModelError> {
+        let held = [
+            ("crank_speed", inputs.crank_speed),
+            ("gas_pressure", inputs.gas_pressure),
+            ("load_torque", inputs.load_torque),
+        ];
+        if let Some((name, value)) = held.iter().find(|(_, v)| !v.is_finite()) {
+            return Err(ModelError(format!("input {name} = {value} is not finite")));
+        }
+        if !(t_end.is_finite() && t_end > self.time) {
+            return Err(ModelError(format!(
+                "step end {t_end} s is not after the current time {} s",
+                self.time
+            )));
+        }
+        let mut model = self.model.clone();
+        let mut events = Vec::new();
+        model.advance(inputs, t_end, &mut events).map_err(|e| {
+            ModelError(format!(
+                "step from t = {} s to {t_end} s failed: {e}",
+                self.time
+            ))
+        })?;
+        let mut log = self.log.clone();
+        if let Some(log) = &mut log {
+            log.append(&events)?;
+        }
+        self.model = model;
+        self.time = t_end;
+        self.step_events = events;
+        self.log = log;
+        self.statistics.record_step(&self.step_events);
+        self.write_outputs();
+        Ok(())
+    }
+
+    /// After a restore: cut the impact log back to this state's cursor.
+    pub fn rewind_log(&self) -> Result<(), ModelError> {
+        self.log.as_ref().map_or(Ok(()), ImpactLog::rewind)
+    }
+
+    fn write_outputs(&mut self) {
+        self.model.write_outputs(&mut self.outputs);
+        self.statistics.write(&mut self.outputs);
+    }
+}
+
+#[cfg(test)]
+pub(crate) mod test_model;
+
+#[cfg(test)]
+mod tests;

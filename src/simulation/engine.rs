@@ -1,0 +1,36 @@
+//! The model variants behind one type, chosen by `model_variant`: 1 → crank train (Awrejcewicz &
+//! Kudra), 2 → roller slider crank (Farahanchi).
+
+use crate::models::{CrankTrain, EngineEvent, EngineModel, Inputs, ModelError, Outputs, Parameters, Roller};
+use serde::{Deserialize, Serialize};
+
+/// The engine model the FMU runs.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+pub enum Engine {
+    CrankTrain(CrankTrain),
+    Roller(Roller),
+}
+
+impl EngineModel for Engine {
+    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
+        match params.model_variant {
+            1 => CrankTrain::new(params, start_time).map(Engine::CrankTrain),
+            2 => Roller::new(params, start_time).map(Engine::Roller),
+            other => Err(ModelError(format!("model_variant = {other} is not one of 1..=2"))),
+        }
+    }
+
+    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        match self {
+            Engine::CrankTrain(m) => m.advance(inputs, t_end, events),
+            Engine::Roller(m) => m.advance(inputs, t_end, events),
+        }
+    }
+
+    fn write_outputs(&self, out: &mut Outputs) {
+        match self {
+            Engine::CrankTrain(m) => m.write_outputs(out),
+            Engine::Roller(m) => m.write_outputs(out),
+        }
+    }
+}

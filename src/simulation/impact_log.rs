@@ -1,0 +1,105 @@
+//! The `impact_log` CSV (DESIGN.md §4): one row per impact, slide start or release.
+//!
+//! The file always holds the events of the trajectory the instance is on: the cursor (bytes written so
+//! far) is part of the saved state, and restoring a state cuts the file back to that cursor, so rows
+//! of an abandoned future (a host's rejected step) disappear.
+
+use crate::models::{EngineEvent, EngineEventKind, ModelError};
+use serde::{Deserialize, Serialize};
+use std::fs::{File, OpenOptions};
+use std::io::Write;
+
+const HEADER: &str = "time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position\n";
+
+/// An open log: its path and the length of what this trajectory has written.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct ImpactLog {
+    path: String,
+    length: u64,
+}
+
+impl ImpactLog {
+    /// Creates (or truncates) the file and writes the header.
+    pub fn create(path: &str) -> Result<Self, ModelError> {
+        let mut log = Self {
+            path: path.to_string(),
+            length: 0,
+        };
+        let mut file = File::create(path).map_err(|e| log.error("cannot create", e))?;
+        file.write_all(HEADER.as_bytes())
+            .map_err(|e| log.error("cannot write", e))?;
+        log.length = HEADER.len() as u64;
+        Ok(log)
+    }
+
+    /// Appends one row per event; on failure the file is cut back and the cursor is unchanged.
+    pub fn append(&mut self, events: &[EngineEvent]) -> Result<(), ModelError> {
+        if events.is_empty() {
+            return Ok(());
+        }
+        let rows: String = events.iter().map(row).collect();
+        let mut file = OpenOptions::new()
+            .write(true)
+            .open(&self.path)
+            .map_err(|e| self.error("cannot open", e))?;
+        file.set_len(self.length)
+            .map_err(|e| self.error("cannot truncate", e))?;
+        let written = std::io::Seek::seek(&mut file, std::io::SeekFrom::Start(self.length))
+            .and_then(|_| file.write_all(rows.as_bytes()));
+        match written {
+            Ok(()) => {
+                self.length += rows.len() as u64;
+                Ok(())
+            }
+            Err(e) => {
+                // Best effort: the cursor did not move, a later append cuts the file back anyway.
+                let _ = file.set_len(self.length);
+                Err(self.error("cannot write", e))
+            }
+        }
+    }
+
+    /// Cuts the file back to this cursor (after a state restore). A file shorter than the cursor was
+    /// changed by someone else: refused.
+    pub fn rewind(&self) -> Result<(), ModelError> {
+        let file = OpenOptions::new()
+            .write(true)
+            .open(&self.path)
+            .map_err(|e| self.error("cannot open", e))?;
+        let actual = file
+            .metadata()
+            .map_err(|e| self.error("cannot inspect", e))?
+            .len();
+        if actual < self.length {
+            return Err(ModelError(format!(
+                "impact_log {:?} holds {actual} bytes, fewer than the {} of the restored state",
+                self.path, self.length
+            )));
+        }
+        file.set_len(self.length)
+            .map_err(|e| self.error("cannot truncate", e))
+    }
+
+    fn error(&self, what: &str, e: std::io::Error) -> ModelError {
+        ModelError(format!("impact_log: {what} {:?}: {e}", self.path))
+    }
+}
+
+/// One CSV row; floats in Rust's shortest round-trip form, so the file reproduces the values exactly.
+fn row(e: &EngineEvent) -> String {
+    let kind = match e.kind {
+        EngineEventKind::Impact => "impact",
+        EngineEventKind::Slide => "slide",
+        EngineEventKind::Release => "release",
+    };
+    format!(
+        "{},{},{kind},{},{},{},{},{}\n",
+        e.time,
+        e.crank_angle,
+        e.corner,
+        e.normal_velocity_before,
+        e.normal_velocity_after,
+        e.energy_lost,
+        e.position
+    )
+}

@@ -1,0 +1,163 @@
+use super::test_model::{Shuttle, SHUTTLE_SPEED};
+use super::*;
+use crate::models::ModelError;
+use std::path::PathBuf;
+
+type Sim = Simulation<Shuttle>;
+
+/// Half clearance c of the defaults: (0.08008 − 0.08)/2.
+const C: f64 = 4e-5;
+
+fn run(sim: &mut Sim, inputs: &Inputs, t_end: f64, h: f64) {
+    let t0 = sim.time();
+    let mut k = 1;
+    while sim.time() < t_end {
+        sim.step(inputs, (t0 + k as f64 * h).min(t_end)).unwrap();
+        k += 1;
+    }
+}
+
+/// Impact times of the shuttle from x = 0, ẋ = v0: t1 = c/v0, then 2c/(eᵏ v0) between impacts.
+fn impact_times(e: f64, n: usize) -> Vec<f64> {
+    let mut t = vec![C / SHUTTLE_SPEED];
+    for k in 1..n {
+        t.push(t[k - 1] + 2.0 * C / (e.powi(k as i32) * SHUTTLE_SPEED));
+    }
+    t
+}
+
+fn temp_path(name: &str) -> PathBuf {
+    std::env::temp_dir().join(format!("pistonslap_{}_{name}.csv", std::process::id()))
+}
+
+#[test]
+fn impact_statistics_match_the_closed_form() {
+    let p = Parameters::default();
+    let e = p.restitution;
+    let times = impact_times(e, 4);
+    assert!(
+        times[2] < 0.1 && times[3] > 0.1,
+        "three impacts before 0.1 s: {times:?}"
+    );
+    let inputs = Inputs::default();
+    let mut sim = Sim::new(&p, 0.0).unwrap();
+    let mut in_steps = 0;
+    let mut max_in_steps: f64 = 0.0;
+    for k in 1..=100 {
+        sim.step(&inputs, k as f64 * 1e-3).unwrap();
+        in_steps += sim.outputs().impacts_in_step;
+        max_in_steps = max_in_steps.max(sim.outputs().max_impact_velocity_in_step);
+    }
+    let out = sim.outputs();
+    assert_eq!(out.impact_count, 3);
+    assert_eq!(in_steps, 3);
+    assert_eq!(max_in_steps, SHUTTLE_SPEED);
+    assert!((out.impact_velocity - e * e * SHUTTLE_SPEED).abs() < 1e-15);
+    assert_eq!(
+        out.last_impact_corner, 3,
+        "the third impact is on the +x wall again"
+    );
+    let energy = 0.5 * p.piston_mass * SHUTTLE_SPEED.powi(2) * (1.0 - e.powi(6));
+    assert!(
+        (out.impact_energy_total - energy).abs() < 1e-12 * energy,
+        "{} vs {energy}",
+        out.impact_energy_total
+    );
+    assert!((out.last_impact_crank_angle - inputs.crank_speed * times[2]).abs() < 1e-9);
+    // The model's own outputs come through as well: after 0.1 s the shuttle heads for −c at e³v0.
+    assert!((out.piston_lateral_velocity + e.powi(3) * SHUTTLE_SPEED).abs() < 1e-15);
+}
+
+#[test]
+fn the_step_size_does_not_change_the_statistics() {
+    let p = Parameters::default();
+    let (mut fine, mut coarse) = (Sim::new(&p, 0.0).unwrap(), Sim::new(&p, 0.0).unwrap());
+    run(&mut fine, &Inputs::default(), 0.1, 1e-4);
+    run(&mut coarse, &Inputs::default(), 0.1, 0.03);
+    let (f, c) = (fine.outputs(), coarse.outputs());
+    assert_eq!(f.impact_count, c.impact_count);
+    assert!((f.impact_energy_total - c.impact_energy_total).abs() < 1e-15);
+    assert!((f.piston_lateral - c.piston_lateral).abs() < 1e-12);
+}
+
+#[test]
+fn a_failed_step_leaves_the_simulation_as_it_was() {
+    let mut sim = Sim::new(&Parameters::default(), 0.0).unwrap();
+    run(&mut sim, &Inputs::default(), 0.01, 1e-3);
+    let before = sim.clone();
+    let failing = Inputs {
+        gas_pressure: -1.0,
+        ..Inputs::default()
+    };
+    let err = sim.step(&failing, 0.011).unwrap_err();
+    assert!(
+        err.0.contains("negative gas_pressure") && err.0.contains("t = 0.01"),
+        "{err}"
+    );
+    assert_eq!(sim, before);
+    for bad in [f64::NAN, f64::INFINITY] {
+        let nan = Inputs {
+            crank_speed: bad,
+            ..Inputs::default()
+        };
+        assert!(sim.step(&nan, 0.011).unwrap_err().0.contains("crank_speed"));
+        assert_eq!(sim, before);
+    }
+    for t_end in [0.01, 0.005, f64::NAN] {
+        assert!(sim.step(&Inputs::default(), t_end).is_err());
+        assert_eq!(sim, before);
+    }
+}
+
+#[test]
+fn bad_parameters_are_refused_by_name() {
+    let p = Parameters {
+        piston_mass: -1.0,
+        ..Parameters::default()
+    };
+    let err: ModelError = Sim::new(&p, 0.0).unwrap_err();
+    assert!(err.0.contains("piston_mass"), "{err}");
+    assert!(Sim::new(&Parameters::default(), f64::NAN).is_err());
+}
+
+#[test]
+fn the_impact_log_holds_the_rows_of_the_trajectory() {
+    let path = temp_path("log");
+    let p = Parameters {
+        impact_log: path.to_str().unwrap().into(),
+        ..Parameters::default()
+    };
+    let mut sim = Sim::start(&p, 0.0).unwrap();
+    run(&mut sim, &Inputs::default(), 0.03, 1e-3);
+    let saved = sim.clone();
+    run(&mut sim, &Inputs::default(), 0.1, 1e-3);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let lines: Vec<&str> = text.lines().collect();
+    assert_eq!(lines[0], "time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position");
+    assert_eq!(lines.len(), 4);
+    for (line, t) in lines[1..].iter().zip(impact_times(0.5, 3)) {
+        let cols: Vec<&str> = line.split(',').collect();
+        assert_eq!(cols.len(), 8);
+        assert_eq!(cols[2], "impact");
+        assert!(
+            (cols[0].parse::<f64>().unwrap() - t).abs() < 1e-12,
+            "{line} vs {t}"
+        );
+    }
+    // Restoring the state saved at 0.03 s (two impacts) cuts the third row away.
+    saved.rewind_log().unwrap();
+    assert_eq!(std::fs::read_to_string(&path).unwrap().lines().count(), 3);
+    std::fs::remove_file(&path).unwrap();
+    assert!(saved.rewind_log().is_err(), "the file is gone");
+}
+
+#[test]
+fn an_unwritable_log_path_is_an_error_at_start() {
+    let p = Parameters {
+        impact_log: "/nonexistent-dir/pistonslap/log.csv".into(),
+        ..Parameters::default()
+    };
+    let err = Sim::start(&p, 0.0).unwrap_err();
+    assert!(err.0.contains("impact_log"), "{err}");
+    assert!(Sim::new(&p, 0.0).is_ok(), "new touches no file");
+}

@@ -1,0 +1,77 @@
+/* A minimal FMI 2.0 Co-Simulation host in C, compiled against fmi_headers/ and linked with the built
+ * libpistonslap.so by tests/fmi_c_abi.rs. Usage: host <guid> <vr crank_angle> <vr impact_count> <vr crank_speed>
+ * Prints "crank_angle=<value> impact_count=<n> errors=<refused misuses>" and exits 0 on success. */
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "fmi2Functions.h"
+
+static int logged = 0;
+
+static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status, fmi2String category,
+                   fmi2String message, ...) {
+    va_list args;
+    (void)env;
+    va_start(args, message);
+    fprintf(stderr, "[%s %d %s] ", name, (int)status, category);
+    vfprintf(stderr, message, args);
+    fprintf(stderr, "\n");
+    va_end(args);
+    logged++;
+}
+
+#define CHECK(call)                                                   \
+    do {                                                              \
+        fmi2Status s_ = (call);                                       \
+        if (s_ != fmi2OK) {                                           \
+            fprintf(stderr, "%s returned %d\n", #call, (int)s_);      \
+            return 1;                                                 \
+        }                                                             \
+    } while (0)
+
+#define REFUSED(call)                                                 \
+    do {                                                              \
+        if ((call) != fmi2Error) {                                    \
+            fprintf(stderr, "%s was not refused\n", #call);           \
+            return 1;                                                 \
+        }                                                             \
+        errors++;                                                     \
+    } while (0)
+
+int main(int argc, char **argv) {
+    fmi2CallbackFunctions callbacks = {logger, NULL, NULL, NULL, NULL};
+    fmi2ValueReference angle, count, speed;
+    fmi2Component c;
+    fmi2FMUstate state = NULL;
+    fmi2Real value, nan = 0.0;
+    fmi2Integer impacts;
+    int i, errors = 0;
+
+    if (argc != 5) return 2;
+    angle = (fmi2ValueReference)atoi(argv[2]);
+    count = (fmi2ValueReference)atoi(argv[3]);
+    speed = (fmi2ValueReference)atoi(argv[4]);
+    if (fmi2Instantiate("c_host", fmi2CoSimulation, "{wrong}", "file:///tmp", &callbacks, fmi2False, fmi2False)) return 3;
+    c = fmi2Instantiate("c_host", fmi2CoSimulation, argv[1], "file:///tmp", &callbacks, fmi2False, fmi2False);
+    if (!c) return 4;
+    REFUSED(fmi2DoStep(c, 0.0, 1e-3, fmi2True));
+    CHECK(fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2True, 0.05));
+    CHECK(fmi2EnterInitializationMode(c));
+    CHECK(fmi2ExitInitializationMode(c));
+    nan = nan / nan;
+    REFUSED(fmi2SetReal(c, &speed, 1, &nan));
+    REFUSED(fmi2DoStep(c, 0.0, -1e-3, fmi2True));
+    for (i = 0; i < 50; i++) {
+        if (i == 25) CHECK(fmi2GetFMUstate(c, &state));
+        CHECK(fmi2DoStep(c, i * 1e-3, 1e-3, fmi2True));
+    }
+    CHECK(fmi2SetFMUstate(c, state));
+    for (i = 25; i < 50; i++) CHECK(fmi2DoStep(c, i * 1e-3, 1e-3, fmi2True));
+    CHECK(fmi2FreeFMUstate(c, &state));
+    CHECK(fmi2GetReal(c, &angle, 1, &value));
+    CHECK(fmi2GetInteger(c, &count, 1, &impacts));
+    CHECK(fmi2Terminate(c));
+    fmi2FreeInstance(c);
+    printf("crank_angle=%.17g impact_count=%d errors=%d logged=%d\n", value, impacts, errors, logged);
+    return 0;
+}

@@ -1,0 +1,47 @@
+//! Moving constraints: ∂h/∂t in the impact law (eq 7) and ∂²h/∂t² in the sliding law (eq 18).
+
+use nalgebra::Vector1;
+use pistonslap::dynamics::testbeds::{Ball, Floor};
+use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
+
+fn ball(gravity: f64, restitution: f64, floor: Floor, y: f64, v: f64) -> Stepper<Ball, 1, 1> {
+    let ball = Ball { mass: 1.0, gravity, restitution, floor };
+    Stepper::new(ball, 0.0, Vector1::new(y), Vector1::new(v), StepperOptions { step: 1e-3, ..Default::default() }).unwrap()
+}
+
+/// A wall moving at speed u meets a ball of speed v: ḣ⁺ = −e ḣ⁻ with ḣ = v − u, so
+/// v⁺ = (1 + e) u − e v. The wall does work: T⁻ − T⁺ = (v² − v⁺²)/2 can be negative.
+#[test]
+fn moving_wall_enters_the_impact_law() {
+    let e = 0.5;
+    // (wall speed u, ball start y, ball speed v, impact time y/(u − v) with the wall at u·t)
+    for (u, y, v) in [(0.5, 1.0, 0.0), (-1.0, 1.0, -2.0)] {
+        let mut s = ball(0.0, e, Floor::Moving { velocity: u }, y, v);
+        s.advance(3.0).unwrap();
+        let impacts: Vec<_> = s.events().iter().filter(|ev| ev.kind == EventKind::Impact).collect();
+        assert_eq!(impacts.len(), 1);
+        let ev = impacts[0];
+        let v_plus = (1.0 + e) * u - e * v;
+        assert!((ev.time - y / (u - v)).abs() < 1e-12, "impact at {}", ev.time);
+        assert!((ev.velocity_before - (v - u)).abs() < 1e-12);
+        assert!((ev.velocity_after + e * (v - u)).abs() < 1e-12);
+        assert!((ev.energy_lost - 0.5 * (v * v - v_plus * v_plus)).abs() < 1e-12);
+        assert!((s.velocity()[0] - v_plus).abs() < 1e-12);
+    }
+}
+
+/// A ball resting on a floor oscillating as A sin(Ωt) feels λ = m (g + ÿ_f) = m (g − AΩ² sin Ωt)
+/// and leaves the floor when this reaches zero: sin Ω t_r = g / (AΩ²).
+#[test]
+fn oscillating_floor_releases_the_ball_when_the_force_vanishes() {
+    let (g, a, w) = (9.81, 0.01, 50.0);
+    let mut s = ball(g, 0.5, Floor::Oscillating { amplitude: a, angular_frequency: w }, 0.0, a * w);
+    assert!(s.in_contact(0), "starts at rest on the floor");
+    s.advance(0.004).unwrap();
+    assert!((s.multipliers()[0] - (g - a * w * w * (w * 0.004).sin())).abs() < 1e-9);
+    assert!((s.position()[0] - a * (w * 0.004).sin()).abs() < 1e-12, "tracks the floor");
+    s.advance(0.02).unwrap();
+    let release = s.events().iter().find(|ev| ev.kind == EventKind::Release).expect("released");
+    let t_r = (g / (a * w * w)).asin() / w;
+    assert!((release.time - t_r).abs() < 1e-12, "release at {} vs {t_r}", release.time);
+}
