@@ -14,6 +14,7 @@
 //!   persistent contact for the constraints at rest whose multipliers the sliding complementarity
 //!   problem keeps non-negative; the Zeno guard ([`ZENO_APEX_FACTOR`]) turns an accumulation of
 //!   impacts into sliding, and an event budget per `advance` turns anything else into an error.
+//!
 //! Constraint sets are bitmasks, all matrices are fixed-size: no heap use but the event record.
 
 mod contact;
