@@ -7,7 +7,11 @@ use std::path::PathBuf;
 use std::process::Command;
 
 fn vr(name: &str) -> String {
-    VARIABLES.iter().position(|v| v.name == name).expect(name).to_string()
+    VARIABLES
+        .iter()
+        .position(|v| v.name == name)
+        .expect(name)
+        .to_string()
 }
 
 #[test]
@@ -16,14 +20,26 @@ fn a_c_host_runs_one_cycle() {
     // The test binary lives in <target>/<profile>/deps, the cdylib in <target>/<profile>. `cargo test`
     // does not link the cdylib, so build it (a no-op when fresh) with this test's profile.
     let exe = std::env::current_exe().unwrap();
-    let lib_dir = exe.parent().and_then(|deps| deps.parent()).unwrap().to_path_buf();
-    let profile = if lib_dir.ends_with("release") { "release" } else { "dev" };
+    let lib_dir = exe
+        .parent()
+        .and_then(|deps| deps.parent())
+        .unwrap()
+        .to_path_buf();
+    let profile = if lib_dir.ends_with("release") {
+        "release"
+    } else {
+        "dev"
+    };
     let built = Command::new(env!("CARGO"))
         .args(["build", "--lib", "--profile", profile])
         .current_dir(&root)
         .status()
         .expect("cargo");
-    assert!(built.success() && lib_dir.join("libpistonslap.so").is_file(), "no cdylib in {}", lib_dir.display());
+    assert!(
+        built.success() && lib_dir.join("libpistonslap.so").is_file(),
+        "no cdylib in {}",
+        lib_dir.display()
+    );
     let host = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("c_host");
     let compiled = Command::new("gcc")
         .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-o"])
@@ -39,17 +55,33 @@ fn a_c_host_runs_one_cycle() {
     assert!(compiled.success(), "gcc failed");
 
     let out = Command::new(&host)
-        .args([GUID.to_string(), vr("crank_angle"), vr("impact_count"), vr("crank_speed")])
+        .args([
+            GUID.to_string(),
+            vr("crank_angle"),
+            vr("impact_count"),
+            vr("crank_speed"),
+        ])
         .output()
         .unwrap();
     let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(out.status.success(), "host exited {:?}\n{stdout}\n{}", out.status, String::from_utf8_lossy(&out.stderr));
+    assert!(
+        out.status.success(),
+        "host exited {:?}\n{stdout}\n{}",
+        out.status,
+        String::from_utf8_lossy(&out.stderr)
+    );
     let field = |name: &str| -> f64 {
-        let item = stdout.split_whitespace().find_map(|w| w.strip_prefix(&format!("{name}="))).expect(name);
+        let item = stdout
+            .split_whitespace()
+            .find_map(|w| w.strip_prefix(&format!("{name}=")))
+            .expect(name);
         item.parse().unwrap()
     };
     // Prescribed speed 125.66 rad/s from crank angle 0 for 0.05 s.
-    assert!((field("crank_angle") - 125.66 * 0.05).abs() < 1e-9, "{stdout}");
+    assert!(
+        (field("crank_angle") - 125.66 * 0.05).abs() < 1e-9,
+        "{stdout}"
+    );
     assert!(field("impact_count") >= 0.0);
     assert_eq!(field("errors"), 3.0, "{stdout}");
     // The wrong GUID and the three refused calls each logged a message.

@@ -264,6 +264,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         while self.state.t < t_end {
             let t = self.state.t;
             let t1 = if t_end - t <= self.options.step { t_end } else { t + self.options.step };
+            if t1 <= t {
+                return Err(DynamicsError::InvalidArgument { time: t, reason: "the step is below the time resolution at this time" });
+            }
             if self.step(t1)? {
                 handled += 1;
                 if handled > self.event_budget {
