@@ -80,10 +80,9 @@ fn write_fmu(out: &Path, binary: &[u8]) -> zip::result::ZipResult<()> {
 
 const RESOURCES_README: &str = "\
 PistonSlap needs no resource files. The built-in four-stroke pressure curve (pressure_source = 2) is
-computed in the binary: a closed-cylinder polytropic compression and expansion with a Wiebe burn
-fraction (compression ratio 17, exponent 1.35, burn from 8 degrees before firing TDC over 60 degrees,
-exhaust valve opening 130 degrees after TDC), zero gauge pressure during exhaust and intake, scaled so
-that its maximum is peak_pressure. See documentation/index.html.
+computed in the binary (src/models/pressure.rs in the sources): a closed-cylinder polytropic
+compression and expansion with a Wiebe burn fraction, zero gauge pressure during exhaust and intake,
+scaled so that its maximum is peak_pressure. See documentation/index.html.
 ";
 
 fn escape(s: &str) -> String {

@@ -565,8 +565,10 @@ pub unsafe fn cancel_step<E: Model>(c: fmi2Component) -> Status {
     unsupported::<E>(
         c,
         "fmi2CancelStep",
-        &[],
-        "fmi2DoStep is synchronous: there is never a step in progress",
+        // Allowed only in stepInProgress, a state a synchronous fmi2DoStep never leaves behind:
+        // in any live state the refusal says why.
+        STATE,
+        "fmi2DoStep is synchronous: there is never a step in progress to cancel",
     )
 }
 
