@@ -538,7 +538,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             };
             // An approach slower than ε_ḣ that sliding refuses (its force would pull) still needs
             // the impact law, or the gap closes at the next instant with nothing to resolve it.
-            let grazing = closed & !support & !impacted & select::<M>(|i| hd[i] < 0.0);
+            // A constraint leaving persistent contact has ḣ = 0 up to round-off: no impact.
+            let grazing = closed & !support & !impacted & !was_active & select::<M>(|i| hd[i] < 0.0);
             if grazing == 0 {
                 break support;
             }
