@@ -43,13 +43,14 @@ THESIS_RESPONSES = {
 _REPO = Path(__file__).resolve().parents[2]
 
 
-def thesis_start_values(lam, rho, e, forcing=1):
-    """FMU start values that make the run the thesis's (lambda, rho, e) with roller_forcing = `forcing`."""
+def thesis_start_values(lam, rho, e, forcing=1, start=0.0):
+    """FMU start values that make the run the thesis's (lambda, rho, e) with roller_forcing = `forcing`,
+    from psi = psi' = 0 at crank angle `start`."""
     return {
         "model_variant": 2, "roller_forcing": forcing, "crank_mode": 1,
         "crank_radius": XI, "rod_length": 1.0, "rod_mass": ALPHA, "piston_mass": 1.0, "rod_inertia": BETA,
         "damping_crank_pin": lam, "piston_diameter": _DIAMETER, "bore": _DIAMETER + 2 * rho,
-        "restitution": e, "crank_angle_start": 0.0, "crank_speed": 1.0,
+        "restitution": e, "crank_angle_start": start, "crank_speed": 1.0,
     }
 
 
@@ -77,10 +78,11 @@ class Run:
         return self.cycle >= first_cycle
 
 
-def impacts_from_log(events, rho):
-    """Thesis quantities of the impact-log rows of a run in thesis units (l = 1, Omega = 1, start at 0)."""
+def impacts_from_log(events, rho, start=0.0):
+    """Thesis quantities of the impact-log rows of a run in thesis units (l = 1, Omega = 1, crank angle
+    `start` at time 0)."""
     impacts = events[events["kind"] == "impact"]
-    theta = impacts["time"]  # crank angle, accumulated
+    theta = start + impacts["time"]  # crank angle, accumulated
     big = np.sqrt(1 - XI**2 * np.sin(theta) ** 2)
     wall = np.where(impacts["corner"] == 3, 1, -1)
     approach = impacts["normal_velocity_before"] / big
@@ -90,7 +92,7 @@ def impacts_from_log(events, rho):
     slides = events[events["kind"] == "slide"]
     return dict(
         cycle=np.floor(theta / CRANK_CYCLE).astype(int), theta=np.mod(theta, CRANK_CYCLE), wall=wall,
-        rate=rate, approach=approach, location=impacts["position"], slide_cycle=np.floor(slides["time"] / CRANK_CYCLE).astype(int),
+        rate=rate, approach=approach, location=impacts["position"], slide_cycle=np.floor((start + slides["time"]) / CRANK_CYCLE).astype(int),
     )
 
 
@@ -108,16 +110,17 @@ def _progress_printer(label, stop_time):
     return step_finished
 
 
-def simulate_case(lam, rho, e, forcing=1, cycles=1530, progress=True, log_path=None):
-    """Runs the FMU for `cycles` crank cycles from psi = psi' = 0 at theta = 0 and returns the `Run`."""
+def simulate_case(lam, rho, e, forcing=1, cycles=1530, progress=True, log_path=None, start=0.0):
+    """Runs the FMU for `cycles` crank cycles from psi = psi' = 0 at crank angle `start` and returns the `Run`
+    (crank cycle k is theta in [2 pi k, 2 pi (k + 1)); the partial last one is not counted)."""
     stop_time = cycles * CRANK_CYCLE
     label = f"lambda={lam} rho={rho} e={e}"
     _, events = simulate_with_events(
-        log_path=log_path, start_values=thesis_start_values(lam, rho, e, forcing), stop_time=stop_time,
+        log_path=log_path, start_values=thesis_start_values(lam, rho, e, forcing, start), stop_time=stop_time,
         output_interval=CRANK_CYCLE, output=["impact_count"],
         step_finished=_progress_printer(label, stop_time) if progress else None,
     )
-    return Run(lam=lam, rho=rho, e=e, forcing=forcing, cycles=cycles, **impacts_from_log(events, rho))
+    return Run(lam=lam, rho=rho, e=e, forcing=forcing, cycles=cycles, **impacts_from_log(events, rho, start))
 
 
 @dataclass
@@ -310,7 +313,11 @@ THESIS_RUNS = [(lam, rho, 0.9) for lam in (0.025, 0.05, 0.075, 0.15, 0.20, 0.25)
     (0.05, 0.02, 0.7), (0.05, 0.02, 0.5)]
 
 
-def write_thesis(out, transient=30, cycles=1500, forcing=1):
+#: Starting crank angles of the runs that test how the classification depends on the start (rad).
+STARTS = (0.0, 1.0, 2.0, 3.0, 4.0, 5.0)
+
+
+def write_thesis(out, transient=30, cycles=1500, forcing=1, starts=STARTS):
     """Chapter 4: every run of THESIS_RUNS with `transient` + `cycles` crank cycles; a summary table (CSV and
     markdown) and figure sheets of the impact profiles and Poincare sections."""
     from . import roller_plots
@@ -320,7 +327,12 @@ def write_thesis(out, transient=30, cycles=1500, forcing=1):
     for lam, rho, e in THESIS_RUNS:
         run = simulate_case(lam, rho, e, forcing, transient + cycles)
         response, row = write_case(run, out / "cases", transient)
-        print(f"lambda={lam} rho={rho} e={e}: {response} (thesis: {row['thesis']})")
+        # the same case from other starting crank angles: transients and coexisting attractors
+        others = [classify(simulate_case(lam, rho, e, forcing, transient + cycles, start=s)) for s in starts[1:]]
+        kinds = [response.kind] + [r.kind for r in others]
+        row["starts"] = ", ".join(f"{kinds.count(k)}× {k}" for k in ("periodic", "transient chaos", "chaos") if k in kinds)
+        row["periods"] = " ".join(str(r.period) for r in [response] + others)
+        print(f"lambda={lam} rho={rho} e={e}: {response} (thesis: {row['thesis']}); over {len(kinds)} starts: {row['starts']}")
         runs.append((run, response))
         rows.append(row)
     header = list(rows[0])
@@ -378,6 +390,8 @@ def main(argv=None):
         p.add_argument("--forcing", type=int, default=1, choices=(1, 2), help="roller_forcing (1 = as printed)")
         p.add_argument("--transient", type=int, default=30, help="crank cycles before the statistics")
         p.add_argument("--cycles", type=int, default=1500, help="crank cycles of statistics")
+    sub.choices["thesis"].add_argument("--starts", type=float, nargs="+", default=list(STARTS),
+                                       help="starting crank angles (rad); statistics and figures from the first")
     sub.add_parser("forces", help="constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)")
     cross = sub.add_parser("crosscheck", help="variant 1 in the roller limit against variant 2 (roller_forcing = 2)")
     cross.add_argument("--clearance", type=float, nargs="+", default=[10e-6, 20e-6, 40e-6, 80e-6, 160e-6, 320e-6], help="m")
@@ -402,7 +416,7 @@ def main(argv=None):
     elif args.command == "forces":
         print(f"wrote {write_forces(args.out)}")
     else:
-        for path in write_thesis(args.out, args.transient, args.cycles, args.forcing):
+        for path in write_thesis(args.out, args.transient, args.cycles, args.forcing, args.starts):
             print(f"wrote {path}")
 
 
