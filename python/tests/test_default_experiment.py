@@ -88,10 +88,6 @@ def test_impacts_obey_newtons_law(run):
     assert np.all(after >= RESTITUTION * before - 1e-12)
 
 
-@pytest.mark.xfail(strict=True, reason=(
-    "known FMU bug, reported to the coordinator: dynamics/impact.rs energy_lost uses -Λ·J(q̇⁻+q̇⁺)/2, which with the "
-    "prescribed crank leaves out the constraint's ∂h/∂t and so counts the drive's impulsive work (about 3 J per m/s "
-    "of approach speed, either sign); the dissipation is -Λ·(ḣ⁻+ḣ⁺)/2 with the full gap rates ḣ = J q̇ + ∂h/∂t"))
 def test_impact_energy_is_what_the_restitution_dissipates(run):
     """A single impact at speed v dissipates ½(1 - e²) m v², m the corner's effective mass. With the crank held at
     its prescribed speed only the piston and the rod move; locking the tilt can only raise m, to at most the

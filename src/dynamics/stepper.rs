@@ -63,8 +63,10 @@ pub struct Event<const N: usize> {
     pub velocity_before: f64,
     /// ḣ⁺.
     pub velocity_after: f64,
-    /// ½q̇⁻ᵀMq̇⁻ − ½q̇⁺ᵀMq̇⁺ due to this constraint's impulse (an impact, or the projection onto
-    /// ḣ = 0 when sliding starts); negative when a moving constraint does work.
+    /// Energy dissipated by this constraint's impulse Λ (an impact, or the projection onto ḣ = 0
+    /// when sliding starts): `−Λ (ḣ⁻ + ḣ⁺) / 2`, ≥ 0 for an approaching constraint. Equal to its
+    /// share of `T⁻ − T⁺` for a fixed constraint; a moving one also does the work `−Λ ∂h/∂t` on
+    /// the system (the drive's, not dissipated), which is not counted here.
     pub energy_lost: f64,
     /// Configuration at the event.
     pub q: SVector<f64, N>,
@@ -521,8 +523,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 let impulse = impact::newton_impulses(&frame, &hd, &e, closed)
                     .ok_or(DynamicsError::MultipleImpact { time: t, constraints: closed })?;
                 let v_plus = v + frame.minv_jt * impulse;
-                let lost = impact::energy_lost(&ev.gap_jacobian, &impulse, &v, &v_plus);
                 let hd_plus = hd + frame.w * impulse;
+                let lost = impact::energy_lost(&impulse, &hd, &hd_plus);
                 // Recorded: every approaching constraint, and any other that took a real impulse
                 // (one that changes its own ḣ by more than ε_ḣ), e.g. a sliding one pushed harder.
                 let pushed = select::<M>(|i| impulse[i] * frame.w[(i, i)] > opts.velocity_tolerance);
@@ -547,7 +549,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             };
             // An approach slower than ε_ḣ that sliding refuses (its force would pull) still needs
             // the impact law, or the gap closes at the next instant with nothing to resolve it.
-            let grazing = closed & !support & !impacted & select::<M>(|i| hd[i] < 0.0);
+            // A constraint leaving persistent contact has ḣ = 0 up to round-off: no impact.
+            let grazing = closed & !support & !impacted & !was_active & select::<M>(|i| hd[i] < 0.0);
             if grazing == 0 {
                 break support;
             }
@@ -560,8 +563,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             let (dq, _) = frame.projection(&ev.gap, support).ok_or(dependent.clone())?;
             let (dv, impulse) = frame.projection(&hd, support).ok_or(dependent)?;
             v_new = v + dv;
-            let lost = impact::energy_lost(&ev.gap_jacobian, &impulse, &v, &v_new);
             let hd_after = hd + frame.w * impulse;
+            let lost = impact::energy_lost(&impulse, &hd, &hd_after);
             for i in members::<M>(support & !was_active) {
                 self.record(EventKind::Slide, i, hd[i], hd_after[i], lost[i], q);
             }
