@@ -3,6 +3,7 @@
     python -m pistonslap.analysis case --lam 0.05 --rho 0.015 [--e 0.9] [--forcing 1] [--cycles 1500] --out DIR
     python -m pistonslap.analysis forces --out DIR      constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)
     python -m pistonslap.analysis thesis --out DIR      chapter 4: the 20 runs, a summary table and figure sheets
+    python -m pistonslap.analysis crosscheck [--clearance M ...]   variant 1 in the roller limit vs variant 2
 
 The FMU runs in the thesis's units: rod_length = 1 m, piston_mass = 1 kg and crank_speed = 1 rad/s make its
 parameters the thesis's xi, alpha, beta, lambda (damping_crank_pin) and rho ((bore - piston_diameter)/2), and
@@ -333,6 +334,39 @@ def write_thesis(out, transient=30, cycles=1500, forcing=1):
     return out / "summary.md", sheet
 
 
+#: An engine-sized roller slider crank for the cross-check (FMU defaults where they apply).
+_CROSS = dict(crank_mode=1, crank_radius=0.04, rod_length=0.15, rod_mass=1.0, piston_mass=0.4, rod_inertia=0.0075,
+              damping_crank_pin=0.00576, damping_piston_pin=0.0, piston_diameter=0.08, restitution=0.5, gravity=0.0,
+              crank_speed=125.66, crank_angle_start=0.0)
+
+
+def _cross_sequence(events, corners, min_speed):
+    """Impacts faster than `min_speed` and releases, on `corners`: the part of a run that the variants share
+    (the tails of impact accumulations end in sliding by different thresholds)."""
+    keep = ((events["kind"] == "impact") & (events["normal_velocity_before"] > min_speed)) | (events["kind"] == "release")
+    events = events[keep & np.isin(events["corner"], corners)]
+    # a contact released, re-closed and released again at one instant is one release here
+    repeat = np.r_[False, (events["kind"][1:] == "release") & (events["kind"][:-1] == "release") & (np.diff(events["time"]) < 1e-9)]
+    return events[~repeat]
+
+
+def cross_check(clearance, stop_time=0.05, min_speed=2e-3):
+    """Variant 1 in the roller limit against variant 2 with roller_forcing = 2 (issue 5, point 6): the piston of
+    variant 1 reduced to a short block (skirt 12 mm, pin in its middle, negligible tilt inertia; variant 1 needs
+    a piston diagonal longer than the bore) on a uniform rod, no gravity, gas force or piston-pin damping.
+
+    Returns (variant-1 sequence, variant-2 sequence) of impacts and releases. Variant 1's corner 1 is matched
+    with variant 2's corner 3: A&K put the crank pin at x = -l1 sin(phi1) (eq 57), so the wall the pin swings
+    toward after TDC, the thesis's upper wall, is A&K's -D/2 wall."""
+    common = dict(_CROSS, bore=_CROSS["piston_diameter"] + 2 * clearance)
+    crank_train = dict(common, model_variant=1, skirt_length=0.012, pin_height=0.006, piston_com=0.0,
+                       rod_com=common["rod_length"] / 2, piston_inertia=1e-7, pressure_source=1, gas_pressure=0.0)
+    roller = dict(common, model_variant=2, roller_forcing=2)
+    runs = [simulate_with_events(start_values=values, stop_time=stop_time, output_interval=1e-3, output=["impact_count"])[1]
+            for values in (crank_train, roller)]
+    return _cross_sequence(runs[0], (1,), min_speed), _cross_sequence(runs[1], (3,), min_speed)
+
+
 def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
@@ -345,6 +379,8 @@ def main(argv=None):
         p.add_argument("--transient", type=int, default=30, help="crank cycles before the statistics")
         p.add_argument("--cycles", type=int, default=1500, help="crank cycles of statistics")
     sub.add_parser("forces", help="constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)")
+    cross = sub.add_parser("crosscheck", help="variant 1 in the roller limit against variant 2 (roller_forcing = 2)")
+    cross.add_argument("--clearance", type=float, nargs="+", default=[10e-6, 20e-6, 40e-6, 80e-6, 160e-6, 320e-6], help="m")
     for p in sub.choices.values():
         p.add_argument("--out", type=Path, default=Path("out/thesis"), help="output folder")
     args = parser.parse_args(argv)
@@ -353,6 +389,16 @@ def main(argv=None):
         run = simulate_case(args.lam, args.rho, args.e, args.forcing, args.transient + args.cycles)
         response, row = write_case(run, args.out, args.transient)
         print(f"{response}; {row}")
+    elif args.command == "crosscheck":
+        for clearance in args.clearance:
+            crank_train, roller = cross_check(clearance)
+            n = min(len(crank_train), len(roller))
+            same = len(crank_train) == len(roller) and np.all(crank_train["kind"] == roller["kind"])
+            impacts = crank_train["kind"][:n] == "impact"
+            speed = np.abs(crank_train["normal_velocity_before"][:n][impacts] / roller["normal_velocity_before"][:n][impacts] - 1)
+            angle = np.abs(crank_train["time"][:n] - roller["time"][:n]) * _CROSS["crank_speed"]
+            print(f"clearance {clearance * 1e6:g} um: {len(crank_train)} / {len(roller)} events, same sequence {same}; "
+                  f"largest crank-angle difference {angle.max():.1e} rad, relative impact-velocity difference {speed.max():.1e}")
     elif args.command == "forces":
         print(f"wrote {write_forces(args.out)}")
     else:
