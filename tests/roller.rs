@@ -199,6 +199,26 @@ fn a_crank_speed_change_keeps_the_lateral_velocity() {
     assert!((after.piston_lateral_velocity - before.piston_lateral_velocity).abs() < 1e-3 * before.piston_lateral_velocity.abs());
 }
 
+/// At an engine's scale (the FMU's defaults: ρ ≈ 2.7e-4, λ ≈ 5e-3 at 1200 rpm) the corrected model's
+/// sliding threshold scales with the clearance: the piston bounces before it slides, and the impacts
+/// of an accumulation fall geometrically by e until sliding takes over.
+#[test]
+fn engine_scale_piston_bounces_before_it_slides() {
+    let params = Parameters { model_variant: 2, ..Parameters::default() };
+    let mut model = Roller::new(&params, 0.0).unwrap();
+    let mut events = Vec::new();
+    model.advance(&speed(125.66), 0.05, &mut events).unwrap();
+    let first_slide = events.iter().position(|e| e.kind == EngineEventKind::Slide).unwrap();
+    assert!(first_slide >= 3, "{:?}", &events[..first_slide + 1]);
+    for pair in events[..first_slide].windows(2) {
+        assert_eq!(pair[0].kind, EngineEventKind::Impact);
+        if pair[1].kind == EngineEventKind::Impact && pair[1].corner == pair[0].corner {
+            assert!(pair[1].normal_velocity_before < pair[0].normal_velocity_before);
+        }
+    }
+    assert!(events[0].normal_velocity_before > 1e-3);
+}
+
 /// Bad parameters and inputs are refused with the parameter named.
 #[test]
 fn refuses_what_the_model_cannot_do() {

@@ -103,3 +103,20 @@ def test_profile_and_spectra_follow_eqs_3_6_and_3_7():
     assert upper[np.searchsorted(edges, 1.2) - 1] == pytest.approx(0.01)
     _, s_upper, s_lower = analysis.impact_spectra(run, first_cycle=10, bins=12)
     assert s_upper[0] == pytest.approx(0.01) and s_lower[6] == pytest.approx(0.005)
+
+
+def test_crank_train_in_the_roller_limit_matches_the_roller(fmu_file):
+    """Issue 5 point 6: variant 1 with a short piston, centred pin, uniform rod, no gravity, gas force or pin
+    damping gives the impact sequence of variant 2 (roller_forcing = 2), mirrored (A&K's crank pin swings
+    toward -x after TDC, the thesis's toward its upper wall); the differences shrink with the clearance."""
+    differences = []
+    for clearance in (20e-6, 160e-6):
+        crank_train, roller = analysis.cross_check(clearance)
+        assert len(crank_train) == len(roller) >= 8
+        assert np.all(crank_train["kind"] == roller["kind"])
+        impacts = roller["kind"] == "impact"
+        speed = np.abs(crank_train["normal_velocity_before"][impacts] / roller["normal_velocity_before"][impacts] - 1).max()
+        angle = np.abs(crank_train["time"] - roller["time"]).max() * 125.66
+        assert speed < 2e-3 and angle < 1e-3
+        differences.append(speed)
+    assert differences[0] < differences[1] / 4

@@ -23,7 +23,8 @@ pub(crate) fn newton_impulses<const N: usize, const M: usize>(
     for i in members::<M>(closed) {
         b[i] = hd_minus[i] + restitution[i] * hd_minus[i].min(0.0);
     }
-    solve_lcp(&frame.w, &b, closed).map(|(impulse, _)| impulse)
+    let scale = members::<M>(closed).fold(0.0_f64, |s, i| s.max(hd_minus[i].abs()));
+    solve_lcp(&frame.w, &b, closed, scale).map(|(impulse, _)| impulse)
 }
 
 /// The energy each impulse dissipates, `−Λᵢ (ḣ⁻ᵢ + ḣ⁺ᵢ) / 2` with `ḣ = J q̇ + ∂h/∂t`: the work

@@ -5,7 +5,7 @@ use super::contact::{bit, contains, members, select, Frame, Set};
 use super::events::{self, Bracket, EventLocator, Located, Start};
 use super::rk4::{self, Hermite5};
 use super::{impact, Evaluation, System};
-use nalgebra::SVector;
+use nalgebra::{Cholesky, SVector};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -175,6 +175,20 @@ fn frame_at<S: System<N, M>, const N: usize, const M: usize>(
     Ok((ev, frame))
 }
 
+/// `q̈` and `λ` with the set `active` held; free flight needs only `M⁻¹ f`, not the contact frame.
+fn acceleration<const N: usize, const M: usize>(
+    ev: &Evaluation<N, M>,
+    t: f64,
+    active: Set,
+) -> Result<(SVector<f64, N>, SVector<f64, M>), DynamicsError> {
+    if active == 0 {
+        let chol = Cholesky::new(ev.mass).ok_or(DynamicsError::SingularMass { time: t })?;
+        return Ok((chol.solve(&ev.force), SVector::zeros()));
+    }
+    let frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
+    frame.constrained(ev, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })
+}
+
 fn sample<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     t: f64,
@@ -182,9 +196,8 @@ fn sample<S: System<N, M>, const N: usize, const M: usize>(
     v: SVector<f64, N>,
     active: Set,
 ) -> Result<Sample<N, M>, DynamicsError> {
-    let (ev, frame) = frame_at(sys, t, &q, &v)?;
-    let (acc, lambda) =
-        frame.constrained(&ev, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })?;
+    let ev = sys.evaluate(t, &q, &v);
+    let (acc, lambda) = acceleration(&ev, t, active)?;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd };
     let finite = |x: &[f64]| x.iter().all(|v| v.is_finite());
@@ -205,11 +218,7 @@ fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
     t: f64,
     active: Set,
 ) -> Result<Sample<N, M>, DynamicsError> {
-    let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
-        let (ev, frame) = frame_at(sys, t, q, v)?;
-        let (acc, _) = frame.constrained(&ev, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })?;
-        Ok(acc)
-    };
+    let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| Ok(acceleration(&sys.evaluate(t, q, v), t, active)?.0);
     let (q, v) = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
     sample(sys, t, q, v, active)
 }
