@@ -845,3 +845,5 @@ fn both_engine_variants_continue_bit_identically_after_restore_and_through_bytes
         other.free_state(copy);
     }
 }
+
+mod state_machine;
