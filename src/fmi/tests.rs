@@ -847,3 +847,5 @@ fn both_engine_variants_continue_bit_identically_after_restore_and_through_bytes
 }
 
 mod state_machine;
+mod fuzz;
+mod threads;

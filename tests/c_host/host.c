@@ -1,6 +1,10 @@
 /* A minimal FMI 2.0 Co-Simulation host in C, compiled against fmi_headers/ and linked with the built
- * libpistonslap.so by tests/fmi_c_abi.rs. Usage: host <guid> <vr crank_angle> <vr impact_count> <vr crank_speed>
- * Prints "crank_angle=<value> impact_count=<n> errors=<refused misuses>" and exits 0 on success. */
+ * libpistonslap.so by tests/fmi_c_abi.rs.
+ * Usage: host <guid> <vr crank_angle> <vr impact_count> <vr crank_speed> [cycles]
+ * Runs one checked cycle, then cycles - 1 more short ones (instantiate, initialize, a few steps, an FMU
+ * state through bytes and back, free: what a memory checker should see released).
+ * Prints "crank_angle=<value> impact_count=<n> errors=<refused misuses> logged=<messages>" and exits 0
+ * on success. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -38,6 +42,34 @@ static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status sta
         errors++;                                                     \
     } while (0)
 
+/* One short cycle; returns 0 when every call succeeded. */
+static int short_cycle(const char *guid, const fmi2CallbackFunctions *callbacks) {
+    fmi2Component c = fmi2Instantiate("cycle", fmi2CoSimulation, guid, "file:///tmp", callbacks, fmi2False, fmi2False);
+    fmi2FMUstate state = NULL, copy = NULL;
+    fmi2Byte *bytes;
+    size_t size;
+    int i;
+
+    if (!c) return 1;
+    CHECK(fmi2SetupExperiment(c, fmi2False, 0.0, 0.0, fmi2False, 0.0));
+    CHECK(fmi2EnterInitializationMode(c));
+    CHECK(fmi2ExitInitializationMode(c));
+    for (i = 0; i < 3; i++) CHECK(fmi2DoStep(c, i * 1e-3, 1e-3, fmi2True));
+    CHECK(fmi2GetFMUstate(c, &state));
+    CHECK(fmi2SerializedFMUstateSize(c, state, &size));
+    bytes = malloc(size);
+    if (!bytes) return 1;
+    CHECK(fmi2SerializeFMUstate(c, state, bytes, size));
+    CHECK(fmi2DeSerializeFMUstate(c, bytes, size, &copy));
+    free(bytes);
+    CHECK(fmi2SetFMUstate(c, copy));
+    CHECK(fmi2FreeFMUstate(c, &copy));
+    CHECK(fmi2FreeFMUstate(c, &state));
+    CHECK(fmi2Terminate(c));
+    fmi2FreeInstance(c);
+    return 0;
+}
+
 int main(int argc, char **argv) {
     fmi2CallbackFunctions callbacks = {logger, NULL, NULL, NULL, NULL};
     fmi2ValueReference angle, count, speed;
@@ -45,9 +77,10 @@ int main(int argc, char **argv) {
     fmi2FMUstate state = NULL;
     fmi2Real value, nan = 0.0;
     fmi2Integer impacts;
-    int i, errors = 0;
+    int i, cycles = 1, errors = 0;
 
-    if (argc != 5) return 2;
+    if (argc != 5 && argc != 6) return 2;
+    if (argc == 6) cycles = atoi(argv[5]);
     angle = (fmi2ValueReference)atoi(argv[2]);
     count = (fmi2ValueReference)atoi(argv[3]);
     speed = (fmi2ValueReference)atoi(argv[4]);
@@ -72,6 +105,8 @@ int main(int argc, char **argv) {
     CHECK(fmi2GetInteger(c, &count, 1, &impacts));
     CHECK(fmi2Terminate(c));
     fmi2FreeInstance(c);
+    for (i = 1; i < cycles; i++)
+        if (short_cycle(argv[1], &callbacks)) return 5;
     printf("crank_angle=%.17g impact_count=%d errors=%d logged=%d\n", value, impacts, errors, logged);
     return 0;
 }
