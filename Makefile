@@ -10,7 +10,7 @@ FMU := target/fmu/PistonSlap.fmu
 export PYTHONPATH := $(CURDIR)/python
 export MPLBACKEND := Agg
 
-.PHONY: fmu venv demo test bench clean
+.PHONY: fmu venv demo test thesis bench clean
 
 # cargo decides what to rebuild, so this always asks it.
 fmu:
@@ -32,6 +32,12 @@ demo: fmu venv
 test: fmu venv
 	cargo test --release
 	$(VENV_PYTHON) -m pytest python/tests
+
+# Farahanchi's chapter 2 figures (constraint forces, sliding regions) and chapter 4 (20 runs of 30 + 1500 crank
+# cycles): summary table and figure sheets in out/thesis.
+thesis: fmu venv
+	$(VENV_PYTHON) -m pistonslap.analysis forces --out out/thesis
+	$(VENV_PYTHON) -m pistonslap.analysis thesis --out out/thesis
 
 bench:
 	cargo bench

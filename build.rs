@@ -195,7 +195,13 @@ fn resolve(table: &Table) -> Vec<Resolved<'_>> {
             });
             let unit = declared.map(|d| d.unit.as_str());
             let display_unit = declared.and_then(|d| d.display_unit.as_deref());
-            Resolved { kind, a, vr, unit, display_unit }
+            Resolved {
+                kind,
+                a,
+                vr,
+                unit,
+                display_unit,
+            }
         })
         .collect()
 }
@@ -343,9 +349,7 @@ fn write_units(w: &mut Writer<Vec<u8>>, table: &Table) -> io::Result<()> {
                     .with_attribute(("name", u.name.as_str()))
                     .write_inner_content(|w| {
                         let exponents = [("kg", &u.kg), ("m", &u.m), ("s", &u.s), ("rad", &u.rad)];
-                        let present = exponents
-                            .iter()
-                            .filter_map(|(k, v)| v.as_deref().map(|v| (*k, v)));
+                        let present = present(&exponents);
                         w.create_element("BaseUnit")
                             .with_attributes(present)
                             .write_empty()?;
@@ -417,9 +421,7 @@ fn write_variables(w: &mut Writer<Vec<u8>>, variables: &[Resolved]) -> io::Resul
                         ("min", &a.min),
                         ("max", &a.max),
                     ];
-                    let present = optional
-                        .iter()
-                        .filter_map(|(k, v)| v.as_deref().map(|v| (*k, v)));
+                    let present = present(&optional);
                     w.create_element(v.kind)
                         .with_attributes(present)
                         .write_empty()?;
@@ -647,6 +649,15 @@ fn defaults_rs(variables: &[Resolved]) -> String {
     }
     writeln!(s, "        Ok(())\n    }}\n}}").unwrap();
     s
+}
+
+/// The attributes of `pairs` that have a value.
+fn present<'a>(
+    pairs: &'a [(&'a str, &'a Option<String>)],
+) -> impl Iterator<Item = (&'a str, &'a str)> {
+    pairs
+        .iter()
+        .filter_map(|(k, v)| v.as_deref().map(|v| (*k, v)))
 }
 
 fn capitalize(word: &str) -> String {

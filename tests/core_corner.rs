@@ -2,7 +2,7 @@
 //! contact on both, against hand-solved cases.
 
 use nalgebra::{Vector2, Vector3};
-use pistonslap::dynamics::testbeds::{Rod, Wedge};
+use pistonslap::dynamics::testbeds::{Floor, Rod, Wedge};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
 
 /// Floor `y ≥ 0` and a wall with inward normal at 60° to it (interior angle 120°): n₁·n₂ = ½.
@@ -66,7 +66,7 @@ fn resting_in_the_corner_uses_both_constraints() {
 #[test]
 fn rod_landing_flat_bounces_flat() {
     let (v, e, gap) = (1.5, 0.7, 1e-3);
-    let rod = Rod { mass: 2.0, length: 1.0, gravity: 0.0, restitution: e };
+    let rod = Rod { mass: 2.0, length: 1.0, gravity: 0.0, restitution: e, floor: Floor::Fixed };
     let mut s = Stepper::new(rod, 0.0, Vector3::new(0.0, gap, 0.0), Vector3::new(0.0, -v, 0.0), StepperOptions { step: 1e-4, ..Default::default() })
         .unwrap();
     s.advance(2e-3).unwrap();
@@ -81,7 +81,7 @@ fn rod_landing_flat_bounces_flat() {
 #[test]
 fn tumbling_rod_comes_to_rest_on_both_ends() {
     let (m, g) = (1.2, 9.81);
-    let rod = Rod { mass: m, length: 1.0, gravity: g, restitution: 0.5 };
+    let rod = Rod { mass: m, length: 1.0, gravity: g, restitution: 0.5, floor: Floor::Fixed };
     let mut s = Stepper::new(rod, 0.0, Vector3::new(0.0, 1.0, 0.3), Vector3::new(0.5, 0.0, 4.0), StepperOptions { step: 1e-4, ..Default::default() })
         .unwrap();
     s.advance(3.0).unwrap();
@@ -96,4 +96,26 @@ fn tumbling_rod_comes_to_rest_on_both_ends() {
     let lost: f64 = s.events().iter().map(|ev| ev.energy_lost).sum();
     let initial = 0.5 * m * 0.25 + 0.5 * (m / 12.0) * 16.0 + m * g * 1.0;
     assert!((lost - (initial - 0.5 * m * 0.25)).abs() < 1e-9, "lost {lost}");
+}
+
+/// A rod lying flat on a floor shaking as A sin(Ωt): each end carries λ = m (g + ÿ_f)/2 and both
+/// leave together when g + ÿ_f = 0, at sin Ω t_r = g/(AΩ²): two multipliers crossing zero at once.
+#[test]
+fn rod_on_a_shaking_floor_leaves_on_both_ends_at_once() {
+    let (m, g, a, w) = (0.8, 9.81, 0.01, 50.0);
+    let floor = Floor::Oscillating { amplitude: a, angular_frequency: w };
+    let rod = Rod { mass: m, length: 1.0, gravity: g, restitution: 0.5, floor };
+    let mut s = Stepper::new(rod, 0.0, Vector3::zeros(), Vector3::new(0.0, a * w, 0.0), StepperOptions { step: 1e-4, ..Default::default() })
+        .unwrap();
+    assert!(s.in_contact(0) && s.in_contact(1));
+    s.advance(0.004).unwrap();
+    let lambda = 0.5 * m * (g - a * w * w * (w * 0.004).sin());
+    assert!((s.multipliers() - Vector2::new(lambda, lambda)).norm() < 1e-9, "λ = {}", s.multipliers());
+    s.advance(0.01).unwrap();
+    let t_r = (g / (a * w * w)).asin() / w;
+    let releases: Vec<_> = s.events().iter().filter(|ev| ev.kind == EventKind::Release).collect();
+    assert_eq!(releases.len(), 2);
+    assert!(releases.iter().all(|ev| (ev.time - t_r).abs() < 1e-12), "{releases:?} vs {t_r}");
+    assert!(!s.in_contact(0) && !s.in_contact(1));
+    assert!(s.velocity()[2].abs() < 1e-9, "no spin from a symmetric release");
 }

@@ -72,6 +72,11 @@ fn inadmissible_and_non_finite_states_are_errors() {
     s.system_mut().gravity = f64::NAN;
     assert!(matches!(s.advance(0.1), Err(DynamicsError::NonFinite { time }) if time == 0.0));
 
+    // At t = 1e12 s a 10 µs step is below the float resolution (1.2e-4 s): refused, not a hang.
+    let ball = Ball { mass: 1.0, gravity: G, restitution: 1.0, floor: Floor::Fixed };
+    let mut s = Stepper::new(ball, 1e12, Vector1::new(1.0), Vector1::zeros(), StepperOptions::default()).unwrap();
+    assert!(matches!(s.advance(1e12 + 1.0), Err(DynamicsError::InvalidArgument { .. })));
+
     let bad = StepperOptions { step: 0.0, ..Default::default() };
     let ball = Ball { mass: 1.0, gravity: G, restitution: 1.0, floor: Floor::Fixed };
     assert!(matches!(Stepper::new(ball, 0.0, Vector1::new(1.0), Vector1::zeros(), bad), Err(DynamicsError::InvalidArgument { .. })));

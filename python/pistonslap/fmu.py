@@ -86,14 +86,15 @@ def input_signals(time, **signals) -> np.ndarray:
     return table
 
 
-def last_cycle(crank_angle):
+def last_cycle(crank_angle, slack=np.radians(0.1)):
     """The last complete engine cycle in a record of the accumulated crank angle.
 
     Returns `(mask, phase)`: which samples lie in it, and the crank angle from the start of their cycle
-    (firing TDC, crank angle 0 mod 4π), in [0, 4π]. A record shorter than one cycle is returned whole.
+    (firing TDC, crank angle 0 mod 4π), in [0, 4π]. A cycle short of its end by less than `slack` counts as complete
+    (the default 125.66 rad/s is a hair under 1200 rpm). A record shorter than one cycle is returned whole.
     """
     crank_angle = np.asarray(crank_angle)
-    start = (np.floor(crank_angle[-1] / CYCLE) - 1) * CYCLE
-    if start < crank_angle[0]:
+    start = (np.floor((crank_angle[-1] + slack) / CYCLE) - 1) * CYCLE
+    if start < crank_angle[0] - slack:
         return np.ones(len(crank_angle), dtype=bool), crank_angle - np.floor(crank_angle[0] / CYCLE) * CYCLE
     return (crank_angle >= start) & (crank_angle <= start + CYCLE), crank_angle - start

@@ -54,19 +54,20 @@ def piston_motion(phase, result, path, title="Piston secondary motion over one e
 
 def impacts(phase, result, events, path, title="Impacts over one engine cycle"):
     """Largest impact velocity in each communication step, and every logged impact by corner
-    (the log's crank angle is the phase within the cycle)."""
+    (the log's crank angle is the phase within the cycle). Log rows of closed corners taking part in a
+    neighbour's impact have a zero approach speed: only impacts faster than 1 µm/s are drawn."""
     fig, (per_step, per_impact) = _axes(2, title)
     deg = np.degrees(phase)
     hit = result["impacts_in_step"] > 0
     per_step.vlines(deg[hit], 0, result["max_impact_velocity_in_step"][hit] * 1e3)
     per_step.set_ylabel("max impact velocity\nin step [mm/s]")
-    is_impact = events["kind"] == "impact"
+    is_impact = (events["kind"] == "impact") & (events["normal_velocity_before"] > 1e-6)
     for corner in CORNERS:
         mine = is_impact & (events["corner"] == corner)
         per_impact.plot(np.degrees(events["crank_angle"][mine]), events["normal_velocity_before"][mine] * 1e3,
                         "o", ms=3, label=f"K{corner}")
     per_impact.set_ylabel("impact velocity [mm/s]")
-    if np.any(events["normal_velocity_before"][is_impact] > 0):  # bounce sequences span decades
+    if np.any(is_impact):  # bounce sequences span decades
         per_impact.set_yscale("log")
     _legend(per_impact)
     return _save(fig, path)

@@ -17,7 +17,7 @@ def _save(fig, path):
 
 def _poincare(ax, points, title=None):
     theta, rate = points
-    ax.plot(theta, rate, ",k" if len(theta) > 2000 else ".k", ms=2)
+    ax.plot(theta, rate, ".k", ms=1.5)
     ax.set_xlim(0, 2 * np.pi)
     ax.set_xlabel("crank angle θ [rad]")
     ax.set_ylabel("ψ' before impact (upper wall)")

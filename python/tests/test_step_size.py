@@ -1,5 +1,10 @@
 """Impacts are located inside the communication step, so the event record does not depend on the step size:
-two engine cycles of the default engine with communication steps of 1e-3 s and 1e-4 s."""
+two engine cycles of the default engine with communication steps of 1e-3 s and 1e-4 s.
+
+Measured (1e-3 vs 1e-4 vs 1e-5 s): the 172 impacts faster than 1 mm/s pair one to one, same corner, times within
+1.3e-10 s, approach speeds within 2e-5 relative. The assertions leave a factor of about 100 on the times and 50 on
+the speeds, and are still 1e5 times finer than the coarse step, on whose grid an FMU that detected impacts only at
+the end of the step would put them."""
 
 import numpy as np
 import pytest
@@ -8,11 +13,10 @@ from pistonslap.fmu import simulate_with_events
 
 COARSE, FINE = 1e-3, 1e-4
 STOP = 0.2  # s, two cycles at 1200 rpm
-#: An impact of one run is matched by an impact of the same corner in the other within this time (0.007° of
-#: crank angle at 1200 rpm): a tenth of the fine step, a hundredth of the coarse one.
-TIME_TOLERANCE = 1e-5
-#: Impacts slower than this are the tail of a bounce sequence converging to sliding, whose length depends on where
-#: the integrator's steps fall; they are counted but not matched one by one.
+TIME_TOLERANCE = 1e-8  # s, 4e-5° of crank angle at 1200 rpm
+SPEED_TOLERANCE = 1e-3  # relative
+#: Slower impacts end bounce sequences that converge to sliding (their length depends on where the integrator's
+#: steps fall) or are closed corners taking part in a neighbour's impact: counted, not paired.
 SLOW = 1e-3  # m/s
 
 
@@ -21,26 +25,28 @@ def runs(fmu_file):
     return {h: simulate_with_events(stop_time=STOP, output_interval=h, output=["impact_count"]) for h in (COARSE, FINE)}
 
 
-def impacts(events):
-    return events[events["kind"] == "impact"]
+def impacts(run, slower_than=-np.inf):
+    _, events = run
+    fast = (events["kind"] == "impact") & (events["normal_velocity_before"] > slower_than)
+    return events[fast]
 
 
 def test_impact_counts_agree(runs):
-    coarse, fine = (len(impacts(runs[h][1])) for h in (COARSE, FINE))
-    assert coarse > 0
-    assert abs(coarse - fine) <= max(2, 0.02 * fine)
+    coarse, fine = (len(impacts(runs[h])) for h in (COARSE, FINE))
+    assert coarse > 0 and abs(coarse - fine) <= 2
+    for h in (COARSE, FINE):
+        assert runs[h][0]["impact_count"][-1] == len(impacts(runs[h]))
 
 
-def test_impact_times_agree(runs):
-    coarse, fine = (impacts(runs[h][1]) for h in (COARSE, FINE))
-    for this, other in ((coarse, fine), (fine, coarse)):
-        for event in this[this["normal_velocity_before"] > SLOW]:
-            same_corner = other[other["corner"] == event["corner"]]
-            assert np.min(np.abs(same_corner["time"] - event["time"])) <= TIME_TOLERANCE, event
+def test_impacts_pair_one_to_one(runs):
+    coarse, fine = (impacts(runs[h], SLOW) for h in (COARSE, FINE))
+    assert len(coarse) == len(fine) > 100
+    np.testing.assert_array_equal(coarse["corner"], fine["corner"])
+    np.testing.assert_allclose(coarse["time"], fine["time"], rtol=0, atol=TIME_TOLERANCE)
+    np.testing.assert_allclose(coarse["normal_velocity_before"], fine["normal_velocity_before"], rtol=SPEED_TOLERANCE)
 
 
 def test_impacts_are_not_on_the_communication_grid(runs):
-    """An FMU that detected impacts only at the end of the step would put every impact on the coarse grid."""
-    times = impacts(runs[COARSE][1])["time"]
+    times = impacts(runs[COARSE])["time"]
     on_grid = np.abs(times / COARSE - np.round(times / COARSE)) < 1e-6
     assert on_grid.mean() < 0.05

@@ -21,18 +21,37 @@ fn main() {
 
 fn run() -> Result<(), String> {
     let here = std::env::current_exe().map_err(|e| e.to_string())?;
-    let profile_dir = here.parent().ok_or("no executable directory")?.to_path_buf();
+    let profile_dir = here
+        .parent()
+        .ok_or("no executable directory")?
+        .to_path_buf();
     let mut args = std::env::args_os().skip(1);
-    let library = args.next().map_or_else(|| profile_dir.join("libpistonslap.so"), PathBuf::from);
-    let default_out = profile_dir.parent().unwrap_or(&profile_dir).join("fmu").join("PistonSlap.fmu");
+    let library = args
+        .next()
+        .map_or_else(|| profile_dir.join("libpistonslap.so"), PathBuf::from);
+    let default_out = profile_dir
+        .parent()
+        .unwrap_or(&profile_dir)
+        .join("fmu")
+        .join("PistonSlap.fmu");
     let out = args.next().map_or(default_out, PathBuf::from);
-    let binary = std::fs::read(&library)
-        .map_err(|e| format!("cannot read {} ({e}); run `cargo build --release` first", library.display()))?;
+    let binary = std::fs::read(&library).map_err(|e| {
+        format!(
+            "cannot read {} ({e}); run `cargo build --release` first",
+            library.display()
+        )
+    })?;
     if let Some(dir) = out.parent() {
-        std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        std::fs::create_dir_all(dir)
+            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     }
     write_fmu(&out, &binary).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
-    println!("wrote {} ({} variables, binary {})", out.display(), VARIABLES.len(), library.display());
+    println!(
+        "wrote {} ({} variables, binary {})",
+        out.display(),
+        VARIABLES.len(),
+        library.display()
+    );
     Ok(())
 }
 
@@ -42,7 +61,11 @@ fn write_fmu(out: &Path, binary: &[u8]) -> zip::result::ZipResult<()> {
     let executable = text.unix_permissions(0o755);
     let documentation = documentation();
     let files: [(&str, &[u8], SimpleFileOptions); 4] = [
-        ("modelDescription.xml", MODEL_DESCRIPTION_XML.as_bytes(), text),
+        (
+            "modelDescription.xml",
+            MODEL_DESCRIPTION_XML.as_bytes(),
+            text,
+        ),
         ("binaries/linux64/PistonSlap.so", binary, executable),
         ("documentation/index.html", documentation.as_bytes(), text),
         ("resources/README.txt", RESOURCES_README.as_bytes(), text),
@@ -57,14 +80,15 @@ fn write_fmu(out: &Path, binary: &[u8]) -> zip::result::ZipResult<()> {
 
 const RESOURCES_README: &str = "\
 PistonSlap needs no resource files. The built-in four-stroke pressure curve (pressure_source = 2) is
-computed in the binary: a closed-cylinder polytropic compression and expansion with a Wiebe burn
-fraction (compression ratio 17, exponent 1.35, burn from 8 degrees before firing TDC over 60 degrees,
-exhaust valve opening 130 degrees after TDC), zero gauge pressure during exhaust and intake, scaled so
-that its maximum is peak_pressure. See documentation/index.html.
+computed in the binary (src/models/pressure.rs in the sources): a closed-cylinder polytropic
+compression and expansion with a Wiebe burn fraction, zero gauge pressure during exhaust and intake,
+scaled so that its maximum is peak_pressure. See documentation/index.html.
 ";
 
 fn escape(s: &str) -> String {
-    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
+    s.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
 }
 
 /// documentation/index.html: what the model is, its variables (from the same table as the XML), its

@@ -65,9 +65,6 @@ impl<const N: usize, const M: usize> Frame<N, M> {
     /// `ḧ_A = 0` gives `W_AA λ_A = −(J_A M⁻¹ f + d_A)`, then `q̈ = M⁻¹ (f + Jᵀ λ)`.
     /// `None` when the active constraints are dependent.
     pub fn constrained(&self, ev: &Evaluation<N, M>, active: Set) -> Option<(SVector<f64, N>, SVector<f64, M>)> {
-        if active == 0 {
-            return Some((self.free_acc, SVector::zeros()));
-        }
         let lambda = solve_on(&self.w, &-self.free_gap_acceleration(ev), active)?;
         Some((self.free_acc + self.minv_jt * lambda, lambda))
     }
@@ -81,8 +78,12 @@ impl<const N: usize, const M: usize> Frame<N, M> {
     }
 
     /// The sliding law over `candidates`: `λ ≥ 0`, `ḧ = W λ + ḧ_free ≥ 0`, `λᵢ ḧᵢ = 0`.
+    /// The complementarity tolerance scales with the terms of `ḧ_free = J M⁻¹ f + d`, which
+    /// cancel where a contact is about to open.
     pub fn sliding(&self, ev: &Evaluation<N, M>, candidates: Set) -> Option<(SVector<f64, M>, Set)> {
-        solve_lcp(&self.w, &self.free_gap_acceleration(ev), candidates)
+        let drive = ev.gap_jacobian * self.free_acc;
+        let scale = members::<M>(candidates).fold(0.0_f64, |s, i| s.max(drive[i].abs() + ev.gap_bias[i].abs()));
+        solve_lcp(&self.w, &(drive + ev.gap_bias), candidates, scale)
     }
 }
 
@@ -109,8 +110,8 @@ pub(crate) fn solve_on<const M: usize>(w: &SMatrix<f64, M, M>, r: &SVector<f64, 
 /// (`x = 0` outside it), by enumerating the supports `S ⊆ set` from the smallest. For `W`
 /// positive definite on `set` the solution is unique; supports with dependent constraints are
 /// skipped. `M ≤ 4` in our models, so this is at most 16 tiny solves. Returns `x` and its support.
-pub(crate) fn solve_lcp<const M: usize>(w: &SMatrix<f64, M, M>, b: &SVector<f64, M>, set: Set) -> Option<(SVector<f64, M>, Set)> {
-    let scale = members::<M>(set).fold(0.0_f64, |s, i| s.max(b[i].abs()));
+/// `scale` is the magnitude of `b` before cancellation: the checks tolerate round-off of it.
+pub(crate) fn solve_lcp<const M: usize>(w: &SMatrix<f64, M, M>, b: &SVector<f64, M>, set: Set, scale: f64) -> Option<(SVector<f64, M>, Set)> {
     let w_max = members::<M>(set).fold(0.0_f64, |s, i| s.max(w[(i, i)]));
     let tol_y = COMPLEMENTARITY_TOL * scale + f64::MIN_POSITIVE;
     let tol_x = if w_max > 0.0 { tol_y / w_max } else { tol_y };
@@ -146,18 +147,18 @@ mod tests {
     fn lcp_small_cases() {
         let w = Matrix2::new(2.0, 1.0, 1.0, 2.0);
         // b = (−3, −3): x = (1, 1), y = 0.
-        let (x, s) = solve_lcp(&w, &Vector2::new(-3.0, -3.0), 0b11).unwrap();
+        let (x, s) = solve_lcp(&w, &Vector2::new(-3.0, -3.0), 0b11, 3.0).unwrap();
         assert_eq!(s, 0b11);
         assert!((x - Vector2::new(1.0, 1.0)).norm() < 1e-14);
         // b = (−2, 0.5): x = (1, 0), y2 = 1.5 ≥ 0; the equality solve would give x2 < 0.
-        let (x, s) = solve_lcp(&w, &Vector2::new(-2.0, 0.5), 0b11).unwrap();
+        let (x, s) = solve_lcp(&w, &Vector2::new(-2.0, 0.5), 0b11, 2.0).unwrap();
         assert_eq!(s, 0b01);
         assert!((x - Vector2::new(1.0, 0.0)).norm() < 1e-14);
         // b ≥ 0: nothing pushes.
-        assert_eq!(solve_lcp(&w, &Vector2::new(1.0, 0.0), 0b11).unwrap().1, 0);
+        assert_eq!(solve_lcp(&w, &Vector2::new(1.0, 0.0), 0b11, 1.0).unwrap().1, 0);
         // Dependent constraints: only the subsets with one of them are tried.
         let rank1 = Matrix2::new(1.0, 1.0, 1.0, 1.0);
-        let (x, s) = solve_lcp(&rank1, &Vector2::new(-1.0, -1.0), 0b11).unwrap();
+        let (x, s) = solve_lcp(&rank1, &Vector2::new(-1.0, -1.0), 0b11, 1.0).unwrap();
         assert_eq!(s.count_ones(), 1);
         assert!((x.sum() - 1.0).abs() < 1e-14);
     }

@@ -10,7 +10,8 @@ pub enum EventLocator {
     /// then confirmed on the RK4 map itself, corrected there by Illinois if needed.
     #[default]
     DenseOutput,
-    /// The paper's scheme (A&K section 5): bisect the RK4 step until `|g| ≤ tol`.
+    /// The paper's scheme (A&K section 5): bisect the RK4 step until `|g| ≤ tol`. Like the
+    /// paper it sees only sign changes between the ends of a step, not a dip inside one.
     StepHalving,
 }
 

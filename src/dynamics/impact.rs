@@ -2,7 +2,7 @@
 //! energy balance (eqs 8–9).
 
 use super::contact::{members, solve_lcp, Frame, Set};
-use nalgebra::{SMatrix, SVector};
+use nalgebra::SVector;
 
 /// Impulses `Λ` of an impact over the closed set `C`:
 /// `Λ ≥ 0`, `ġ⁺ + e·min(ġ⁻, 0) ≥ 0`, `Λᵢ (ġ⁺ᵢ + eᵢ min(ġ⁻ᵢ, 0)) = 0`, with `ġ⁺ = ġ⁻ + W Λ`.
@@ -23,18 +23,19 @@ pub(crate) fn newton_impulses<const N: usize, const M: usize>(
     for i in members::<M>(closed) {
         b[i] = hd_minus[i] + restitution[i] * hd_minus[i].min(0.0);
     }
-    solve_lcp(&frame.w, &b, closed).map(|(impulse, _)| impulse)
+    let scale = members::<M>(closed).fold(0.0_f64, |s, i| s.max(hd_minus[i].abs()));
+    solve_lcp(&frame.w, &b, closed, scale).map(|(impulse, _)| impulse)
 }
 
-/// The kinetic energy each impulse removes, `−Λᵢ Jᵢ (q̇⁻ + q̇⁺) / 2`. The parts sum to
-/// `T⁻ − T⁺` (eq 8) because `q̇⁺ − q̇⁻ = M⁻¹ Jᵀ Λ`; for one stationary constraint the part is
-/// eq 9, `(1 − e²) (ḣ⁻)² / (2W)`. With a moving constraint it can be negative (the wall does work).
-pub(crate) fn energy_lost<const N: usize, const M: usize>(
-    jacobian: &SMatrix<f64, M, N>,
+/// The energy each impulse dissipates, `−Λᵢ (ḣ⁻ᵢ + ḣ⁺ᵢ) / 2` with `ḣ = J q̇ + ∂h/∂t`: the work
+/// of the contact force on the relative normal motion (eqs 8–9). For one constraint it is
+/// `(1 − e²) (ḣ⁻)² / (2W) ≥ 0`. With fixed constraints the parts sum to `T⁻ − T⁺`; with moving
+/// ones (a prescribed crank, the roller's walls) `T⁺ − T⁻` also holds the work `−Λᵢ ∂hᵢ/∂t` the
+/// constraint's drive does through the impulse, which is not dissipated (and can exceed it).
+pub(crate) fn energy_lost<const M: usize>(
     impulse: &SVector<f64, M>,
-    v_minus: &SVector<f64, N>,
-    v_plus: &SVector<f64, N>,
+    hd_minus: &SVector<f64, M>,
+    hd_plus: &SVector<f64, M>,
 ) -> SVector<f64, M> {
-    let mean_rate = jacobian * (v_minus + v_plus) * 0.5;
-    -impulse.component_mul(&mean_rate)
+    -impulse.component_mul(&(hd_minus + hd_plus)) * 0.5
 }

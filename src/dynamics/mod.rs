@@ -1,6 +1,21 @@
 //! The nonsmooth core: a Lagrangian system `M(q,t) q̈ = f(q,q̇,t)` with unilateral constraints
 //! `h(q,t) ≥ 0`, integrated by RK4 between events, with impacts (generalized Newton law) and sliding
 //! (KKT multipliers) handled as in Awrejcewicz & Kudra, sections 2–5. No FFI, no FMI words here.
+//!
+//! One `Stepper::advance` (A&K Fig. 1):
+//! - RK4 steps of the nominal size with the active (sliding) set held: `q̈` and `λ` from the
+//!   saddle-point system of eqs 17–20 (`contact.rs`); after each step in contact, `q` and `q̇`
+//!   are projected back onto `h_A = 0`, `ḣ_A = 0` (drift control);
+//! - events: a free gap falling below `−ε_h`, an active multiplier below `−ε_λ`, located by
+//!   Illinois on a quintic Hermite extension of the step and confirmed on the RK4 map
+//!   ([`EventLocator`]; the paper's step halving is kept for comparison);
+//! - at an event, the closed set (gaps within `ε_h`) is resolved together: the generalized Newton
+//!   impact as a complementarity problem (DESIGN §6.4; exactly eq 11 for one constraint), then
+//!   persistent contact for the constraints at rest whose multipliers the sliding complementarity
+//!   problem keeps non-negative; the Zeno guard ([`ZENO_APEX_FACTOR`]) turns an accumulation of
+//!   impacts into sliding, and an event budget per `advance` turns anything else into an error.
+//!
+//! Constraint sets are bitmasks, all matrices are fixed-size: no heap use but the event record.
 
 mod contact;
 mod events;

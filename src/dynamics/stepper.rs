@@ -5,7 +5,7 @@ use super::contact::{bit, contains, members, select, Frame, Set};
 use super::events::{self, Bracket, EventLocator, Located, Start};
 use super::rk4::{self, Hermite5};
 use super::{impact, Evaluation, System};
-use nalgebra::SVector;
+use nalgebra::{Cholesky, SVector};
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -81,8 +81,10 @@ pub struct Event<const N: usize> {
     pub velocity_before: f64,
     /// ḣ⁺.
     pub velocity_after: f64,
-    /// ½q̇⁻ᵀMq̇⁻ − ½q̇⁺ᵀMq̇⁺ due to this constraint's impulse (an impact, or the projection onto
-    /// ḣ = 0 when sliding starts); negative when a moving constraint does work.
+    /// Energy dissipated by this constraint's impulse Λ (an impact, or the projection onto ḣ = 0
+    /// when sliding starts): `−Λ (ḣ⁻ + ḣ⁺) / 2`, ≥ 0 for an approaching constraint. Equal to its
+    /// share of `T⁻ − T⁺` for a fixed constraint; a moving one also does the work `−Λ ∂h/∂t` on
+    /// the system (the drive's, not dissipated), which is not counted here.
     pub energy_lost: f64,
     /// Configuration at the event.
     pub q: SVector<f64, N>,
@@ -191,6 +193,20 @@ fn frame_at<S: System<N, M>, const N: usize, const M: usize>(
     Ok((ev, frame))
 }
 
+/// `q̈` and `λ` with the set `active` held; free flight needs only `M⁻¹ f`, not the contact frame.
+fn acceleration<const N: usize, const M: usize>(
+    ev: &Evaluation<N, M>,
+    t: f64,
+    active: Set,
+) -> Result<(SVector<f64, N>, SVector<f64, M>), DynamicsError> {
+    if active == 0 {
+        let chol = Cholesky::new(ev.mass).ok_or(DynamicsError::SingularMass { time: t })?;
+        return Ok((chol.solve(&ev.force), SVector::zeros()));
+    }
+    let frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
+    frame.constrained(ev, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })
+}
+
 fn sample<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     t: f64,
@@ -198,9 +214,8 @@ fn sample<S: System<N, M>, const N: usize, const M: usize>(
     v: SVector<f64, N>,
     active: Set,
 ) -> Result<Sample<N, M>, DynamicsError> {
-    let (ev, frame) = frame_at(sys, t, &q, &v)?;
-    let (acc, lambda) =
-        frame.constrained(&ev, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })?;
+    let ev = sys.evaluate(t, &q, &v);
+    let (acc, lambda) = acceleration(&ev, t, active)?;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd };
     let finite = |x: &[f64]| x.iter().all(|v| v.is_finite());
@@ -221,11 +236,7 @@ fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
     t: f64,
     active: Set,
 ) -> Result<Sample<N, M>, DynamicsError> {
-    let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
-        let (ev, frame) = frame_at(sys, t, q, v)?;
-        let (acc, _) = frame.constrained(&ev, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })?;
-        Ok(acc)
-    };
+    let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| Ok(acceleration(&sys.evaluate(t, q, v), t, active)?.0);
     let (q, v) = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
     sample(sys, t, q, v, active)
 }
@@ -285,6 +296,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         while self.state.t < t_end {
             let t = self.state.t;
             let t1 = if t_end - t <= self.options.step { t_end } else { t + self.options.step };
+            if t1 <= t {
+                return Err(DynamicsError::InvalidArgument { time: t, reason: "the step is below the time resolution at this time" });
+            }
             if self.step(t1)? {
                 handled += 1;
                 if handled > self.event_budget {
@@ -532,8 +546,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 let impulse = impact::newton_impulses(&frame, &hd, &e, closed)
                     .ok_or(DynamicsError::MultipleImpact { time: t, constraints: closed })?;
                 let v_plus = v + frame.minv_jt * impulse;
-                let lost = impact::energy_lost(&ev.gap_jacobian, &impulse, &v, &v_plus);
                 let hd_plus = hd + frame.w * impulse;
+                let lost = impact::energy_lost(&impulse, &hd, &hd_plus);
                 // Recorded: every approaching constraint, and any other that took a real impulse
                 // (one that changes its own ḣ by more than ε_ḣ), e.g. a sliding one pushed harder.
                 let pushed = select::<M>(|i| impulse[i] * frame.w[(i, i)] > opts.velocity_tolerance);
@@ -558,7 +572,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             };
             // An approach slower than ε_ḣ that sliding refuses (its force would pull) still needs
             // the impact law, or the gap closes at the next instant with nothing to resolve it.
-            let grazing = closed & !support & !impacted & select::<M>(|i| hd[i] < 0.0);
+            // A constraint leaving persistent contact has ḣ = 0 up to round-off: no impact.
+            let grazing = closed & !support & !impacted & !was_active & select::<M>(|i| hd[i] < 0.0);
             if grazing == 0 {
                 break support;
             }
@@ -571,8 +586,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             let (dq, _) = frame.projection(&ev.gap, support).ok_or(dependent.clone())?;
             let (dv, impulse) = frame.projection(&hd, support).ok_or(dependent)?;
             v_new = v + dv;
-            let lost = impact::energy_lost(&ev.gap_jacobian, &impulse, &v, &v_new);
             let hd_after = hd + frame.w * impulse;
+            let lost = impact::energy_lost(&impulse, &hd, &hd_after);
             for i in members::<M>(support & !was_active) {
                 self.record(EventKind::Slide, i, hd[i], hd_after[i], lost[i], q);
             }

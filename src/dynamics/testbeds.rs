@@ -60,15 +60,17 @@ impl System<1, 1> for Ball {
     }
 }
 
-/// A uniform planar rod (mass `m`, length `L`) above the floor `y = 0` under gravity,
-/// `q = (x, y, θ)` of its centre; constraint `i` keeps end `i` above the floor:
-/// `h₀ = y − (L/2) sin θ`, `h₁ = y + (L/2) sin θ`. The ends couple translation and rotation.
+/// A uniform planar rod (mass `m`, length `L`) above a horizontal floor at height `y_f(t)` under
+/// gravity, `q = (x, y, θ)` of its centre; constraint `i` keeps end `i` above the floor:
+/// `h₀ = y − y_f − (L/2) sin θ`, `h₁ = y − y_f + (L/2) sin θ`. The ends couple translation and
+/// rotation.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Rod {
     pub mass: f64,
     pub length: f64,
     pub gravity: f64,
     pub restitution: f64,
+    pub floor: Floor,
 }
 
 impl Rod {
@@ -83,18 +85,20 @@ impl System<3, 2> for Rod {
         let half = 0.5 * self.length;
         let (s, c) = q[2].sin_cos();
         let spin = half * s * qd[2] * qd[2];
+        let (_, vf, af) = self.floor.motion(t);
         Evaluation {
             mass: Matrix3::from_diagonal(&Vector3::new(self.mass, self.mass, self.inertia())),
             force: Vector3::new(0.0, -self.mass * self.gravity, 0.0),
             gap: self.gaps(t, q),
             gap_jacobian: SMatrix::<f64, 2, 3>::new(0.0, 1.0, -half * c, 0.0, 1.0, half * c),
-            gap_time_rate: Vector2::zeros(),
-            gap_bias: Vector2::new(spin, -spin),
+            gap_time_rate: Vector2::new(-vf, -vf),
+            gap_bias: Vector2::new(spin - af, -spin - af),
         }
     }
-    fn gaps(&self, _t: f64, q: &Vector3<f64>) -> Vector2<f64> {
+    fn gaps(&self, t: f64, q: &Vector3<f64>) -> Vector2<f64> {
         let rise = 0.5 * self.length * q[2].sin();
-        Vector2::new(q[1] - rise, q[1] + rise)
+        let centre = q[1] - self.floor.motion(t).0;
+        Vector2::new(centre - rise, centre + rise)
     }
     fn restitution(&self, _: usize) -> f64 {
         self.restitution

@@ -286,21 +286,42 @@ pub unsafe fn reset<E: Model>(c: fmi2Component) -> Status {
     run::<E>(c, "fmi2Reset", |comp| comp.instance.reset())
 }
 
+/// The generated reader of one variable kind (`description::get_real`, …).
+type Reader<T> = for<'a> fn(u32, &'a Parameters, &'a Inputs, &'a Outputs) -> Option<T>;
+
+/// The shared body of fmi2GetReal and fmi2GetInteger.
+unsafe fn get<E: Model, T: Copy>(
+    c: fmi2Component,
+    function: &str,
+    kind: Kind,
+    read: Reader<T>,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    value: *mut T,
+) -> Status {
+    run::<E>(c, function, |comp| {
+        let vrs = slice(vr, n, "vr")?;
+        let out = slice_mut(value, n, "value")?;
+        out.copy_from_slice(&comp.instance.get(function, vrs, kind, read)?);
+        Ok(())
+    })
+}
+
 pub unsafe fn get_real<E: Model>(
     c: fmi2Component,
     vr: *const fmi2ValueReference,
     n: usize,
     value: *mut fmi2Real,
 ) -> Status {
-    run::<E>(c, "fmi2GetReal", |comp| {
-        let vrs = slice(vr, n, "vr")?;
-        let out = slice_mut(value, n, "value")?;
-        let got = comp
-            .instance
-            .get("fmi2GetReal", vrs, Kind::Real, description::get_real)?;
-        out.copy_from_slice(&got);
-        Ok(())
-    })
+    get::<E, _>(
+        c,
+        "fmi2GetReal",
+        Kind::Real,
+        description::get_real,
+        vr,
+        n,
+        value,
+    )
 }
 
 pub unsafe fn get_integer<E: Model>(
@@ -309,18 +330,15 @@ pub unsafe fn get_integer<E: Model>(
     n: usize,
     value: *mut fmi2Integer,
 ) -> Status {
-    run::<E>(c, "fmi2GetInteger", |comp| {
-        let vrs = slice(vr, n, "vr")?;
-        let out = slice_mut(value, n, "value")?;
-        let got = comp.instance.get(
-            "fmi2GetInteger",
-            vrs,
-            Kind::Integer,
-            description::get_integer,
-        )?;
-        out.copy_from_slice(&got);
-        Ok(())
-    })
+    get::<E, _>(
+        c,
+        "fmi2GetInteger",
+        Kind::Integer,
+        description::get_integer,
+        vr,
+        n,
+        value,
+    )
 }
 
 pub unsafe fn get_string<E: Model>(
@@ -547,8 +565,10 @@ pub unsafe fn cancel_step<E: Model>(c: fmi2Component) -> Status {
     unsupported::<E>(
         c,
         "fmi2CancelStep",
-        &[],
-        "fmi2DoStep is synchronous: there is never a step in progress",
+        // Allowed only in stepInProgress, a state a synchronous fmi2DoStep never leaves behind:
+        // in any live state the refusal says why.
+        STATE,
+        "fmi2DoStep is synchronous: there is never a step in progress to cancel",
     )
 }
 

@@ -193,3 +193,29 @@ mod tests {
         }
     }
 }
+
+#[cfg(test)]
+mod simulation_tests {
+    use super::*;
+    use crate::models::{Inputs, Parameters};
+    use crate::simulation::test_model::Shuttle;
+    use crate::simulation::Simulation;
+
+    #[test]
+    fn a_simulation_with_its_event_history_round_trips_exactly() {
+        let mut sim = Simulation::<Shuttle>::new(&Parameters::default(), 0.0).unwrap();
+        // One step over the first two impacts (4 ms and 20 ms): both are in the step's event rows.
+        sim.step(&Inputs::default(), 0.025).unwrap();
+        assert_eq!(sim.step_events().len(), 2);
+        let bytes = encode(&sim, "{g}").unwrap();
+        let back: Simulation<Shuttle> = decode(&bytes, "{g}").unwrap();
+        assert_eq!(back, sim);
+        let bits = |s: &Simulation<Shuttle>| -> Vec<u64> {
+            s.step_events()
+                .iter()
+                .flat_map(|e| [e.time, e.crank_angle, e.energy_lost].map(f64::to_bits))
+                .collect()
+        };
+        assert_eq!(bits(&back), bits(&sim));
+    }
+}

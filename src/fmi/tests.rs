@@ -109,7 +109,11 @@ impl<E: Model> Host<E> {
                 .collect::<Vec<_>>()
                 .join("\n"))
         } else {
-            Ok(Self { c, log, model: PhantomData })
+            Ok(Self {
+                c,
+                log,
+                model: PhantomData,
+            })
         }
     }
 
@@ -204,12 +208,7 @@ impl<E: Model> Host<E> {
         );
         let mut bytes = vec![0u8; size];
         let status = unsafe {
-            abi::serialize_fmu_state::<E>(
-                self.c,
-                state,
-                bytes.as_mut_ptr() as *mut c_char,
-                size,
-            )
+            abi::serialize_fmu_state::<E>(self.c, state, bytes.as_mut_ptr() as *mut c_char, size)
         };
         assert_eq!(status, Status::Ok);
         bytes
@@ -828,22 +827,51 @@ fn both_engine_variants_continue_bit_identically_after_restore_and_through_bytes
         let bytes = host.serialize(state);
         host.run(0.05, 0.1, 1e-3);
         let reference = host.output_bits();
-        assert!(host.integer("impact_count") > impacts_before, "variant {variant}: impacts after the save");
+        assert!(
+            host.integer("impact_count") > impacts_before,
+            "variant {variant}: impacts after the save"
+        );
 
         assert_eq!(host.set_state(state), Status::Ok);
         assert_eq!(host.integer("impact_count"), impacts_before);
         host.run(0.05, 0.1, 1e-3);
-        assert_eq!(host.output_bits(), reference, "variant {variant}: restore in place");
+        assert_eq!(
+            host.output_bits(),
+            reference,
+            "variant {variant}: restore in place"
+        );
 
         let other = Host::<Engine>::new();
         let (status, copy) = other.deserialize(&bytes);
         assert_eq!(status, Status::Ok, "{:?}", other.messages());
         assert_eq!(other.set_state(copy), Status::Ok);
         other.run(0.05, 0.1, 1e-3);
-        assert_eq!(other.output_bits(), reference, "variant {variant}: through {} bytes", bytes.len());
+        assert_eq!(
+            other.output_bits(),
+            reference,
+            "variant {variant}: through {} bytes",
+            bytes.len()
+        );
         host.free_state(state);
         other.free_state(copy);
     }
+}
+
+#[test]
+fn engine_instances_in_threads_agree_bit_for_bit() {
+    let results: Vec<Vec<u64>> = std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..3)
+            .map(|_| {
+                scope.spawn(|| {
+                    let host = Host::<Engine>::initialized();
+                    host.run(0.0, 0.03, 1e-3);
+                    host.output_bits()
+                })
+            })
+            .collect();
+        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    assert!(results.iter().all(|r| *r == results[0]));
 }
 
 mod state_machine;

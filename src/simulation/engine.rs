@@ -1,11 +1,14 @@
 //! The model variants behind one type, chosen by `model_variant`: 1 → crank train (Awrejcewicz &
 //! Kudra), 2 → roller slider crank (Farahanchi).
 
-use crate::models::{CrankTrain, EngineEvent, EngineModel, Inputs, ModelError, Outputs, Parameters, Roller};
+use crate::models::{
+    CrankTrain, EngineEvent, EngineModel, Inputs, ModelError, Outputs, Parameters, Roller,
+};
 use serde::{Deserialize, Serialize};
 
-/// The engine model the FMU runs.
+/// The engine model the FMU runs (one per instance, so the variants' size difference costs nothing).
 #[derive(Clone, Debug, Serialize, Deserialize)]
+#[allow(clippy::large_enum_variant)]
 pub enum Engine {
     CrankTrain(CrankTrain),
     Roller(Roller),
@@ -16,11 +19,18 @@ impl EngineModel for Engine {
         match params.model_variant {
             1 => CrankTrain::new(params, start_time).map(Engine::CrankTrain),
             2 => Roller::new(params, start_time).map(Engine::Roller),
-            other => Err(ModelError(format!("model_variant = {other} is not one of 1..=2"))),
+            other => Err(ModelError(format!(
+                "model_variant = {other} is not one of 1..=2"
+            ))),
         }
     }
 
-    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+    fn advance(
+        &mut self,
+        inputs: &Inputs,
+        t_end: f64,
+        events: &mut Vec<EngineEvent>,
+    ) -> Result<(), ModelError> {
         match self {
             Engine::CrankTrain(m) => m.advance(inputs, t_end, events),
             Engine::Roller(m) => m.advance(inputs, t_end, events),

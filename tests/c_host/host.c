@@ -1,10 +1,10 @@
 /* A minimal FMI 2.0 Co-Simulation host in C, compiled against fmi_headers/ and linked with the built
  * libpistonslap.so by tests/fmi_c_abi.rs.
  * Usage: host <guid> <vr crank_angle> <vr impact_count> <vr crank_speed> [cycles]
- * Runs one checked cycle, then cycles - 1 more short ones (instantiate, initialize, a few steps, an FMU
- * state through bytes and back, free: what a memory checker should see released).
- * Prints "crank_angle=<value> impact_count=<n> errors=<refused misuses> logged=<messages>" and exits 0
- * on success. */
+ * Runs 50 steps of 1 ms twice: straight through, and with a state saved at step 25 and restored after
+ * step 50 (then 25 steps again). Then cycles - 1 short cycles (instantiate, initialize, a few steps, an
+ * FMU state through bytes and back, free: what a memory checker must see released). Prints "crank_angle=… impact_count=… straight_crank_angle=…
+ * straight_impact_count=… errors=<refused misuses> logged=<messages>" and exits 0 on success. */
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -42,6 +42,13 @@ static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status sta
         errors++;                                                     \
     } while (0)
 
+/* 50 steps of 1 ms from t = 0 on an initialized instance. */
+static int run(fmi2Component c, int from) {
+    int i;
+    for (i = from; i < 50; i++) CHECK(fmi2DoStep(c, i * 1e-3, 1e-3, fmi2True));
+    return 0;
+}
+
 /* One short cycle; returns 0 when every call succeeded. */
 static int short_cycle(const char *guid, const fmi2CallbackFunctions *callbacks) {
     fmi2Component c = fmi2Instantiate("cycle", fmi2CoSimulation, guid, "file:///tmp", callbacks, fmi2False, fmi2False);
@@ -77,8 +84,9 @@ int main(int argc, char **argv) {
     fmi2ValueReference angle, count, speed;
     fmi2Component c;
     fmi2FMUstate state = NULL;
-    fmi2Real value, nan = 0.0;
-    fmi2Integer impacts;
+    fmi2Component straight;
+    fmi2Real value, straight_value, nan = 0.0;
+    fmi2Integer impacts, straight_impacts;
     int i, cycles = 1, errors = 0;
 
     if (argc != 5 && argc != 6) return 2;
@@ -96,19 +104,28 @@ int main(int argc, char **argv) {
     nan = nan / nan;
     REFUSED(fmi2SetReal(c, &speed, 1, &nan));
     REFUSED(fmi2DoStep(c, 0.0, -1e-3, fmi2True));
-    for (i = 0; i < 50; i++) {
-        if (i == 25) CHECK(fmi2GetFMUstate(c, &state));
-        CHECK(fmi2DoStep(c, i * 1e-3, 1e-3, fmi2True));
-    }
+    for (i = 0; i < 25; i++) CHECK(fmi2DoStep(c, i * 1e-3, 1e-3, fmi2True));
+    CHECK(fmi2GetFMUstate(c, &state));
+    if (run(c, 25)) return 1;
     CHECK(fmi2SetFMUstate(c, state));
-    for (i = 25; i < 50; i++) CHECK(fmi2DoStep(c, i * 1e-3, 1e-3, fmi2True));
+    if (run(c, 25)) return 1;
     CHECK(fmi2FreeFMUstate(c, &state));
     CHECK(fmi2GetReal(c, &angle, 1, &value));
     CHECK(fmi2GetInteger(c, &count, 1, &impacts));
     CHECK(fmi2Terminate(c));
     fmi2FreeInstance(c);
+
+    straight = fmi2Instantiate("straight", fmi2CoSimulation, argv[1], "file:///tmp", &callbacks, fmi2False, fmi2False);
+    if (!straight) return 5;
+    CHECK(fmi2EnterInitializationMode(straight));
+    CHECK(fmi2ExitInitializationMode(straight));
+    if (run(straight, 0)) return 1;
+    CHECK(fmi2GetReal(straight, &angle, 1, &straight_value));
+    CHECK(fmi2GetInteger(straight, &count, 1, &straight_impacts));
+    fmi2FreeInstance(straight);
     for (i = 1; i < cycles; i++)
-        if (short_cycle(argv[1], &callbacks)) return 5;
-    printf("crank_angle=%.17g impact_count=%d errors=%d logged=%d\n", value, impacts, errors, logged);
+        if (short_cycle(argv[1], &callbacks)) return 6;
+    printf("crank_angle=%.17g impact_count=%d straight_crank_angle=%.17g straight_impact_count=%d errors=%d logged=%d\n",
+           value, impacts, straight_value, straight_impacts, errors, logged);
     return 0;
 }
