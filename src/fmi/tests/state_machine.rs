@@ -267,9 +267,11 @@ fn check_table<E: Model>(subject: &Subject<E>) -> usize {
                 }
             } else {
                 assert_eq!(status, Status::Error, "{cell}");
+                // fmi2CancelStep is allowed in no state that can occur: in a live one its refusal says so.
                 let refusal = format!("{function} is not allowed in state {state}");
+                let why = |m: &str| m.contains(&refusal) || (*function == "fmi2CancelStep" && m.contains("never a step in progress"));
                 assert!(
-                    log.len() == 1 && log[0].0 == Status::Error as c_int && log[0].2.contains(&refusal),
+                    log.len() == 1 && log[0].0 == Status::Error as c_int && why(&log[0].2),
                     "{cell}"
                 );
                 assert_eq!(snapshot(&host), before, "{cell}: the state changed");
