@@ -10,7 +10,7 @@ FMU := target/fmu/PistonSlap.fmu
 export PYTHONPATH := $(CURDIR)/python
 export MPLBACKEND := Agg
 
-.PHONY: fmu venv demo test thesis bench clean
+.PHONY: fmu venv demo test thesis bench soak clean
 
 # cargo decides what to rebuild, so this always asks it.
 fmu:
@@ -41,6 +41,11 @@ thesis: fmu venv
 
 bench:
 	cargo bench
+
+# Long runs in release mode, not part of `test`: 10⁴ crank-train cycles with the energy balance
+# checked every cycle, then 10⁶ roller revolutions (about 10 + 10 minutes on the 2-CPU machine).
+soak:
+	cargo run --release --example soak -- 10000 1000000
 
 clean:
 	cargo clean

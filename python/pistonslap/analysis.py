@@ -188,32 +188,29 @@ def classify(run, settle_limit=CHAOTIC_TRANSIENT, max_period=16, tolerance=1e-3,
     return Response("periodic" if settled <= settle_limit else "transient chaos", period, settled)
 
 
-def impact_profile(run, first_cycle, bins=40):
-    """Eq 3.6: over j bins of x in [1 - xi, 1 + xi], the sum of |psi'| of the impacts in each bin over the
-    total number N of impacts (both walls); returns (bin edges, upper profile >= 0, lower profile <= 0)."""
-    edges = np.linspace(1 - XI, 1 + XI, bins + 1)
+def _per_wall_sums(run, first_cycle, values, edges):
+    """Per bin of `values` (one per impact), the sum of |psi'| of each wall's impacts from `first_cycle` on,
+    over the total number N of those impacts (both walls): (upper, lower), both >= 0."""
     mask = run.window(first_cycle)
     total = max(int(mask.sum()), 1)
-    profiles = []
-    for wall in (1, -1):
-        mine = mask & (run.wall == wall)
-        sums, _ = np.histogram(run.location[mine], bins=edges, weights=np.abs(run.rate[mine]))
-        profiles.append(wall * sums / total)
-    return edges, profiles[0], profiles[1]
+    sums = [np.histogram(values[mask & (run.wall == wall)], bins=edges, weights=np.abs(run.rate[mask & (run.wall == wall)]))[0] / total
+            for wall in (1, -1)]
+    return sums[0], sums[1]
+
+
+def impact_profile(run, first_cycle, bins=40):
+    """Eq 3.6 over j bins of the impact location x in [1 - xi, 1 + xi]: (bin edges, upper profile >= 0,
+    lower profile <= 0)."""
+    edges = np.linspace(1 - XI, 1 + XI, bins + 1)
+    upper, lower = _per_wall_sums(run, first_cycle, run.location, edges)
+    return edges, upper, -lower
 
 
 def impact_spectra(run, first_cycle, bins=72):
-    """Eq 3.7: over j bins of the crank angle in [0, 2*pi), the sum of |psi'| of each wall's impacts per bin
-    over the total number N of impacts; returns (bin edges, upper spectrum, lower spectrum), both >= 0."""
+    """Eq 3.7 over j bins of the crank angle in [0, 2*pi): (bin edges, upper spectrum, lower spectrum), >= 0."""
     edges = np.linspace(0, CRANK_CYCLE, bins + 1)
-    mask = run.window(first_cycle)
-    total = max(int(mask.sum()), 1)
-    spectra = []
-    for wall in (1, -1):
-        mine = mask & (run.wall == wall)
-        sums, _ = np.histogram(run.theta[mine], bins=edges, weights=np.abs(run.rate[mine]))
-        spectra.append(sums / total)
-    return edges, spectra[0], spectra[1]
+    upper, lower = _per_wall_sums(run, first_cycle, run.theta, edges)
+    return edges, upper, lower
 
 
 def poincare_points(run, first_cycle):

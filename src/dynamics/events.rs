@@ -63,20 +63,39 @@ const MAX_ITERATIONS: usize = 200;
 /// The first sub-interval of `[t0, t1]` where `g` goes from positive to below `−tol`, scanning
 /// `SCAN_SAMPLES` points of the dense output: this finds the earliest of several roots and a
 /// crossing-and-return inside one step (a grazing dip) that the end values alone would miss.
+/// `rising`: `g` is at most 0 at `t0` but increasing (a constraint closed and separating, e.g.
+/// just after an impact); a crossing then lies after `t0` even if the first sample is below
+/// `−tol` (a flight shorter than a sample), so the sample interval is halved towards `t0` until
+/// `g` is positive there. Without this the event would be reported at `t0`, where there is
+/// nothing to resolve, again and again.
 pub(crate) fn first_crossing<E>(
     mut g: impl FnMut(f64) -> Result<f64, E>,
     (t0, g0): (f64, f64),
     (t1, g1): (f64, f64),
     tol: f64,
+    rising: bool,
 ) -> Result<Option<Start>, E> {
     let mut positive = (g0 > 0.0).then_some((t0, g0));
     for k in 1..=SCAN_SAMPLES {
-        let (t, gt) = if k == SCAN_SAMPLES {
+        let (mut t, mut gt) = if k == SCAN_SAMPLES {
             (t1, g1)
         } else {
             let t = t0 + (t1 - t0) * k as f64 / SCAN_SAMPLES as f64;
             (t, g(t)?)
         };
+        if gt < -tol && positive.is_none() && rising {
+            for _ in 0..MAX_ITERATIONS {
+                let mid = t0 + 0.5 * (t - t0);
+                if mid <= t0 || mid >= t {
+                    break;
+                }
+                let g_mid = g(mid)?;
+                if g_mid > 0.0 {
+                    return Ok(Some(Start::Within(Bracket { lo: mid, g_lo: g_mid, hi: t, g_hi: gt })));
+                }
+                (t, gt) = (mid, g_mid);
+            }
+        }
         if gt < -tol {
             return Ok(Some(match positive {
                 Some((lo, g_lo)) => Start::Within(Bracket { lo, g_lo, hi: t, g_hi: gt }),
@@ -174,10 +193,24 @@ mod tests {
     #[test]
     fn scan_finds_a_dip_inside_the_step() {
         let f = |t: f64| (t - 0.5) * (t - 0.5) - 0.01; // negative on (0.4, 0.6)
-        let found = first_crossing(|t| Ok::<_, Infallible>(f(t)), (0.0, f(0.0)), (1.0, f(1.0)), 1e-12).unwrap();
+        let found = first_crossing(|t| Ok::<_, Infallible>(f(t)), (0.0, f(0.0)), (1.0, f(1.0)), 1e-12, false).unwrap();
         match found {
             Some(Start::Within(b)) => assert!(b.lo < 0.4 && b.hi > 0.4 && b.hi <= 0.6),
             other => panic!("{other:?}"),
         }
+    }
+
+    /// A gap at zero and rising at the start whose flight ends before the first sample: the
+    /// crossing is found after the start, not reported as immediate.
+    #[test]
+    fn scan_finds_a_short_flight_after_a_closed_start() {
+        let f = |t: f64| t * (0.01 - t); // 0 at t = 0, rising, back below zero after t = 0.01
+        let found = first_crossing(|t| Ok::<_, Infallible>(f(t)), (0.0, 0.0), (1.0, f(1.0)), 1e-12, true).unwrap();
+        match found {
+            Some(Start::Within(b)) => assert!(b.lo > 0.0 && b.lo < 0.01 && b.hi > 0.01, "{b:?}"),
+            other => panic!("{other:?}"),
+        }
+        let without = first_crossing(|t| Ok::<_, Infallible>(f(t)), (0.0, 0.0), (1.0, f(1.0)), 1e-12, false).unwrap();
+        assert_eq!(without, Some(Start::Immediate));
     }
 }

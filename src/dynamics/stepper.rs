@@ -397,6 +397,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             }
             Err((s, i, watch)) => {
                 self.state = s;
+                // The event state lies inside a step, off the manifold of the held set by the
+                // step's drift; the impact and sliding laws see the held constraints at rest.
+                if active != 0 {
+                    self.stabilize()?;
+                }
                 let closed = self.active | bit(i) | select::<M>(|j| self.state.gap[j] <= self.options.gap_tolerance);
                 let release = if watch == Watch::Multiplier { bit(i) } else { 0 };
                 self.settle(closed, release)?;
@@ -443,7 +448,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     continue;
                 }
                 let start = match self.locator {
-                    EventLocator::DenseOutput => events::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (end.t, g1), tol)?,
+                    EventLocator::DenseOutput => {
+                        let rising = w == Watch::Gap && s0.hd[i] > 0.0;
+                        events::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (end.t, g1), tol, rising)?
+                    }
                     EventLocator::StepHalving if g1 < -tol && g0 > 0.0 => {
                         Some(Start::Within(Bracket { lo: s0.t, g_lo: g0, hi: end.t, g_hi: g1 }))
                     }

@@ -11,6 +11,14 @@ use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
+/// Nominal RK4 step, s (0.72° of crank angle at 1200 rpm). Event times and velocities do not
+/// depend on it (events are located by root finding); the flight and sliding phases are smooth
+/// on this scale. Over ten cycles of the default case against a 2.5 µs reference (958 impacts
+/// faster than 0.1 mm/s, `examples/step_study.rs`): the impact times agree to 4.5e-9 s and the
+/// impact speeds to 2.8e-4 relative, against 2.7e-9 s and 2.2e-4 with a 10 µs step; 200 µs
+/// gives 1.8e-8 s and 3.3e-3. Ten times fewer steps than the core's default.
+pub const NOMINAL_STEP: f64 = 1e-4;
+
 /// The crank train in one of its two crank modes.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct CrankTrain {
@@ -92,7 +100,7 @@ fn dynamics_error(e: impl std::fmt::Display) -> ModelError {
 }
 
 impl CrankTrain {
-    /// Builds with explicit integrator options (the FMU uses the core's defaults).
+    /// Builds with explicit integrator options (the FMU uses `NOMINAL_STEP` and the core's tolerances).
     pub fn with_options(params: &Parameters, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
         validate(params)?;
         check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
@@ -221,7 +229,7 @@ impl CrankTrain {
 
 impl EngineModel for CrankTrain {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
-        Self::with_options(params, start_time, StepperOptions::default())
+        Self::with_options(params, start_time, StepperOptions { step: NOMINAL_STEP, ..StepperOptions::default() })
     }
 
     fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {

@@ -235,40 +235,38 @@ mod tests {
         assert!((c.forcing(PI / 2.0, 0.0) - p.forcing(PI / 2.0, 0.0)).abs() > 0.25);
     }
 
+    /// `sc.forcing` equals `formula(ξ, α, β, λ, τ, Λ)` over a cycle.
+    fn assert_forcing_is(sc: SliderCrank, lambda: f64, formula: impl Fn(f64, f64, f64, f64, f64, f64) -> f64) {
+        for k in 0..16 {
+            let t = k as f64 * 0.41;
+            let big = (1.0 - sc.xi * sc.xi * t.sin().powi(2)).sqrt();
+            assert!((sc.forcing(t, lambda) - formula(sc.xi, sc.alpha, sc.beta, lambda, t, big)).abs() < 1e-14);
+        }
+    }
+
     /// The printed f(τ), term by term as eq 2.13 shows it.
     #[test]
     fn printed_forcing_is_eq_2_13_verbatim() {
-        let sc = thesis(Forcing::Printed);
-        let (xi, al, be, lam) = (sc.xi, sc.alpha, sc.beta, 0.2);
-        for k in 0..16 {
-            let t = k as f64 * 0.41;
-            let big = (1.0 - xi * xi * t.sin().powi(2)).sqrt();
-            let printed = (al / 4.0 + 1.0 - be) * (xi.powi(3) - xi) * t.sin() / big.powi(3)
+        assert_forcing_is(thesis(Forcing::Printed), 0.2, |xi, al, be, lam, t, big| {
+            (al / 4.0 + 1.0 - be) * (xi.powi(3) - xi) * t.sin() / big.powi(3)
                 + (xi * big + 0.5 * al * xi * big) * t.sin()
                 + (0.5 * xi * xi + 0.25 * xi * xi * al) * (2.0 * t).sin()
                 + lam
-                + lam * xi * t.cos() / big;
-            assert!((sc.forcing(t, lam) - printed).abs() < 1e-14);
-        }
+                + lam * xi * t.cos() / big
+        });
     }
 
     /// The alternative form of DESIGN.md §6.1 is the same function as the corrected one.
     #[test]
     fn corrected_forcing_matches_design_form() {
-        let sc = thesis(Forcing::Corrected);
-        let (xi, al, be, lam) = (sc.xi, sc.alpha, sc.beta, 0.07);
-        for k in 0..16 {
-            let t = k as f64 * 0.39;
+        assert_forcing_is(thesis(Forcing::Corrected), 0.07, |xi, al, be, lam, t, big| {
             let (s, c) = t.sin_cos();
-            let big = (1.0 - xi * xi * s * s).sqrt();
-            let design = (1.0 + al / 4.0 + be) * xi.powi(3) * s * c * c / big.powi(3)
-                - xi * s * ((1.0 + al / 4.0) * xi * xi * s * s + be) / big
+            (1.0 + al / 4.0 + be) * xi.powi(3) * s * c * c / big.powi(3) - xi * s * ((1.0 + al / 4.0) * xi * xi * s * s + be) / big
                 + (0.5 + al / 4.0) * xi * xi * (2.0 * t).sin()
                 + al / 4.0 * xi * big * s
                 + lam
-                + lam * xi * c / big;
-            assert!((sc.forcing(t, lam) - design).abs() < 1e-14);
-        }
+                + lam * xi * c / big
+        });
     }
 
     /// ψ_max of eq 2.14 is the linearization of the exact wall contact sin(φ − ψ) = sin φ − ρ (eq A.1),
