@@ -554,9 +554,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 let v_plus = v + frame.minv_jt * impulse;
                 let hd_plus = hd + frame.w * impulse;
                 let lost = impact::energy_lost(&impulse, &hd, &hd_plus);
-                // Recorded: every approaching constraint, and any other that took a real impulse
-                // (one that changes its own ḣ by more than ε_ḣ), e.g. a sliding one pushed harder.
-                let pushed = select::<M>(|i| impulse[i] * frame.w[(i, i)] > opts.velocity_tolerance);
+                // Recorded: every approaching constraint, and any other not held in contact that
+                // took a real impulse (one that changes its own ḣ by more than ε_ḣ). A held one
+                // pushed harder keeps ḣ = 0 on both sides: a reaction that dissipates nothing, not
+                // an impact (counting it would inflate the impact statistics with zero speeds).
+                let pushed = !was_active & select::<M>(|i| impulse[i] * frame.w[(i, i)] > opts.velocity_tolerance);
                 for i in members::<M>(closed & (approaching | pushed)) {
                     self.record(EventKind::Impact, i, hd[i], hd_plus[i], lost[i], q);
                 }
