@@ -126,6 +126,11 @@ impl<E: EngineModel> Simulation<E> {
         }
     }
 
+    /// The impact log's file, if this simulation writes one.
+    pub fn log_path(&self) -> Option<&str> {
+        self.log.as_ref().map(ImpactLog::path)
+    }
+
     /// After a restore: cut the impact log back to this state's cursor.
     pub fn rewind_log(&self) -> Result<(), ModelError> {
         self.log.as_ref().map_or(Ok(()), ImpactLog::rewind)

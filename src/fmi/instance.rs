@@ -412,6 +412,14 @@ impl<E: Model> Instance<E> {
     pub fn set_state(&mut self, core: &Core<E>) -> Outcome {
         self.require("fmi2SetFMUstate", STATE)?;
         if let Phase::StepComplete(sim) | Phase::Terminated(sim) = &core.phase {
+            // Restoring cuts the state's log file: only this instance's own log may be cut, so
+            // foreign or crafted state bytes cannot truncate an arbitrary file.
+            let own = &self.core.parameters.impact_log;
+            if let Some(path) = sim.log_path().filter(|p| p != own) {
+                return Err(Refusal::error(format!(
+                    "the state writes impact_log {path:?}, not this instance's impact_log {own:?}: refused"
+                )));
+            }
             sim.rewind_log()
                 .map_err(|e| Refusal::error(format!("cannot restore the impact log: {e}")))?;
         }
