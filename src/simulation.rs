@@ -95,17 +95,40 @@ impl<E: EngineModel> Simulation<E> {
                 self.time
             ))
         })?;
-        let mut log = self.log.clone();
-        if let Some(log) = &mut log {
-            log.append(&events)?;
+        let mut next = Self {
+            model,
+            time: t_end,
+            outputs: self.outputs.clone(),
+            statistics: self.statistics.clone(),
+            step_events: events,
+            log: self.log.clone(),
+        };
+        next.statistics.record_step(&next.step_events);
+        next.write_outputs();
+        next.check().map_err(|e| {
+            ModelError(format!("step from t = {} s to {t_end} s refused: {}", self.time, e.0))
+        })?;
+        if let Some(log) = &mut next.log {
+            log.append(&next.step_events)?;
         }
-        self.model = model;
-        self.time = t_end;
-        self.step_events = events;
-        self.log = log;
-        self.statistics.record_step(&self.step_events);
-        self.write_outputs();
+        *self = next;
         Ok(())
+    }
+
+    /// What every state must satisfy (a restored one included): a finite time and finite outputs.
+    pub fn check(&self) -> Result<(), ModelError> {
+        if !self.time.is_finite() {
+            return Err(ModelError(format!("time {} s is not finite", self.time)));
+        }
+        match self.outputs.first_non_finite() {
+            Some((name, x)) => Err(ModelError(format!("{name} = {x} is not finite"))),
+            None => Ok(()),
+        }
+    }
+
+    /// The impact log's file, if this simulation writes one.
+    pub fn log_path(&self) -> Option<&str> {
+        self.log.as_ref().map(ImpactLog::path)
     }
 
     /// After a restore: cut the impact log back to this state's cursor.

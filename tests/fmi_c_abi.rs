@@ -1,92 +1,111 @@
 //! The C ABI as a C host sees it: tests/c_host/host.c, compiled with gcc against fmi_headers/ and
 //! linked with the built cdylib, runs instantiate / setup / initialize / 50 steps with a state
-//! restore / free, compares with a straight run, and tries a few misuses that must be refused.
+//! restore / free, compares with a straight run, and tries a few misuses that must be refused. Under valgrind's memcheck it repeats
+//! short instantiate / step / FMU-state / free cycles, which must leak nothing and touch no invalid memory.
 
 use pistonslap::fmi::description::{GUID, VARIABLES};
 use std::path::PathBuf;
-use std::process::Command;
+use std::process::{Command, Output};
+use std::sync::OnceLock;
 
 fn vr(name: &str) -> String {
-    VARIABLES
-        .iter()
-        .position(|v| v.name == name)
-        .expect(name)
-        .to_string()
+    VARIABLES.iter().position(|v| v.name == name).expect(name).to_string()
 }
 
-#[test]
-fn a_c_host_runs_one_cycle() {
-    let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
-    // The test binary lives in <target>/<profile>/deps, the cdylib in <target>/<profile>. `cargo test`
-    // does not link the cdylib, so build it (a no-op when fresh) with this test's profile.
+/// The compiled C host, built once per test binary.
+fn c_host() -> &'static PathBuf {
+    static HOST: OnceLock<PathBuf> = OnceLock::new();
+    HOST.get_or_init(|| {
+        let root = PathBuf::from(env!("CARGO_MANIFEST_DIR"));
+        // The test binary lives in <target>/<profile>/deps, the cdylib in <target>/<profile>. `cargo test`
+        // does not link the cdylib, so build it (a no-op when fresh) with this test's profile.
+        let exe = std::env::current_exe().unwrap();
+        let lib_dir = exe.parent().and_then(|deps| deps.parent()).unwrap().to_path_buf();
+        let built = Command::new(env!("CARGO"))
+            .args(["build", "--lib", "--profile", profile()])
+            .current_dir(&root)
+            .status()
+            .expect("cargo");
+        assert!(built.success() && lib_dir.join("libpistonslap.so").is_file(), "no cdylib in {}", lib_dir.display());
+        let host = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("c_host");
+        let compiled = Command::new("gcc")
+            .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-g", "-o"])
+            .arg(&host)
+            .arg(root.join("tests/c_host/host.c"))
+            .arg("-I")
+            .arg(root.join("fmi_headers"))
+            .arg(format!("-L{}", lib_dir.display()))
+            .arg(format!("-Wl,-rpath,{}", lib_dir.display()))
+            .arg("-lpistonslap")
+            .status()
+            .expect("gcc");
+        assert!(compiled.success(), "gcc failed");
+        host
+    })
+}
+
+fn profile() -> &'static str {
     let exe = std::env::current_exe().unwrap();
-    let lib_dir = exe
-        .parent()
-        .and_then(|deps| deps.parent())
-        .unwrap()
-        .to_path_buf();
-    let profile = if lib_dir.ends_with("release") {
+    if exe.parent().and_then(|deps| deps.parent()).unwrap().ends_with("release") {
         "release"
     } else {
         "dev"
-    };
-    let built = Command::new(env!("CARGO"))
-        .args(["build", "--lib", "--profile", profile])
-        .current_dir(&root)
-        .status()
-        .expect("cargo");
-    assert!(
-        built.success() && lib_dir.join("libpistonslap.so").is_file(),
-        "no cdylib in {}",
-        lib_dir.display()
-    );
-    let host = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("c_host");
-    let compiled = Command::new("gcc")
-        .args(["-std=c99", "-Wall", "-Wextra", "-Werror", "-pedantic", "-o"])
-        .arg(&host)
-        .arg(root.join("tests/c_host/host.c"))
-        .arg("-I")
-        .arg(root.join("fmi_headers"))
-        .arg(format!("-L{}", lib_dir.display()))
-        .arg(format!("-Wl,-rpath,{}", lib_dir.display()))
-        .arg("-lpistonslap")
-        .status()
-        .expect("gcc");
-    assert!(compiled.success(), "gcc failed");
+    }
+}
 
-    let out = Command::new(&host)
-        .args([
-            GUID.to_string(),
-            vr("crank_angle"),
-            vr("impact_count"),
-            vr("crank_speed"),
-        ])
-        .output()
-        .unwrap();
+/// The host's arguments for `cycles` cycles.
+fn host_args(cycles: usize) -> Vec<String> {
+    vec![GUID.to_string(), vr("crank_angle"), vr("impact_count"), vr("crank_speed"), cycles.to_string()]
+}
+
+/// Checks the host's report of its first, checked cycle.
+fn check_report(out: &Output) {
     let stdout = String::from_utf8_lossy(&out.stdout);
-    assert!(
-        out.status.success(),
-        "host exited {:?}\n{stdout}\n{}",
-        out.status,
-        String::from_utf8_lossy(&out.stderr)
-    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(out.status.success(), "host exited {:?}\n{stdout}\n{stderr}", out.status);
     let field = |name: &str| -> f64 {
-        let item = stdout
-            .split_whitespace()
-            .find_map(|w| w.strip_prefix(&format!("{name}=")))
-            .expect(name);
+        let item = stdout.split_whitespace().find_map(|w| w.strip_prefix(&format!("{name}="))).expect(name);
         item.parse().unwrap()
     };
     // Prescribed speed 125.66 rad/s from crank angle 0 for 0.05 s.
-    assert!(
-        (field("crank_angle") - 125.66 * 0.05).abs() < 1e-9,
-        "{stdout}"
-    );
+    assert!((field("crank_angle") - 125.66 * 0.05).abs() < 1e-9, "{stdout}");
     // The run with a restore ends exactly where the straight run does, impacts included.
     assert_eq!(field("crank_angle"), field("straight_crank_angle"), "{stdout}");
     assert_eq!(field("impact_count"), field("straight_impact_count"), "{stdout}");
     assert!(field("impact_count") > 0.0, "the default engine slaps within 50 ms: {stdout}");
     assert_eq!(field("errors"), 3.0, "{stdout}");
-    // The wrong GUID and the three refused calls each logged a message.
+    // The wrong GUID and the three refused calls each logged a message; the short cycles log nothing.
     assert_eq!(field("logged"), 4.0, "{stdout}");
+}
+
+#[test]
+fn a_c_host_runs_one_cycle() {
+    check_report(&Command::new(c_host()).args(host_args(1)).output().unwrap());
+}
+
+/// 10⁴ cycles under memcheck. Only with an optimized build (`make test` runs `cargo test --release`):
+/// the debug build under valgrind would take many minutes.
+#[test]
+fn ten_thousand_cycles_under_valgrind_leak_nothing() {
+    if Command::new("valgrind").arg("--version").output().is_err() {
+        println!("valgrind not found: memcheck skipped");
+        return;
+    }
+    if profile() != "release" {
+        println!("memcheck runs with the release build only (cargo test --release): skipped");
+        return;
+    }
+    let start = std::time::Instant::now();
+    let out = Command::new("valgrind")
+        .args(["--tool=memcheck", "--leak-check=full", "--show-leak-kinds=definite,indirect,possible"])
+        .args(["--errors-for-leak-kinds=definite,indirect,possible", "--error-exitcode=1"])
+        .arg(c_host())
+        .args(host_args(10_000))
+        .output()
+        .unwrap();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    let summary: Vec<&str> = stderr.lines().filter(|l| l.contains("ERROR SUMMARY") || l.contains("lost:") || l.contains("in use at exit")).collect();
+    println!("memcheck of 10000 cycles in {:?}:\n{}", start.elapsed(), summary.join("\n"));
+    check_report(&out);
+    assert!(stderr.contains("ERROR SUMMARY: 0 errors"), "{stderr}");
 }

@@ -37,6 +37,24 @@ pub struct StepperOptions {
     pub multiplier_tolerance: f64,
 }
 
+impl StepperOptions {
+    /// Why these options cannot be used, if they cannot.
+    fn invalid(&self) -> Option<&'static str> {
+        let positive = |x: f64| x.is_finite() && x > 0.0;
+        if !positive(self.step) {
+            Some("the step must be positive and finite")
+        } else if ![self.gap_tolerance, self.velocity_tolerance, self.multiplier_tolerance].into_iter().all(positive) {
+            Some("the tolerances must be positive and finite")
+        } else {
+            None
+        }
+    }
+}
+
+/// The most RK4 steps one `advance` may take: 100 s of engine time at the default step, far beyond a
+/// communication step, yet bounded.
+const MAX_STEPS_PER_ADVANCE: f64 = 1e7;
+
 impl Default for StepperOptions {
     fn default() -> Self {
         Self { step: 1e-5, gap_tolerance: 1e-12, velocity_tolerance: 1e-8, multiplier_tolerance: 1e-12 }
@@ -240,17 +258,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// Starts at `(t0, q0, q̇0)`. Constraints closed at the start are resolved as at any event
     /// (impact if approaching, sliding if the contact force is non-negative), and recorded.
     pub fn new(system: S, t0: f64, q0: SVector<f64, N>, qd0: SVector<f64, N>, options: StepperOptions) -> Result<Self, DynamicsError> {
-        let positive = |x: f64| x.is_finite() && x > 0.0;
         let reason = if M > MAX_CONSTRAINTS {
             Some("too many constraints for the complementarity solver (at most 16)")
-        } else if !positive(options.step) {
-            Some("the step must be positive and finite")
-        } else if ![options.gap_tolerance, options.velocity_tolerance, options.multiplier_tolerance].into_iter().all(positive) {
-            Some("the tolerances must be positive and finite")
         } else if !t0.is_finite() {
             Some("the start time must be finite")
         } else {
-            None
+            options.invalid()
         };
         if let Some(reason) = reason {
             return Err(DynamicsError::InvalidArgument { time: t0, reason });
@@ -267,6 +280,14 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     pub fn advance(&mut self, t_end: f64) -> Result<(), DynamicsError> {
         if !t_end.is_finite() || t_end < self.state.t {
             return Err(DynamicsError::InvalidArgument { time: self.state.t, reason: "the end time is before the current time or not finite" });
+        }
+        // A stepper restored from bytes is trusted no more than its caller: valid options, and a
+        // bounded amount of work below.
+        let reason = self.options.invalid().or_else(|| {
+            ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some("the span needs more than 10⁷ RK4 steps")
+        });
+        if let Some(reason) = reason {
+            return Err(DynamicsError::InvalidArgument { time: self.state.t, reason });
         }
         self.reexamine()?;
         let mut handled = 0;

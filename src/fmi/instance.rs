@@ -112,6 +112,32 @@ impl<E> Default for Core<E> {
     }
 }
 
+impl<E: Model> Core<E> {
+    /// What every state this FMU makes satisfies, so what a restored one must: finite times and
+    /// variables (the setters take only finite values), and past initialization, parameters that
+    /// passed fmi2ExitInitializationMode and a simulation with a finite time and outputs.
+    fn check(&self) -> Result<(), String> {
+        if !self.start_time.is_finite() || self.stop_time.is_some_and(|s| !(s >= self.start_time && s.is_finite())) {
+            return Err(format!("start time {} s or stop time {:?} s is invalid", self.start_time, self.stop_time));
+        }
+        let no_outputs = crate::models::Outputs::default();
+        for (vr, v) in description::VARIABLES.iter().enumerate() {
+            if v.kind == Kind::Real && v.causality != Causality::Output {
+                let x = description::get_real(vr as u32, &self.parameters, &self.inputs, &no_outputs);
+                if x.is_some_and(|x| !x.is_finite()) {
+                    return Err(format!("{} = {x:?} is not finite", v.name));
+                }
+            }
+        }
+        match &self.phase {
+            Phase::StepComplete(sim) | Phase::Terminated(sim) => {
+                self.parameters.validate().and_then(|()| sim.check()).map_err(|e| e.0)
+            }
+            Phase::Instantiated | Phase::InitializationMode => Ok(()),
+        }
+    }
+}
+
 /// A value the host sets: one of FMI's variable types.
 pub enum Value<'a> {
     Real(f64),
@@ -386,6 +412,14 @@ impl<E: Model> Instance<E> {
     pub fn set_state(&mut self, core: &Core<E>) -> Outcome {
         self.require("fmi2SetFMUstate", STATE)?;
         if let Phase::StepComplete(sim) | Phase::Terminated(sim) = &core.phase {
+            // Restoring cuts the state's log file: only this instance's own log may be cut, so
+            // foreign or crafted state bytes cannot truncate an arbitrary file.
+            let own = &self.core.parameters.impact_log;
+            if let Some(path) = sim.log_path().filter(|p| p != own) {
+                return Err(Refusal::error(format!(
+                    "the state writes impact_log {path:?}, not this instance's impact_log {own:?}: refused"
+                )));
+            }
             sim.rewind_log()
                 .map_err(|e| Refusal::error(format!("cannot restore the impact log: {e}")))?;
         }
@@ -401,8 +435,11 @@ impl<E: Model> Instance<E> {
 
     pub fn deserialize(&self, bytes: &[u8]) -> Outcome<Core<E>> {
         self.require("fmi2DeSerializeFMUstate", STATE)?;
-        state_bytes::decode(bytes, GUID)
-            .map_err(|e| Refusal::error(format!("refused state bytes: {e}")))
+        let core: Core<E> = state_bytes::decode(bytes, GUID)
+            .map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
+        core.check()
+            .map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
+        Ok(core)
     }
 
     fn fail(&mut self, e: ModelError) -> Refusal {

@@ -21,6 +21,15 @@ pub const FORMAT_VERSION: u32 = 1;
 
 pub fn encode<T: Serialize>(state: &T, guid: &str) -> Result<Vec<u8>, String> {
     let payload = codec::to_bytes(state).map_err(|e| format!("cannot encode the state: {e}"))?;
+    seal(&payload, guid)
+}
+
+pub fn decode<T: DeserializeOwned>(bytes: &[u8], guid: &str) -> Result<T, String> {
+    codec::from_bytes(open(bytes, guid)?).map_err(|e| format!("cannot decode the state: {e}"))
+}
+
+/// Wraps a payload in the envelope.
+pub fn seal(payload: &[u8], guid: &str) -> Result<Vec<u8>, String> {
     let guid_len = u16::try_from(guid.len()).map_err(|_| "GUID too long".to_string())?;
     let mut out = Vec::with_capacity(payload.len() + guid.len() + 26);
     out.extend_from_slice(MAGIC);
@@ -28,13 +37,14 @@ pub fn encode<T: Serialize>(state: &T, guid: &str) -> Result<Vec<u8>, String> {
     out.extend_from_slice(&guid_len.to_le_bytes());
     out.extend_from_slice(guid.as_bytes());
     out.extend_from_slice(&(payload.len() as u64).to_le_bytes());
-    out.extend_from_slice(&payload);
+    out.extend_from_slice(payload);
     let crc = crc32(&out);
     out.extend_from_slice(&crc.to_le_bytes());
     Ok(out)
 }
 
-pub fn decode<T: DeserializeOwned>(bytes: &[u8], guid: &str) -> Result<T, String> {
+/// Checks the envelope and returns its payload.
+pub fn open<'a>(bytes: &'a [u8], guid: &str) -> Result<&'a [u8], String> {
     let mut r = Reader(bytes);
     if r.take(MAGIC.len())? != MAGIC {
         return Err("not a PistonSlap FMU state (wrong magic)".into());
@@ -70,7 +80,7 @@ pub fn decode<T: DeserializeOwned>(bytes: &[u8], guid: &str) -> Result<T, String
     if crc32(&bytes[..body_len]) != crc {
         return Err("checksum mismatch: the state bytes are corrupted".into());
     }
-    codec::from_bytes(&r.0[..r.0.len() - 4]).map_err(|e| format!("cannot decode the state: {e}"))
+    Ok(&r.0[..r.0.len() - 4])
 }
 
 struct Reader<'a>(&'a [u8]);

@@ -767,6 +767,35 @@ fn strings_status_queries_and_debug_logging() {
 }
 
 #[test]
+fn a_state_cannot_cut_another_instances_impact_log() {
+    let path = std::env::temp_dir().join(format!("pistonslap_foreign_log_{}.csv", std::process::id()));
+    let path_c = CString::new(path.to_str().unwrap()).unwrap();
+    let writer = ShuttleHost::new();
+    let set = unsafe { abi::set_string::<Shuttle>(writer.c, &vr("impact_log"), 1, &path_c.as_ptr()) };
+    assert_eq!(set, Status::Ok);
+    assert_eq!((writer.enter(), writer.exit()), (Status::Ok, Status::Ok));
+    let state = writer.get_state();
+    let bytes = writer.serialize(state);
+    writer.run(0.0, 0.005, 1e-3);
+    let written = std::fs::metadata(&path).unwrap().len();
+
+    // An instance without that log takes the bytes but refuses to restore them: the file keeps its rows.
+    let other = ShuttleHost::initialized();
+    let (status, foreign) = other.deserialize(&bytes);
+    assert_eq!(status, Status::Ok);
+    assert_eq!(other.set_state(foreign), Status::Error);
+    other.logged("not this instance's impact_log");
+    assert_eq!(std::fs::metadata(&path).unwrap().len(), written);
+
+    // The writer itself may rewind its own log.
+    assert_eq!(writer.set_state(state), Status::Ok);
+    assert!(std::fs::metadata(&path).unwrap().len() < written);
+    writer.free_state(state);
+    other.free_state(foreign);
+    std::fs::remove_file(&path).unwrap();
+}
+
+#[test]
 fn instances_in_threads_are_independent() {
     let results: Vec<Vec<u64>> = std::thread::scope(|scope| {
         let handles: Vec<_> = (0..4)
@@ -873,3 +902,7 @@ fn engine_instances_in_threads_agree_bit_for_bit() {
     });
     assert!(results.iter().all(|r| *r == results[0]));
 }
+
+mod state_machine;
+mod fuzz;
+mod threads;

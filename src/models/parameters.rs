@@ -93,6 +93,33 @@ pub struct Outputs {
     pub side_force: f64,
 }
 
+impl Outputs {
+    /// The first Real output that is not finite, by name: a step that gives one has failed.
+    pub fn first_non_finite(&self) -> Option<(&'static str, f64)> {
+        [
+            ("impact_velocity", self.impact_velocity),
+            ("max_impact_velocity_in_step", self.max_impact_velocity_in_step),
+            ("impact_energy_in_step", self.impact_energy_in_step),
+            ("impact_energy_total", self.impact_energy_total),
+            ("last_impact_crank_angle", self.last_impact_crank_angle),
+            ("piston_lateral", self.piston_lateral),
+            ("piston_lateral_velocity", self.piston_lateral_velocity),
+            ("piston_tilt", self.piston_tilt),
+            ("piston_axial", self.piston_axial),
+            ("crank_angle", self.crank_angle),
+            ("rod_angle", self.rod_angle),
+            ("crank_torque", self.crank_torque),
+            ("contact_force_1", self.contact_force_1),
+            ("contact_force_2", self.contact_force_2),
+            ("contact_force_3", self.contact_force_3),
+            ("contact_force_4", self.contact_force_4),
+            ("side_force", self.side_force),
+        ]
+        .into_iter()
+        .find(|(_, x)| !x.is_finite())
+    }
+}
+
 // `impl Default for Parameters`, `impl Default for Inputs` and `Parameters::check_ranges`.
 include!(concat!(env!("OUT_DIR"), "/parameter_defaults.rs"));
 

@@ -59,6 +59,10 @@ impl ImpactLog {
         }
     }
 
+    pub fn path(&self) -> &str {
+        &self.path
+    }
+
     /// Cuts the file back to this cursor (after a state restore). A file shorter than the cursor was
     /// changed by someone else: refused.
     pub fn rewind(&self) -> Result<(), ModelError> {
