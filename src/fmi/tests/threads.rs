@@ -31,16 +31,8 @@ fn trace(&(variant, restitution, speed, h): &Run, start: &Barrier) -> Trace {
     assert_eq!(host.set_real("restitution", restitution), Status::Ok);
     assert_eq!(host.set_real("crank_speed", speed), Status::Ok);
     if variant == 2 {
-        // The thesis's mechanism, which slaps within a few crank turns (as in the restore test above).
-        for (name, value) in [
-            ("crank_radius", 0.303),
-            ("rod_length", 1.0),
-            ("rod_mass", 1.9),
-            ("piston_mass", 1.0),
-            ("rod_inertia", 0.4719),
-            ("damping_crank_pin", 0.05),
-            ("bore", 0.12),
-        ] {
+        // The thesis's mechanism, which slaps within a few crank turns.
+        for (name, value) in THESIS_MECHANISM {
             assert_eq!(host.set_real(name, value), Status::Ok, "{name}");
         }
     }
