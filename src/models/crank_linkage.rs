@@ -30,7 +30,15 @@ use serde::{Deserialize, Serialize};
 
 /// Geometry, inertia and damping of the crank train (DESIGN.md §4 parameters), SI.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(from = "Bodies", into = "Bodies")]
 pub struct Linkage {
+    bodies: Bodies,
+    /// Derived from `bodies`, so not part of a saved state.
+    terms: Terms,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+struct Bodies {
     /// (l1, l2).
     links: [f64; 2],
     /// Centre-of-mass offsets along each link (ey1, ey2, ey3).
@@ -46,13 +54,23 @@ pub struct Linkage {
     bore: f64,
     /// Per corner: z (distance from the pin along the axis), w (offset across it), wall side σ.
     corners: [(f64, f64, f64); 4],
-    /// The constants of the written-out equations.
-    terms: Terms,
+}
+
+impl From<Bodies> for Linkage {
+    fn from(bodies: Bodies) -> Self {
+        Self { terms: Terms::new(&bodies), bodies }
+    }
+}
+
+impl From<Linkage> for Bodies {
+    fn from(linkage: Linkage) -> Self {
+        linkage.bodies
+    }
 }
 
 /// Constant factors of M and f (module docs): `M_kk`, `F_ij(x) = P_ij cos x + Q_ij sin x`, and the
 /// weight moments `f_k ∋ G_k sin φ_k` plus `G_a cos φ3` (the piston's centre of mass off its axis).
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq)]
 struct Terms {
     diagonal: [f64; 3],
     p12: f64,
@@ -62,6 +80,23 @@ struct Terms {
     q23: f64,
     weight: [f64; 3],
     weight_offset: f64,
+}
+
+impl Terms {
+    fn new(bodies: &Bodies) -> Self {
+        let ([l1, l2], [b1, b2, b3], [m1, m2, m3], [j1, j2, j3]) = (bodies.links, bodies.along, bodies.masses, bodies.inertias);
+        let (a, g) = (bodies.pin_offset, bodies.gravity);
+        Self {
+            diagonal: [j1 + m1 * b1 * b1 + (m2 + m3) * l1 * l1, j2 + m2 * b2 * b2 + m3 * l2 * l2, j3 + m3 * (b3 * b3 + a * a)],
+            p12: (m2 * b2 + m3 * l2) * l1,
+            p13: m3 * l1 * b3,
+            q13: m3 * l1 * a,
+            p23: m3 * l2 * b3,
+            q23: m3 * l2 * a,
+            weight: [g * (m1 * b1 + (m2 + m3) * l1), g * (m2 * b2 + m3 * l2), g * m3 * b3],
+            weight_offset: g * m3 * a,
+        }
+    }
 }
 
 /// Generalized forces that vary with the host's inputs.
@@ -100,46 +135,29 @@ impl Linkage {
     pub fn new(p: &Parameters) -> Self {
         let a = p.pin_offset;
         let (h, s, half) = (p.pin_height, p.skirt_length, 0.5 * p.piston_diameter);
-        let (l1, l2, g) = (p.crank_radius, p.rod_length, p.gravity);
-        let (m1, m2, m3) = (p.crank_mass, p.rod_mass, p.piston_mass);
-        let (b1, b2, b3) = (p.crank_com, p.rod_com, p.piston_com);
-        let terms = Terms {
-            diagonal: [
-                p.crank_inertia + m1 * b1 * b1 + (m2 + m3) * l1 * l1,
-                p.rod_inertia + m2 * b2 * b2 + m3 * l2 * l2,
-                p.piston_inertia + m3 * (b3 * b3 + a * a),
-            ],
-            p12: (m2 * b2 + m3 * l2) * l1,
-            p13: m3 * l1 * b3,
-            q13: m3 * l1 * a,
-            p23: m3 * l2 * b3,
-            q23: m3 * l2 * a,
-            weight: [g * (m1 * b1 + (m2 + m3) * l1), g * (m2 * b2 + m3 * l2), g * m3 * b3],
-            weight_offset: g * m3 * a,
-        };
-        Self {
-            links: [l1, l2],
-            along: [b1, b2, b3],
+        Bodies {
+            links: [p.crank_radius, p.rod_length],
+            along: [p.crank_com, p.rod_com, p.piston_com],
             across: [0.0, 0.0, -a],
-            masses: [m1, m2, m3],
+            masses: [p.crank_mass, p.rod_mass, p.piston_mass],
             inertias: [p.crank_inertia, p.rod_inertia, p.piston_inertia],
             damping: [p.damping_main, p.damping_crank_pin, p.damping_piston_pin],
-            gravity: g,
+            gravity: p.gravity,
             pin_offset: a,
             bore: p.bore,
             corners: [(h, -(half + a), 1.0), (h - s, -(half + a), 1.0), (h, half - a, -1.0), (h - s, half - a, -1.0)],
-            terms,
         }
+        .into()
     }
 
     /// Pin O3 position (x, y), m.
     pub fn pin(&self, phi: &Vector3<f64>) -> Vector2<f64> {
-        self.links[0] * along(phi[0]) + self.links[1] * along(phi[1])
+        self.bodies.links[0] * along(phi[0]) + self.bodies.links[1] * along(phi[1])
     }
 
     /// Corner gaps h(φ), m.
     pub fn gaps(&self, phi: &Vector3<f64>) -> Vector4<f64> {
-        let [l1, l2] = self.links;
+        let [l1, l2] = self.bodies.links;
         let (s3, c3) = phi[2].sin_cos();
         self.corner_gaps(-l1 * phi[0].sin() - l2 * phi[1].sin(), s3, c3)
     }
@@ -147,8 +165,8 @@ impl Linkage {
     /// Gaps from the pin's lateral position and the piston tilt's sine and cosine.
     fn corner_gaps(&self, x_pin: f64, s3: f64, c3: f64) -> Vector4<f64> {
         Vector4::from_fn(|i, _| {
-            let (z, w, side) = self.corners[i];
-            0.5 * self.bore + side * (x_pin - z * s3 + w * c3)
+            let (z, w, side) = self.bodies.corners[i];
+            0.5 * self.bodies.bore + side * (x_pin - z * s3 + w * c3)
         })
     }
 
@@ -171,14 +189,14 @@ impl Linkage {
         // F'_ij(φi − φj) and the squared rates.
         let (g12, g13, g23) = (-k.p12 * s12, k.q13 * c13 - k.p13 * s13, k.q23 * c23 - k.p23 * s23);
         let (w1, w2, w3) = (phid[0] * phid[0], phid[1] * phid[1], phid[2] * phid[2]);
-        let [l1, l2] = self.links;
-        let [cb1, cb2, cb3] = self.damping;
+        let [l1, l2] = self.bodies.links;
+        let [cb1, cb2, cb3] = self.bodies.damping;
         let (crank_pin, piston_pin) = (phid[1] - phid[0], phid[2] - phid[1]);
         let gas = loads.gas_force;
         let force = Vector3::new(
             g12 * w2 + g13 * w3 + (k.weight[0] + gas * l1) * s1 - loads.load_torque + cb2 * crank_pin - cb1 * phid[0],
             g23 * w3 - g12 * w1 + (k.weight[1] + gas * l2) * s2 + cb3 * piston_pin - cb2 * crank_pin,
-            -g13 * w1 - g23 * w2 + k.weight[2] * s3 + (k.weight_offset + gas * self.pin_offset) * c3 - cb3 * piston_pin,
+            -g13 * w1 - g23 * w2 + k.weight[2] * s3 + (k.weight_offset + gas * self.bodies.pin_offset) * c3 - cb3 * piston_pin,
         );
         // x_O3 = −l1 s1 − l2 s2 and its second derivative at φ̈ = 0.
         let (x_pin, pin_bias) = (-l1 * s1 - l2 * s2, l1 * s1 * w1 + l2 * s2 * w2);
@@ -188,12 +206,12 @@ impl Linkage {
             force,
             gap: self.corner_gaps(x_pin, s3, c3),
             gap_jacobian: nalgebra::Matrix4x3::from_fn(|i, j| {
-                let (z, w, side) = self.corners[i];
+                let (z, w, side) = self.bodies.corners[i];
                 side * [jacobian_1, jacobian_2, -(z * c3 + w * s3)][j]
             }),
             gap_time_rate: Vector4::zeros(),
             gap_bias: Vector4::from_fn(|i, _| {
-                let (z, w, side) = self.corners[i];
+                let (z, w, side) = self.bodies.corners[i];
                 side * (pin_bias + (z * s3 - w * c3) * w3)
             }),
         }
@@ -203,13 +221,13 @@ impl Linkage {
     pub fn energy(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) -> (f64, f64) {
         let mass = self.evaluate(phi, phid, Loads { gas_force: 0.0, load_torque: 0.0 }).mass;
         let kinetic = 0.5 * phid.dot(&(mass * phid));
-        let potential = (0..3).map(|k| self.masses[k] * self.gravity * self.centre_of_mass(phi, k).y).sum();
+        let potential = (0..3).map(|k| self.bodies.masses[k] * self.bodies.gravity * self.centre_of_mass(phi, k).y).sum();
         (kinetic, potential)
     }
 
     fn centre_of_mass(&self, phi: &Vector3<f64>, k: usize) -> Vector2<f64> {
-        let joints: Vector2<f64> = (0..k).map(|j| self.links[j] * along(phi[j])).sum();
-        joints + self.along[k] * along(phi[k]) + self.across[k] * across(phi[k])
+        let joints: Vector2<f64> = (0..k).map(|j| self.bodies.links[j] * along(phi[j])).sum();
+        joints + self.bodies.along[k] * along(phi[k]) + self.bodies.across[k] * across(phi[k])
     }
 }
 
@@ -238,34 +256,34 @@ mod tests {
     fn by_link_jacobians(l: &Linkage, phi: &Vector3<f64>, phid: &Vector3<f64>, loads: Loads) -> (Matrix3<f64>, Vector3<f64>, nalgebra::Matrix4x3<f64>, Vector4<f64>) {
         let e = [along(phi[0]), along(phi[1]), along(phi[2])];
         let n = [across(phi[0]), across(phi[1]), across(phi[2])];
-        let weight = Vector2::new(0.0, -l.gravity);
-        let mut mass = Matrix3::from_diagonal(&Vector3::from(l.inertias));
+        let weight = Vector2::new(0.0, -l.bodies.gravity);
+        let mut mass = Matrix3::from_diagonal(&Vector3::from(l.bodies.inertias));
         let mut force = Vector3::zeros();
         for k in 0..3 {
             // Columns of J_k and the velocity-product acceleration J̇_k φ̇.
             let mut columns = [Vector2::zeros(); 3];
             let mut bias = Vector2::zeros();
             for j in 0..k {
-                columns[j] = -l.links[j] * n[j];
-                bias -= l.links[j] * phid[j] * phid[j] * e[j];
+                columns[j] = -l.bodies.links[j] * n[j];
+                bias -= l.bodies.links[j] * phid[j] * phid[j] * e[j];
             }
-            let body = l.along[k] * e[k] + l.across[k] * n[k];
-            columns[k] = -l.along[k] * n[k] + l.across[k] * e[k];
+            let body = l.bodies.along[k] * e[k] + l.bodies.across[k] * n[k];
+            columns[k] = -l.bodies.along[k] * n[k] + l.bodies.across[k] * e[k];
             bias -= phid[k] * phid[k] * body;
-            let applied = l.masses[k] * (weight - bias);
+            let applied = l.bodies.masses[k] * (weight - bias);
             for i in 0..=k {
                 force[i] += columns[i].dot(&applied);
                 for j in 0..=k {
-                    mass[(i, j)] += l.masses[k] * columns[i].dot(&columns[j]);
+                    mass[(i, j)] += l.bodies.masses[k] * columns[i].dot(&columns[j]);
                 }
             }
         }
         // Gas force (0, −F) at O3 − a n(φ3): J_P columns −l1 n1, −l2 n2, −a e3.
         let gas = Vector2::new(0.0, -loads.gas_force);
-        force[0] -= l.links[0] * n[0].dot(&gas) + loads.load_torque;
-        force[1] -= l.links[1] * n[1].dot(&gas);
-        force[2] -= l.pin_offset * e[2].dot(&gas);
-        let [c1, c2, c3] = l.damping;
+        force[0] -= l.bodies.links[0] * n[0].dot(&gas) + loads.load_torque;
+        force[1] -= l.bodies.links[1] * n[1].dot(&gas);
+        force[2] -= l.bodies.pin_offset * e[2].dot(&gas);
+        let [c1, c2, c3] = l.bodies.damping;
         let (crank_pin, piston_pin) = (phid[1] - phid[0], phid[2] - phid[1]);
         force[0] += c2 * crank_pin - c1 * phid[0];
         force[1] += c3 * piston_pin - c2 * crank_pin;
@@ -273,13 +291,13 @@ mod tests {
         // Corner K: x_K = x_O3 + z e3.x + w n3.x; ∂x_K/∂φ and the second derivative along φ̇.
         let mut jacobian = nalgebra::Matrix4x3::zeros();
         let mut bias = Vector4::zeros();
-        for (i, &(z, w, side)) in l.corners.iter().enumerate() {
+        for (i, &(z, w, side)) in l.bodies.corners.iter().enumerate() {
             let tilt = z * e[2] + w * n[2];
-            let columns = [l.links[0] * -n[0].x, l.links[1] * -n[1].x, -z * n[2].x + w * e[2].x];
+            let columns = [l.bodies.links[0] * -n[0].x, l.bodies.links[1] * -n[1].x, -z * n[2].x + w * e[2].x];
             for j in 0..3 {
                 jacobian[(i, j)] = side * columns[j];
             }
-            let accel = -l.links[0] * phid[0] * phid[0] * e[0].x - l.links[1] * phid[1] * phid[1] * e[1].x - phid[2] * phid[2] * tilt.x;
+            let accel = -l.bodies.links[0] * phid[0] * phid[0] * e[0].x - l.bodies.links[1] * phid[1] * phid[1] * e[1].x - phid[2] * phid[2] * tilt.x;
             bias[i] = side * accel;
         }
         (mass, force, jacobian, bias)
@@ -309,8 +327,8 @@ mod tests {
                 // The corners' gaps from their positions.
                 let pin = l.pin(&phi);
                 let expected = Vector4::from_fn(|i, _| {
-                    let (z, w, side) = l.corners[i];
-                    0.5 * l.bore + side * (pin.x + z * along(phi[2]).x + w * across(phi[2]).x)
+                    let (z, w, side) = l.bodies.corners[i];
+                    0.5 * l.bodies.bore + side * (pin.x + z * along(phi[2]).x + w * across(phi[2]).x)
                 });
                 assert!((ev.gap - expected).norm() < 1e-15, "h {} vs {expected}", ev.gap);
                 assert_eq!(ev.gap, l.gaps(&phi));
@@ -324,7 +342,7 @@ mod tests {
         (0..3)
             .map(|k| {
                 let v = (l.centre_of_mass(&(phi + phid * dt), k) - l.centre_of_mass(&(phi - phid * dt), k)) / (2.0 * dt);
-                0.5 * (l.masses[k] * v.norm_squared() + l.inertias[k] * phid[k] * phid[k])
+                0.5 * (l.bodies.masses[k] * v.norm_squared() + l.bodies.inertias[k] * phid[k] * phid[k])
             })
             .sum()
     }
@@ -368,7 +386,7 @@ mod tests {
                     lagrange[i] += (kp - km - (vp - vm)) / (2.0 * eps);
                 }
                 // Non-conservative forces: virtual work of damping, gas and load, written out directly.
-                let [c1, c2, c3] = l.damping;
+                let [c1, c2, c3] = l.bodies.damping;
                 let damping = Vector3::new(
                     -c1 * phid[0] + c2 * (phid[1] - phid[0]),
                     -c2 * (phid[1] - phid[0]) + c3 * (phid[2] - phid[1]),
