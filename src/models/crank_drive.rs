@@ -5,12 +5,13 @@
 //!   term. The crank row then yields the drive torque.
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
-use super::crank_linkage::{Linkage, Loads};
+use super::crank_linkage::{Linkage, Loads, Trig};
 use super::pressure::FourStrokePressure;
 use super::{Inputs, Parameters};
 use crate::dynamics::{Evaluation, System};
 use nalgebra::{Matrix4x2, SVector, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
+use std::cell::Cell;
 
 /// Where the gas pressure comes from.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -25,10 +26,33 @@ pub enum GasPressure {
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Engine {
     pub linkage: Linkage,
-    pub pressure: GasPressure,
+    /// Private: `PrescribedCrank` caches the curve's values, so only a held pressure may change.
+    pressure: GasPressure,
     /// Crown area π d²/4, m².
     pub crown_area: f64,
     pub restitution: f64,
+}
+
+/// The prescribed crank's terms at the last crank angle evaluated. RK4's two half-step stages share
+/// a time, and so do a step's last stage and its end sample: with the crank prescribed, they share
+/// the crank angle too. A cache, not state: not saved, equal in comparisons.
+#[derive(Clone, Debug, Default)]
+struct LastCrank(Cell<Option<Crank>>);
+
+impl PartialEq for LastCrank {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+/// What an evaluation needs of the crank angle alone.
+#[derive(Clone, Copy, Debug)]
+struct Crank {
+    angle: f64,
+    sin: f64,
+    cos: f64,
+    /// The built-in curve's gauge pressure; 0 with a held pressure.
+    curve: f64,
 }
 
 impl Engine {
@@ -46,13 +70,32 @@ impl Engine {
         }
     }
 
-    /// Gas force toward the crank at crank angle φ1, N.
-    pub fn gas_force(&self, crank_angle: f64) -> f64 {
-        let p = match &self.pressure {
-            GasPressure::BuiltIn(curve) => curve.gauge(crank_angle),
+    /// Holds the `gas_pressure` input, if the pressure comes from it.
+    pub fn hold_pressure(&mut self, pressure: f64) {
+        if let GasPressure::Held(p) = &mut self.pressure {
+            *p = pressure;
+        }
+    }
+
+    fn crank(&self, angle: f64) -> Crank {
+        let (sin, cos) = angle.sin_cos();
+        let curve = match &self.pressure {
+            GasPressure::BuiltIn(curve) => curve.gauge_at(angle, sin, cos),
+            GasPressure::Held(_) => 0.0,
+        };
+        Crank { angle, sin, cos, curve }
+    }
+
+    /// The linkage's evaluation at (φ, φ̇) with the gas force at φ1 = `crank.angle` and the load
+    /// torque `load_torque`.
+    #[inline]
+    fn evaluate(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> Evaluation<3, 4> {
+        let pressure = match &self.pressure {
+            GasPressure::BuiltIn(_) => crank.curve,
             GasPressure::Held(p) => *p,
         };
-        p * self.crown_area
+        let loads = Loads { gas_force: pressure * self.crown_area, load_torque };
+        self.linkage.evaluate_with(&Trig::with_crank((crank.sin, crank.cos), phi), phid, loads)
     }
 }
 
@@ -63,11 +106,13 @@ pub struct PrescribedCrank {
     angle_ref: f64,
     time_ref: f64,
     speed: f64,
+    #[serde(skip)]
+    last_crank: LastCrank,
 }
 
 impl PrescribedCrank {
     pub fn new(engine: Engine, crank_angle: f64, time: f64, speed: f64) -> Self {
-        Self { engine, angle_ref: crank_angle, time_ref: time, speed }
+        Self { engine, angle_ref: crank_angle, time_ref: time, speed, last_crank: LastCrank::default() }
     }
 
     pub fn crank_angle(&self, t: f64) -> f64 {
@@ -87,6 +132,18 @@ impl PrescribedCrank {
         }
     }
 
+    /// The crank terms at `angle`, from the cache when it is the last angle evaluated.
+    fn crank(&self, angle: f64) -> Crank {
+        match self.last_crank.0.get() {
+            Some(last) if last.angle == angle => last,
+            _ => {
+                let crank = self.engine.crank(angle);
+                self.last_crank.0.set(Some(crank));
+                crank
+            }
+        }
+    }
+
     /// Full coordinates and velocities at `(t, q, q̇)`.
     pub fn full_state(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Vector3<f64>, Vector3<f64>) {
         (Vector3::new(self.crank_angle(t), q[0], q[1]), Vector3::new(self.speed, qd[0], qd[1]))
@@ -95,8 +152,7 @@ impl PrescribedCrank {
     /// Linkage evaluation in full coordinates.
     pub fn evaluate_full(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<3, 4> {
         let (phi, phid) = self.full_state(t, q, qd);
-        let loads = Loads { gas_force: self.engine.gas_force(phi[0]), load_torque: 0.0 };
-        self.engine.linkage.evaluate(&phi, &phid, loads)
+        self.engine.evaluate(&phi, &phid, 0.0, self.crank(phi[0]))
     }
 
     /// Torque the drive applies to the crank: the crank row `M_1· φ̈ − f_1 − (Jᵀλ)_1` with φ̈1 = 0.
@@ -138,8 +194,7 @@ pub struct FreeCrank {
 
 impl System<3, 4> for FreeCrank {
     fn evaluate(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> Evaluation<3, 4> {
-        let loads = Loads { gas_force: self.engine.gas_force(q[0]), load_torque: self.load_torque };
-        self.engine.linkage.evaluate(q, qd, loads)
+        self.engine.evaluate(q, qd, self.load_torque, self.engine.crank(q[0]))
     }
 
     fn gaps(&self, _t: f64, q: &SVector<f64, 3>) -> Vector4<f64> {
@@ -157,14 +212,7 @@ mod tests {
     use crate::models::Parameters;
 
     fn prescribed() -> PrescribedCrank {
-        let p = Parameters::default();
-        let engine = Engine {
-            linkage: Linkage::new(&p),
-            pressure: GasPressure::BuiltIn(FourStrokePressure::new(8e6, 3.75)),
-            crown_area: 0.25 * std::f64::consts::PI * 0.08 * 0.08,
-            restitution: 0.5,
-        };
-        PrescribedCrank::new(engine, 0.4, 0.01, 125.66)
+        PrescribedCrank::new(Engine::new(&Parameters::default()), 0.4, 0.01, 125.66)
     }
 
     #[test]
@@ -186,6 +234,23 @@ mod tests {
         };
         assert!((column(0) - ev.gap_jacobian.column(0)).norm() < 1e-8);
         assert!((column(1) - ev.gap_jacobian.column(1)).norm() < 1e-8);
+    }
+
+    #[test]
+    fn the_crank_cache_never_changes_a_result() {
+        // Repeated, alternating and new times, a held pressure changed at an unchanged time and a
+        // new speed: every evaluation is that of a system that never evaluated before.
+        for pressure_source in [1, 2] {
+            let p = Parameters { pressure_source, ..Parameters::default() };
+            let mut sys = PrescribedCrank::new(Engine::new(&p), 0.1, 0.0, 125.66);
+            let (q, qd) = (Vector2::new(0.05, 0.001), Vector2::new(-30.0, 2.0));
+            for (t, held, speed) in [(0.001, 2e6, 125.66), (0.001, 2e6, 125.66), (0.002, 2e6, 125.66), (0.001, 5e6, 125.66), (0.001, 1e6, 80.0), (0.003, 1e6, 80.0)] {
+                sys.engine.hold_pressure(held);
+                sys.hold_speed(0.0, speed);
+                let fresh = PrescribedCrank::new(sys.engine.clone(), 0.1, 0.0, speed);
+                assert_eq!(sys.evaluate(t, &q, &qd), fresh.evaluate(t, &q, &qd), "t {t}, held {held}, speed {speed}");
+            }
+        }
     }
 
     #[test]

@@ -117,7 +117,12 @@ pub struct Trig {
 
 impl Trig {
     pub fn new(phi: &Vector3<f64>) -> Self {
-        let [(s1, c1), (s2, c2), (s3, c3)] = [phi[0].sin_cos(), phi[1].sin_cos(), phi[2].sin_cos()];
+        Self::with_crank(phi[0].sin_cos(), phi)
+    }
+
+    /// With the crank angle's sine and cosine at hand.
+    pub fn with_crank((s1, c1): (f64, f64), phi: &Vector3<f64>) -> Self {
+        let [(s2, c2), (s3, c3)] = [phi[1].sin_cos(), phi[2].sin_cos()];
         Self { sin: [s1, s2, s3], cos: [c1, c2, c3] }
     }
 }

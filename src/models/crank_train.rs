@@ -1,7 +1,7 @@
 //! Variant 1: the piston – connecting rod – crankshaft system of Awrejcewicz & Kudra on the core,
 //! as the FMU drives it (prescribed crank speed, or a free crank under a load torque).
 
-use super::crank_drive::{Engine, FreeCrank, GasPressure, PrescribedCrank};
+use super::crank_drive::{Engine, FreeCrank, PrescribedCrank};
 use super::crank_kinematics::SliderCrank;
 use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
 use crate::dynamics::{Event, EventKind, Stepper, StepperOptions};
@@ -228,9 +228,7 @@ impl EngineModel for CrankTrain {
         if !self.started {
             self.start(inputs.crank_speed)?;
         }
-        if let GasPressure::Held(p) = &mut self.engine_mut().pressure {
-            *p = inputs.gas_pressure;
-        }
+        self.engine_mut().hold_pressure(inputs.gas_pressure);
         match &mut self.drive {
             Drive::Prescribed(s) => {
                 let now = s.time();

@@ -26,8 +26,11 @@ const COMBUSTION_PRESSURE_RATIO: f64 = 3.2;
 const BURN_START: f64 = -8.0 * PI / 180.0;
 const BURN_DURATION: f64 = 60.0 * PI / 180.0;
 const WIEBE_EFFICIENCY: f64 = 6.9;
-const WIEBE_FORM: f64 = 1.0;
+/// An integer, so that the Wiebe exponent m + 1 is a product, not a `pow`.
+const WIEBE_FORM: i32 = 1;
 const EXHAUST_OPENS: f64 = 130.0 * PI / 180.0;
+/// V(π)/V_d: clearance plus displaced volume.
+const BDC_VOLUME: f64 = 1.0 / (COMPRESSION_RATIO - 1.0) + 1.0;
 
 /// The built-in gauge pressure curve, Pa, as a function of crank angle.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -46,35 +49,41 @@ impl FourStrokePressure {
         let spacing = (PI / 3.0) / samples as f64;
         let coarse = (0..=samples)
             .map(|k| k as f64 * spacing)
-            .max_by(|a, b| unscaled.shape(*a).total_cmp(&unscaled.shape(*b)))
+            .max_by(|a, b| unscaled.gauge(*a).total_cmp(&unscaled.gauge(*b)))
             .unwrap_or(0.0);
         let (mut lo, mut hi) = (coarse - spacing, coarse + spacing);
         let ratio = 0.5 * (5f64.sqrt() - 1.0);
         for _ in 0..60 {
             let (a, b) = (hi - ratio * (hi - lo), lo + ratio * (hi - lo));
-            if unscaled.shape(a) < unscaled.shape(b) {
+            if unscaled.gauge(a) < unscaled.gauge(b) {
                 lo = a;
             } else {
                 hi = b;
             }
         }
-        Self { rod_ratio, scale: peak / unscaled.shape(0.5 * (lo + hi)) }
+        Self { rod_ratio, scale: peak / unscaled.gauge(0.5 * (lo + hi)) }
     }
 
     /// Gauge pressure at `crank_angle` (rad, any value; period 4π).
     pub fn gauge(&self, crank_angle: f64) -> f64 {
-        self.scale * self.shape(crank_angle)
+        let (sin, cos) = crank_angle.sin_cos();
+        self.gauge_at(crank_angle, sin, cos)
+    }
+
+    /// [`Self::gauge`] with the crank angle's sine and cosine at hand (the linkage needs them too).
+    pub fn gauge_at(&self, crank_angle: f64, sin: f64, cos: f64) -> f64 {
+        self.scale * self.shape(crank_angle, sin, cos)
     }
 
     /// p̂ in units of the intake pressure.
-    fn shape(&self, crank_angle: f64) -> f64 {
+    fn shape(&self, crank_angle: f64, sin: f64, cos: f64) -> f64 {
         let cycle = 4.0 * PI;
         let theta = crank_angle - cycle * (crank_angle / cycle).round();
         if theta.abs() > PI {
             return 0.0;
         }
         let burnt = if theta > BURN_START {
-            1.0 - (-WIEBE_EFFICIENCY * ((theta - BURN_START) / BURN_DURATION).powf(WIEBE_FORM + 1.0)).exp()
+            1.0 - (-WIEBE_EFFICIENCY * ((theta - BURN_START) / BURN_DURATION).powi(WIEBE_FORM + 1)).exp()
         } else {
             0.0
         };
@@ -83,15 +92,15 @@ impl FourStrokePressure {
         } else {
             1.0
         };
-        let expansion = (self.volume(PI) / self.volume(theta)).powf(POLYTROPIC_EXPONENT);
+        let expansion = (BDC_VOLUME / self.volume(sin, cos)).powf(POLYTROPIC_EXPONENT);
         (expansion * (1.0 + (COMBUSTION_PRESSURE_RATIO - 1.0) * burnt) - 1.0) * blowdown
     }
 
-    /// Cylinder volume over displaced volume.
-    fn volume(&self, theta: f64) -> f64 {
+    /// Cylinder volume over displaced volume at a crank angle of sine `sin` and cosine `cos`.
+    fn volume(&self, sin: f64, cos: f64) -> f64 {
         let lambda = self.rod_ratio;
-        let s = theta.sin() / lambda;
-        1.0 / (COMPRESSION_RATIO - 1.0) + 0.5 * ((1.0 - theta.cos()) + lambda * (1.0 - (1.0 - s * s).sqrt()))
+        let s = sin / lambda;
+        1.0 / (COMPRESSION_RATIO - 1.0) + 0.5 * ((1.0 - cos) + lambda * (1.0 - (1.0 - s * s).sqrt()))
     }
 }
 
@@ -137,8 +146,10 @@ mod tests {
         // Before burn start p̂ + 1 = (V(BDC)/V)^n: the absolute pressure ratio between two angles.
         let p = curve();
         let (a, b) = (-2.5, -0.5);
-        let ratio = (p.shape(b) + 1.0) / (p.shape(a) + 1.0);
-        let expected = (p.volume(a) / p.volume(b)).powf(POLYTROPIC_EXPONENT);
+        let shape = |x: f64| p.shape(x, x.sin(), x.cos());
+        let ratio = (shape(b) + 1.0) / (shape(a) + 1.0);
+        let expected = (p.volume(a.sin(), a.cos()) / p.volume(b.sin(), b.cos())).powf(POLYTROPIC_EXPONENT);
         assert!((ratio - expected).abs() < 1e-12 * expected);
+        assert_eq!(BDC_VOLUME, p.volume(PI.sin(), PI.cos()));
     }
 }
