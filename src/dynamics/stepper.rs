@@ -66,6 +66,7 @@ impl StepperOptions {
 /// The most RK4 steps one `advance` may take: 100 s of engine time at the default step, far beyond a
 /// communication step, yet bounded.
 const MAX_STEPS_PER_ADVANCE: f64 = 1e7;
+const TOO_MANY_STEPS: &str = "the span needs more than 10⁷ RK4 steps";
 
 impl Default for StepperOptions {
     fn default() -> Self {
@@ -350,14 +351,19 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         // A stepper restored from bytes is trusted no more than its caller: valid options, and a
         // bounded amount of work below.
         let reason = self.options.invalid().or_else(|| {
-            ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some("the span needs more than 10⁷ RK4 steps")
+            ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some(TOO_MANY_STEPS)
         });
         if let Some(reason) = reason {
             return Err(DynamicsError::InvalidArgument { time: self.state.t, reason });
         }
         self.reexamine()?;
-        let mut handled = 0;
+        let (mut handled, mut steps) = (0, 0.0);
         while self.state.t < t_end {
+            // The adaptive step may be far below the nominal one: its work is bounded here.
+            steps += 1.0;
+            if steps > MAX_STEPS_PER_ADVANCE {
+                return Err(DynamicsError::InvalidArgument { time: self.state.t, reason: TOO_MANY_STEPS });
+            }
             if self.step(t_end)? {
                 handled += 1;
                 if handled > self.event_budget {
@@ -464,7 +470,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             }
             let dt = t1 - t0;
             let next = (dt * (0.9 * ratio.powf(-0.25)).clamp(0.2, 4.0)).clamp(min, max);
-            if ratio <= 1.0 || dt <= min {
+            if ratio <= 1.0 || size <= min {
                 // A step cut short by `t_end` says nothing against a longer one.
                 self.step_size = if t1 == t_end { next.max(size) } else { next };
                 return Ok(s1);
