@@ -3,8 +3,6 @@
 
 use super::crank_drive::{Engine, FreeCrank, GasPressure, PrescribedCrank};
 use super::crank_kinematics::SliderCrank;
-use super::crank_linkage::Linkage;
-use super::pressure::FourStrokePressure;
 use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
 use crate::dynamics::{Event, EventKind, Stepper, StepperOptions};
 use nalgebra::{Vector2, Vector3, Vector4};
@@ -107,16 +105,7 @@ impl CrankTrain {
     pub fn with_options(params: &Parameters, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
         validate(params)?;
         check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
-        let pressure = match params.pressure_source {
-            1 => GasPressure::Held(Inputs::default().gas_pressure),
-            _ => GasPressure::BuiltIn(FourStrokePressure::new(params.peak_pressure, params.rod_length / params.crank_radius)),
-        };
-        let engine = Engine {
-            linkage: Linkage::new(params),
-            pressure,
-            crown_area: 0.25 * PI * params.piston_diameter * params.piston_diameter,
-            restitution: params.restitution,
-        };
+        let engine = Engine::new(params);
         let geometry = SliderCrank { crank_radius: params.crank_radius, rod_length: params.rod_length, pin_offset: params.pin_offset };
         let speed = Inputs::default().crank_speed;
         let drive = if params.crank_mode == 1 {
