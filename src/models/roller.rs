@@ -22,6 +22,8 @@ use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
+mod energy;
+
 /// Constraint index of the lower wall (ψ = ψ_min, corner 1).
 pub const LOWER: usize = 0;
 /// Constraint index of the upper wall (ψ = ψ_max, corner 3).
@@ -85,6 +87,8 @@ pub struct Roller {
     crank_speed: f64,
     /// SI time at the stepper's current crank angle.
     time: f64,
+    /// Work the moving walls have done through impulses since the start, J (`EnergyBalance`).
+    impulse_work: f64,
 }
 
 fn require(ok: bool, name: &str, range: &str) -> Result<(), ModelError> {
@@ -143,7 +147,7 @@ impl Roller {
         Ok(())
     }
 
-    fn engine_event(&self, event: &Event<1>, theta_start: f64) -> EngineEvent {
+    fn engine_event(&self, event: &Event<1, 2>, theta_start: f64) -> EngineEvent {
         let omega = self.crank_speed;
         let speed = self.lateral_scale(event.time) * omega;
         EngineEvent {
@@ -157,7 +161,7 @@ impl Roller {
             corner: corner(event.constraint),
             normal_velocity_before: -event.velocity_before * speed,
             normal_velocity_after: event.velocity_after * speed,
-            energy_lost: event.energy_lost * self.piston_mass * (self.rod_length * omega).powi(2),
+            energy_lost: event.energy_lost * self.energy_scale(),
             position: self.axial_position(event.time, event.q[0]),
         }
     }
@@ -206,6 +210,7 @@ impl EngineModel for Roller {
             damping: p.damping_crank_pin,
             crank_speed: 0.0,
             time: start_time,
+            impulse_work: 0.0,
         })
     }
 
@@ -222,6 +227,8 @@ impl EngineModel for Roller {
         self.stepper.clear_events();
         self.stepper.advance(theta_start + omega * (t_end - self.time)).map_err(core_error)?;
         events.extend(self.stepper.events().iter().map(|e| self.engine_event(e, theta_start)));
+        let system = self.stepper.system();
+        self.impulse_work += self.stepper.events().iter().map(|e| system.impulse_work(e)).sum::<f64>() * self.energy_scale();
         self.stepper.clear_events();
         self.time = t_end;
         Ok(())
