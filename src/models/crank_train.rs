@@ -47,49 +47,11 @@ fn check(ok: bool, message: impl FnOnce() -> String) -> Result<(), ModelError> {
     }
 }
 
-/// Refuses parameters the crank train cannot run with, naming the parameter.
+/// Refuses parameters the crank train cannot run with, naming the parameter: the ranges every
+/// model needs (`Parameters::validate`), then what the corner geometry needs.
 fn validate(p: &Parameters) -> Result<(), ModelError> {
-    check(p.crank_mode == 1 || p.crank_mode == 2, || format!("crank_mode ({}) must be 1 (prescribed speed) or 2 (free crank)", p.crank_mode))?;
-    check(p.pressure_source == 1 || p.pressure_source == 2, || format!("pressure_source ({}) must be 1 (gas_pressure input) or 2 (built-in curve)", p.pressure_source))?;
-    let positive = [
-        ("crank_radius", p.crank_radius),
-        ("rod_length", p.rod_length),
-        ("crank_mass", p.crank_mass),
-        ("rod_mass", p.rod_mass),
-        ("piston_mass", p.piston_mass),
-        ("crank_inertia", p.crank_inertia),
-        ("rod_inertia", p.rod_inertia),
-        ("piston_inertia", p.piston_inertia),
-        ("piston_diameter", p.piston_diameter),
-        ("skirt_length", p.skirt_length),
-        ("bore", p.bore),
-    ];
-    for (name, value) in positive {
-        check(value > 0.0 && value.is_finite(), || format!("{name} ({value}) must be positive and finite"))?;
-    }
-    let non_negative = [
-        ("peak_pressure", p.peak_pressure),
-        ("damping_main", p.damping_main),
-        ("damping_crank_pin", p.damping_crank_pin),
-        ("damping_piston_pin", p.damping_piston_pin),
-    ];
-    for (name, value) in non_negative {
-        check(value >= 0.0 && value.is_finite(), || format!("{name} ({value}) must be non-negative and finite"))?;
-    }
-    let finite = [
-        ("crank_com", p.crank_com),
-        ("rod_com", p.rod_com),
-        ("piston_com", p.piston_com),
-        ("pin_height", p.pin_height),
-        ("pin_offset", p.pin_offset),
-        ("gravity", p.gravity),
-        ("crank_angle_start", p.crank_angle_start),
-    ];
-    for (name, value) in finite {
-        check(value.is_finite(), || format!("{name} ({value}) must be finite"))?;
-    }
-    check((0.0..=1.0).contains(&p.restitution), || format!("restitution ({}) must lie in [0, 1]", p.restitution))?;
-    check(p.bore > p.piston_diameter, || format!("bore ({} m) must exceed piston_diameter ({} m)", p.bore, p.piston_diameter))?;
+    p.validate()?;
+    check(p.skirt_length > 0.0, || format!("skirt_length ({} m) must be positive: the corners K2, K4 lie at its end", p.skirt_length))?;
     // The corner description (A&K eq 26) holds while the piston cannot turn across the bore.
     let diagonal = p.piston_diameter.hypot(p.skirt_length);
     check(p.bore < diagonal, || format!("bore ({} m) must be below the piston diagonal √(piston_diameter² + skirt_length²) ({diagonal} m)", p.bore))?;
@@ -305,19 +267,23 @@ mod tests {
 
     #[test]
     fn refuses_parameters_naming_them() {
-        let cases: [(Parameters, &str); 6] = [
-            (Parameters { bore: 0.079, ..Parameters::default() }, "bore (0.079 m) must exceed piston_diameter (0.08 m)"),
-            (Parameters { bore: 0.2, ..Parameters::default() }, "piston diagonal"),
+        let cases: [(Parameters, &str); 9] = [
+            // The generic ranges.
+            (Parameters { bore: 0.079, ..Parameters::default() }, "bore = 0.079 m must exceed piston_diameter = 0.08 m"),
             (Parameters { restitution: 1.2, ..Parameters::default() }, "restitution"),
             (Parameters { rod_mass: 0.0, ..Parameters::default() }, "rod_mass"),
-            (Parameters { rod_length: 0.03, ..Parameters::default() }, "rod_length"),
             (Parameters { crank_mode: 3, ..Parameters::default() }, "crank_mode"),
+            (Parameters { damping_main: f64::NAN, ..Parameters::default() }, "damping_main"),
+            // The crank train's own.
+            (Parameters { skirt_length: 0.0, ..Parameters::default() }, "skirt_length (0 m) must be positive"),
+            (Parameters { bore: 0.2, ..Parameters::default() }, "piston diagonal"),
+            (Parameters { pin_offset: -0.041, ..Parameters::default() }, "pin_offset (-0.041 m) must be smaller"),
+            (Parameters { rod_length: 0.05, pin_offset: 0.02, ..Parameters::default() }, "rod_length (0.05 m) must exceed crank_radius + |pin_offset|"),
         ];
         for (params, expected) in cases {
             let message = validate(&params).unwrap_err().0;
             assert!(message.contains(expected), "{message}");
         }
         assert!(validate(&Parameters::default()).is_ok());
-        assert!(validate(&Parameters { damping_main: f64::NAN, ..Parameters::default() }).unwrap_err().0.contains("damping_main"));
     }
 }

@@ -171,18 +171,13 @@ impl EngineModel for Roller {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         let p = params;
         let clearance = (p.bore - p.piston_diameter) / 2.0;
+        p.validate().map_err(|e| ModelError(format!("model_variant 2: {e}")))?;
         require(p.crank_mode == 1, "crank_mode", "1 (the thesis's crank turns at a prescribed speed)")?;
-        require(p.roller_forcing == 1 || p.roller_forcing == 2, "roller_forcing", "1 (as printed) or 2 (corrected)")?;
-        require(p.crank_radius > 0.0 && p.crank_radius.is_finite(), "crank_radius", "> 0")?;
-        require(p.rod_length > p.crank_radius && p.rod_length.is_finite(), "rod_length", "> crank_radius")?;
-        require(p.rod_mass >= 0.0 && p.rod_mass.is_finite(), "rod_mass", ">= 0")?;
-        require(p.piston_mass > 0.0 && p.piston_mass.is_finite(), "piston_mass", "> 0")?;
-        require(p.rod_inertia >= 0.0 && p.rod_inertia.is_finite(), "rod_inertia", ">= 0")?;
-        require(p.damping_crank_pin >= 0.0 && p.damping_crank_pin.is_finite(), "damping_crank_pin", ">= 0")?;
-        require((0.0..=1.0).contains(&p.restitution), "restitution", "in [0, 1]")?;
         // The model is linear in ψ ≤ ρ/Λ: beyond a few degrees it no longer describes the mechanism.
-        require(clearance > 0.0 && clearance <= 0.05 * p.rod_length, "bore", "larger than piston_diameter by at most 10 % of rod_length")?;
-        require(p.crank_angle_start.is_finite() && start_time.is_finite(), "crank_angle_start", "finite")?;
+        require(clearance <= 0.05 * p.rod_length, "bore", "larger than piston_diameter by at most 10 % of rod_length")?;
+        if !start_time.is_finite() {
+            return Err(ModelError(format!("model_variant 2: the start time ({start_time} s) must be finite")));
+        }
         let (l, mass) = (p.rod_length, p.piston_mass);
         let system = RollerSystem {
             mechanism: SliderCrank {

@@ -81,7 +81,6 @@ mod tests {
         let rhs = full.gap_jacobian.transpose() * impulses;
         let solution = bordered.lu().solve(&Vector4::new(rhs[0], rhs[1], rhs[2], 0.0)).unwrap();
         assert!((work - solution[3] * 125.66).abs() < 1e-12 * work.abs(), "{work} vs {}", solution[3] * 125.66);
-        assert!(work.abs() > 1e-2, "a real test needs a real work: {work}");
 
         let jump = Vector3::new(0.0, solution[1], solution[2]);
         let kinetic = |v: &Vector3<f64>| sys.engine.linkage.energy(&phi, v).0;
@@ -91,6 +90,7 @@ mod tests {
         assert!((rate(&phid) - (reduced.gap_jacobian * qd + reduced.gap_time_rate)).norm() < 1e-12);
         let contact = impulses.dot(&(rate(&phid) + rate(&plus))) * 0.5;
         let gain = kinetic(&plus) - kinetic(&phid);
-        assert!((gain - contact - work).abs() < 1e-9 * gain.abs().max(1.0), "ΔT {gain} vs {contact} + {work}");
+        assert!((gain - contact - work).abs() < 1e-12 * gain.abs().max(1.0), "ΔT {gain} vs {contact} + {work}");
+        assert!(work.abs() > 0.1 * gain.abs(), "the drive's share must matter here: {work} of {gain}");
     }
 }
