@@ -381,7 +381,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let s = &self.state;
         self.state = sample(&self.system, s.t, s.q, s.v, self.active)?;
         let eps = self.options.gap_tolerance;
-        if let Some(i) = (0..M).find(|&i| !contains(self.active, i) && self.state.gap[i] < -eps) {
+        // A free gap a little below −ε_h is closed, not violated: steps end anywhere down to −ε_h,
+        // and the drift projection of the active set then moves the others by round-off
+        // (`make soak` met −1.0005 ε_h at a communication point).
+        if let Some(i) = (0..M).find(|&i| !contains(self.active, i) && self.state.gap[i] < -2.0 * eps) {
             return Err(DynamicsError::Penetration { time: self.state.t, constraint: i, gap: self.state.gap[i] });
         }
         let closed = self.active | select::<M>(|i| self.state.gap[i] <= eps);
