@@ -3,34 +3,11 @@
 //! Each figure is the median of several runs; evaluations are counted by a wrapping system.
 
 use nalgebra::{SVector, Vector1, Vector2, Vector3};
-use pistonslap::dynamics::testbeds::{Ball, DoublePendulum, Floor, Rod};
-use pistonslap::dynamics::{Evaluation, EventLocator, Stepper, StepperOptions, System};
-use std::cell::Cell;
+use pistonslap::dynamics::testbeds::{Ball, Counted, DoublePendulum, Floor, Rod};
+use pistonslap::dynamics::{EventLocator, Stepper, StepperOptions, System};
 use std::time::{Duration, Instant};
 
 const RUNS: usize = 7;
-
-/// Counts full evaluations and gap-only evaluations of the wrapped system.
-#[derive(Clone)]
-struct Counted<S> {
-    inner: S,
-    evaluations: Cell<u64>,
-    gap_calls: Cell<u64>,
-}
-
-impl<S: System<N, M>, const N: usize, const M: usize> System<N, M> for Counted<S> {
-    fn evaluate(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> Evaluation<N, M> {
-        self.evaluations.set(self.evaluations.get() + 1);
-        self.inner.evaluate(t, q, qd)
-    }
-    fn gaps(&self, t: f64, q: &SVector<f64, N>) -> SVector<f64, M> {
-        self.gap_calls.set(self.gap_calls.get() + 1);
-        self.inner.gaps(t, q)
-    }
-    fn restitution(&self, i: usize) -> f64 {
-        self.inner.restitution(i)
-    }
-}
 
 struct Outcome {
     time: Duration,
@@ -51,7 +28,7 @@ fn run<S: System<N, M> + Clone, const N: usize, const M: usize>(
     let mut times = Vec::new();
     let mut last = None;
     for _ in 0..RUNS {
-        let counted = Counted { inner: system.clone(), evaluations: Cell::new(0), gap_calls: Cell::new(0) };
+        let counted = Counted::new(system.clone());
         let start = Instant::now();
         let mut s = Stepper::new(counted, 0.0, q0, v0, StepperOptions { step, ..Default::default() }).expect("valid start");
         s.set_locator(locator);

@@ -34,7 +34,6 @@
 //! that keep sliding contacts on their manifold.
 
 use pistonslap::models::crank_kinematics::SliderCrank;
-use pistonslap::models::crank_train::NOMINAL_STEP;
 use pistonslap::models::pressure::FourStrokePressure;
 use pistonslap::models::{CrankTrain, EfficiencyTarget, EnergyBalance, EngineEvent, EngineModel, Inputs, Parameters, Roller};
 use std::f64::consts::PI;
@@ -49,6 +48,8 @@ const SPLIT: f64 = 1e-5;
 const DEPTH: u32 = 8;
 /// Roller intervals per revolution: about four of the thesis's steps (0.005 rad) each.
 const ROLLER_SAMPLES: usize = 320;
+/// Crank-train sampling interval, s: the RK4 step in flight.
+const CRANK_INTERVAL: f64 = 1e-4;
 const TOLERANCE: f64 = 1e-5;
 
 /// Integrands: drive, gas and damping power, and the scale |drive| + |gas| + damping, W.
@@ -293,7 +294,7 @@ fn main() -> Result<(), String> {
 fn crank_trains(cycles: u64, failed: &AtomicBool) -> Result<(), String> {
     let inputs = Inputs::default();
     let cycle = 4.0 * PI / inputs.crank_speed;
-    let n = samples(cycle, NOMINAL_STEP);
+    let n = samples(cycle, CRANK_INTERVAL);
     let params = Parameters::default();
     let prescribed = Run::new(CrankTrain::new(&params, 0.0).map_err(|e| e.0)?, inputs.clone(), 0.0)?;
     soak("crank train, prescribed crank", prescribed, 0.0, cycles, cycle, n, failed)?;

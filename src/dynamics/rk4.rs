@@ -11,7 +11,7 @@ pub(crate) fn step<const N: usize, E>(
     v0: &SVector<f64, N>,
     a0: &SVector<f64, N>,
     dt: f64,
-) -> Result<(SVector<f64, N>, SVector<f64, N>), E> {
+) -> Result<Step<N>, E> {
     let half = 0.5 * dt;
     // Stage k: position slope v_k, velocity slope a_k.
     let v2 = v0 + a0 * half;
@@ -23,7 +23,16 @@ pub(crate) fn step<const N: usize, E>(
     let sixth = dt / 6.0;
     let q1 = q0 + (v0 + (v2 + v3) * 2.0 + v4) * sixth;
     let v1 = v0 + (a0 + (a2 + a3) * 2.0 + a4) * sixth;
-    Ok((q1, v1))
+    Ok(Step { q: q1, v: v1, last_slopes: (v4, a4) })
+}
+
+/// The end of a step and its last stage's slopes `(q̇₄, q̈₄)`: with the slopes `(q̇, q̈)` at the
+/// end they give the embedded third-order error estimate `dt/6 · (slope₄ − slope_end)` of the
+/// step (the FSAL pair: RK4's weights with the end slope in place of the fourth stage's).
+pub(crate) struct Step<const N: usize> {
+    pub q: SVector<f64, N>,
+    pub v: SVector<f64, N>,
+    pub last_slopes: (SVector<f64, N>, SVector<f64, N>),
 }
 
 /// Quintic Hermite interpolant of one step, matching `q`, `q̇`, `q̈` at both ends.

@@ -18,6 +18,14 @@ use std::fmt;
 /// gravity with e = 0.5 and the default ε_h).
 pub const ZENO_APEX_FACTOR: f64 = 1e3;
 
+/// Drift of a held constraint (as a fraction of ε_h on `h`, of ε_ḣ on `ḣ`) that `stabilize`
+/// tolerates before it projects the state back onto the contact manifold.
+const DRIFT_FRACTION: f64 = 0.1;
+
+/// The adaptive step's smallest size, as a fraction of the largest: a step this short is
+/// accepted whatever its error estimate (it is then far below the nominal step's error).
+const MIN_STEP_FRACTION: f64 = 1e-4;
+
 /// Default bound on the events handled in one `advance` (see `Stepper::set_event_budget`).
 pub const DEFAULT_EVENT_BUDGET: usize = 10_000;
 
@@ -35,6 +43,10 @@ pub struct StepperOptions {
     pub velocity_tolerance: f64,
     /// ε_λ: accuracy of release location on a multiplier.
     pub multiplier_tolerance: f64,
+    /// Adaptive step: the bound on each step's local error, measured where it matters, on the
+    /// gaps (`|J δq|` and `|J δq̇| · dt`, m); `step` is then the largest step. `None`: every step
+    /// is `step` (A&K's scheme).
+    pub local_error: Option<f64>,
 }
 
 impl StepperOptions {
@@ -43,7 +55,7 @@ impl StepperOptions {
         let positive = |x: f64| x.is_finite() && x > 0.0;
         if !positive(self.step) {
             Some("the step must be positive and finite")
-        } else if ![self.gap_tolerance, self.velocity_tolerance, self.multiplier_tolerance].into_iter().all(positive) {
+        } else if ![self.gap_tolerance, self.velocity_tolerance, self.multiplier_tolerance].into_iter().chain(self.local_error).all(positive) {
             Some("the tolerances must be positive and finite")
         } else {
             None
@@ -54,10 +66,11 @@ impl StepperOptions {
 /// The most RK4 steps one `advance` may take: 100 s of engine time at the default step, far beyond a
 /// communication step, yet bounded.
 const MAX_STEPS_PER_ADVANCE: f64 = 1e7;
+const TOO_MANY_STEPS: &str = "the span needs more than 10⁷ RK4 steps";
 
 impl Default for StepperOptions {
     fn default() -> Self {
-        Self { step: 1e-5, gap_tolerance: 1e-12, velocity_tolerance: 1e-8, multiplier_tolerance: 1e-12 }
+        Self { step: 1e-5, gap_tolerance: 1e-12, velocity_tolerance: 1e-8, multiplier_tolerance: 1e-12, local_error: None }
     }
 }
 
@@ -220,6 +233,17 @@ fn sample<S: System<N, M>, const N: usize, const M: usize>(
     v: SVector<f64, N>,
     active: Set,
 ) -> Result<Sample<N, M>, DynamicsError> {
+    Ok(sample_and_evaluation(sys, t, q, v, active)?.0)
+}
+
+/// `sample`, and the evaluation it was made from.
+fn sample_and_evaluation<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    t: f64,
+    q: SVector<f64, N>,
+    v: SVector<f64, N>,
+    active: Set,
+) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
     let ev = sys.evaluate(t, &q, &v);
     let (acc, lambda) = acceleration(&ev, t, active)?;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
@@ -229,7 +253,7 @@ fn sample<S: System<N, M>, const N: usize, const M: usize>(
         .into_iter()
         .all(finite)
     {
-        Ok(s)
+        Ok((s, ev))
     } else {
         Err(DynamicsError::NonFinite { time: t })
     }
@@ -242,9 +266,42 @@ fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
     t: f64,
     active: Set,
 ) -> Result<Sample<N, M>, DynamicsError> {
+    Ok(rk4_step(sys, s0, t, active)?.0)
+}
+
+/// `rk4_to`, with the end's evaluation and the step's last slopes (for `local_error`).
+#[allow(clippy::type_complexity)]
+fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    s0: &Sample<N, M>,
+    t: f64,
+    active: Set,
+) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
     let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| Ok(acceleration(&sys.evaluate(t, q, v), t, active)?.0);
-    let (q, v) = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
-    sample(sys, t, q, v, active)
+    let step = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
+    let (s, ev) = sample_and_evaluation(sys, t, step.q, step.v, active)?;
+    Ok((s, ev, step.last_slopes))
+}
+
+/// The local error of the RK4 step `s0 → s1` on the gaps, m: the embedded third-order estimate
+/// `(δq, δq̇)` mapped through `J`, the velocity part as the gap error it makes over the step.
+/// With constraints held, only the error along their manifold counts: `stabilize` removes the
+/// rest (a fully constrained motion has no error left at all).
+fn local_error<const N: usize, const M: usize>(
+    s0: &Sample<N, M>,
+    (s1, ev): (&Sample<N, M>, &Evaluation<N, M>),
+    (v4, a4): (SVector<f64, N>, SVector<f64, N>),
+    active: Set,
+) -> Result<f64, DynamicsError> {
+    let (t, dt) = (s1.t, s1.t - s0.t);
+    let (mut dq, mut dv) = ((v4 - s1.v) * (dt / 6.0), (a4 - s1.acc) * (dt / 6.0));
+    if active != 0 {
+        let frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
+        let dependent = || DynamicsError::DependentContacts { time: t, constraints: active };
+        dq += frame.projection(&(ev.gap_jacobian * dq), active).ok_or_else(dependent)?.0;
+        dv += frame.projection(&(ev.gap_jacobian * dv), active).ok_or_else(dependent)?.0;
+    }
+    Ok((ev.gap_jacobian * dq).amax().max((ev.gap_jacobian * dv).amax() * dt))
 }
 
 /// The event-driven integrator: owns the system and its state.
@@ -254,6 +311,8 @@ pub struct Stepper<S, const N: usize, const M: usize> {
     options: StepperOptions,
     locator: EventLocator,
     event_budget: usize,
+    /// The adaptive step's next size (≤ `options.step`).
+    step_size: f64,
     /// Constraints in persistent contact (bitmask).
     active: u32,
     state: Sample<N, M>,
@@ -275,8 +334,16 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             return Err(DynamicsError::InvalidArgument { time: t0, reason });
         }
         let state = sample(&system, t0, q0, qd0, 0)?;
-        let mut stepper =
-            Self { system, options, locator: EventLocator::default(), event_budget: DEFAULT_EVENT_BUDGET, active: 0, state, events: Vec::new() };
+        let mut stepper = Self {
+            system,
+            step_size: options.step,
+            options,
+            locator: EventLocator::default(),
+            event_budget: DEFAULT_EVENT_BUDGET,
+            active: 0,
+            state,
+            events: Vec::new(),
+        };
         stepper.reexamine()?;
         Ok(stepper)
     }
@@ -290,20 +357,20 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         // A stepper restored from bytes is trusted no more than its caller: valid options, and a
         // bounded amount of work below.
         let reason = self.options.invalid().or_else(|| {
-            ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some("the span needs more than 10⁷ RK4 steps")
+            ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some(TOO_MANY_STEPS)
         });
         if let Some(reason) = reason {
             return Err(DynamicsError::InvalidArgument { time: self.state.t, reason });
         }
         self.reexamine()?;
-        let mut handled = 0;
+        let (mut handled, mut steps) = (0, 0.0);
         while self.state.t < t_end {
-            let t = self.state.t;
-            let t1 = if t_end - t <= self.options.step { t_end } else { t + self.options.step };
-            if t1 <= t {
-                return Err(DynamicsError::InvalidArgument { time: t, reason: "the step is below the time resolution at this time" });
+            // The adaptive step may be far below the nominal one: its work is bounded here.
+            steps += 1.0;
+            if steps > MAX_STEPS_PER_ADVANCE {
+                return Err(DynamicsError::InvalidArgument { time: self.state.t, reason: TOO_MANY_STEPS });
             }
-            if self.step(t1)? {
+            if self.step(t_end)? {
                 handled += 1;
                 if handled > self.event_budget {
                     return Err(DynamicsError::EventBudget { time: self.state.t, events: self.event_budget });
@@ -391,11 +458,41 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.settle(closed, 0)
     }
 
-    /// One RK4 step towards `t1`, stopping at the first event. Returns whether an event was handled.
-    fn step(&mut self, t1: f64) -> Result<bool, DynamicsError> {
-        let (sys, s0, active) = (&self.system, &self.state, self.active);
-        let s1 = rk4_to(sys, s0, t1, active)?;
-        let dense = Hermite5 { t0: s0.t, dt: t1 - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: s1.q, v1: s1.v, a1: s1.acc };
+    /// The RK4 step from the current state towards `t_end`: of the nominal size, or (adaptive) of
+    /// the controller's size, shrunk until its local error is within `local_error`; the next
+    /// size follows from this step's error (the usual `(tol/err)^¼` rule, bounded growth).
+    fn trial_step(&mut self, t_end: f64) -> Result<Sample<N, M>, DynamicsError> {
+        let (t0, max, tol) = (self.state.t, self.options.step, self.options.local_error);
+        let min = max * MIN_STEP_FRACTION;
+        loop {
+            // Also repairs a size restored from bytes.
+            let size = if self.step_size >= min { self.step_size.min(max) } else { max };
+            let t1 = if t_end - t0 <= size { t_end } else { t0 + size };
+            if t1 <= t0 {
+                return Err(DynamicsError::InvalidArgument { time: t0, reason: "the step is below the time resolution at this time" });
+            }
+            let (s1, ev, slopes) = rk4_step(&self.system, &self.state, t1, self.active)?;
+            let Some(tol) = tol else { return Ok(s1) };
+            let ratio = local_error(&self.state, (&s1, &ev), slopes, self.active)? / tol;
+            if ratio.is_nan() {
+                return Err(DynamicsError::NonFinite { time: t1 });
+            }
+            let dt = t1 - t0;
+            let next = (dt * (0.9 * ratio.powf(-0.25)).clamp(0.2, 4.0)).clamp(min, max);
+            if ratio <= 1.0 || size <= min {
+                // A step cut short by `t_end` says nothing against a longer one.
+                self.step_size = if t1 == t_end { next.max(size) } else { next };
+                return Ok(s1);
+            }
+            self.step_size = next;
+        }
+    }
+
+    /// One RK4 step towards `t_end`, stopping at the first event. Returns whether an event was handled.
+    fn step(&mut self, t_end: f64) -> Result<bool, DynamicsError> {
+        let s1 = self.trial_step(t_end)?;
+        let (s0, active) = (&self.state, self.active);
+        let dense = Hermite5 { t0: s0.t, dt: s1.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: s1.q, v1: s1.v, a1: s1.acc };
         match self.first_event(&dense, s1)? {
             Ok(s1) => {
                 self.state = s1;
@@ -452,7 +549,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 let w = watch_of(i);
                 let tol = self.tolerance(w);
                 let (g0, g1) = (s0.watched(i, w), end.watched(i, w));
-                let dip = w == Watch::Gap && s0.hd[i] < 0.0 && end.hd[i] > 0.0;
+                let dip = w == Watch::Gap && s0.hd[i] < 0.0 && end.hd[i] > 0.0 && g0.min(g1) < 2.0 * (end.t - s0.t) * -s0.hd[i];
                 if g1 >= -tol && !dip {
                     continue;
                 }
@@ -519,11 +616,16 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         }
     }
 
-    /// Keeps active constraints on the manifold against RK4 drift: after each accepted step in
-    /// persistent contact, one M-metric Newton projection of `q` onto `h_A = 0` and of `q̇` onto
-    /// `ḣ_A = 0`. The corrections are O(dt⁵) per step, so the order of the method is kept.
+    /// Keeps active constraints on the manifold against RK4 drift: once `h_A` or `ḣ_A` has drifted
+    /// beyond `DRIFT_FRACTION` of its tolerance, one M-metric Newton projection of `q` onto
+    /// `h_A = 0` and of `q̇` onto `ḣ_A = 0`. The drift is O(dt⁵) per step, so the order of the
+    /// method is kept, and most steps need no projection (nor the two evaluations it costs).
     fn stabilize(&mut self) -> Result<(), DynamicsError> {
         let (s, active) = (&self.state, self.active);
+        let (gap_tol, rate_tol) = (DRIFT_FRACTION * self.options.gap_tolerance, DRIFT_FRACTION * self.options.velocity_tolerance);
+        if members::<M>(active).all(|i| s.gap[i].abs() <= gap_tol && s.hd[i].abs() <= rate_tol) {
+            return Ok(());
+        }
         let (_, frame) = frame_at(&self.system, s.t, &s.q, &s.v)?;
         let dependent = DynamicsError::DependentContacts { time: s.t, constraints: active };
         let (dq, _) = frame.projection(&s.gap, active).ok_or(dependent.clone())?;

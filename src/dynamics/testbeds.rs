@@ -3,8 +3,37 @@
 //! the engine models do not use them.
 
 use super::{Evaluation, System};
-use nalgebra::{Matrix1, Matrix2, Matrix3, RowVector2, SMatrix, Vector1, Vector2, Vector3};
+use nalgebra::{Matrix1, Matrix2, Matrix3, RowVector2, SMatrix, SVector, Vector1, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
+use std::cell::Cell;
+
+/// Any system, counting how often the core evaluates it (the cost measure of the integrator).
+#[derive(Clone)]
+pub struct Counted<S> {
+    pub inner: S,
+    pub evaluations: Cell<u64>,
+    pub gap_calls: Cell<u64>,
+}
+
+impl<S> Counted<S> {
+    pub fn new(inner: S) -> Self {
+        Self { inner, evaluations: Cell::new(0), gap_calls: Cell::new(0) }
+    }
+}
+
+impl<S: System<N, M>, const N: usize, const M: usize> System<N, M> for Counted<S> {
+    fn evaluate(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> Evaluation<N, M> {
+        self.evaluations.set(self.evaluations.get() + 1);
+        self.inner.evaluate(t, q, qd)
+    }
+    fn gaps(&self, t: f64, q: &SVector<f64, N>) -> SVector<f64, M> {
+        self.gap_calls.set(self.gap_calls.get() + 1);
+        self.inner.gaps(t, q)
+    }
+    fn restitution(&self, i: usize) -> f64 {
+        self.inner.restitution(i)
+    }
+}
 
 /// Prescribed motion `y_f(t)` of the surface a [`Ball`] hits (a rheonomic constraint).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]

@@ -7,6 +7,7 @@
 
 use super::crank_linkage::{Linkage, Loads};
 use super::pressure::FourStrokePressure;
+use super::{Inputs, Parameters};
 use crate::dynamics::{Evaluation, System};
 use nalgebra::{Matrix4x2, SVector, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -31,6 +32,20 @@ pub struct Engine {
 }
 
 impl Engine {
+    /// The engine of validated parameters; a held pressure starts at the input's default.
+    pub fn new(params: &Parameters) -> Self {
+        let pressure = match params.pressure_source {
+            1 => GasPressure::Held(Inputs::default().gas_pressure),
+            _ => GasPressure::BuiltIn(FourStrokePressure::new(params.peak_pressure, params.rod_length / params.crank_radius)),
+        };
+        Self {
+            linkage: Linkage::new(params),
+            pressure,
+            crown_area: 0.25 * std::f64::consts::PI * params.piston_diameter * params.piston_diameter,
+            restitution: params.restitution,
+        }
+    }
+
     /// Gas force toward the crank at crank angle φ1, N.
     pub fn gas_force(&self, crank_angle: f64) -> f64 {
         let p = match &self.pressure {

@@ -8,7 +8,11 @@
 //! axis, which lies the pin offset `a` on the −x side of the pin O3.
 //!
 //! Lagrange's equations `d/dt ∂T/∂φ̇ − ∂T/∂φ = Q` with `T = ½ Σ m_k |ṙ_k|² + J_k φ̇_k²` read
-//! `M φ̈ = f` with `M = Σ m_k J_kᵀ J_k + diag(J_zk)` and `f = Q − Σ m_k J_kᵀ J̇_k φ̇`, `J_k = ∂r_k/∂φ`. They
+//! `M φ̈ = f` with `M = Σ m_k J_kᵀ J_k + diag(J_zk)`, `J_k = ∂r_k/∂φ`. Written out, the diagonal is
+//! constant and each off-diagonal entry depends on one angle difference, `M_ij = F_ij(φi − φj)`:
+//! `F_12(x) = (m2 b2 + m3 l2) l1 cos x`, `F_13(x) = m3 l1 (b3 cos x + a sin x)`,
+//! `F_23(x) = m3 l2 (b3 cos x + a sin x)`; then `∂T/∂φ_i` cancels the velocity products of
+//! `d/dt (Mφ̇)_i` but for `f_i ∋ Σ_j F'_ij(φi − φj) φ̇_j²` (with `F'_ji = −F'_ij`). They
 //! reproduce A&K eqs 22–24/33–34 (times M1, with `p(φ) = −(M1 sin φ1, M2 sin φ2, M3 sin φ3)`) for a = 0.
 //! The generalized forces Q: gravity `−g` along y; viscous joint torques `−C φ̇` (A&K's C matrix:
 //! main bearing c̄1 on φ̇1, crank pin c̄2 on φ̇2 − φ̇1, piston pin c̄3 on φ̇3 − φ̇2); the gas force `(0, −F)`
@@ -26,7 +30,15 @@ use serde::{Deserialize, Serialize};
 
 /// Geometry, inertia and damping of the crank train (DESIGN.md §4 parameters), SI.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(from = "Bodies", into = "Bodies")]
 pub struct Linkage {
+    bodies: Bodies,
+    /// Derived from `bodies`, so not part of a saved state.
+    terms: Terms,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+struct Bodies {
     /// (l1, l2).
     links: [f64; 2],
     /// Centre-of-mass offsets along each link (ey1, ey2, ey3).
@@ -44,6 +56,49 @@ pub struct Linkage {
     corners: [(f64, f64, f64); 4],
 }
 
+impl From<Bodies> for Linkage {
+    fn from(bodies: Bodies) -> Self {
+        Self { terms: Terms::new(&bodies), bodies }
+    }
+}
+
+impl From<Linkage> for Bodies {
+    fn from(linkage: Linkage) -> Self {
+        linkage.bodies
+    }
+}
+
+/// Constant factors of M and f (module docs): `M_kk`, `F_ij(x) = P_ij cos x + Q_ij sin x`, and the
+/// weight moments `f_k ∋ G_k sin φ_k` plus `G_a cos φ3` (the piston's centre of mass off its axis).
+#[derive(Clone, Debug, PartialEq)]
+struct Terms {
+    diagonal: [f64; 3],
+    p12: f64,
+    p13: f64,
+    q13: f64,
+    p23: f64,
+    q23: f64,
+    weight: [f64; 3],
+    weight_offset: f64,
+}
+
+impl Terms {
+    fn new(bodies: &Bodies) -> Self {
+        let ([l1, l2], [b1, b2, b3], [m1, m2, m3], [j1, j2, j3]) = (bodies.links, bodies.along, bodies.masses, bodies.inertias);
+        let (a, g) = (bodies.pin_offset, bodies.gravity);
+        Self {
+            diagonal: [j1 + m1 * b1 * b1 + (m2 + m3) * l1 * l1, j2 + m2 * b2 * b2 + m3 * l2 * l2, j3 + m3 * (b3 * b3 + a * a)],
+            p12: (m2 * b2 + m3 * l2) * l1,
+            p13: m3 * l1 * b3,
+            q13: m3 * l1 * a,
+            p23: m3 * l2 * b3,
+            q23: m3 * l2 * a,
+            weight: [g * (m1 * b1 + (m2 + m3) * l1), g * (m2 * b2 + m3 * l2), g * m3 * b3],
+            weight_offset: g * m3 * a,
+        }
+    }
+}
+
 /// Generalized forces that vary with the host's inputs.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Loads {
@@ -51,6 +106,20 @@ pub struct Loads {
     pub gas_force: f64,
     /// Load torque opposing crank rotation, N·m.
     pub load_torque: f64,
+}
+
+/// Sines and cosines of the three link angles: the only transcendental work of an evaluation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Trig {
+    pub sin: [f64; 3],
+    pub cos: [f64; 3],
+}
+
+impl Trig {
+    pub fn new(phi: &Vector3<f64>) -> Self {
+        let [(s1, c1), (s2, c2), (s3, c3)] = [phi[0].sin_cos(), phi[1].sin_cos(), phi[2].sin_cos()];
+        Self { sin: [s1, s2, s3], cos: [c1, c2, c3] }
+    }
 }
 
 fn along(phi: f64) -> Vector2<f64> {
@@ -66,7 +135,7 @@ impl Linkage {
     pub fn new(p: &Parameters) -> Self {
         let a = p.pin_offset;
         let (h, s, half) = (p.pin_height, p.skirt_length, 0.5 * p.piston_diameter);
-        Self {
+        Bodies {
             links: [p.crank_radius, p.rod_length],
             along: [p.crank_com, p.rod_com, p.piston_com],
             across: [0.0, 0.0, -a],
@@ -78,78 +147,73 @@ impl Linkage {
             bore: p.bore,
             corners: [(h, -(half + a), 1.0), (h - s, -(half + a), 1.0), (h, half - a, -1.0), (h - s, half - a, -1.0)],
         }
+        .into()
     }
 
     /// Pin O3 position (x, y), m.
     pub fn pin(&self, phi: &Vector3<f64>) -> Vector2<f64> {
-        self.links[0] * along(phi[0]) + self.links[1] * along(phi[1])
+        self.bodies.links[0] * along(phi[0]) + self.bodies.links[1] * along(phi[1])
     }
 
     /// Corner gaps h(φ), m.
     pub fn gaps(&self, phi: &Vector3<f64>) -> Vector4<f64> {
-        let x_pin = self.pin(phi).x;
+        let [l1, l2] = self.bodies.links;
         let (s3, c3) = phi[2].sin_cos();
+        self.corner_gaps(-l1 * phi[0].sin() - l2 * phi[1].sin(), s3, c3)
+    }
+
+    /// Gaps from the pin's lateral position and the piston tilt's sine and cosine.
+    fn corner_gaps(&self, x_pin: f64, s3: f64, c3: f64) -> Vector4<f64> {
         Vector4::from_fn(|i, _| {
-            let (z, w, side) = self.corners[i];
-            0.5 * self.bore + side * (x_pin - z * s3 + w * c3)
+            let (z, w, side) = self.bodies.corners[i];
+            0.5 * self.bodies.bore + side * (x_pin - z * s3 + w * c3)
         })
     }
 
     /// M, f, h, J = ∂h/∂φ and d = φ̇ᵀ ∂²h/∂φ² φ̇ at (φ, φ̇); the constraints are scleronomic in φ.
     pub fn evaluate(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, loads: Loads) -> Evaluation<3, 4> {
-        let e = [along(phi[0]), along(phi[1]), along(phi[2])];
-        let n = [across(phi[0]), across(phi[1]), across(phi[2])];
-        let weight = Vector2::new(0.0, -self.gravity);
-        let mut mass = Matrix3::from_diagonal(&Vector3::from(self.inertias));
-        let mut force = Vector3::zeros();
-        for k in 0..3 {
-            // Columns of J_k and the velocity-product acceleration J̇_k φ̇.
-            let mut columns = [Vector2::zeros(); 3];
-            let mut bias = Vector2::zeros();
-            for j in 0..k {
-                columns[j] = -self.links[j] * n[j];
-                bias -= self.links[j] * phid[j] * phid[j] * e[j];
-            }
-            let body = self.along[k] * e[k] + self.across[k] * n[k];
-            columns[k] = -self.along[k] * n[k] + self.across[k] * e[k];
-            bias -= phid[k] * phid[k] * body;
-            let applied = self.masses[k] * (weight - bias);
-            for i in 0..=k {
-                force[i] += columns[i].dot(&applied);
-                for j in 0..=k {
-                    mass[(i, j)] += self.masses[k] * columns[i].dot(&columns[j]);
-                }
-            }
-        }
-        // Gas force (0, −F) at O3 − a n(φ3): J_P columns −l1 n1, −l2 n2, −a e3.
-        let gas = Vector2::new(0.0, -loads.gas_force);
-        force[0] -= self.links[0] * n[0].dot(&gas) + loads.load_torque;
-        force[1] -= self.links[1] * n[1].dot(&gas);
-        force[2] -= self.pin_offset * e[2].dot(&gas);
-        let [c1, c2, c3] = self.damping;
-        let (crank_pin, piston_pin) = (phid[1] - phid[0], phid[2] - phid[1]);
-        force[0] += c2 * crank_pin - c1 * phid[0];
-        force[1] += c3 * piston_pin - c2 * crank_pin;
-        force[2] -= c3 * piston_pin;
+        self.evaluate_with(&Trig::new(phi), phid, loads)
+    }
 
-        let (s3, c3) = (phi[2].sin(), phi[2].cos());
-        let [l1, l2] = self.links;
-        let mut gap_jacobian = nalgebra::Matrix4x3::zeros();
-        let mut gap_bias = Vector4::zeros();
-        for (i, &(z, w, side)) in self.corners.iter().enumerate() {
-            gap_jacobian[(i, 0)] = -side * l1 * e[0].y;
-            gap_jacobian[(i, 1)] = -side * l2 * e[1].y;
-            gap_jacobian[(i, 2)] = -side * (z * c3 + w * s3);
-            gap_bias[i] = side
-                * (l1 * n[0].y * phid[0] * phid[0] + l2 * n[1].y * phid[1] * phid[1] + (z * s3 - w * c3) * phid[2] * phid[2]);
-        }
+    /// [`Self::evaluate`] from the angles' sines and cosines.
+    #[inline]
+    pub fn evaluate_with(&self, trig: &Trig, phid: &Vector3<f64>, loads: Loads) -> Evaluation<3, 4> {
+        let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
+        let k = &self.terms;
+        // cos and sin of φi − φj.
+        let (c12, s12) = (c1 * c2 + s1 * s2, s1 * c2 - c1 * s2);
+        let (c13, s13) = (c1 * c3 + s1 * s3, s1 * c3 - c1 * s3);
+        let (c23, s23) = (c2 * c3 + s2 * s3, s2 * c3 - c2 * s3);
+        let (m12, m13, m23) = (k.p12 * c12, k.p13 * c13 + k.q13 * s13, k.p23 * c23 + k.q23 * s23);
+        let mass = Matrix3::new(k.diagonal[0], m12, m13, m12, k.diagonal[1], m23, m13, m23, k.diagonal[2]);
+        // F'_ij(φi − φj) and the squared rates.
+        let (g12, g13, g23) = (-k.p12 * s12, k.q13 * c13 - k.p13 * s13, k.q23 * c23 - k.p23 * s23);
+        let (w1, w2, w3) = (phid[0] * phid[0], phid[1] * phid[1], phid[2] * phid[2]);
+        let [l1, l2] = self.bodies.links;
+        let [cb1, cb2, cb3] = self.bodies.damping;
+        let (crank_pin, piston_pin) = (phid[1] - phid[0], phid[2] - phid[1]);
+        let gas = loads.gas_force;
+        let force = Vector3::new(
+            g12 * w2 + g13 * w3 + (k.weight[0] + gas * l1) * s1 - loads.load_torque + cb2 * crank_pin - cb1 * phid[0],
+            g23 * w3 - g12 * w1 + (k.weight[1] + gas * l2) * s2 + cb3 * piston_pin - cb2 * crank_pin,
+            -g13 * w1 - g23 * w2 + k.weight[2] * s3 + (k.weight_offset + gas * self.bodies.pin_offset) * c3 - cb3 * piston_pin,
+        );
+        // x_O3 = −l1 s1 − l2 s2 and its second derivative at φ̈ = 0.
+        let (x_pin, pin_bias) = (-l1 * s1 - l2 * s2, l1 * s1 * w1 + l2 * s2 * w2);
+        let (jacobian_1, jacobian_2) = (-l1 * c1, -l2 * c2);
         Evaluation {
             mass,
             force,
-            gap: self.gaps(phi),
-            gap_jacobian,
+            gap: self.corner_gaps(x_pin, s3, c3),
+            gap_jacobian: nalgebra::Matrix4x3::from_fn(|i, j| {
+                let (z, w, side) = self.bodies.corners[i];
+                side * [jacobian_1, jacobian_2, -(z * c3 + w * s3)][j]
+            }),
             gap_time_rate: Vector4::zeros(),
-            gap_bias,
+            gap_bias: Vector4::from_fn(|i, _| {
+                let (z, w, side) = self.bodies.corners[i];
+                side * (pin_bias + (z * s3 - w * c3) * w3)
+            }),
         }
     }
 
@@ -157,13 +221,13 @@ impl Linkage {
     pub fn energy(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) -> (f64, f64) {
         let mass = self.evaluate(phi, phid, Loads { gas_force: 0.0, load_torque: 0.0 }).mass;
         let kinetic = 0.5 * phid.dot(&(mass * phid));
-        let potential = (0..3).map(|k| self.masses[k] * self.gravity * self.centre_of_mass(phi, k).y).sum();
+        let potential = (0..3).map(|k| self.bodies.masses[k] * self.bodies.gravity * self.centre_of_mass(phi, k).y).sum();
         (kinetic, potential)
     }
 
     fn centre_of_mass(&self, phi: &Vector3<f64>, k: usize) -> Vector2<f64> {
-        let joints: Vector2<f64> = (0..k).map(|j| self.links[j] * along(phi[j])).sum();
-        joints + self.along[k] * along(phi[k]) + self.across[k] * across(phi[k])
+        let joints: Vector2<f64> = (0..k).map(|j| self.bodies.links[j] * along(phi[j])).sum();
+        joints + self.bodies.along[k] * along(phi[k]) + self.bodies.across[k] * across(phi[k])
     }
 }
 
@@ -186,13 +250,99 @@ mod tests {
 
     const LOADS: Loads = Loads { gas_force: 3.0e4, load_torque: 24.7 };
 
+    /// The same equations by the generic link loop: `M = Σ m_k J_kᵀ J_k + diag(J_zk)` and
+    /// `f = Q − Σ m_k J_kᵀ J̇_k φ̇` from each body's Jacobian columns, the gas force through the
+    /// Jacobian of its point, the corner rows from the corner positions. An independent derivation.
+    fn by_link_jacobians(l: &Linkage, phi: &Vector3<f64>, phid: &Vector3<f64>, loads: Loads) -> (Matrix3<f64>, Vector3<f64>, nalgebra::Matrix4x3<f64>, Vector4<f64>) {
+        let e = [along(phi[0]), along(phi[1]), along(phi[2])];
+        let n = [across(phi[0]), across(phi[1]), across(phi[2])];
+        let weight = Vector2::new(0.0, -l.bodies.gravity);
+        let mut mass = Matrix3::from_diagonal(&Vector3::from(l.bodies.inertias));
+        let mut force = Vector3::zeros();
+        for k in 0..3 {
+            // Columns of J_k and the velocity-product acceleration J̇_k φ̇.
+            let mut columns = [Vector2::zeros(); 3];
+            let mut bias = Vector2::zeros();
+            for j in 0..k {
+                columns[j] = -l.bodies.links[j] * n[j];
+                bias -= l.bodies.links[j] * phid[j] * phid[j] * e[j];
+            }
+            let body = l.bodies.along[k] * e[k] + l.bodies.across[k] * n[k];
+            columns[k] = -l.bodies.along[k] * n[k] + l.bodies.across[k] * e[k];
+            bias -= phid[k] * phid[k] * body;
+            let applied = l.bodies.masses[k] * (weight - bias);
+            for i in 0..=k {
+                force[i] += columns[i].dot(&applied);
+                for j in 0..=k {
+                    mass[(i, j)] += l.bodies.masses[k] * columns[i].dot(&columns[j]);
+                }
+            }
+        }
+        // Gas force (0, −F) at O3 − a n(φ3): J_P columns −l1 n1, −l2 n2, −a e3.
+        let gas = Vector2::new(0.0, -loads.gas_force);
+        force[0] -= l.bodies.links[0] * n[0].dot(&gas) + loads.load_torque;
+        force[1] -= l.bodies.links[1] * n[1].dot(&gas);
+        force[2] -= l.bodies.pin_offset * e[2].dot(&gas);
+        let [c1, c2, c3] = l.bodies.damping;
+        let (crank_pin, piston_pin) = (phid[1] - phid[0], phid[2] - phid[1]);
+        force[0] += c2 * crank_pin - c1 * phid[0];
+        force[1] += c3 * piston_pin - c2 * crank_pin;
+        force[2] -= c3 * piston_pin;
+        // Corner K: x_K = x_O3 + z e3.x + w n3.x; ∂x_K/∂φ and the second derivative along φ̇.
+        let mut jacobian = nalgebra::Matrix4x3::zeros();
+        let mut bias = Vector4::zeros();
+        for (i, &(z, w, side)) in l.bodies.corners.iter().enumerate() {
+            let tilt = z * e[2] + w * n[2];
+            let columns = [l.bodies.links[0] * -n[0].x, l.bodies.links[1] * -n[1].x, -z * n[2].x + w * e[2].x];
+            for j in 0..3 {
+                jacobian[(i, j)] = side * columns[j];
+            }
+            let accel = -l.bodies.links[0] * phid[0] * phid[0] * e[0].x - l.bodies.links[1] * phid[1] * phid[1] * e[1].x - phid[2] * phid[2] * tilt.x;
+            bias[i] = side * accel;
+        }
+        (mass, force, jacobian, bias)
+    }
+
+    #[test]
+    fn written_out_equations_match_the_link_jacobians_at_random_states() {
+        // A linear congruential generator: reproducible states over whole turns and fast rates.
+        let mut seed = 0x2545_f491_4f6c_dd1d_u64;
+        let mut uniform = |lo: f64, hi: f64| {
+            seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1_442_695_040_888_963_407);
+            lo + (hi - lo) * (seed >> 11) as f64 / (1u64 << 53) as f64
+        };
+        for a in [0.0, 0.002, -0.0035] {
+            let l = Linkage::new(&Parameters { pin_offset: a, damping_main: 0.3, damping_crank_pin: 0.05, damping_piston_pin: 0.02, ..Parameters::default() });
+            for _ in 0..200 {
+                let phi = Vector3::new(uniform(-40.0, 40.0), uniform(-0.4, 0.4), uniform(-0.5, 0.5));
+                let phid = Vector3::new(uniform(-300.0, 300.0), uniform(-100.0, 100.0), uniform(-50.0, 50.0));
+                let loads = Loads { gas_force: uniform(0.0, 4e4), load_torque: uniform(-50.0, 50.0) };
+                let ev = l.evaluate(&phi, &phid, loads);
+                let (mass, force, jacobian, bias) = by_link_jacobians(&l, &phi, &phid, loads);
+                let close = |x: f64, reference: f64, scale: f64| (x - reference).abs() <= 1e-12 * scale;
+                assert!(ev.mass.iter().zip(mass.iter()).all(|(x, r)| close(*x, *r, mass.norm())), "M {} vs {mass}", ev.mass);
+                assert!(ev.force.iter().zip(force.iter()).all(|(x, r)| close(*x, *r, force.norm())), "f {} vs {force}", ev.force);
+                assert!(ev.gap_jacobian.iter().zip(jacobian.iter()).all(|(x, r)| close(*x, *r, jacobian.norm())), "J {} vs {jacobian}", ev.gap_jacobian);
+                assert!(ev.gap_bias.iter().zip(bias.iter()).all(|(x, r)| close(*x, *r, bias.norm())), "d {} vs {bias}", ev.gap_bias);
+                // The corners' gaps from their positions.
+                let pin = l.pin(&phi);
+                let expected = Vector4::from_fn(|i, _| {
+                    let (z, w, side) = l.bodies.corners[i];
+                    0.5 * l.bodies.bore + side * (pin.x + z * along(phi[2]).x + w * across(phi[2]).x)
+                });
+                assert!((ev.gap - expected).norm() < 1e-15, "h {} vs {expected}", ev.gap);
+                assert_eq!(ev.gap, l.gaps(&phi));
+            }
+        }
+    }
+
     /// Kinetic energy from finite differences of the body positions: independent of M.
     fn kinetic_by_differences(l: &Linkage, phi: &Vector3<f64>, phid: &Vector3<f64>) -> f64 {
         let dt = 1e-6;
         (0..3)
             .map(|k| {
                 let v = (l.centre_of_mass(&(phi + phid * dt), k) - l.centre_of_mass(&(phi - phid * dt), k)) / (2.0 * dt);
-                0.5 * (l.masses[k] * v.norm_squared() + l.inertias[k] * phid[k] * phid[k])
+                0.5 * (l.bodies.masses[k] * v.norm_squared() + l.bodies.inertias[k] * phid[k] * phid[k])
             })
             .sum()
     }
@@ -236,7 +386,7 @@ mod tests {
                     lagrange[i] += (kp - km - (vp - vm)) / (2.0 * eps);
                 }
                 // Non-conservative forces: virtual work of damping, gas and load, written out directly.
-                let [c1, c2, c3] = l.damping;
+                let [c1, c2, c3] = l.bodies.damping;
                 let damping = Vector3::new(
                     -c1 * phid[0] + c2 * (phid[1] - phid[0]),
                     -c2 * (phid[1] - phid[0]) + c3 * (phid[2] - phid[1]),

@@ -3,8 +3,6 @@
 
 use super::crank_drive::{Engine, FreeCrank, GasPressure, PrescribedCrank};
 use super::crank_kinematics::SliderCrank;
-use super::crank_linkage::Linkage;
-use super::pressure::FourStrokePressure;
 use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
 use crate::dynamics::{Event, EventKind, Stepper, StepperOptions};
 use nalgebra::{Vector2, Vector3, Vector4};
@@ -13,13 +11,16 @@ use std::f64::consts::PI;
 
 mod energy;
 
-/// Nominal RK4 step, s (0.72° of crank angle at 1200 rpm). Event times and velocities do not
-/// depend on it (events are located by root finding); the flight and sliding phases are smooth
-/// on this scale. Over ten cycles of the default case against a 2.5 µs reference (958 impacts
-/// faster than 0.1 mm/s, `examples/step_study.rs`): the impact times agree to 4.5e-9 s and the
-/// impact speeds to 2.8e-4 relative, against 2.7e-9 s and 2.2e-4 with a 10 µs step; 200 µs
-/// gives 1.8e-8 s and 3.3e-3. Ten times fewer steps than the core's default.
-pub const NOMINAL_STEP: f64 = 1e-4;
+/// The adaptive RK4 step's largest size, s (7.2° of crank angle at 1200 rpm), and its bound on
+/// the local error of each step on the corner gaps, m. Event times and velocities do not depend
+/// on the step (events are located by root finding); the step follows the motion: near 1e-3 s
+/// where the piston lies flat on a wall (fully constrained, no error to control), ≈ 1e-4 s in
+/// flight. Over ten cycles of the default case against a 2.5 µs fixed-step reference (958
+/// impacts faster than 0.1 mm/s, `examples/step_study.rs`): impact times agree to 4.6e-9 s and
+/// speeds to 2.3e-4 relative, as with the former fixed 1e-4 s step (4.5e-9 s, 2.8e-4) at 2.3×
+/// fewer RK4 steps; 1e-10 m gives 3.0e-8 s and 8.7e-4.
+pub const MAX_STEP: f64 = 1e-3;
+pub const LOCAL_ERROR: f64 = 1e-11;
 
 /// The crank train in one of its two crank modes.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -68,20 +69,11 @@ fn dynamics_error(e: impl std::fmt::Display) -> ModelError {
 }
 
 impl CrankTrain {
-    /// Builds with explicit integrator options (the FMU uses `NOMINAL_STEP` and the core's tolerances).
+    /// Builds with explicit integrator options (the FMU uses `MAX_STEP`, `LOCAL_ERROR` and the core's tolerances).
     pub fn with_options(params: &Parameters, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
         validate(params)?;
         check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
-        let pressure = match params.pressure_source {
-            1 => GasPressure::Held(Inputs::default().gas_pressure),
-            _ => GasPressure::BuiltIn(FourStrokePressure::new(params.peak_pressure, params.rod_length / params.crank_radius)),
-        };
-        let engine = Engine {
-            linkage: Linkage::new(params),
-            pressure,
-            crown_area: 0.25 * PI * params.piston_diameter * params.piston_diameter,
-            restitution: params.restitution,
-        };
+        let engine = Engine::new(params);
         let geometry = SliderCrank { crank_radius: params.crank_radius, rod_length: params.rod_length, pin_offset: params.pin_offset };
         let speed = Inputs::default().crank_speed;
         let drive = if params.crank_mode == 1 {
@@ -216,7 +208,7 @@ impl CrankTrain {
 
 impl EngineModel for CrankTrain {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
-        Self::with_options(params, start_time, StepperOptions { step: NOMINAL_STEP, ..StepperOptions::default() })
+        Self::with_options(params, start_time, StepperOptions { step: MAX_STEP, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() })
     }
 
     fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
