@@ -42,8 +42,9 @@ thesis: fmu venv
 bench:
 	cargo bench
 
-# Long runs in release mode, not part of `test`: 10⁴ crank-train cycles with the energy balance
-# checked every cycle, then 10⁶ roller revolutions (about 10 + 10 minutes on the 2-CPU machine).
+# Long runs in release mode, not part of `test`: 10⁴ crank-train cycles (10³ with a free crank)
+# and 10⁶ roller revolutions (in a second thread), the energy balance checked every cycle and
+# revolution (about 25 minutes on the loaded 2-CPU machine, the roller being the longest).
 soak:
 	cargo run --release --example soak -- 10000 1000000
 

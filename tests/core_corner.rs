@@ -28,6 +28,10 @@ fn corner_impact_along_the_bisector_reverses() {
         assert!((s.velocity() + inward * e).norm() < 1e-14, "e = {e}: {}", s.velocity());
         let lost: f64 = impacts.iter().map(|ev| ev.energy_lost).sum();
         assert!((lost - 0.5 * (1.0 - e * e)).abs() < 1e-14, "T⁻ − T⁺ = (1 − e²)/2");
+        // One impact, two events: the first carries both impulses, the second none.
+        let each = (1.0 + e) * (3f64.sqrt() / 2.0) / 1.5;
+        assert!((impacts[0].impulses - Vector2::new(each, each)).norm() < 1e-14, "{}", impacts[0].impulses);
+        assert_eq!(impacts[1].impulses, Vector2::zeros());
     }
 }
 

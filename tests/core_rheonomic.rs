@@ -12,7 +12,7 @@ fn ball(gravity: f64, restitution: f64, floor: Floor, y: f64, v: f64) -> Stepper
 /// A wall moving at speed u meets a ball of speed v: ḣ⁺ = −e ḣ⁻ with ḣ = v − u, so
 /// v⁺ = (1 + e) u − e v. The energy dissipated is the loss in the wall's frame,
 /// ½ m (1 − e²) (v − u)², not T⁻ − T⁺ = ½ m (v² − v⁺²), which also holds the wall's work
-/// (negative in the first case: the wall speeds the ball up).
+/// (negative in the first case: the wall speeds the ball up): the wall's work −Λ ∂h/∂t.
 #[test]
 fn moving_wall_enters_the_impact_law() {
     let e = 0.5;
@@ -31,6 +31,9 @@ fn moving_wall_enters_the_impact_law() {
         assert!((ev.energy_lost - lost).abs() < 1e-12, "dissipated {} vs {lost}", ev.energy_lost);
         let wall_work = 0.5 * (v_plus * v_plus - v * v) + lost;
         assert!(wall_work.abs() > 0.1, "the wall must do work for this case to tell the formulas apart");
+        // The recorded impulse m (v⁺ − v), and the wall's work through it −Λ ∂h/∂t = Λ u.
+        assert!((ev.impulses[0] - (v_plus - v)).abs() < 1e-12, "impulse {}", ev.impulses[0]);
+        assert!((ev.impulses[0] * u - wall_work).abs() < 1e-12);
         assert!((s.velocity()[0] - v_plus).abs() < 1e-12);
     }
 }

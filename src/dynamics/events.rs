@@ -60,7 +60,7 @@ pub(crate) enum Located {
 const SCAN_SAMPLES: usize = 8;
 const MAX_ITERATIONS: usize = 200;
 
-/// The first sub-interval of `[t0, t1]` where `g` goes from positive to below `−tol`, scanning
+/// The first sub-interval of `[t0, t1]` where `g` goes from above `tol` to below `−tol`, scanning
 /// `SCAN_SAMPLES` points of the dense output: this finds the earliest of several roots and a
 /// crossing-and-return inside one step (a grazing dip) that the end values alone would miss.
 /// `rising`: `g` is at most 0 at `t0` but increasing (a constraint closed and separating, e.g.
@@ -75,7 +75,7 @@ pub(crate) fn first_crossing<E>(
     tol: f64,
     rising: bool,
 ) -> Result<Option<Start>, E> {
-    let mut positive = (g0 > 0.0).then_some((t0, g0));
+    let mut positive = (g0 > tol).then_some((t0, g0));
     for k in 1..=SCAN_SAMPLES {
         let (mut t, mut gt) = if k == SCAN_SAMPLES {
             (t1, g1)
@@ -90,7 +90,7 @@ pub(crate) fn first_crossing<E>(
                     break;
                 }
                 let g_mid = g(mid)?;
-                if g_mid > 0.0 {
+                if g_mid > tol {
                     return Ok(Some(Start::Within(Bracket { lo: mid, g_lo: g_mid, hi: t, g_hi: gt })));
                 }
                 (t, gt) = (mid, g_mid);
@@ -102,7 +102,7 @@ pub(crate) fn first_crossing<E>(
                 None => Start::Immediate,
             }));
         }
-        if gt > 0.0 {
+        if gt > tol {
             positive = Some((t, gt));
         }
     }
@@ -212,5 +212,19 @@ mod tests {
         }
         let without = first_crossing(|t| Ok::<_, Infallible>(f(t)), (0.0, 0.0), (1.0, f(1.0)), 1e-12, false).unwrap();
         assert_eq!(without, Some(Start::Immediate));
+    }
+
+    /// The same flight from a start just above zero but within the tolerance (where an impact
+    /// leaves a corner): the start is no end of the bracket, or Illinois would accept a "root"
+    /// next to it (|g| ≤ tol there) and the stepper would inch on by such non-events
+    /// (found by `make soak`: a free crank at cycle 420).
+    #[test]
+    fn a_start_within_the_tolerance_is_not_a_bracket_end() {
+        let f = |t: f64| 3e-14 + t * (0.01 - t);
+        let found = first_crossing(|t| Ok::<_, Infallible>(f(t)), (0.0, f(0.0)), (1.0, f(1.0)), 1e-12, true).unwrap();
+        match found {
+            Some(Start::Within(b)) => assert!(b.lo > 0.0 && b.g_lo > 1e-12 && b.hi > 0.01, "{b:?}"),
+            other => panic!("{other:?}"),
+        }
     }
 }

@@ -86,7 +86,7 @@ pub enum EventKind {
 
 /// One entry of the event record.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Event<const N: usize> {
+pub struct Event<const N: usize, const M: usize> {
     pub time: f64,
     pub kind: EventKind,
     pub constraint: usize,
@@ -101,6 +101,12 @@ pub struct Event<const N: usize> {
     pub energy_lost: f64,
     /// Configuration at the event.
     pub q: SVector<f64, N>,
+    /// The impulses Λ on every constraint of the impact or velocity projection that recorded this
+    /// event, constraints held in contact included (they take reactions without an event of their
+    /// own). One impact or projection may record several events: it carries its impulses on the
+    /// first of them, zero on the others, so that sums over the record count each once. Zero for
+    /// a release. With them `Δq̇ = M⁻¹ Jᵀ Λ` and the work of moving constraints `−Λ·∂h/∂t`.
+    pub impulses: SVector<f64, M>,
 }
 
 /// What the core cannot resolve, as a value. Constraint sets are bitmasks (bit i = constraint i).
@@ -310,7 +316,7 @@ pub struct Stepper<S, const N: usize, const M: usize> {
     /// Constraints in persistent contact (bitmask).
     active: u32,
     state: Sample<N, M>,
-    events: Vec<Event<N>>,
+    events: Vec<Event<N, M>>,
 }
 
 impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
@@ -408,7 +414,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let s = &self.state;
         0.5 * s.v.dot(&(self.system.evaluate(s.t, &s.q, &s.v).mass * s.v))
     }
-    pub fn events(&self) -> &[Event<N>] {
+    pub fn events(&self) -> &[Event<N, M>] {
         &self.events
     }
     pub fn clear_events(&mut self) {
@@ -442,7 +448,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let s = &self.state;
         self.state = sample(&self.system, s.t, s.q, s.v, self.active)?;
         let eps = self.options.gap_tolerance;
-        if let Some(i) = (0..M).find(|&i| !contains(self.active, i) && self.state.gap[i] < -eps) {
+        // A free gap a little below −ε_h is closed, not violated: steps end anywhere down to −ε_h,
+        // and the drift projection of the active set then moves the others by round-off
+        // (`make soak` met −1.0005 ε_h at a communication point).
+        if let Some(i) = (0..M).find(|&i| !contains(self.active, i) && self.state.gap[i] < -2.0 * eps) {
             return Err(DynamicsError::Penetration { time: self.state.t, constraint: i, gap: self.state.gap[i] });
         }
         let closed = self.active | select::<M>(|i| self.state.gap[i] <= eps);
@@ -625,8 +634,15 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         Ok(())
     }
 
-    fn record(&mut self, kind: EventKind, constraint: usize, before: f64, after: f64, energy_lost: f64, q: SVector<f64, N>) {
-        self.events.push(Event { time: self.state.t, kind, constraint, velocity_before: before, velocity_after: after, energy_lost, q });
+    /// Records one event per constraint of `set` at the current configuration; the first carries
+    /// `impulses` (see `Event::impulses`).
+    fn record(&mut self, kind: EventKind, set: Set, hd: &SVector<f64, M>, hd_after: &SVector<f64, M>, lost: &SVector<f64, M>, impulses: SVector<f64, M>) {
+        let (time, q, mut carried) = (self.state.t, self.state.q, impulses);
+        for i in members::<M>(set) {
+            let (velocity_before, velocity_after, energy_lost) = (hd[i], hd_after[i], lost[i]);
+            self.events.push(Event { time, kind, constraint: i, velocity_before, velocity_after, energy_lost, q, impulses: carried });
+            carried = SVector::zeros();
+        }
     }
 
     /// Resolves the closed constraints at the current instant (Fig. 1 at a discontinuity point):
@@ -661,9 +677,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 // pushed harder keeps ḣ = 0 on both sides: a reaction that dissipates nothing, not
                 // an impact (counting it would inflate the impact statistics with zero speeds).
                 let pushed = !was_active & select::<M>(|i| impulse[i] * frame.w[(i, i)] > opts.velocity_tolerance);
-                for i in members::<M>(closed & (approaching | pushed)) {
-                    self.record(EventKind::Impact, i, hd[i], hd_plus[i], lost[i], q);
-                }
+                self.record(EventKind::Impact, closed & (approaching | pushed), &hd, &hd_plus, &lost, impulse);
                 (v, hd) = (v_plus, hd_plus);
                 (ev, frame) = frame_at(&self.system, t, &q, &v)?;
                 impacted |= approaching;
@@ -698,14 +712,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             v_new = v + dv;
             let hd_after = hd + frame.w * impulse;
             let lost = impact::energy_lost(&impulse, &hd, &hd_after);
-            for i in members::<M>(support & !was_active) {
-                self.record(EventKind::Slide, i, hd[i], hd_after[i], lost[i], q);
-            }
+            self.record(EventKind::Slide, support & !was_active, &hd, &hd_after, &lost, impulse);
             q_new += dq;
         }
-        for i in members::<M>(was_active & !support) {
-            self.record(EventKind::Release, i, hd[i], hd[i], 0.0, q);
-        }
+        self.record(EventKind::Release, was_active & !support, &hd, &hd, &SVector::zeros(), SVector::zeros());
         self.active = support;
         self.state = sample(&self.system, t, q_new, v_new, support)?;
         Ok(())

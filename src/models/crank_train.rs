@@ -9,6 +9,8 @@ use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
+mod energy;
+
 /// The adaptive RK4 step's largest size, s (7.2° of crank angle at 1200 rpm), and its bound on
 /// the local error of each step on the corner gaps, m. Event times and velocities do not depend
 /// on the step (events are located by root finding); the step follows the motion: near 1e-3 s
@@ -28,6 +30,10 @@ pub struct CrankTrain {
     /// The initial state is rebuilt with the first step's crank speed (DESIGN.md §4: nominal kinematics).
     started: bool,
     options: StepperOptions,
+    /// Work the prescribed drive has done through impulses since the start, J (`EnergyBalance`).
+    impulse_work: f64,
+    /// Whole cycles (4π) taken off the prescribed crank's angle (`keep_angle_within_a_cycle`).
+    cycles: f64,
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -44,49 +50,11 @@ fn check(ok: bool, message: impl FnOnce() -> String) -> Result<(), ModelError> {
     }
 }
 
-/// Refuses parameters the crank train cannot run with, naming the parameter.
+/// Refuses parameters the crank train cannot run with, naming the parameter: the ranges every
+/// model needs (`Parameters::validate`), then what the corner geometry needs.
 fn validate(p: &Parameters) -> Result<(), ModelError> {
-    check(p.crank_mode == 1 || p.crank_mode == 2, || format!("crank_mode ({}) must be 1 (prescribed speed) or 2 (free crank)", p.crank_mode))?;
-    check(p.pressure_source == 1 || p.pressure_source == 2, || format!("pressure_source ({}) must be 1 (gas_pressure input) or 2 (built-in curve)", p.pressure_source))?;
-    let positive = [
-        ("crank_radius", p.crank_radius),
-        ("rod_length", p.rod_length),
-        ("crank_mass", p.crank_mass),
-        ("rod_mass", p.rod_mass),
-        ("piston_mass", p.piston_mass),
-        ("crank_inertia", p.crank_inertia),
-        ("rod_inertia", p.rod_inertia),
-        ("piston_inertia", p.piston_inertia),
-        ("piston_diameter", p.piston_diameter),
-        ("skirt_length", p.skirt_length),
-        ("bore", p.bore),
-    ];
-    for (name, value) in positive {
-        check(value > 0.0 && value.is_finite(), || format!("{name} ({value}) must be positive and finite"))?;
-    }
-    let non_negative = [
-        ("peak_pressure", p.peak_pressure),
-        ("damping_main", p.damping_main),
-        ("damping_crank_pin", p.damping_crank_pin),
-        ("damping_piston_pin", p.damping_piston_pin),
-    ];
-    for (name, value) in non_negative {
-        check(value >= 0.0 && value.is_finite(), || format!("{name} ({value}) must be non-negative and finite"))?;
-    }
-    let finite = [
-        ("crank_com", p.crank_com),
-        ("rod_com", p.rod_com),
-        ("piston_com", p.piston_com),
-        ("pin_height", p.pin_height),
-        ("pin_offset", p.pin_offset),
-        ("gravity", p.gravity),
-        ("crank_angle_start", p.crank_angle_start),
-    ];
-    for (name, value) in finite {
-        check(value.is_finite(), || format!("{name} ({value}) must be finite"))?;
-    }
-    check((0.0..=1.0).contains(&p.restitution), || format!("restitution ({}) must lie in [0, 1]", p.restitution))?;
-    check(p.bore > p.piston_diameter, || format!("bore ({} m) must exceed piston_diameter ({} m)", p.bore, p.piston_diameter))?;
+    p.validate()?;
+    check(p.skirt_length > 0.0, || format!("skirt_length ({} m) must be positive: the corners K2, K4 lie at its end", p.skirt_length))?;
     // The corner description (A&K eq 26) holds while the piston cannot turn across the bore.
     let diagonal = p.piston_diameter.hypot(p.skirt_length);
     check(p.bore < diagonal, || format!("bore ({} m) must be below the piston diagonal √(piston_diameter² + skirt_length²) ({diagonal} m)", p.bore))?;
@@ -114,7 +82,7 @@ impl CrankTrain {
             let system = FreeCrank { engine, load_torque: Inputs::default().load_torque };
             Drive::Free(Self::free(system, &geometry, params.crank_angle_start, start_time, speed, &options)?)
         };
-        Ok(Self { drive, geometry, started: false, options })
+        Ok(Self { drive, geometry, started: false, options, impulse_work: 0.0, cycles: 0.0 })
     }
 
     /// Nominal slider-crank state at crank angle φ1 turning at ω: (φ2, φ3 = 0) and their rates.
@@ -151,8 +119,27 @@ impl CrankTrain {
     /// Full coordinates φ = (φ1, φ2, φ3) and rates now.
     pub fn state(&self) -> (Vector3<f64>, Vector3<f64>) {
         match &self.drive {
-            Drive::Prescribed(s) => s.system().full_state(s.time(), s.position(), s.velocity()),
+            Drive::Prescribed(s) => {
+                let (mut phi, phid) = s.system().full_state(s.time(), s.position(), s.velocity());
+                phi[0] += 4.0 * PI * self.cycles;
+                (phi, phid)
+            }
             Drive::Free(s) => (*s.position(), *s.velocity()),
+        }
+    }
+
+    /// Restarts the prescribed crank's angle within its first cycle. Left to grow, φ1 would carry
+    /// the round-off of its size (≈ 1e-11 rad at 10³ s of engine time, 5e-13 m on the gaps): noise
+    /// near the event tolerance that makes a corner leaving the liner look as if it penetrated.
+    fn keep_angle_within_a_cycle(&mut self) {
+        if let Drive::Prescribed(s) = &mut self.drive {
+            let (sys, now) = (s.system(), s.time());
+            let cycles = (sys.crank_angle(now) / (4.0 * PI)).floor();
+            if cycles != 0.0 {
+                let angle = sys.crank_angle(now) - 4.0 * PI * cycles;
+                *s.system_mut() = PrescribedCrank::new(sys.engine.clone(), angle, now, sys.speed());
+                self.cycles += cycles;
+            }
         }
     }
 
@@ -198,7 +185,7 @@ impl CrankTrain {
     }
 
     /// Core events as impact-log rows; `angle` gives φ1 at an event.
-    fn log<const N: usize>(&self, raw: &[Event<N>], angle: impl Fn(&Event<N>) -> Vector3<f64>, events: &mut Vec<EngineEvent>) {
+    fn log<const N: usize>(&self, raw: &[Event<N, 4>], angle: impl Fn(&Event<N, 4>) -> Vector3<f64>, events: &mut Vec<EngineEvent>) {
         for e in raw {
             let phi = angle(e);
             events.push(EngineEvent {
@@ -232,6 +219,7 @@ impl EngineModel for CrankTrain {
             self.start(inputs.crank_speed)?;
         }
         self.engine_mut().hold_pressure(inputs.gas_pressure);
+        self.keep_angle_within_a_cycle();
         match &mut self.drive {
             Drive::Prescribed(s) => {
                 let now = s.time();
@@ -247,6 +235,10 @@ impl EngineModel for CrankTrain {
             Drive::Prescribed(s) => {
                 let sys = s.system();
                 self.log(s.events(), |e| Vector3::new(sys.crank_angle(e.time), e.q[0], e.q[1]), events);
+                for e in s.events().iter().filter(|e| e.impulses != Vector4::zeros()) {
+                    let work = sys.impulse_work(e.time, &e.q, &e.impulses);
+                    self.impulse_work += work.ok_or_else(|| dynamics_error(format!("at t = {} s: the rod and piston inertia is singular", e.time)))?;
+                }
             }
             Drive::Free(s) => self.log(s.events(), |e| e.q, events),
         }
@@ -287,19 +279,23 @@ mod tests {
 
     #[test]
     fn refuses_parameters_naming_them() {
-        let cases: [(Parameters, &str); 6] = [
-            (Parameters { bore: 0.079, ..Parameters::default() }, "bore (0.079 m) must exceed piston_diameter (0.08 m)"),
-            (Parameters { bore: 0.2, ..Parameters::default() }, "piston diagonal"),
+        let cases: [(Parameters, &str); 9] = [
+            // The generic ranges.
+            (Parameters { bore: 0.079, ..Parameters::default() }, "bore = 0.079 m must exceed piston_diameter = 0.08 m"),
             (Parameters { restitution: 1.2, ..Parameters::default() }, "restitution"),
             (Parameters { rod_mass: 0.0, ..Parameters::default() }, "rod_mass"),
-            (Parameters { rod_length: 0.03, ..Parameters::default() }, "rod_length"),
             (Parameters { crank_mode: 3, ..Parameters::default() }, "crank_mode"),
+            (Parameters { damping_main: f64::NAN, ..Parameters::default() }, "damping_main"),
+            // The crank train's own.
+            (Parameters { skirt_length: 0.0, ..Parameters::default() }, "skirt_length (0 m) must be positive"),
+            (Parameters { bore: 0.2, ..Parameters::default() }, "piston diagonal"),
+            (Parameters { pin_offset: -0.041, ..Parameters::default() }, "pin_offset (-0.041 m) must be smaller"),
+            (Parameters { rod_length: 0.05, pin_offset: 0.02, ..Parameters::default() }, "rod_length (0.05 m) must exceed crank_radius + |pin_offset|"),
         ];
         for (params, expected) in cases {
             let message = validate(&params).unwrap_err().0;
             assert!(message.contains(expected), "{message}");
         }
         assert!(validate(&Parameters::default()).is_ok());
-        assert!(validate(&Parameters { damping_main: f64::NAN, ..Parameters::default() }).unwrap_err().0.contains("damping_main"));
     }
 }

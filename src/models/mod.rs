@@ -7,12 +7,14 @@ pub mod crank_efficiency;
 pub mod crank_kinematics;
 pub mod crank_linkage;
 pub mod crank_train;
+mod energy_balance;
 pub mod pressure;
 mod roller;
 mod roller_forcing;
 
 pub use crank_efficiency::{EfficiencyCalibration, EfficiencyTarget};
 pub use crank_train::CrankTrain;
+pub use energy_balance::{EnergyBalance, PowerFlows};
 pub use parameters::{Inputs, ModelError, Outputs, Parameters};
 pub use roller::{Roller, RollerSystem};
 pub use roller_forcing::{Forcing, Jet, SliderCrank, SlidingRegion};

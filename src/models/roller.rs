@@ -22,6 +22,8 @@ use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
+mod energy;
+
 /// Constraint index of the lower wall (ψ = ψ_min, corner 1).
 pub const LOWER: usize = 0;
 /// Constraint index of the upper wall (ψ = ψ_max, corner 3).
@@ -85,6 +87,8 @@ pub struct Roller {
     crank_speed: f64,
     /// SI time at the stepper's current crank angle.
     time: f64,
+    /// Work the moving walls have done through impulses since the start, J (`EnergyBalance`).
+    impulse_work: f64,
 }
 
 fn require(ok: bool, name: &str, range: &str) -> Result<(), ModelError> {
@@ -143,7 +147,7 @@ impl Roller {
         Ok(())
     }
 
-    fn engine_event(&self, event: &Event<1>, theta_start: f64) -> EngineEvent {
+    fn engine_event(&self, event: &Event<1, 2>, theta_start: f64) -> EngineEvent {
         let omega = self.crank_speed;
         let speed = self.lateral_scale(event.time) * omega;
         EngineEvent {
@@ -157,7 +161,7 @@ impl Roller {
             corner: corner(event.constraint),
             normal_velocity_before: -event.velocity_before * speed,
             normal_velocity_after: event.velocity_after * speed,
-            energy_lost: event.energy_lost * self.piston_mass * (self.rod_length * omega).powi(2),
+            energy_lost: event.energy_lost * self.energy_scale(),
             position: self.axial_position(event.time, event.q[0]),
         }
     }
@@ -167,18 +171,13 @@ impl EngineModel for Roller {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         let p = params;
         let clearance = (p.bore - p.piston_diameter) / 2.0;
+        p.validate().map_err(|e| ModelError(format!("model_variant 2: {e}")))?;
         require(p.crank_mode == 1, "crank_mode", "1 (the thesis's crank turns at a prescribed speed)")?;
-        require(p.roller_forcing == 1 || p.roller_forcing == 2, "roller_forcing", "1 (as printed) or 2 (corrected)")?;
-        require(p.crank_radius > 0.0 && p.crank_radius.is_finite(), "crank_radius", "> 0")?;
-        require(p.rod_length > p.crank_radius && p.rod_length.is_finite(), "rod_length", "> crank_radius")?;
-        require(p.rod_mass >= 0.0 && p.rod_mass.is_finite(), "rod_mass", ">= 0")?;
-        require(p.piston_mass > 0.0 && p.piston_mass.is_finite(), "piston_mass", "> 0")?;
-        require(p.rod_inertia >= 0.0 && p.rod_inertia.is_finite(), "rod_inertia", ">= 0")?;
-        require(p.damping_crank_pin >= 0.0 && p.damping_crank_pin.is_finite(), "damping_crank_pin", ">= 0")?;
-        require((0.0..=1.0).contains(&p.restitution), "restitution", "in [0, 1]")?;
         // The model is linear in ψ ≤ ρ/Λ: beyond a few degrees it no longer describes the mechanism.
-        require(clearance > 0.0 && clearance <= 0.05 * p.rod_length, "bore", "larger than piston_diameter by at most 10 % of rod_length")?;
-        require(p.crank_angle_start.is_finite() && start_time.is_finite(), "crank_angle_start", "finite")?;
+        require(clearance <= 0.05 * p.rod_length, "bore", "larger than piston_diameter by at most 10 % of rod_length")?;
+        if !start_time.is_finite() {
+            return Err(ModelError(format!("model_variant 2: the start time ({start_time} s) must be finite")));
+        }
         let (l, mass) = (p.rod_length, p.piston_mass);
         let system = RollerSystem {
             mechanism: SliderCrank {
@@ -206,6 +205,7 @@ impl EngineModel for Roller {
             damping: p.damping_crank_pin,
             crank_speed: 0.0,
             time: start_time,
+            impulse_work: 0.0,
         })
     }
 
@@ -222,6 +222,8 @@ impl EngineModel for Roller {
         self.stepper.clear_events();
         self.stepper.advance(theta_start + omega * (t_end - self.time)).map_err(core_error)?;
         events.extend(self.stepper.events().iter().map(|e| self.engine_event(e, theta_start)));
+        let system = self.stepper.system();
+        self.impulse_work += self.stepper.events().iter().map(|e| system.impulse_work(e)).sum::<f64>() * self.energy_scale();
         self.stepper.clear_events();
         self.time = t_end;
         Ok(())

@@ -1,0 +1,96 @@
+//! The crank train's energy balance terms.
+//!
+//! With the crank held at ω (crank_mode 1) every impulse Λ on the corners is met by an impulse P_d
+//! of the drive that keeps φ̇1 = ω: the full equations integrated over the impact,
+//! `M Δφ̇ = J_fullᵀ Λ + (P_d, 0, 0)ᵀ` with `Δφ̇1 = 0`, give from the rod and piston rows
+//! `Δq̇ = M_rr⁻¹ J_rᵀ Λ` and from the crank row `P_d = M_1r Δq̇ − (∂h/∂φ1)ᵀ Λ`. The drive does the
+//! work `P_d ω`, and `ΔT = −(dissipation) + P_d ω` with dissipation `−Λᵀ(ḣ⁻ + ḣ⁺)/2`.
+
+use super::{CrankTrain, Drive};
+use crate::models::crank_drive::PrescribedCrank;
+use crate::models::crank_linkage::Loads;
+use crate::models::{EnergyBalance, PowerFlows};
+use nalgebra::{Vector2, Vector4};
+
+impl PrescribedCrank {
+    /// Work the drive does through the corner impulses `impulses` of one impact at `(t, q)`, J;
+    /// `None` if the rod and piston inertia is not positive definite there.
+    pub fn impulse_work(&self, t: f64, q: &Vector2<f64>, impulses: &Vector4<f64>) -> Option<f64> {
+        let full = self.evaluate_full(t, q, &Vector2::zeros());
+        let rows = full.mass.fixed_view::<2, 2>(1, 1).into_owned();
+        let jump = rows.cholesky()?.solve(&(full.gap_jacobian.fixed_columns::<2>(1).transpose() * impulses));
+        let drive_impulse = (full.mass.fixed_view::<1, 2>(0, 1) * jump)[0] - full.gap_jacobian.column(0).dot(impulses);
+        Some(drive_impulse * self.speed())
+    }
+}
+
+impl EnergyBalance for CrankTrain {
+    fn mechanical_energy(&self) -> f64 {
+        CrankTrain::mechanical_energy(self)
+    }
+
+    fn power_flows(&self) -> PowerFlows {
+        let (phi, phid) = self.state();
+        let engine = self.engine();
+        // The gas force (0, −F) acts at O3 − a n(φ3), whose height is l1 cos φ1 + l2 cos φ2 − a sin φ3.
+        let g = &self.geometry;
+        let height_rate = -g.crank_radius * phi[0].sin() * phid[0] - g.rod_length * phi[1].sin() * phid[1] - g.pin_offset * phi[2].cos() * phid[2];
+        // Damping is the part of the generalized force odd in φ̇ (gyroscopic terms are even).
+        let bare = Loads { gas_force: 0.0, load_torque: 0.0 };
+        let odd = engine.linkage.evaluate(&phi, &phid, bare).force - engine.linkage.evaluate(&phi, &-phid, bare).force;
+        let drive = match &self.drive {
+            Drive::Prescribed(s) => {
+                let (forces, _) = self.contacts();
+                s.system().drive_torque(s.time(), s.position(), s.velocity(), &s.acceleration(), &forces) * phid[0]
+            }
+            Drive::Free(s) => -s.system().load_torque * phid[0],
+        };
+        PowerFlows { drive, gas: -engine.gas_force(phi[0]) * height_rate, damping: -0.5 * odd.dot(&phid) }
+    }
+
+    fn impulse_work(&self) -> f64 {
+        self.impulse_work
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::dynamics::System;
+    use crate::models::crank_drive::{Engine, GasPressure, PrescribedCrank};
+    use crate::models::crank_linkage::Linkage;
+    use crate::models::Parameters;
+    use nalgebra::{Matrix4, Vector2, Vector3, Vector4};
+
+    /// The drive's impulse from the bordered full system `[M −e1; e1ᵀ 0] (Δφ̇, P_d) = (JᵀΛ, 0)`
+    /// (an independent solve of the same mechanics), and the energy identity
+    /// `ΔT_full = Λᵀ(ḣ⁻ + ḣ⁺)/2 + P_d ω` for an impulse on two corners at a tilted, moving state.
+    #[test]
+    fn impulse_work_is_the_crank_row_reaction_and_closes_the_energy_of_an_impact() {
+        let p = Parameters::default();
+        let engine = Engine { linkage: Linkage::new(&p), pressure: GasPressure::Held(0.0), crown_area: 5e-3, restitution: 0.5 };
+        let sys = PrescribedCrank::new(engine, 0.7, 0.0, 125.66);
+        let (t, q, qd) = (0.003, Vector2::new(-0.12, 4e-4), Vector2::new(-25.0, 3.0));
+        let impulses = Vector4::new(0.02, 0.0, 0.0, 0.013);
+        let work = sys.impulse_work(t, &q, &impulses).unwrap();
+
+        let (phi, phid) = sys.full_state(t, &q, &qd);
+        let full = sys.evaluate_full(t, &q, &qd);
+        let mut bordered = Matrix4::zeros();
+        bordered.fixed_view_mut::<3, 3>(0, 0).copy_from(&full.mass);
+        (bordered[(0, 3)], bordered[(3, 0)]) = (-1.0, 1.0);
+        let rhs = full.gap_jacobian.transpose() * impulses;
+        let solution = bordered.lu().solve(&Vector4::new(rhs[0], rhs[1], rhs[2], 0.0)).unwrap();
+        assert!((work - solution[3] * 125.66).abs() < 1e-12 * work.abs(), "{work} vs {}", solution[3] * 125.66);
+
+        let jump = Vector3::new(0.0, solution[1], solution[2]);
+        let kinetic = |v: &Vector3<f64>| sys.engine.linkage.energy(&phi, v).0;
+        let rate = |v: &Vector3<f64>| full.gap_jacobian * v;
+        let plus = phid + jump;
+        let reduced = sys.evaluate(t, &q, &qd);
+        assert!((rate(&phid) - (reduced.gap_jacobian * qd + reduced.gap_time_rate)).norm() < 1e-12);
+        let contact = impulses.dot(&(rate(&phid) + rate(&plus))) * 0.5;
+        let gain = kinetic(&plus) - kinetic(&phid);
+        assert!((gain - contact - work).abs() < 1e-12 * gain.abs().max(1.0), "ΔT {gain} vs {contact} + {work}");
+        assert!(work.abs() > 0.1 * gain.abs(), "the drive's share must matter here: {work} of {gain}");
+    }
+}
