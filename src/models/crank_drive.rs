@@ -77,6 +77,19 @@ impl Engine {
         }
     }
 
+    /// Gas force toward the crank at crank angle φ1, N.
+    pub fn gas_force(&self, crank_angle: f64) -> f64 {
+        self.gas_force_at(&self.crank(crank_angle))
+    }
+
+    fn gas_force_at(&self, crank: &Crank) -> f64 {
+        let pressure = match &self.pressure {
+            GasPressure::BuiltIn(_) => crank.curve,
+            GasPressure::Held(p) => *p,
+        };
+        pressure * self.crown_area
+    }
+
     fn crank(&self, angle: f64) -> Crank {
         let (sin, cos) = angle.sin_cos();
         let curve = match &self.pressure {
@@ -90,11 +103,7 @@ impl Engine {
     /// torque `load_torque`.
     #[inline]
     fn evaluate(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> Evaluation<3, 4> {
-        let pressure = match &self.pressure {
-            GasPressure::BuiltIn(_) => crank.curve,
-            GasPressure::Held(p) => *p,
-        };
-        let loads = Loads { gas_force: pressure * self.crown_area, load_torque };
+        let loads = Loads { gas_force: self.gas_force_at(&crank), load_torque };
         self.linkage.evaluate_with(&Trig::with_crank((crank.sin, crank.cos), phi), phid, loads)
     }
 }
@@ -133,6 +142,19 @@ impl PrescribedCrank {
     }
 
     /// The crank terms at `angle`, from the cache when it is the last angle evaluated.
+    /// Gas force toward the crank at crank angle φ1, N.
+    pub fn gas_force(&self, crank_angle: f64) -> f64 {
+        self.gas_force_at(&self.crank(crank_angle))
+    }
+
+    fn gas_force_at(&self, crank: &Crank) -> f64 {
+        let pressure = match &self.pressure {
+            GasPressure::BuiltIn(_) => crank.curve,
+            GasPressure::Held(p) => *p,
+        };
+        pressure * self.crown_area
+    }
+
     fn crank(&self, angle: f64) -> Crank {
         match self.last_crank.0.get() {
             Some(last) if last.angle == angle => last,
