@@ -142,19 +142,6 @@ impl PrescribedCrank {
     }
 
     /// The crank terms at `angle`, from the cache when it is the last angle evaluated.
-    /// Gas force toward the crank at crank angle φ1, N.
-    pub fn gas_force(&self, crank_angle: f64) -> f64 {
-        self.gas_force_at(&self.crank(crank_angle))
-    }
-
-    fn gas_force_at(&self, crank: &Crank) -> f64 {
-        let pressure = match &self.pressure {
-            GasPressure::BuiltIn(_) => crank.curve,
-            GasPressure::Held(p) => *p,
-        };
-        pressure * self.crown_area
-    }
-
     fn crank(&self, angle: f64) -> Crank {
         match self.last_crank.0.get() {
             Some(last) if last.angle == angle => last,
