@@ -56,7 +56,7 @@ impl EnergyBalance for CrankTrain {
 #[cfg(test)]
 mod tests {
     use crate::dynamics::System;
-    use crate::models::crank_drive::{Engine, GasPressure, PrescribedCrank};
+    use crate::models::crank_drive::{Engine, PrescribedCrank};
     use crate::models::crank_linkage::Linkage;
     use crate::models::Parameters;
     use nalgebra::{Matrix4, Vector2, Vector3, Vector4};
@@ -67,7 +67,8 @@ mod tests {
     #[test]
     fn impulse_work_is_the_crank_row_reaction_and_closes_the_energy_of_an_impact() {
         let p = Parameters::default();
-        let engine = Engine { linkage: Linkage::new(&p), pressure: GasPressure::Held(0.0), crown_area: 5e-3, restitution: 0.5 };
+        let mut engine = Engine::new(&Parameters { pressure_source: 1, ..p.clone() });
+        engine.hold_pressure(0.0);
         let sys = PrescribedCrank::new(engine, 0.7, 0.0, 125.66);
         let (t, q, qd) = (0.003, Vector2::new(-0.12, 4e-4), Vector2::new(-25.0, 3.0));
         let impulses = Vector4::new(0.02, 0.0, 0.0, 0.013);
