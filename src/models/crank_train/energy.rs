@@ -57,7 +57,6 @@ impl EnergyBalance for CrankTrain {
 mod tests {
     use crate::dynamics::System;
     use crate::models::crank_drive::{Engine, PrescribedCrank};
-    use crate::models::crank_linkage::Linkage;
     use crate::models::Parameters;
     use nalgebra::{Matrix4, Vector2, Vector3, Vector4};
 
