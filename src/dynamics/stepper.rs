@@ -356,7 +356,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         }
         // A stepper restored from bytes is trusted no more than its caller: valid options, and a
         // bounded amount of work below.
-        let reason = self.options.invalid().or_else(|| {
+        let reason = self.options.invalid().or_else(|| (self.active >> M != 0).then_some("the contact set names constraints that do not exist")).or_else(|| {
             ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some(TOO_MANY_STEPS)
         });
         if let Some(reason) = reason {
