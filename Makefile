@@ -42,7 +42,7 @@ thesis: fmu venv
 bench:
 	cargo bench
 
-# Long runs in release mode, not part of `test`: 10⁴ crank-train cycles (10³ with a free crank)
+# Long runs in release mode, not part of `test`: 10⁴ crank-train cycles (prescribed and free crank)
 # and 10⁶ roller revolutions (in a second thread), the energy balance checked every cycle and
 # revolution (about 25 minutes on the loaded 2-CPU machine, the roller being the longest).
 soak:

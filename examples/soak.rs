@@ -11,9 +11,6 @@
 //! 1. Crank train as the FMU runs by default: prescribed crank at 1200 rpm, built-in pressure, e = 0.5.
 //! 2. The same with a free crank (crank_mode 2), load and joint damping calibrated to A&K's
 //!    efficiency (`EfficiencyTarget`); the drive is then the load torque, and impulses do no work.
-//!    A tenth of the cycles: its crank angle is a state of the integrator and grows without
-//!    bound, and at ≈ 900 s of engine time (cycle 9267) its round-off on the gaps, near the
-//!    event tolerance, ended a run in the stepper's event budget (not fixed yet).
 //! 3. The roller variant at 1200 rpm: its 1-DOF system of eq 2.13 (`models/roller/energy.rs`), in
 //!    a thread of its own beside 1 and 2 (it takes longest).
 //!
@@ -44,8 +41,15 @@ use std::time::Instant;
 /// enough for the time a copy meets the event at to fall within it (event location is accurate
 /// to a gap of 1e-12), narrow enough for the jump of the powers over it not to count.
 const SPLIT: f64 = 1e-5;
-/// Times a copy may meet an event before the time the model met it, in one interval.
-const DEPTH: u32 = 8;
+/// Least δ, relative to the event's time: the time resolution there, with a margin. Within an
+/// accumulation of impacts the intervals left shrink until `SPLIT` of them is below the
+/// resolution of the time (≈ 4e-12 s at 2.4e4 s), and a piece across an event would end where it
+/// began: the soak then went round the same event for ever (roller, revolution 4.8·10⁵).
+const RESOLUTION: f64 = 16.0 * f64::EPSILON;
+/// Splits one interval may take (events, or a copy meeting one early): an accumulation of
+/// impacts (e = 0.5 halves the speed each time, some 30 before the Zeno guard ends it) fits;
+/// beyond, the rest of the interval is taken by the trapezoidal rule.
+const DEPTH: u32 = 64;
 /// Roller intervals per revolution: about four of the thesis's steps (0.005 rad) each.
 const ROLLER_SAMPLES: usize = 320;
 /// Crank-train sampling interval, s: the RK4 step in flight.
@@ -88,13 +92,15 @@ struct Run<Mo> {
     inputs: Inputs,
     now: Powers,
     events: Vec<EngineEvent>,
-    /// Events split out of their interval, for the report.
+    /// Events split out of their interval, and intervals left to the trapezoidal rule at
+    /// `DEPTH`, for the report.
     splits: u64,
+    trapezoids: u64,
 }
 
 impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
     fn new(model: Mo, inputs: Inputs, t0: f64) -> Result<Self, String> {
-        let mut run = Self { model, inputs, now: [0.0; 4], events: Vec::new(), splits: 0 };
+        let mut run = Self { model, inputs, now: [0.0; 4], events: Vec::new(), splits: 0, trapezoids: 0 };
         run.model.advance(&run.inputs, t0, &mut run.events).map_err(|e| e.0)?;
         run.now = powers(&run.model);
         Ok(run)
@@ -172,12 +178,13 @@ impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
         self.splits += 1;
         let end = powers(&self.model);
         if depth == DEPTH {
+            self.trapezoids += 1;
             self.now = end;
             return Ok((trapezoid(start, end, b - a), None));
         }
         let event = self.events[seen].time;
         let more = self.events[seen..].iter().any(|e| e.time > event);
-        let delta = SPLIT * (b - a);
+        let delta = (SPLIT * (b - a)).max(RESOLUTION * event.abs());
         let (before, after) = ((event - delta).max(a), (event + delta).min(b));
         let (mut total, mut pre, mut early) = ([0.0; 4], copy, Vec::new());
         if before > a {
@@ -209,7 +216,7 @@ impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
             self.events.truncate(seen);
             self.events.append(&mut met);
             (self.model, self.now) = (post, first);
-            return Ok((total, (after < b).then_some((after, depth))));
+            return Ok((total, (after < b).then_some((after, depth + 1))));
         }
         self.now = end;
         add(&mut total, simpson(first, probe(post, &self.inputs, 0.5 * (after + b))?, end, b - after));
@@ -257,7 +264,8 @@ fn soak<Mo: EngineModel + EnergyBalance>(name: &str, mut run: Run<Mo>, t0: f64, 
         }
     }
     println!(
-        "{name}: {windows} windows, {events} events, worst energy-balance error {worst:.2e} (tolerance {TOLERANCE:e}), {:.0} s wall",
+        "{name}: {windows} windows, {events} events, worst energy-balance error {worst:.2e} (tolerance {TOLERANCE:e}), {} intervals past {DEPTH} splits, {:.0} s wall",
+        run.trapezoids,
         start.elapsed().as_secs_f64()
     );
     Ok(())
@@ -306,7 +314,7 @@ fn crank_trains(cycles: u64, failed: &AtomicBool) -> Result<(), String> {
     let cal = EfficiencyTarget::default().calibrate(&geometry, area, |a| curve.gauge(a)).map_err(|e| e.0)?;
     let params = Parameters { damping_main: cal.damping[0], damping_crank_pin: cal.damping[1], damping_piston_pin: cal.damping[2], ..base };
     let free = Run::new(CrankTrain::new(&params, 0.0).map_err(|e| e.0)?, Inputs { load_torque: cal.load_torque, ..inputs }, 0.0)?;
-    soak("crank train, free crank", free, 0.0, cycles.div_ceil(10), cycle, n, failed)
+    soak("crank train, free crank", free, 0.0, cycles, cycle, n, failed)
 }
 
 fn roller(revolutions: u64, failed: &AtomicBool) -> Result<(), String> {

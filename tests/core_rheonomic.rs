@@ -53,3 +53,27 @@ fn oscillating_floor_releases_the_ball_when_the_force_vanishes() {
     let t_r = (g / (a * w * w)).asin() / w;
     assert!((release.time - t_r).abs() < 1e-12, "release at {} vs {t_r}", release.time);
 }
+
+/// A ball bouncing on a table vibrating with period P = 0.5 s (peak acceleration 1.6 g): shifted
+/// back by 3P halfway (the core's `shift`, a symmetry of the system), it meets the same impacts
+/// 3P earlier in its new time.
+#[test]
+fn a_shift_by_a_period_keeps_the_motion() {
+    let floor = Floor::Oscillating { amplitude: 0.1, angular_frequency: 4.0 * std::f64::consts::PI };
+    let (mut whole, mut shifted) = (ball(9.81, 0.5, floor, 0.3, 0.0), ball(9.81, 0.5, floor, 0.3, 0.0));
+    whole.advance(5.0).unwrap();
+    shifted.advance(2.5).unwrap();
+    let before = shifted.events().len();
+    shifted.shift(-1.5, &Vector1::zeros()).unwrap();
+    shifted.advance(3.5).unwrap();
+    let impacts = |s: &Stepper<Ball, 1, 1>| s.events().iter().filter(|ev| ev.kind == EventKind::Impact).count();
+    assert!(before > 5 && impacts(&whole) > before + 5, "impacts on both sides of the shift: {} of {} events, {before} before", impacts(&whole), whole.events().len());
+    assert_eq!(whole.events().len(), shifted.events().len());
+    for (k, (a, b)) in whole.events().iter().zip(shifted.events()).enumerate() {
+        let offset = if k < before { 0.0 } else { 1.5 };
+        assert_eq!(a.kind, b.kind);
+        assert!((a.time - (b.time + offset)).abs() < 1e-9, "event {k}: {} vs {} + {offset}", a.time, b.time);
+        assert!((a.velocity_before - b.velocity_before).abs() < 1e-9);
+    }
+    assert!((whole.position() - shifted.position()).amax() < 1e-9 && (whole.velocity() - shifted.velocity()).amax() < 1e-9);
+}

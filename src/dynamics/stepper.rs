@@ -442,6 +442,19 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.event_budget = events;
     }
 
+    /// Moves the state by a symmetry of the system, `(t, q) → (t + dt, q + dq)` with `h`, `f` and
+    /// `M` unchanged by it (a whole period of a crank angle, in time or in a coordinate). The
+    /// motion and the contact set are the same; what changes is the round-off that a growing `t`
+    /// or `q` carries into the gaps, near the event tolerance after long runs.
+    pub fn shift(&mut self, dt: f64, dq: &SVector<f64, N>) -> Result<(), DynamicsError> {
+        let s = &self.state;
+        if !(dt.is_finite() && dq.iter().all(|x| x.is_finite())) {
+            return Err(DynamicsError::InvalidArgument { time: s.t, reason: "the shift must be finite" });
+        }
+        self.state = sample(&self.system, s.t + dt, s.q + dq, s.v, self.active)?;
+        Ok(())
+    }
+
     /// Refreshes the state after possible changes through `system_mut` and resolves every
     /// closed constraint: an active one now approaching gets an impact, a pulling one is released.
     fn reexamine(&mut self) -> Result<(), DynamicsError> {

@@ -32,7 +32,7 @@ pub struct CrankTrain {
     options: StepperOptions,
     /// Work the prescribed drive has done through impulses since the start, J (`EnergyBalance`).
     impulse_work: f64,
-    /// Whole cycles (4π) taken off the prescribed crank's angle (`keep_angle_within_a_cycle`).
+    /// Whole cycles (4π) taken off the crank angle (`keep_angle_within_a_cycle`).
     cycles: f64,
 }
 
@@ -118,29 +118,35 @@ impl CrankTrain {
 
     /// Full coordinates φ = (φ1, φ2, φ3) and rates now.
     pub fn state(&self) -> (Vector3<f64>, Vector3<f64>) {
-        match &self.drive {
-            Drive::Prescribed(s) => {
-                let (mut phi, phid) = s.system().full_state(s.time(), s.position(), s.velocity());
-                phi[0] += 4.0 * PI * self.cycles;
-                (phi, phid)
-            }
+        let (mut phi, phid) = match &self.drive {
+            Drive::Prescribed(s) => s.system().full_state(s.time(), s.position(), s.velocity()),
             Drive::Free(s) => (*s.position(), *s.velocity()),
-        }
+        };
+        phi[0] += 4.0 * PI * self.cycles;
+        (phi, phid)
     }
 
-    /// Restarts the prescribed crank's angle within its first cycle. Left to grow, φ1 would carry
-    /// the round-off of its size (≈ 1e-11 rad at 10³ s of engine time, 5e-13 m on the gaps): noise
-    /// near the event tolerance that makes a corner leaving the liner look as if it penetrated.
-    fn keep_angle_within_a_cycle(&mut self) {
-        if let Drive::Prescribed(s) = &mut self.drive {
-            let (sys, now) = (s.system(), s.time());
-            let cycles = (sys.crank_angle(now) / (4.0 * PI)).floor();
-            if cycles != 0.0 {
-                let angle = sys.crank_angle(now) - 4.0 * PI * cycles;
-                *s.system_mut() = PrescribedCrank::new(sys.engine.clone(), angle, now, sys.speed());
-                self.cycles += cycles;
-            }
+    /// Keeps the crank angle within its first cycle, the whole cycles counted apart: left to
+    /// grow, φ1 would carry the round-off of its size (≈ 1e-11 rad at 10³ s of engine time,
+    /// 5e-13 m on the gaps), noise near the event tolerance that makes a corner leaving the liner
+    /// look as if it penetrated, and that ended a 10⁴-cycle free-crank run in the event budget.
+    /// The prescribed crank's angle is a function of time (restarted), the free crank's a
+    /// coordinate (shifted: the model has period 4π in it).
+    fn keep_angle_within_a_cycle(&mut self) -> Result<(), ModelError> {
+        let angle = self.state().0[0] - 4.0 * PI * self.cycles;
+        let cycles = (angle / (4.0 * PI)).floor();
+        if cycles == 0.0 {
+            return Ok(());
         }
+        match &mut self.drive {
+            Drive::Prescribed(s) => {
+                let (sys, now) = (s.system(), s.time());
+                *s.system_mut() = PrescribedCrank::new(sys.engine.clone(), angle - 4.0 * PI * cycles, now, sys.speed());
+            }
+            Drive::Free(s) => s.shift(0.0, &Vector3::new(-4.0 * PI * cycles, 0.0, 0.0)).map_err(dynamics_error)?,
+        }
+        self.cycles += cycles;
+        Ok(())
     }
 
     /// Kinetic plus gravitational potential energy of the links, J.
@@ -219,7 +225,7 @@ impl EngineModel for CrankTrain {
             self.start(inputs.crank_speed)?;
         }
         self.engine_mut().hold_pressure(inputs.gas_pressure);
-        self.keep_angle_within_a_cycle();
+        self.keep_angle_within_a_cycle()?;
         match &mut self.drive {
             Drive::Prescribed(s) => {
                 let now = s.time();

@@ -89,6 +89,8 @@ pub struct Roller {
     time: f64,
     /// Work the moving walls have done through impulses since the start, J (`EnergyBalance`).
     impulse_work: f64,
+    /// Whole turns (2π) taken off the stepper's crank angle (`keep_angle_within_a_turn`).
+    turns: f64,
 }
 
 fn require(ok: bool, name: &str, range: &str) -> Result<(), ModelError> {
@@ -147,12 +149,25 @@ impl Roller {
         Ok(())
     }
 
+    /// Keeps the stepper's time, the crank angle, within its first turn (the model has period 2π
+    /// in it): left to grow, its round-off reaches the gaps near the event tolerance (θ ≈ 6e6 rad,
+    /// ulp 1e-9, after 10⁶ revolutions).
+    fn keep_angle_within_a_turn(&mut self) -> Result<(), ModelError> {
+        let turns = (self.stepper.time() / (2.0 * PI)).floor();
+        if turns != 0.0 {
+            self.stepper.shift(-2.0 * PI * turns, &SVector::zeros()).map_err(core_error)?;
+            self.turns += turns;
+        }
+        Ok(())
+    }
+
     fn engine_event(&self, event: &Event<1, 2>, theta_start: f64) -> EngineEvent {
         let omega = self.crank_speed;
         let speed = self.lateral_scale(event.time) * omega;
         EngineEvent {
             time: self.time + (event.time - theta_start) / omega,
-            crank_angle: event.time.rem_euclid(4.0 * PI),
+            // Within a cycle of two turns: the whole turns' parity is all that counts.
+            crank_angle: (event.time + 2.0 * PI * self.turns.rem_euclid(2.0)).rem_euclid(4.0 * PI),
             kind: match event.kind {
                 EventKind::Impact => EngineEventKind::Impact,
                 EventKind::Slide => EngineEventKind::Slide,
@@ -206,6 +221,7 @@ impl EngineModel for Roller {
             crank_speed: 0.0,
             time: start_time,
             impulse_work: 0.0,
+            turns: 0.0,
         })
     }
 
@@ -218,6 +234,7 @@ impl EngineModel for Roller {
             return Ok(());
         }
         self.hold_crank_speed(omega)?;
+        self.keep_angle_within_a_turn()?;
         let theta_start = self.stepper.time();
         self.stepper.clear_events();
         self.stepper.advance(theta_start + omega * (t_end - self.time)).map_err(core_error)?;
@@ -243,7 +260,7 @@ impl EngineModel for Roller {
         out.piston_lateral_velocity = l * omega * (cos_phi.d1 * psi + cos_phi.value * dpsi);
         out.piston_tilt = 0.0;
         out.piston_axial = self.axial_position(theta, psi);
-        out.crank_angle = theta;
+        out.crank_angle = theta + 2.0 * PI * self.turns;
         out.rod_angle = psi - mechanism.rod_angle(theta).value;
         let psi_jet = [psi, dpsi, self.stepper.acceleration()[0]];
         let lambda = self.stepper.system().lambda;
