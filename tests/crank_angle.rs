@@ -1,5 +1,6 @@
 //! The crank angle output accumulates (DESIGN.md §4) while the models keep the angle they
-//! integrate within one cycle (4π, the crank train) or turn (2π, the roller) against round-off.
+//! integrate bounded against round-off: within one cycle (4π, the crank train), below 2048 turns
+//! (the roller).
 
 use pistonslap::models::{CrankTrain, EngineModel, Inputs, Outputs, Parameters, Roller};
 use std::f64::consts::PI;
@@ -17,14 +18,15 @@ fn angles<Mo: EngineModel>(params: &Parameters, inputs: &Inputs, dt: f64, steps:
         .collect()
 }
 
-/// A prescribed crank's angle is ω t, also after several restarts within the first cycle.
+/// A prescribed crank's angle is ω t: the crank train's after several restarts within the first
+/// cycle, the roller's across the block of 2048 turns its stepper takes off.
 #[test]
 fn prescribed_angles_accumulate() {
     let inputs = Inputs::default();
-    let dt = 0.01;
-    let crank_train = angles::<CrankTrain>(&Parameters::default(), &inputs, dt, 25);
-    let roller = angles::<Roller>(&Parameters { model_variant: 2, ..Parameters::default() }, &inputs, dt, 25);
-    for (name, angles) in [("crank train", crank_train), ("roller", roller)] {
+    let turn = 2.0 * PI / inputs.crank_speed;
+    let crank_train = (0.01, angles::<CrankTrain>(&Parameters::default(), &inputs, 0.01, 25));
+    let roller = (turn, angles::<Roller>(&Parameters { model_variant: 2, ..Parameters::default() }, &inputs, turn, 2100));
+    for (name, (dt, angles)) in [("crank train", crank_train), ("roller", roller)] {
         for (k, angle) in angles.iter().enumerate() {
             let expected = inputs.crank_speed * (k + 1) as f64 * dt;
             assert!((angle - expected).abs() < 1e-9 * expected, "{name}, step {k}: {angle} rad, expected {expected}");
