@@ -3,7 +3,7 @@
 //! linear complementarity problems that both the impact law and the sliding law reduce to.
 
 use super::Evaluation;
-use nalgebra::{Cholesky, SMatrix, SVector};
+use nalgebra::{Cholesky, Const, SMatrix, SVector};
 
 /// A set of constraints as a bitmask: bit `i` is constraint `i` (serde-friendly, no heap).
 pub(crate) type Set = u32;
@@ -61,14 +61,6 @@ impl<const N: usize, const M: usize> Frame<N, M> {
         Self::gap_acceleration(ev, &self.free_acc)
     }
 
-    /// Acceleration and multipliers with the set `active` held closed (eqs 15–20):
-    /// `ḧ_A = 0` gives `W_AA λ_A = −(J_A M⁻¹ f + d_A)`, then `q̈ = M⁻¹ (f + Jᵀ λ)`.
-    /// `None` when the active constraints are dependent.
-    pub fn constrained(&self, ev: &Evaluation<N, M>, active: Set) -> Option<(SVector<f64, N>, SVector<f64, M>)> {
-        let lambda = solve_on(&self.w, &-self.free_gap_acceleration(ev), active)?;
-        Some((self.free_acc + self.minv_jt * lambda, lambda))
-    }
-
     /// The M-metric projection that zeroes `r` on `set`: `δ = −M⁻¹ J_Sᵀ W_SS⁻¹ r_S` (applied to
     /// `q` with `r = h` it is a Newton step onto the constraint manifold, to `q̇` with `r = ḣ`
     /// an inelastic impulse). Also returns the impulse `W_SS⁻¹ r_S` (with its sign flipped).
@@ -85,6 +77,55 @@ impl<const N: usize, const M: usize> Frame<N, M> {
         let scale = members::<M>(candidates).fold(0.0_f64, |s, i| s.max(drive[i].abs() + ev.gap_bias[i].abs()));
         solve_lcp(&self.w, &(drive + ev.gap_bias), candidates, scale)
     }
+}
+
+/// Acceleration and multipliers with the set `active` held closed (eqs 15–20): `ḧ_A = 0` gives
+/// `W_AA λ_A = −(J_A M⁻¹ f + d_A)`, then `q̈ = M⁻¹ (f + J_Aᵀ λ_A)`; `chol` factors `M` and
+/// `free_acc = M⁻¹ f`. This is most of the integrator's work while the piston slides: with one or
+/// two constraints held only their rows of `W` are formed and solved in closed form, in the
+/// operations (and so to the bit) of the general path, which the frame takes for more. `None`
+/// when the active constraints are dependent.
+pub(crate) fn held_acceleration<const N: usize, const M: usize>(
+    ev: &Evaluation<N, M>,
+    chol: &Cholesky<f64, Const<N>>,
+    free_acc: SVector<f64, N>,
+    active: Set,
+) -> Option<(SVector<f64, N>, SVector<f64, M>)> {
+    let mut held = members::<M>(active);
+    let (Some(a), second, None) = (held.next(), held.next(), held.next()) else {
+        let frame = Frame { minv_jt: chol.solve(&ev.gap_jacobian.transpose()), w: SMatrix::zeros(), free_acc };
+        let frame = Frame { w: ev.gap_jacobian * frame.minv_jt, ..frame };
+        let lambda = solve_on(&frame.w, &-frame.free_gap_acceleration(ev), active)?;
+        return Some((frame.free_acc + frame.minv_jt * lambda, lambda));
+    };
+    let column = |i: usize| chol.solve(&ev.gap_jacobian.row(i).transpose());
+    let dot = |i: usize, x: &SVector<f64, N>| (1..N).fold(ev.gap_jacobian[(i, 0)] * x[0], |sum, k| sum + ev.gap_jacobian[(i, k)] * x[k]);
+    let rhs = |i: usize| -(dot(i, &free_acc) + ev.gap_bias[i]);
+    let dependent = |pivot: f64, diagonal: f64| pivot <= DEPENDENT_PIVOT * diagonal;
+    let mut lambda = SVector::<f64, M>::zeros();
+    let c_a = column(a);
+    let w_aa = dot(a, &c_a);
+    let l_aa = w_aa.sqrt();
+    if !(l_aa > 0.0) || dependent(w_aa, w_aa) {
+        return None;
+    }
+    let Some(b) = second else {
+        lambda[a] = rhs(a) / l_aa / l_aa;
+        return Some((free_acc + c_a * lambda[a], lambda));
+    };
+    let c_b = column(b);
+    let (w_ba, w_bb) = (dot(b, &c_a), dot(b, &c_b));
+    let l_ba = w_ba / l_aa;
+    let pivot = w_bb - l_ba * l_ba;
+    if !(pivot > 0.0) || dependent(pivot, w_bb) {
+        return None;
+    }
+    let l_bb = pivot.sqrt();
+    let y_a = rhs(a) / l_aa;
+    let y_b = (rhs(b) - l_ba * y_a) / l_bb;
+    lambda[b] = y_b / l_bb;
+    lambda[a] = (y_a - l_ba * lambda[b]) / l_aa;
+    Some((free_acc + (c_a * lambda[a] + c_b * lambda[b]), lambda))
 }
 
 /// Solves `W_SS x_S = r_S` with `x = 0` outside `S`, without heap: the rows and columns outside
@@ -141,6 +182,45 @@ pub(crate) fn solve_lcp<const M: usize>(w: &SMatrix<f64, M, M>, b: &SVector<f64,
 mod tests {
     use super::*;
     use nalgebra::{Matrix2, Vector2};
+
+    /// The closed-form solve for one or two held constraints gives the general path's result to
+    /// the bit (so taking it changed no trajectory), and refuses dependent pairs like it.
+    #[test]
+    fn held_acceleration_is_the_general_solve() {
+        let mut seed = 12345_u64;
+        let mut random = move || {
+            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
+            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        for _ in 0..200 {
+            let l = SMatrix::<f64, 3, 3>::from_fn(|i, j| if i == j { 1.0 + random().abs() } else if i > j { random() } else { 0.0 });
+            let ev = Evaluation::<3, 4> {
+                mass: l * l.transpose(),
+                force: SVector::from_fn(|_, _| random()),
+                gap: SVector::zeros(),
+                gap_jacobian: SMatrix::from_fn(|_, _| random()),
+                gap_time_rate: SVector::zeros(),
+                gap_bias: SVector::from_fn(|_, _| random()),
+            };
+            let frame = Frame::new(&ev).unwrap();
+            let chol = Cholesky::new(ev.mass).unwrap();
+            for active in (1..16_u32).filter(|s| s.count_ones() <= 2) {
+                let lambda = solve_on(&frame.w, &-frame.free_gap_acceleration(&ev), active).unwrap();
+                let general = (frame.free_acc + frame.minv_jt * lambda, lambda);
+                assert_eq!(held_acceleration(&ev, &chol, frame.free_acc, active), Some(general), "set {active:b}");
+            }
+        }
+        let dependent = Evaluation::<2, 2> {
+            mass: Matrix2::identity(),
+            force: Vector2::zeros(),
+            gap: Vector2::zeros(),
+            gap_jacobian: Matrix2::new(1.0, 2.0, 2.0, 4.0),
+            gap_time_rate: Vector2::zeros(),
+            gap_bias: Vector2::zeros(),
+        };
+        let chol = Cholesky::new(dependent.mass).unwrap();
+        assert_eq!(held_acceleration(&dependent, &chol, Vector2::zeros(), 0b11), None);
+    }
 
     /// Hand-solved 2×2 LCPs: both active, one active, none.
     #[test]

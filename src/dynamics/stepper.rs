@@ -1,7 +1,7 @@
 //! The event-driven integrator (A&K section 5, Fig. 1): RK4 with the contact set held between
 //! events; at each event the impact law and the sliding law decide the new contact set.
 
-use super::contact::{bit, contains, members, select, Frame, Set};
+use super::contact::{bit, contains, held_acceleration, members, select, Frame, Set};
 use super::events::{self, Bracket, EventLocator, Located, Start};
 use super::rk4::{self, Hermite5};
 use super::{impact, Evaluation, System};
@@ -212,18 +212,18 @@ fn frame_at<S: System<N, M>, const N: usize, const M: usize>(
     Ok((ev, frame))
 }
 
-/// `q̈` and `λ` with the set `active` held; free flight needs only `M⁻¹ f`, not the contact frame.
+/// `q̈` and `λ` with the set `active` held; free flight needs only `M⁻¹ f`.
 fn acceleration<const N: usize, const M: usize>(
     ev: &Evaluation<N, M>,
     t: f64,
     active: Set,
 ) -> Result<(SVector<f64, N>, SVector<f64, M>), DynamicsError> {
+    let chol = Cholesky::new(ev.mass).ok_or(DynamicsError::SingularMass { time: t })?;
+    let free_acc = chol.solve(&ev.force);
     if active == 0 {
-        let chol = Cholesky::new(ev.mass).ok_or(DynamicsError::SingularMass { time: t })?;
-        return Ok((chol.solve(&ev.force), SVector::zeros()));
+        return Ok((free_acc, SVector::zeros()));
     }
-    let frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
-    frame.constrained(ev, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })
+    held_acceleration(ev, &chol, free_acc, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })
 }
 
 fn sample<S: System<N, M>, const N: usize, const M: usize>(
