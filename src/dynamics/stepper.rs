@@ -491,7 +491,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 return Err(DynamicsError::NonFinite { time: t1 });
             }
             let dt = t1 - t0;
-            let next = (dt * (0.9 * ratio.powf(-0.25)).clamp(0.2, 4.0)).clamp(min, max);
+            // ratio^(-1/4) by two square roots: `powf` cost 5 % of the crank train's run time.
+            let next = (dt * (0.9 / ratio.sqrt().sqrt()).clamp(0.2, 4.0)).clamp(min, max);
             if ratio <= 1.0 || size <= min {
                 // A step cut short by `t_end` says nothing against a longer one.
                 self.step_size = if t1 == t_end { next.max(size) } else { next };
