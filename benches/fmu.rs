@@ -109,7 +109,7 @@ fn main() {
     let plain = median((0..10 * RUNS).map(|_| plain_steps(40) / 40.0).collect());
     println!(
         "crank train, one fixed RK4 step without contact: {:.2} µs; floating-point work ≈ {FLOPS_PER_STEP} flops \
-         (at 2 flops per cycle and {:.1} GHz: {:.2} µs), {:.0}× above that limit",
+         (at 2 flops per cycle and {:.1} GHz: {:.2} µs), {:.1}× that limit",
         plain * 1e6,
         GHZ,
         FLOPS_PER_STEP as f64 / (2.0 * GHZ * 1e3),

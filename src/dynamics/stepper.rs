@@ -244,7 +244,17 @@ fn sample_and_evaluation<S: System<N, M>, const N: usize, const M: usize>(
     v: SVector<f64, N>,
     active: Set,
 ) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
-    let ev = sys.evaluate(t, &q, &v);
+    sample_of(sys.evaluate(t, &q, &v), t, q, v, active)
+}
+
+/// The sample at `(t, q, q̇)` from its evaluation `ev`.
+fn sample_of<const N: usize, const M: usize>(
+    ev: Evaluation<N, M>,
+    t: f64,
+    q: SVector<f64, N>,
+    v: SVector<f64, N>,
+    active: Set,
+) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
     let (acc, lambda) = acceleration(&ev, t, active)?;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd };
@@ -459,7 +469,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// closed constraint: an active one now approaching gets an impact, a pulling one is released.
     fn reexamine(&mut self) -> Result<(), DynamicsError> {
         let s = &self.state;
-        self.state = sample(&self.system, s.t, s.q, s.v, self.active)?;
+        let (state, ev) = sample_and_evaluation(&self.system, s.t, s.q, s.v, self.active)?;
+        self.state = state;
         let eps = self.options.gap_tolerance;
         // A free gap a little below −ε_h is closed, not violated: steps end anywhere down to −ε_h,
         // and the drift projection of the active set then moves the others by round-off
@@ -468,7 +479,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             return Err(DynamicsError::Penetration { time: self.state.t, constraint: i, gap: self.state.gap[i] });
         }
         let closed = self.active | select::<M>(|i| self.state.gap[i] <= eps);
-        self.settle(closed, 0)
+        // In flight there is nothing to resolve (at every communication point: worth skipping).
+        if closed == 0 {
+            return Ok(());
+        }
+        self.settle(closed, 0, Some(ev))
     }
 
     /// The RK4 step from the current state towards `t_end`: of the nominal size, or (adaptive) of
@@ -524,7 +539,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 }
                 let closed = self.active | bit(i) | select::<M>(|j| self.state.gap[j] <= self.options.gap_tolerance);
                 let release = if watch == Watch::Multiplier { bit(i) } else { 0 };
-                self.settle(closed, release)?;
+                self.settle(closed, release, None)?;
                 Ok(true)
             }
         }
@@ -667,11 +682,18 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// 3. projection of `q` and `q̇` onto the new active set, which becomes the held set.
     ///
     /// Constraints in `release` (a multiplier just crossed zero) may not stay in contact.
-    fn settle(&mut self, closed: Set, release: Set) -> Result<(), DynamicsError> {
+    /// `known`: the system's evaluation at the current state, if the caller has it.
+    fn settle(&mut self, closed: Set, release: Set, known: Option<Evaluation<N, M>>) -> Result<(), DynamicsError> {
         let Sample { t, q, mut v, .. } = self.state;
         let was_active = self.active;
         let opts = self.options.clone();
-        let (mut ev, mut frame) = frame_at(&self.system, t, &q, &v)?;
+        let (mut ev, mut frame) = match known {
+            Some(ev) => {
+                let frame = Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: t })?;
+                (ev, frame)
+            }
+            None => frame_at(&self.system, t, &q, &v)?,
+        };
         let mut hd = ev.gap_jacobian * v + ev.gap_time_rate;
 
         let mut approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
@@ -731,7 +753,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         }
         self.record(EventKind::Release, was_active & !support, &hd, &hd, &SVector::zeros(), SVector::zeros());
         self.active = support;
-        self.state = sample(&self.system, t, q_new, v_new, support)?;
+        // Nothing held: q and q̇ are those `ev` was made at (after any impact).
+        self.state = if support == 0 { sample_of(ev, t, q, v, 0)?.0 } else { sample(&self.system, t, q_new, v_new, support)? };
         Ok(())
     }
 }
