@@ -44,7 +44,7 @@ bench:
 
 # Long runs in release mode, not part of `test`: 10⁴ crank-train cycles (prescribed and free crank)
 # and 10⁶ roller revolutions (in a second thread), the energy balance checked every cycle and
-# revolution (about 25 minutes on the loaded 2-CPU machine, the roller being the longest).
+# revolution (about 10 minutes on the 2-CPU machine, the roller being the longest).
 soak:
 	cargo run --release --example soak -- 10000 1000000
 
