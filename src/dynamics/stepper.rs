@@ -233,21 +233,10 @@ fn sample<S: System<N, M>, const N: usize, const M: usize>(
     v: SVector<f64, N>,
     active: Set,
 ) -> Result<Sample<N, M>, DynamicsError> {
-    Ok(sample_and_evaluation(sys, t, q, v, active)?.0)
+    Ok(sample_of(sys.evaluate(t, &q, &v), t, q, v, active)?.0)
 }
 
-/// `sample`, and the evaluation it was made from.
-fn sample_and_evaluation<S: System<N, M>, const N: usize, const M: usize>(
-    sys: &S,
-    t: f64,
-    q: SVector<f64, N>,
-    v: SVector<f64, N>,
-    active: Set,
-) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
-    sample_of(sys.evaluate(t, &q, &v), t, q, v, active)
-}
-
-/// The sample at `(t, q, q̇)` from its evaluation `ev`.
+/// The sample at `(t, q, q̇)` from its evaluation `ev`, and `ev` back (for callers that use it again).
 fn sample_of<const N: usize, const M: usize>(
     ev: Evaluation<N, M>,
     t: f64,
@@ -289,7 +278,7 @@ fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
 ) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
     let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| Ok(acceleration(&sys.evaluate(t, q, v), t, active)?.0);
     let step = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
-    let (s, ev) = sample_and_evaluation(sys, t, step.q, step.v, active)?;
+    let (s, ev) = sample_of(sys.evaluate(t, &step.q, &step.v), t, step.q, step.v, active)?;
     Ok((s, ev, step.last_slopes))
 }
 
@@ -469,7 +458,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// closed constraint: an active one now approaching gets an impact, a pulling one is released.
     fn reexamine(&mut self) -> Result<(), DynamicsError> {
         let s = &self.state;
-        let (state, ev) = sample_and_evaluation(&self.system, s.t, s.q, s.v, self.active)?;
+        let (state, ev) = sample_of(self.system.evaluate(s.t, &s.q, &s.v), s.t, s.q, s.v, self.active)?;
         self.state = state;
         let eps = self.options.gap_tolerance;
         // A free gap a little below −ε_h is closed, not violated: steps end anywhere down to −ε_h,

@@ -331,7 +331,7 @@ fn fuzz_setters(seed: u64, cases: usize) -> usize {
     case
 }
 
-const SEED: u64 = 0x5EED_0F_F1A5_C0DE;
+const SEED: u64 = 0x005E_ED0F_F1A5_C0DE;
 
 /// 1.1·10⁵ cases in an optimized build (`make test` runs `cargo test --release`: a few seconds); a
 /// tenth of them in a debug build, which is about 20 times slower.
