@@ -8,7 +8,7 @@ use nalgebra::Vector3;
 use pistonslap::models::crank_kinematics::SliderCrank;
 use pistonslap::models::crank_linkage::{Linkage, Loads};
 use pistonslap::models::pressure::FourStrokePressure;
-use pistonslap::models::{CrankTrain, EfficiencyTarget, EngineModel, Inputs, Outputs, Parameters};
+use pistonslap::models::{CrankTrain, EfficiencyTarget, EnergyBalance, EngineModel, Inputs, Outputs, Parameters};
 use std::f64::consts::PI;
 
 fn conservative(crank_mode: i32) -> Parameters {

@@ -149,13 +149,6 @@ impl CrankTrain {
         Ok(())
     }
 
-    /// Kinetic plus gravitational potential energy of the links, J.
-    pub fn mechanical_energy(&self) -> f64 {
-        let (phi, phid) = self.state();
-        let (kinetic, potential) = self.engine().linkage.energy(&phi, &phid);
-        kinetic + potential
-    }
-
     /// Corner gaps h_i, m.
     pub fn gaps(&self) -> Vector4<f64> {
         self.engine().linkage.gaps(&self.state().0)

@@ -25,8 +25,11 @@ impl PrescribedCrank {
 }
 
 impl EnergyBalance for CrankTrain {
+    /// Kinetic plus gravitational potential energy of the links.
     fn mechanical_energy(&self) -> f64 {
-        CrankTrain::mechanical_energy(self)
+        let (phi, phid) = self.state();
+        let (kinetic, potential) = self.engine().linkage.energy(&phi, &phid);
+        kinetic + potential
     }
 
     fn power_flows(&self) -> PowerFlows {
