@@ -2,8 +2,9 @@
 //! the multipliers of persistent contact (A&K eqs 15–20 for several constraints) and the small
 //! linear complementarity problems that both the impact law and the sliding law reduce to.
 
+use super::inertia::Inertia;
 use super::Evaluation;
-use nalgebra::{Cholesky, Const, SMatrix, SVector};
+use nalgebra::{Cholesky, SMatrix, SVector};
 
 /// A set of constraints as a bitmask: bit `i` is constraint `i` (serde-friendly, no heap).
 pub(crate) type Set = u32;
@@ -46,9 +47,9 @@ pub(crate) struct Frame<const N: usize, const M: usize> {
 impl<const N: usize, const M: usize> Frame<N, M> {
     /// `None` when the inertia matrix is not positive definite.
     pub fn new(ev: &Evaluation<N, M>) -> Option<Self> {
-        let chol = Cholesky::new(ev.mass)?;
-        let minv_jt = chol.solve(&ev.gap_jacobian.transpose());
-        Some(Self { w: ev.gap_jacobian * minv_jt, minv_jt, free_acc: chol.solve(&ev.force) })
+        let inertia = Inertia::new(&ev.mass)?;
+        let minv_jt = inertia.solve(&ev.gap_jacobian.transpose());
+        Some(Self { w: ev.gap_jacobian * minv_jt, minv_jt, free_acc: inertia.solve(&ev.force) })
     }
 
     /// `ḧ = J q̈ + d` for the acceleration `acc`.
@@ -75,24 +76,24 @@ impl<const N: usize, const M: usize> Frame<N, M> {
 }
 
 /// Acceleration and multipliers with the set `active` held closed (eqs 15–20): `ḧ_A = 0` gives
-/// `W_AA λ_A = −(J_A M⁻¹ f + d_A)`, then `q̈ = M⁻¹ (f + J_Aᵀ λ_A)`; `chol` factors `M` and
+/// `W_AA λ_A = −(J_A M⁻¹ f + d_A)`, then `q̈ = M⁻¹ (f + J_Aᵀ λ_A)`; `inertia` is `M` factored and
 /// `free_acc = M⁻¹ f`. This is most of the integrator's work while the piston slides: with one or
 /// two constraints held only their rows of `W` are formed and solved in closed form, in the
 /// operations (and so to the bit) of the general path, which the frame takes for more. `None`
 /// when the active constraints are dependent.
 pub(crate) fn held_acceleration<const N: usize, const M: usize>(
     ev: &Evaluation<N, M>,
-    chol: &Cholesky<f64, Const<N>>,
+    inertia: &Inertia<N>,
     free_acc: SVector<f64, N>,
     active: Set,
 ) -> Option<(SVector<f64, N>, SVector<f64, M>)> {
     let mut held = members::<M>(active);
     let (Some(a), second, None) = (held.next(), held.next(), held.next()) else {
-        let minv_jt = chol.solve(&ev.gap_jacobian.transpose());
+        let minv_jt = inertia.solve(&ev.gap_jacobian.transpose());
         let lambda = solve_on(&(ev.gap_jacobian * minv_jt), &-Frame::gap_acceleration(ev, &free_acc), active)?;
         return Some((free_acc + minv_jt * lambda, lambda));
     };
-    let column = |i: usize| chol.solve(&ev.gap_jacobian.row(i).transpose());
+    let column = |i: usize| inertia.solve(&ev.gap_jacobian.row(i).transpose());
     let dot = |i: usize, x: &SVector<f64, N>| (1..N).fold(ev.gap_jacobian[(i, 0)] * x[0], |sum, k| sum + ev.gap_jacobian[(i, k)] * x[k]);
     let rhs = |i: usize| -(dot(i, &free_acc) + ev.gap_bias[i]);
     let dependent = |pivot: f64, diagonal: f64| pivot <= DEPENDENT_PIVOT * diagonal;
@@ -198,12 +199,12 @@ mod tests {
                 gap_bias: SVector::from_fn(|_, _| random()),
             };
             let frame = Frame::new(&ev).unwrap();
-            let chol = Cholesky::new(ev.mass).unwrap();
+            let inertia = Inertia::new(&ev.mass).unwrap();
             for active in 1..16_u32 {
                 let lambda = solve_on(&frame.w, &-Frame::gap_acceleration(&ev, &frame.free_acc), active);
                 let general = lambda.map(|lambda| (frame.free_acc + frame.minv_jt * lambda, lambda));
                 assert!(general.is_some() || active.count_ones() > 3, "set {active:b}: three random rows in 3D are independent");
-                assert_eq!(held_acceleration(&ev, &chol, frame.free_acc, active), general, "set {active:b}");
+                assert_eq!(held_acceleration(&ev, &inertia, frame.free_acc, active), general, "set {active:b}");
             }
         }
         let dependent = Evaluation::<2, 2> {
@@ -214,8 +215,8 @@ mod tests {
             gap_time_rate: Vector2::zeros(),
             gap_bias: Vector2::zeros(),
         };
-        let chol = Cholesky::new(dependent.mass).unwrap();
-        assert_eq!(held_acceleration(&dependent, &chol, Vector2::zeros(), 0b11), None);
+        let inertia = Inertia::new(&dependent.mass).unwrap();
+        assert_eq!(held_acceleration(&dependent, &inertia, Vector2::zeros(), 0b11), None);
     }
 
     /// Hand-solved 2×2 LCPs: both active, one active, none.

@@ -20,6 +20,7 @@
 mod contact;
 mod events;
 mod impact;
+mod inertia;
 mod rk4;
 mod stepper;
 mod system;

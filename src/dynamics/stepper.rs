@@ -3,9 +3,10 @@
 
 use super::contact::{bit, contains, held_acceleration, members, select, Frame, Set};
 use super::events::{self, Bracket, EventLocator, Located, Start};
+use super::inertia::Inertia;
 use super::rk4::{self, Hermite5};
 use super::{impact, Evaluation, System};
-use nalgebra::{Cholesky, SVector};
+use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -185,6 +186,10 @@ struct Sample<const N: usize, const M: usize> {
     hd: SVector<f64, M>,
 }
 
+/// A sample with the system's evaluation there (the impact and sliding laws and the drift
+/// projection reuse it), or without one where none is at hand.
+type Evaluated<const N: usize, const M: usize> = (Sample<N, M>, Option<Evaluation<N, M>>);
+
 /// Which function of constraint `i` an event watches.
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Watch {
@@ -218,12 +223,12 @@ fn acceleration<const N: usize, const M: usize>(
     t: f64,
     active: Set,
 ) -> Result<(SVector<f64, N>, SVector<f64, M>), DynamicsError> {
-    let chol = Cholesky::new(ev.mass).ok_or(DynamicsError::SingularMass { time: t })?;
-    let free_acc = chol.solve(&ev.force);
+    let inertia = Inertia::new(&ev.mass).ok_or(DynamicsError::SingularMass { time: t })?;
+    let free_acc = inertia.solve(&ev.force);
     if active == 0 {
         return Ok((free_acc, SVector::zeros()));
     }
-    held_acceleration(ev, &chol, free_acc, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })
+    held_acceleration(ev, &inertia, free_acc, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })
 }
 
 fn sample<S: System<N, M>, const N: usize, const M: usize>(
@@ -258,14 +263,15 @@ fn sample_of<const N: usize, const M: usize>(
     }
 }
 
-/// One RK4 step from `s0` to `t` with the contact set `active` held.
+/// One RK4 step from `s0` to `t` with the contact set `active` held, and the end's evaluation.
 fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     s0: &Sample<N, M>,
     t: f64,
     active: Set,
-) -> Result<Sample<N, M>, DynamicsError> {
-    Ok(rk4_step(sys, s0, t, active)?.0)
+) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
+    let (s, ev, _) = rk4_step(sys, s0, t, active)?;
+    Ok((s, ev))
 }
 
 /// `rk4_to`, with the end's evaluation and the step's last slopes (for `local_error`).
@@ -478,7 +484,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// The RK4 step from the current state towards `t_end`: of the nominal size, or (adaptive) of
     /// the controller's size, shrunk until its local error is within `local_error`; the next
     /// size follows from this step's error (the usual `(tol/err)^¼` rule, bounded growth).
-    fn trial_step(&mut self, t_end: f64) -> Result<Sample<N, M>, DynamicsError> {
+    fn trial_step(&mut self, t_end: f64) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
         let (t0, max, tol) = (self.state.t, self.options.step, self.options.local_error);
         let min = max * MIN_STEP_FRACTION;
         loop {
@@ -489,7 +495,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 return Err(DynamicsError::InvalidArgument { time: t0, reason: "the step is below the time resolution at this time" });
             }
             let (s1, ev, slopes) = rk4_step(&self.system, &self.state, t1, self.active)?;
-            let Some(tol) = tol else { return Ok(s1) };
+            let Some(tol) = tol else { return Ok((s1, ev)) };
             let ratio = local_error(&self.state, (&s1, &ev), slopes, self.active)? / tol;
             if ratio.is_nan() {
                 return Err(DynamicsError::NonFinite { time: t1 });
@@ -500,7 +506,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             if ratio <= 1.0 || size <= min {
                 // A step cut short by `t_end` says nothing against a longer one.
                 self.step_size = if t1 == t_end { next.max(size) } else { next };
-                return Ok(s1);
+                return Ok((s1, ev));
             }
             self.step_size = next;
         }
@@ -508,27 +514,27 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
 
     /// One RK4 step towards `t_end`, stopping at the first event. Returns whether an event was handled.
     fn step(&mut self, t_end: f64) -> Result<bool, DynamicsError> {
-        let s1 = self.trial_step(t_end)?;
+        let (s1, ev1) = self.trial_step(t_end)?;
         let (s0, active) = (&self.state, self.active);
         let dense = Hermite5 { t0: s0.t, dt: s1.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: s1.q, v1: s1.v, a1: s1.acc };
-        match self.first_event(&dense, s1)? {
-            Ok(s1) => {
+        match self.first_event(&dense, (s1, Some(ev1)))? {
+            Ok((s1, ev)) => {
                 self.state = s1;
                 if active != 0 {
-                    self.stabilize()?;
+                    self.stabilize(ev)?;
                 }
                 Ok(false)
             }
-            Err((s, i, watch)) => {
+            Err(((s, mut ev), i, watch)) => {
                 self.state = s;
                 // The event state lies inside a step, off the manifold of the held set by the
                 // step's drift; the impact and sliding laws see the held constraints at rest.
                 if active != 0 {
-                    self.stabilize()?;
+                    ev = self.stabilize(ev)?;
                 }
                 let closed = self.active | bit(i) | select::<M>(|j| self.state.gap[j] <= self.options.gap_tolerance);
                 let release = if watch == Watch::Multiplier { bit(i) } else { 0 };
-                self.settle(closed, release, None)?;
+                self.settle(closed, release, ev)?;
                 Ok(true)
             }
         }
@@ -547,8 +553,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     fn first_event(
         &self,
         dense: &Hermite5<N>,
-        s1: Sample<N, M>,
-    ) -> Result<Result<Sample<N, M>, (Sample<N, M>, usize, Watch)>, DynamicsError> {
+        s1: Evaluated<N, M>,
+    ) -> Result<Result<Evaluated<N, M>, (Evaluated<N, M>, usize, Watch)>, DynamicsError> {
         let (sys, s0, active) = (&self.system, &self.state, self.active);
         let watch_of = |i| if contains(active, i) { Watch::Multiplier } else { Watch::Gap };
         let on_dense = |t: f64, i: usize, w: Watch| -> Result<f64, DynamicsError> {
@@ -566,18 +572,19 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             for i in 0..M {
                 let w = watch_of(i);
                 let tol = self.tolerance(w);
-                let (g0, g1) = (s0.watched(i, w), end.watched(i, w));
-                let dip = w == Watch::Gap && s0.hd[i] < 0.0 && end.hd[i] > 0.0 && g0.min(g1) < 2.0 * (end.t - s0.t) * -s0.hd[i];
+                let e = &end.0;
+                let (g0, g1) = (s0.watched(i, w), e.watched(i, w));
+                let dip = w == Watch::Gap && s0.hd[i] < 0.0 && e.hd[i] > 0.0 && g0.min(g1) < 2.0 * (e.t - s0.t) * -s0.hd[i];
                 if g1 >= -tol && !dip {
                     continue;
                 }
                 let start = match self.locator {
                     EventLocator::DenseOutput => {
                         let rising = w == Watch::Gap && s0.hd[i] > 0.0;
-                        events::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (end.t, g1), tol, rising)?
+                        events::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (e.t, g1), tol, rising)?
                     }
                     EventLocator::StepHalving if g1 < -tol && g0 > 0.0 => {
-                        Some(Start::Within(Bracket { lo: s0.t, g_lo: g0, hi: end.t, g_hi: g1 }))
+                        Some(Start::Within(Bracket { lo: s0.t, g_lo: g0, hi: e.t, g_hi: g1 }))
                     }
                     EventLocator::StepHalving if g1 < -tol => Some(Start::Immediate),
                     EventLocator::StepHalving => None,
@@ -596,30 +603,30 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             }
             let Some((estimate, i, w, start)) = earliest else { return Ok(Ok(end)) };
             let br = match start {
-                Start::Immediate => return Ok(Err((s0.clone(), i, w))),
+                Start::Immediate => return Ok(Err(((s0.clone(), None), i, w))),
                 Start::Within(br) => br,
             };
-            let s = self.locate_on_rk4(br, estimate, i, w)?;
+            let (s, ev) = self.locate_on_rk4(br, estimate, i, w)?;
             let crossed_before = (0..M).any(|j| j != i && s.watched(j, watch_of(j)) < -self.tolerance(watch_of(j)));
             if !crossed_before {
-                return Ok(Err((s, i, w)));
+                return Ok(Err(((s, Some(ev)), i, w)));
             }
-            end = s;
+            end = (s, Some(ev));
         }
         // Only reachable with round-off ties between constraints: take the last located state.
-        let j = (0..M).find(|&j| end.watched(j, watch_of(j)) < 0.0).unwrap_or(0);
+        let j = (0..M).find(|&j| end.0.watched(j, watch_of(j)) < 0.0).unwrap_or(0);
         Ok(Err((end, j, watch_of(j))))
     }
 
     /// The state where `g_i` crosses zero, on the RK4 map from the step start: Illinois started
     /// at the dense-output estimate (usually accepted at once), or bisection (step halving).
-    fn locate_on_rk4(&self, br: Bracket, estimate: f64, i: usize, w: Watch) -> Result<Sample<N, M>, DynamicsError> {
+    fn locate_on_rk4(&self, br: Bracket, estimate: f64, i: usize, w: Watch) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
         let (sys, s0, active) = (&self.system, &self.state, self.active);
         let tol = self.tolerance(w);
-        let mut last: Option<Sample<N, M>> = None;
+        let mut last: Option<(Sample<N, M>, Evaluation<N, M>)> = None;
         let mut g = |t: f64| -> Result<f64, DynamicsError> {
             let s = rk4_to(sys, s0, t, active)?;
-            let gt = s.watched(i, w);
+            let gt = s.0.watched(i, w);
             last = Some(s);
             Ok(gt)
         };
@@ -629,7 +636,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         };
         let t = pick(located, w);
         match last {
-            Some(s) if s.t == t => Ok(s),
+            Some(s) if s.0.t == t => Ok(s),
             _ => rk4_to(sys, s0, t, active),
         }
     }
@@ -637,19 +644,25 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// Keeps active constraints on the manifold against RK4 drift: once `h_A` or `ḣ_A` has drifted
     /// beyond `DRIFT_FRACTION` of its tolerance, one M-metric Newton projection of `q` onto
     /// `h_A = 0` and of `q̇` onto `ḣ_A = 0`. The drift is O(dt⁵) per step, so the order of the
-    /// method is kept, and most steps need no projection (nor the two evaluations it costs).
-    fn stabilize(&mut self) -> Result<(), DynamicsError> {
+    /// method is kept, and most steps need no projection (nor the evaluation it costs). `ev`: the
+    /// evaluation at the state, if at hand; returns the one at the state afterwards, likewise.
+    fn stabilize(&mut self, ev: Option<Evaluation<N, M>>) -> Result<Option<Evaluation<N, M>>, DynamicsError> {
         let (s, active) = (&self.state, self.active);
         let (gap_tol, rate_tol) = (DRIFT_FRACTION * self.options.gap_tolerance, DRIFT_FRACTION * self.options.velocity_tolerance);
         if members::<M>(active).all(|i| s.gap[i].abs() <= gap_tol && s.hd[i].abs() <= rate_tol) {
-            return Ok(());
+            return Ok(ev);
         }
-        let (_, frame) = frame_at(&self.system, s.t, &s.q, &s.v)?;
+        let frame = match ev {
+            Some(ev) => Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: s.t })?,
+            None => frame_at(&self.system, s.t, &s.q, &s.v)?.1,
+        };
         let dependent = DynamicsError::DependentContacts { time: s.t, constraints: active };
         let (dq, _) = frame.projection(&s.gap, active).ok_or(dependent.clone())?;
         let (dv, _) = frame.projection(&s.hd, active).ok_or(dependent)?;
-        self.state = sample(&self.system, s.t, s.q + dq, s.v + dv, active)?;
-        Ok(())
+        let (q, v) = (s.q + dq, s.v + dv);
+        let (state, ev) = sample_of(self.system.evaluate(s.t, &q, &v), s.t, q, v, active)?;
+        self.state = state;
+        Ok(Some(ev))
     }
 
     /// Records one event per constraint of `set` at the current configuration; the first carries
