@@ -11,6 +11,7 @@ mod energy_balance;
 pub mod pressure;
 mod roller;
 mod roller_forcing;
+mod small_angle;
 
 pub use crank_efficiency::{EfficiencyCalibration, EfficiencyTarget};
 pub use crank_train::CrankTrain;
