@@ -238,18 +238,19 @@ fn sample<S: System<N, M>, const N: usize, const M: usize>(
     v: SVector<f64, N>,
     active: Set,
 ) -> Result<Sample<N, M>, DynamicsError> {
-    Ok(sample_of(sys.evaluate(t, &q, &v), t, q, v, active)?.0)
+    sample_of(&sys.evaluate(t, &q, &v), t, q, v, active)
 }
 
-/// The sample at `(t, q, q̇)` from its evaluation `ev`, and `ev` back (for callers that use it again).
+/// The sample at `(t, q, q̇)` from its evaluation `ev` (borrowed: callers use it again, and a
+/// moved evaluation is a copy that showed in the profile).
 fn sample_of<const N: usize, const M: usize>(
-    ev: Evaluation<N, M>,
+    ev: &Evaluation<N, M>,
     t: f64,
     q: SVector<f64, N>,
     v: SVector<f64, N>,
     active: Set,
-) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
-    let (acc, lambda) = acceleration(&ev, t, active)?;
+) -> Result<Sample<N, M>, DynamicsError> {
+    let (acc, lambda) = acceleration(ev, t, active)?;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd };
     let finite = |x: &[f64]| x.iter().all(|v| v.is_finite());
@@ -257,7 +258,7 @@ fn sample_of<const N: usize, const M: usize>(
         .into_iter()
         .all(finite)
     {
-        Ok((s, ev))
+        Ok(s)
     } else {
         Err(DynamicsError::NonFinite { time: t })
     }
@@ -284,7 +285,8 @@ fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
 ) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
     let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| Ok(acceleration(&sys.evaluate(t, q, v), t, active)?.0);
     let step = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
-    let (s, ev) = sample_of(sys.evaluate(t, &step.q, &step.v), t, step.q, step.v, active)?;
+    let ev = sys.evaluate(t, &step.q, &step.v);
+    let s = sample_of(&ev, t, step.q, step.v, active)?;
     Ok((s, ev, step.last_slopes))
 }
 
@@ -464,7 +466,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// closed constraint: an active one now approaching gets an impact, a pulling one is released.
     fn reexamine(&mut self) -> Result<(), DynamicsError> {
         let s = &self.state;
-        let (state, ev) = sample_of(self.system.evaluate(s.t, &s.q, &s.v), s.t, s.q, s.v, self.active)?;
+        let ev = self.system.evaluate(s.t, &s.q, &s.v);
+        let state = sample_of(&ev, s.t, s.q, s.v, self.active)?;
         self.state = state;
         let eps = self.options.gap_tolerance;
         // A free gap a little below −ε_h is closed, not violated: steps end anywhere down to −ε_h,
@@ -660,7 +663,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let (dq, _) = frame.projection(&s.gap, active).ok_or(dependent.clone())?;
         let (dv, _) = frame.projection(&s.hd, active).ok_or(dependent)?;
         let (q, v) = (s.q + dq, s.v + dv);
-        let (state, ev) = sample_of(self.system.evaluate(s.t, &q, &v), s.t, q, v, active)?;
+        let ev = self.system.evaluate(s.t, &q, &v);
+        let state = sample_of(&ev, s.t, q, v, active)?;
         self.state = state;
         Ok(Some(ev))
     }
@@ -756,7 +760,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.record(EventKind::Release, was_active & !support, &hd, &hd, &SVector::zeros(), SVector::zeros());
         self.active = support;
         // Nothing held: q and q̇ are those `ev` was made at (after any impact).
-        self.state = if support == 0 { sample_of(ev, t, q, v, 0)?.0 } else { sample(&self.system, t, q_new, v_new, support)? };
+        self.state = if support == 0 { sample_of(&ev, t, q, v, 0)? } else { sample(&self.system, t, q_new, v_new, support)? };
         Ok(())
     }
 }

@@ -181,7 +181,7 @@ impl Linkage {
     }
 
     /// [`Self::evaluate`] from the angles' sines and cosines.
-    #[inline]
+    #[inline(always)]
     pub fn evaluate_with(&self, trig: &Trig, phid: &Vector3<f64>, loads: Loads) -> Evaluation<3, 4> {
         let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
         let k = &self.terms;
