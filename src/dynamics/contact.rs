@@ -96,60 +96,50 @@ pub(crate) fn held_acceleration<const N: usize, const M: usize>(
     let column = |i: usize| inertia.solve(&ev.gap_jacobian.row(i).transpose());
     let dot = |i: usize, x: &SVector<f64, N>| (1..N).fold(ev.gap_jacobian[(i, 0)] * x[0], |sum, k| sum + ev.gap_jacobian[(i, k)] * x[k]);
     let rhs = |i: usize| -(dot(i, &free_acc) + ev.gap_bias[i]);
+    let dependent = |pivot: f64, diagonal: f64| pivot <= DEPENDENT_PIVOT * diagonal;
     let mut lambda = SVector::<f64, M>::zeros();
     let c_a = column(a);
-    let Some(b) = second else {
-        lambda[a] = solve_one(dot(a, &c_a), rhs(a))?;
-        return Some((free_acc + c_a * lambda[a], lambda));
-    };
-    let c_b = column(b);
-    [lambda[a], lambda[b]] = solve_two([dot(a, &c_a), dot(b, &c_a), dot(b, &c_b)], [rhs(a), rhs(b)])?;
-    Some((free_acc + (c_a * lambda[a] + c_b * lambda[b]), lambda))
-}
-
-/// `w x = r` for one constraint, in the operations of the padded Cholesky solve (`solve_on`), so
-/// to the bit what it gives for a set of one. `None` unless `w > 0` (a NaN goes on, to be refused
-/// as non-finite by the caller).
-fn solve_one(w: f64, r: f64) -> Option<f64> {
-    if w <= 0.0 {
-        return None;
-    }
-    let l = w.sqrt();
-    Some(r / l / l)
-}
-
-/// `[w_aa w_ba; w_ba w_bb] x = r` for two constraints `a < b`, likewise to the bit what the
-/// padded Cholesky solve gives for a set of two; `None` when they are dependent (`DEPENDENT_PIVOT`).
-fn solve_two([w_aa, w_ba, w_bb]: [f64; 3], [r_a, r_b]: [f64; 2]) -> Option<[f64; 2]> {
+    let w_aa = dot(a, &c_a);
+    // (A NaN goes on, to be refused as non-finite by the caller.)
     if w_aa <= 0.0 {
         return None;
     }
     let l_aa = w_aa.sqrt();
+    let Some(b) = second else {
+        lambda[a] = rhs(a) / l_aa / l_aa;
+        return Some((free_acc + c_a * lambda[a], lambda));
+    };
+    let c_b = column(b);
+    let (w_ba, w_bb) = (dot(b, &c_a), dot(b, &c_b));
     let l_ba = w_ba / l_aa;
     let pivot = w_bb - l_ba * l_ba;
-    if pivot <= DEPENDENT_PIVOT * w_bb {
+    if dependent(pivot, w_bb) {
         return None;
     }
     let l_bb = pivot.sqrt();
-    let y_a = r_a / l_aa;
-    let x_b = (r_b - l_ba * y_a) / l_bb / l_bb;
-    Some([(y_a - l_ba * x_b) / l_aa, x_b])
+    let y_a = rhs(a) / l_aa;
+    let y_b = (rhs(b) - l_ba * y_a) / l_bb;
+    lambda[b] = y_b / l_bb;
+    lambda[a] = (y_a - l_ba * lambda[b]) / l_aa;
+    Some((free_acc + (c_a * lambda[a] + c_b * lambda[b]), lambda))
 }
 
 /// Solves `W_SS x_S = r_S` with `x = 0` outside `S`, without heap: the rows and columns outside
-/// `S` are replaced by the identity (sets of up to two in closed form, to the bit the same).
-/// `None` when `W_SS` is singular.
+/// `S` are replaced by the identity. `None` when `W_SS` is singular.
 pub(crate) fn solve_on<const M: usize>(w: &SMatrix<f64, M, M>, r: &SVector<f64, M>, set: Set) -> Option<SVector<f64, M>> {
+    // No constraint or one (most calls, from the impact and sliding laws): the factor's operations
+    // written out, to the bit the same.
     let mut x = SVector::<f64, M>::zeros();
     let mut indices = members::<M>(set);
-    match (indices.next(), indices.next(), indices.next()) {
-        (None, ..) => return Some(x),
-        (Some(a), None, _) => {
-            x[a] = solve_one(w[(a, a)], r[a])?;
-            return Some(x);
-        }
-        (Some(a), Some(b), None) => {
-            [x[a], x[b]] = solve_two([w[(a, a)], w[(b, a)], w[(b, b)]], [r[a], r[b]])?;
+    match (indices.next(), indices.next()) {
+        (None, _) => return Some(x),
+        (Some(a), None) => {
+            let w_aa = w[(a, a)];
+            if !(w_aa > 0.0) {
+                return None;
+            }
+            let l = w_aa.sqrt();
+            x[a] = r[a] / l / l;
             return Some(x);
         }
         _ => {}
