@@ -135,7 +135,7 @@ pub(crate) fn solve_on<const M: usize>(w: &SMatrix<f64, M, M>, r: &SVector<f64, 
         (None, _) => return Some(x),
         (Some(a), None) => {
             let w_aa = w[(a, a)];
-            if !(w_aa > 0.0) {
+            if w_aa.is_nan() || w_aa <= 0.0 {
                 return None;
             }
             let l = w_aa.sqrt();
