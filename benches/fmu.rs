@@ -107,13 +107,14 @@ fn main() {
     // Without contact (a wide bore) and with a fixed step (the FMU's is adaptive, its count not
     // seen from outside) every step is a plain RK4 step: wall time per step, through the model.
     let plain = median((0..10 * RUNS).map(|_| plain_steps(40) / 40.0).collect());
+    let ghz = ghz();
     println!(
         "crank train, one fixed RK4 step without contact: {:.2} µs; floating-point work ≈ {FLOPS_PER_STEP} flops \
          (at 2 flops per cycle and {:.1} GHz: {:.2} µs), {:.1}× that limit",
         plain * 1e6,
-        GHZ,
-        FLOPS_PER_STEP as f64 / (2.0 * GHZ * 1e3),
-        plain * 1e6 / (FLOPS_PER_STEP as f64 / (2.0 * GHZ * 1e3))
+        ghz,
+        FLOPS_PER_STEP as f64 / (2.0 * ghz * 1e3),
+        plain * 1e6 / (FLOPS_PER_STEP as f64 / (2.0 * ghz * 1e3))
     );
     thesis_study();
 }
@@ -134,12 +135,19 @@ fn plain_steps(steps: usize) -> f64 {
 /// Work of one RK4 step of the prescribed-crank train, counted by hand (a multiply-add = 2):
 /// per evaluation, linkage (3×3 inertia from three 2×3 link Jacobians ≈ 110, forces and damping
 /// ≈ 40, four gaps with their Jacobian and bias ≈ 60, pressure curve ≈ 40 plus pow/exp), the
-/// Delassus frame (2×2 Cholesky and solves against Jᵀ and f ≈ 40, W = J M⁻¹Jᵀ ≈ 64, Jᵀ ≈ 0) and
+/// Delassus frame (2×2 inverse and products with Jᵀ and f ≈ 40, W = J M⁻¹Jᵀ ≈ 64, Jᵀ ≈ 0) and
 /// three sin/cos pairs (≈ 20 each as polynomial work): ≈ 420; four evaluations per step (three
 /// stages and the end sample) plus the stage updates (≈ 40) ≈ 1700.
 const FLOPS_PER_STEP: u64 = 1700;
-/// Nominal clock of the machine (lscpu reports BogoMIPS 4600, i.e. 2.3 GHz).
-const GHZ: f64 = 2.3;
+
+/// Nominal clock of the machine, GHz: half its BogoMIPS (what the kernel calibrates its delay
+/// loop to, two per cycle on x86), or 2.3 where /proc/cpuinfo does not tell.
+fn ghz() -> f64 {
+    let bogomips = std::fs::read_to_string("/proc/cpuinfo")
+        .ok()
+        .and_then(|s| s.lines().find(|l| l.to_lowercase().starts_with("bogomips")).and_then(|l| l.split(':').nth(1)?.trim().parse::<f64>().ok()));
+    bogomips.map_or(2.3, |b| b / 2000.0)
+}
 
 /// The thesis study: THESIS_RUNS' 18 (λ, ρ) cases at e = 0.9 (python/pistonslap/analysis.py),
 /// thesis units (l = 1, M = 1, Ω = 1, roller_forcing = 1). To keep the bench short each case runs

@@ -56,6 +56,19 @@ impl<const N: usize> Hermite5<N> {
     /// `(q, q̇)` at time `t ∈ [t0, t0 + dt]`.
     pub fn at(&self, t: f64) -> (SVector<f64, N>, SVector<f64, N>) {
         let (dt, s) = (self.dt, (t - self.t0) / self.dt);
+        let (s2, s3, s4) = (s * s, s * s * s, s * s * s * s);
+        let d3 = 30.0 * s2 - 60.0 * s3 + 30.0 * s4;
+        let d1 = 1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4;
+        let d2 = s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4;
+        let d4 = -12.0 * s2 + 28.0 * s3 - 15.0 * s4;
+        let d5 = 1.5 * s2 - 4.0 * s3 + 2.5 * s4;
+        let v = (self.q1 - self.q0) * (d3 / dt) + self.v0 * d1 + self.v1 * d4 + (self.a0 * d2 + self.a1 * d5) * dt;
+        (self.position(t), v)
+    }
+
+    /// `q` alone at time `t` (the gap scans need no velocity: half the work of [`Self::at`]).
+    pub fn position(&self, t: f64) -> SVector<f64, N> {
+        let (dt, s) = (self.dt, (t - self.t0) / self.dt);
         let (s2, s3) = (s * s, s * s * s);
         let (s4, s5) = (s3 * s, s3 * s2);
         let h3 = 10.0 * s3 - 15.0 * s4 + 6.0 * s5;
@@ -63,15 +76,7 @@ impl<const N: usize> Hermite5<N> {
         let h2 = 0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5;
         let h4 = -4.0 * s3 + 7.0 * s4 - 3.0 * s5;
         let h5 = 0.5 * s3 - s4 + 0.5 * s5;
-        let d3 = 30.0 * s2 - 60.0 * s3 + 30.0 * s4;
-        let d1 = 1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4;
-        let d2 = s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4;
-        let d4 = -12.0 * s2 + 28.0 * s3 - 15.0 * s4;
-        let d5 = 1.5 * s2 - 4.0 * s3 + 2.5 * s4;
-        let dq = self.q1 - self.q0;
-        let q = self.q0 + dq * h3 + (self.v0 * h1 + self.v1 * h4) * dt + (self.a0 * h2 + self.a1 * h5) * (dt * dt);
-        let v = dq * (d3 / dt) + self.v0 * d1 + self.v1 * d4 + (self.a0 * d2 + self.a1 * d5) * dt;
-        (q, v)
+        self.q0 + (self.q1 - self.q0) * h3 + (self.v0 * h1 + self.v1 * h4) * dt + (self.a0 * h2 + self.a1 * h5) * (dt * dt)
     }
 }
 

@@ -467,8 +467,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     fn reexamine(&mut self) -> Result<(), DynamicsError> {
         let s = &self.state;
         let ev = self.system.evaluate(s.t, &s.q, &s.v);
-        let state = sample_of(&ev, s.t, s.q, s.v, self.active)?;
-        self.state = state;
+        self.state = sample_of(&ev, s.t, s.q, s.v, self.active)?;
         let eps = self.options.gap_tolerance;
         // A free gap a little below −ε_h is closed, not violated: steps end anywhere down to −ε_h,
         // and the drift projection of the active set then moves the others by round-off
@@ -561,10 +560,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let (sys, s0, active) = (&self.system, &self.state, self.active);
         let watch_of = |i| if contains(active, i) { Watch::Multiplier } else { Watch::Gap };
         let on_dense = |t: f64, i: usize, w: Watch| -> Result<f64, DynamicsError> {
-            let (q, v) = dense.at(t);
             match w {
-                Watch::Gap => Ok(sys.gaps(t, &q)[i]),
-                Watch::Multiplier => Ok(sample(sys, t, q, v, active)?.lambda[i]),
+                Watch::Gap => Ok(sys.gaps(t, &dense.position(t))[i]),
+                Watch::Multiplier => {
+                    let (q, v) = dense.at(t);
+                    Ok(sample(sys, t, q, v, active)?.lambda[i])
+                }
             }
         };
         let mut end = s1;
