@@ -193,6 +193,7 @@ pub(crate) fn solve_lcp<const M: usize>(w: &SMatrix<f64, M, M>, b: &SVector<f64,
 
 #[cfg(test)]
 mod tests {
+    use super::super::test_random::{positive_definite, uniform};
     use super::*;
     use nalgebra::{Matrix2, Vector2};
 
@@ -200,15 +201,10 @@ mod tests {
     /// the bit (so taking it changed no trajectory), and refuses dependent sets like it.
     #[test]
     fn held_acceleration_is_the_general_solve() {
-        let mut seed = 12345_u64;
-        let mut random = move || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut random = uniform(12345);
         for _ in 0..200 {
-            let l = SMatrix::<f64, 3, 3>::from_fn(|i, j| if i == j { 1.0 + random().abs() } else if i > j { random() } else { 0.0 });
             let ev = Evaluation::<3, 4> {
-                mass: l * l.transpose(),
+                mass: positive_definite(&mut random),
                 force: SVector::from_fn(|_, _| random()),
                 gap: SVector::zeros(),
                 gap_jacobian: SMatrix::from_fn(|_, _| random()),

@@ -55,6 +55,7 @@ impl<const N: usize> Inertia<N> {
 
 #[cfg(test)]
 mod tests {
+    use super::super::test_random::{positive_definite, uniform};
     use super::*;
     use nalgebra::{Matrix1, Matrix2, Matrix3, SVector};
 
@@ -66,16 +67,10 @@ mod tests {
     /// The crank train's and random well-conditioned inertia matrices are inverted to round-off.
     #[test]
     fn inverts_positive_definite_matrices() {
-        let mut seed = 7_u64;
-        let mut random = move || {
-            seed = seed.wrapping_mul(6364136223846793005).wrapping_add(1442695040888963407);
-            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut random = uniform(7);
         for _ in 0..100 {
-            let l3 = Matrix3::from_fn(|i, j| if i == j { 1.0 + random().abs() } else if i > j { random() } else { 0.0 });
-            assert!(inverse_error(l3 * l3.transpose()) < 1e-14);
-            let l2 = Matrix2::from_fn(|i, j| if i == j { 1.0 + random().abs() } else if i > j { random() } else { 0.0 });
-            assert!(inverse_error(l2 * l2.transpose()) < 1e-14);
+            assert!(inverse_error(positive_definite::<3>(&mut random)) < 1e-14);
+            assert!(inverse_error(positive_definite::<2>(&mut random)) < 1e-14);
         }
         // Rod and piston of the default crank train (their masses differ by three decades).
         assert!(inverse_error(Matrix2::new(0.0291, 0.0006, 0.0006, 0.00104)) < 1e-14);

@@ -24,6 +24,8 @@ mod inertia;
 mod rk4;
 mod stepper;
 mod system;
+#[cfg(test)]
+mod test_random;
 pub mod testbeds;
 
 pub use events::EventLocator;
