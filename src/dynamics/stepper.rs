@@ -206,13 +206,15 @@ impl<const N: usize, const M: usize> Sample<N, M> {
     }
 }
 
+/// The evaluation at `(t, q, q̇)` and its contact frame; `known`: that evaluation, if at hand.
 fn frame_at<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     t: f64,
     q: &SVector<f64, N>,
     v: &SVector<f64, N>,
+    known: Option<Evaluation<N, M>>,
 ) -> Result<(Evaluation<N, M>, Frame<N, M>), DynamicsError> {
-    let ev = sys.evaluate(t, q, v);
+    let ev = known.unwrap_or_else(|| sys.evaluate(t, q, v));
     let frame = Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: t })?;
     Ok((ev, frame))
 }
@@ -656,10 +658,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         if members::<M>(active).all(|i| s.gap[i].abs() <= gap_tol && s.hd[i].abs() <= rate_tol) {
             return Ok(ev);
         }
-        let frame = match ev {
-            Some(ev) => Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: s.t })?,
-            None => frame_at(&self.system, s.t, &s.q, &s.v)?.1,
-        };
+        let (_, frame) = frame_at(&self.system, s.t, &s.q, &s.v, ev)?;
         let dependent = DynamicsError::DependentContacts { time: s.t, constraints: active };
         let (dq, _) = frame.projection(&s.gap, active).ok_or(dependent.clone())?;
         let (dv, _) = frame.projection(&s.hd, active).ok_or(dependent)?;
@@ -694,13 +693,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let Sample { t, q, mut v, .. } = self.state;
         let was_active = self.active;
         let opts = self.options.clone();
-        let (mut ev, mut frame) = match known {
-            Some(ev) => {
-                let frame = Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: t })?;
-                (ev, frame)
-            }
-            None => frame_at(&self.system, t, &q, &v)?,
-        };
+        let (mut ev, mut frame) = frame_at(&self.system, t, &q, &v, known)?;
         let mut hd = ev.gap_jacobian * v + ev.gap_time_rate;
 
         let mut approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
@@ -722,7 +715,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 let pushed = !was_active & select::<M>(|i| impulse[i] * frame.w[(i, i)] > opts.velocity_tolerance);
                 self.record(EventKind::Impact, closed & (approaching | pushed), &hd, &hd_plus, &lost, impulse);
                 (v, hd) = (v_plus, hd_plus);
-                (ev, frame) = frame_at(&self.system, t, &q, &v)?;
+                (ev, frame) = frame_at(&self.system, t, &q, &v, None)?;
                 impacted |= approaching;
             }
 
