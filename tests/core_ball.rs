@@ -84,3 +84,17 @@ fn ball_at_rest_starts_in_contact() {
     assert!((s.multipliers()[0] - 1.5 * G).abs() < 1e-12);
     assert_eq!(s.position()[0], 0.0);
 }
+
+/// The work counts of a fixed-step run: ⌊t₁/h⌋ + 1 steps to the impact (the last cut short by
+/// it), ⌈(T − t₁)/h⌉ after it, one event located inside a step, by one RK4 step (RK4 is exact on the parabola,
+/// so the dense-output estimate lands on the floor at once), nothing rejected.
+#[test]
+fn counts_the_steps_of_the_closed_form() {
+    let (h, end) = (1e-3, 1.0);
+    let mut s = drop(1.0, h);
+    s.advance(end).unwrap();
+    let t1 = impact_time(1.0, 0);
+    let expected = (t1 / h).floor() + 1.0 + ((end - t1) / h).ceil();
+    let counts = s.counts();
+    assert_eq!((counts.accepted as f64, counts.rejected, counts.located, counts.locating), (expected, 0, 1, 1), "{counts:?}");
+}

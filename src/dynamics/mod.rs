@@ -29,5 +29,5 @@ mod test_random;
 pub mod testbeds;
 
 pub use events::EventLocator;
-pub use stepper::{DynamicsError, Event, EventKind, Stepper, StepperOptions, DEFAULT_EVENT_BUDGET, ZENO_APEX_FACTOR};
+pub use stepper::{DynamicsError, Event, EventKind, StepCounts, Stepper, StepperOptions, DEFAULT_EVENT_BUDGET, ZENO_APEX_FACTOR};
 pub use system::{Evaluation, System};

@@ -8,6 +8,7 @@ use super::rk4::{self, Hermite5};
 use super::{impact, Evaluation, System};
 use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
+use std::cell::Cell;
 use std::fmt;
 
 /// Zeno guard: after an impact a closed constraint whose free flight would rise no higher than
@@ -108,6 +109,20 @@ pub struct Event<const N: usize, const M: usize> {
     /// first of them, zero on the others, so that sums over the record count each once. Zero for
     /// a release. With them `Δq̇ = M⁻¹ Jᵀ Λ` and the work of moving constraints `−Λ·∂h/∂t`.
     pub impulses: SVector<f64, M>,
+}
+
+/// The work `Stepper::advance` has done since the stepper was made (or restored: the counts are
+/// not part of its state): what sets the run time, counted rather than timed.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct StepCounts {
+    /// RK4 steps the step controller accepted, the one each event cuts short included.
+    pub accepted: u64,
+    /// RK4 steps it rejected for their local error and repeated shorter.
+    pub rejected: u64,
+    /// Events located inside a step: each needs at least one more RK4 step, landing on it.
+    pub located: u64,
+    /// RK4 steps that located them on the RK4 map (from the start of the step they lie in).
+    pub locating: u64,
 }
 
 /// What the core cannot resolve, as a value. Constraint sets are bitmasks (bit i = constraint i).
@@ -326,6 +341,9 @@ pub struct Stepper<S, const N: usize, const M: usize> {
     active: u32,
     state: Sample<N, M>,
     events: Vec<Event<N, M>>,
+    /// A cell: the event search that takes the locating steps only reads the stepper.
+    #[serde(skip)]
+    counts: Cell<StepCounts>,
 }
 
 impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
@@ -352,6 +370,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             active: 0,
             state,
             events: Vec::new(),
+            counts: Cell::default(),
         };
         stepper.reexamine()?;
         Ok(stepper)
@@ -426,6 +445,14 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     pub fn events(&self) -> &[Event<N, M>] {
         &self.events
     }
+    pub fn counts(&self) -> StepCounts {
+        self.counts.get()
+    }
+    fn count(&self, add: impl FnOnce(&mut StepCounts)) {
+        let mut counts = self.counts.get();
+        add(&mut counts);
+        self.counts.set(counts);
+    }
     pub fn clear_events(&mut self) {
         self.events.clear();
     }
@@ -499,7 +526,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 return Err(DynamicsError::InvalidArgument { time: t0, reason: "the step is below the time resolution at this time" });
             }
             let (s1, ev, slopes) = rk4_step(&self.system, &self.state, t1, self.active)?;
-            let Some(tol) = tol else { return Ok((s1, ev)) };
+            let Some(tol) = tol else {
+                self.count(|c| c.accepted += 1);
+                return Ok((s1, ev));
+            };
             let ratio = local_error(&self.state, (&s1, &ev), slopes, self.active)? / tol;
             if ratio.is_nan() {
                 return Err(DynamicsError::NonFinite { time: t1 });
@@ -510,8 +540,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             if ratio <= 1.0 || size <= min {
                 // A step cut short by `t_end` says nothing against a longer one.
                 self.step_size = if t1 == t_end { next.max(size) } else { next };
+                self.count(|c| c.accepted += 1);
                 return Ok((s1, ev));
             }
+            self.count(|c| c.rejected += 1);
             self.step_size = next;
         }
     }
@@ -630,8 +662,13 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let (sys, s0, active) = (&self.system, &self.state, self.active);
         let tol = self.tolerance(w);
         let mut last: Option<(Sample<N, M>, Evaluation<N, M>)> = None;
+        self.count(|c| c.located += 1);
+        let locating = |t: f64| {
+            self.count(|c| c.locating += 1);
+            rk4_to(sys, s0, t, active)
+        };
         let mut g = |t: f64| -> Result<f64, DynamicsError> {
-            let s = rk4_to(sys, s0, t, active)?;
+            let s = locating(t)?;
             let gt = s.0.watched(i, w);
             last = Some(s);
             Ok(gt)
@@ -643,7 +680,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let t = pick(located, w);
         match last {
             Some(s) if s.0.t == t => Ok(s),
-            _ => rk4_to(sys, s0, t, active),
+            _ => locating(t),
         }
     }
 

@@ -4,7 +4,7 @@
 use super::crank_drive::{Engine, FreeCrank, PrescribedCrank};
 use super::crank_kinematics::SliderCrank;
 use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
-use crate::dynamics::{Event, EventKind, Stepper, StepperOptions};
+use crate::dynamics::{Event, EventKind, StepCounts, Stepper, StepperOptions};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -159,6 +159,14 @@ impl CrankTrain {
         match &self.drive {
             Drive::Prescribed(s) => (s.multipliers(), std::array::from_fn(|i| s.in_contact(i))),
             Drive::Free(s) => (s.multipliers(), std::array::from_fn(|i| s.in_contact(i))),
+        }
+    }
+
+    /// The integrator's work so far (see `StepCounts`).
+    pub fn step_counts(&self) -> StepCounts {
+        match &self.drive {
+            Drive::Prescribed(s) => s.counts(),
+            Drive::Free(s) => s.counts(),
         }
     }
 
