@@ -149,9 +149,10 @@ fn least_work(cycle: f64, plain: f64) {
     let per_cycle = |n: u64| n as f64 / cycles;
     let least = per_cycle(c.accepted + c.located);
     println!(
-        "crank train, default case at 10 ms steps, per cycle: {:.0} events recorded; RK4 steps {:.0} accepted, {:.0} rejected, \
+        "crank train, default case at {:.0} ms steps, per cycle: {:.0} events recorded; RK4 steps {:.0} accepted, {:.0} rejected, \
          {:.0} locating the {:.0} events found inside a step; the least ({:.0} accepted + one landing per located event) at the \
          plain step's cost and nothing else: {:.3} ms per cycle, at most {:.0}× real time",
+        h * 1e3,
         per_cycle(events.len() as u64),
         per_cycle(c.accepted),
         per_cycle(c.rejected),

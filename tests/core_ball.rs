@@ -86,8 +86,8 @@ fn ball_at_rest_starts_in_contact() {
 }
 
 /// The work counts of a fixed-step run: ⌊t₁/h⌋ + 1 steps to the impact (the last cut short by
-/// it), ⌈(T − t₁)/h⌉ after it, one event located inside a step, by one RK4 step (RK4 is exact on the parabola,
-/// so the dense-output estimate lands on the floor at once), nothing rejected.
+/// it), ⌈(T − t₁)/h⌉ after it, one event located inside a step, by one RK4 step (RK4 is exact on
+/// the parabola, so the dense-output estimate lands on the floor at once), nothing rejected.
 #[test]
 fn counts_the_steps_of_the_closed_form() {
     let (h, end) = (1e-3, 1.0);

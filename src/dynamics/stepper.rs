@@ -526,10 +526,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 return Err(DynamicsError::InvalidArgument { time: t0, reason: "the step is below the time resolution at this time" });
             }
             let (s1, ev, slopes) = rk4_step(&self.system, &self.state, t1, self.active)?;
-            let Some(tol) = tol else {
-                self.count(|c| c.accepted += 1);
-                return Ok((s1, ev));
-            };
+            let Some(tol) = tol else { return Ok((s1, ev)) };
             let ratio = local_error(&self.state, (&s1, &ev), slopes, self.active)? / tol;
             if ratio.is_nan() {
                 return Err(DynamicsError::NonFinite { time: t1 });
@@ -540,7 +537,6 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             if ratio <= 1.0 || size <= min {
                 // A step cut short by `t_end` says nothing against a longer one.
                 self.step_size = if t1 == t_end { next.max(size) } else { next };
-                self.count(|c| c.accepted += 1);
                 return Ok((s1, ev));
             }
             self.count(|c| c.rejected += 1);
@@ -551,6 +547,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// One RK4 step towards `t_end`, stopping at the first event. Returns whether an event was handled.
     fn step(&mut self, t_end: f64) -> Result<bool, DynamicsError> {
         let (s1, ev1) = self.trial_step(t_end)?;
+        self.count(|c| c.accepted += 1);
         let (s0, active) = (&self.state, self.active);
         let dense = Hermite5 { t0: s0.t, dt: s1.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: s1.q, v1: s1.v, a1: s1.acc };
         match self.first_event(&dense, (s1, Some(ev1)))? {
