@@ -6,7 +6,7 @@ use super::events::{self, Bracket, EventLocator, Located, Start};
 use super::inertia::Inertia;
 use super::rk4::{self, Hermite5};
 use super::{impact, Evaluation, System};
-use nalgebra::SVector;
+use nalgebra::{SMatrix, SVector};
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
 use std::fmt;
@@ -240,12 +240,18 @@ fn acceleration<const N: usize, const M: usize>(
     t: f64,
     active: Set,
 ) -> Result<(SVector<f64, N>, SVector<f64, M>), DynamicsError> {
-    let inertia = Inertia::new(&ev.mass).ok_or(DynamicsError::SingularMass { time: t })?;
-    let free_acc = inertia.solve(&ev.force);
+    let (inertia, free_acc) = free_motion(&ev.mass, &ev.force, t)?;
     if active == 0 {
         return Ok((free_acc, SVector::zeros()));
     }
     held_acceleration(ev, &inertia, free_acc, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })
+}
+
+/// `M⁻¹` and the acceleration `M⁻¹ f` with no constraint held.
+fn free_motion<const N: usize>(mass: &SMatrix<f64, N, N>, force: &SVector<f64, N>, t: f64) -> Result<(Inertia<N>, SVector<f64, N>), DynamicsError> {
+    let inertia = Inertia::new(mass).ok_or(DynamicsError::SingularMass { time: t })?;
+    let acc = inertia.solve(force);
+    Ok((inertia, acc))
 }
 
 fn sample<S: System<N, M>, const N: usize, const M: usize>(
@@ -300,7 +306,14 @@ fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     t: f64,
     active: Set,
 ) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
-    let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| Ok(acceleration(&sys.evaluate(t, q, v), t, active)?.0);
+    let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
+        if active == 0 {
+            let (mass, force) = sys.inertia_and_force(t, q, v);
+            Ok(free_motion(&mass, &force, t)?.1)
+        } else {
+            Ok(acceleration(&sys.evaluate(t, q, v), t, active)?.0)
+        }
+    };
     let step = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
     let ev = sys.evaluate(t, &step.q, &step.v);
     let s = sample_of(&ev, t, step.q, step.v, active)?;

@@ -28,6 +28,13 @@ pub trait System<const N: usize, const M: usize> {
     /// Full evaluation at `(t, q, q̇)`; computes each trigonometric function once.
     fn evaluate(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> Evaluation<N, M>;
 
+    /// `M` and `f` alone: all an RK4 stage needs while no constraint is held. A system whose
+    /// constraint terms cost work of their own overrides it; the result must equal `evaluate`'s.
+    fn inertia_and_force(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> (SMatrix<f64, N, N>, SVector<f64, N>) {
+        let ev = self.evaluate(t, q, qd);
+        (ev.mass, ev.force)
+    }
+
     /// `h(q,t)` alone: event location calls this many times.
     fn gaps(&self, t: f64, q: &SVector<f64, N>) -> SVector<f64, M>;
 

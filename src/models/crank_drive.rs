@@ -9,7 +9,7 @@ use super::crank_linkage::{Linkage, Loads, Trig};
 use super::pressure::FourStrokePressure;
 use super::{Inputs, Parameters};
 use crate::dynamics::{Evaluation, System};
-use nalgebra::{Matrix4x2, SVector, Vector2, Vector3, Vector4};
+use nalgebra::{Matrix2, Matrix3, Matrix4x2, SVector, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
 
@@ -106,6 +106,13 @@ impl Engine {
         let loads = Loads { gas_force: self.gas_force_at(&crank), load_torque };
         self.linkage.evaluate_with(&Trig::with_crank((crank.sin, crank.cos), phi), phid, loads)
     }
+
+    /// M and f of [`Self::evaluate`] alone.
+    #[inline(always)]
+    fn inertia_and_force(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> (Matrix3<f64>, Vector3<f64>) {
+        let loads = Loads { gas_force: self.gas_force_at(&crank), load_torque };
+        self.linkage.inertia_and_force_with(&Trig::with_crank((crank.sin, crank.cos), phi), phid, loads)
+    }
 }
 
 /// Rod and piston with the crank turning at a held speed.
@@ -186,6 +193,12 @@ impl System<2, 4> for PrescribedCrank {
         }
     }
 
+    fn inertia_and_force(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Matrix2<f64>, Vector2<f64>) {
+        let (phi, phid) = self.full_state(t, q, qd);
+        let (mass, force) = self.engine.inertia_and_force(&phi, &phid, 0.0, self.crank(phi[0]));
+        (mass.fixed_view::<2, 2>(1, 1).into_owned(), force.fixed_rows::<2>(1).into_owned())
+    }
+
     fn gaps(&self, t: f64, q: &Vector2<f64>) -> Vector4<f64> {
         self.engine.linkage.gaps(&Vector3::new(self.crank_angle(t), q[0], q[1]))
     }
@@ -206,6 +219,10 @@ pub struct FreeCrank {
 impl System<3, 4> for FreeCrank {
     fn evaluate(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> Evaluation<3, 4> {
         self.engine.evaluate(q, qd, self.load_torque, self.engine.crank(q[0]))
+    }
+
+    fn inertia_and_force(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> (Matrix3<f64>, Vector3<f64>) {
+        self.engine.inertia_and_force(q, qd, self.load_torque, self.engine.crank(q[0]))
     }
 
     fn gaps(&self, _t: f64, q: &SVector<f64, 3>) -> Vector4<f64> {
@@ -261,6 +278,19 @@ mod tests {
                 let fresh = PrescribedCrank::new(sys.engine.clone(), 0.1, 0.0, speed);
                 assert_eq!(sys.evaluate(t, &q, &qd), fresh.evaluate(t, &q, &qd), "t {t}, held {held}, speed {speed}");
             }
+        }
+    }
+
+    #[test]
+    fn inertia_and_force_are_those_of_the_full_evaluation() {
+        let sys = prescribed();
+        let free = FreeCrank { engine: sys.engine.clone(), load_torque: 12.0 };
+        for (t, q, qd) in [(0.013, Vector2::new(-0.05, 0.0007), Vector2::new(-28.0, 3.0)), (0.071, Vector2::new(0.2, -0.01), Vector2::new(5.0, -40.0))] {
+            let ev = sys.evaluate(t, &q, &qd);
+            assert_eq!(sys.inertia_and_force(t, &q, &qd), (ev.mass, ev.force));
+            let (phi, phid) = sys.full_state(t, &q, &qd);
+            let ev = free.evaluate(t, &phi, &phid);
+            assert_eq!(free.inertia_and_force(t, &phi, &phid), (ev.mass, ev.force));
         }
     }
 

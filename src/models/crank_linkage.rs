@@ -183,6 +183,32 @@ impl Linkage {
     /// [`Self::evaluate`] from the angles' sines and cosines.
     #[inline(always)]
     pub fn evaluate_with(&self, trig: &Trig, phid: &Vector3<f64>, loads: Loads) -> Evaluation<3, 4> {
+        let (mass, force) = self.inertia_and_force_with(trig, phid, loads);
+        let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
+        let [l1, l2] = self.bodies.links;
+        let (w1, w2, w3) = (phid[0] * phid[0], phid[1] * phid[1], phid[2] * phid[2]);
+        // x_O3 = −l1 s1 − l2 s2 and its second derivative at φ̈ = 0.
+        let (x_pin, pin_bias) = (-l1 * s1 - l2 * s2, l1 * s1 * w1 + l2 * s2 * w2);
+        let (jacobian_1, jacobian_2) = (-l1 * c1, -l2 * c2);
+        Evaluation {
+            mass,
+            force,
+            gap: self.corner_gaps(x_pin, s3, c3),
+            gap_jacobian: nalgebra::Matrix4x3::from_fn(|i, j| {
+                let (z, w, side) = self.bodies.corners[i];
+                side * [jacobian_1, jacobian_2, -(z * c3 + w * s3)][j]
+            }),
+            gap_time_rate: Vector4::zeros(),
+            gap_bias: Vector4::from_fn(|i, _| {
+                let (z, w, side) = self.bodies.corners[i];
+                side * (pin_bias + (z * s3 - w * c3) * w3)
+            }),
+        }
+    }
+
+    /// M and f of [`Self::evaluate_with`] alone (an RK4 stage in flight needs no more).
+    #[inline(always)]
+    pub fn inertia_and_force_with(&self, trig: &Trig, phid: &Vector3<f64>, loads: Loads) -> (Matrix3<f64>, Vector3<f64>) {
         let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
         let k = &self.terms;
         // cos and sin of φi − φj.
@@ -203,23 +229,7 @@ impl Linkage {
             g23 * w3 - g12 * w1 + (k.weight[1] + gas * l2) * s2 + cb3 * piston_pin - cb2 * crank_pin,
             -g13 * w1 - g23 * w2 + k.weight[2] * s3 + (k.weight_offset + gas * self.bodies.pin_offset) * c3 - cb3 * piston_pin,
         );
-        // x_O3 = −l1 s1 − l2 s2 and its second derivative at φ̈ = 0.
-        let (x_pin, pin_bias) = (-l1 * s1 - l2 * s2, l1 * s1 * w1 + l2 * s2 * w2);
-        let (jacobian_1, jacobian_2) = (-l1 * c1, -l2 * c2);
-        Evaluation {
-            mass,
-            force,
-            gap: self.corner_gaps(x_pin, s3, c3),
-            gap_jacobian: nalgebra::Matrix4x3::from_fn(|i, j| {
-                let (z, w, side) = self.bodies.corners[i];
-                side * [jacobian_1, jacobian_2, -(z * c3 + w * s3)][j]
-            }),
-            gap_time_rate: Vector4::zeros(),
-            gap_bias: Vector4::from_fn(|i, _| {
-                let (z, w, side) = self.bodies.corners[i];
-                side * (pin_bias + (z * s3 - w * c3) * w3)
-            }),
-        }
+        (mass, force)
     }
 
     /// Kinetic and gravitational potential energy (zero at the crank axis level), J.
