@@ -1,8 +1,9 @@
 //! `cargo bench --bench fmu`: the FMU through its exported C functions, in process (a Rust host:
 //! the host's own cost stays out of the figures). Real-time factor (simulated s per wall s) of the
 //! default crank-train case at 1 ms and 10 ms communication steps and of the roller variant; the
-//! thesis study's wall time; the cost of one RK4 step against its floating-point work, and the
-//! bound that cost and the default case's count of steps set on its real-time factor.
+//! thesis study's wall time; the cost of one RK4 step against its floating-point work (counted
+//! under callgrind, `fmu/flop_count.rs`), and the bound that cost and the default case's count of
+//! steps set on its real-time factor.
 //! Each figure is the median of several runs.
 
 use pistonslap::dynamics::StepperOptions;
@@ -12,6 +13,9 @@ use pistonslap::fmi::exports::*;
 use pistonslap::fmi::types::{fmi2CallbackFunctions, fmi2CallbackLogger, fmi2Component, Status, FMI2_CO_SIMULATION, FMI2_FALSE};
 use std::ffi::{c_char, c_int, c_void, CString};
 use std::time::Instant;
+
+#[path = "fmu/flop_count.rs"]
+mod flop_count;
 
 const RUNS: usize = 5;
 
@@ -95,7 +99,15 @@ fn real_time_factor(integers: &[(&str, i32)], reals: &[(&str, f64)], stop: f64, 
     median((0..RUNS).map(|_| stop / Host::new(integers, reals).run(stop, h)).collect())
 }
 
+/// The argument that makes this executable only take plain steps (the flop count's child run).
+const PLAIN_STEPS: &str = "--plain-steps";
+
 fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    if let Some(steps) = args.iter().position(|a| a == PLAIN_STEPS).and_then(|i| args.get(i + 1)?.parse().ok()) {
+        plain_steps(steps);
+        return;
+    }
     let cycle = 4.0 * std::f64::consts::PI / 125.66;
     println!("machine: {}", machine());
     for h in [1e-3, 1e-2] {
@@ -109,15 +121,24 @@ fn main() {
     // seen from outside) every step is a plain RK4 step: wall time per step, through the model.
     let plain = median((0..10 * RUNS).map(|_| plain_steps(40) / 40.0).collect());
     let ghz = ghz();
-    println!(
-        "crank train, one fixed RK4 step without contact: {:.2} µs; floating-point work ≈ {FLOPS_PER_STEP} flops \
-         (at 2 flops per cycle and {:.1} GHz: {:.2} µs), {:.1}× that limit",
-        plain * 1e6,
-        ghz,
-        FLOPS_PER_STEP as f64 / (2.0 * ghz * 1e3),
-        plain * 1e6 / (FLOPS_PER_STEP as f64 / (2.0 * ghz * 1e3))
-    );
-    least_work(cycle, plain);
+    let limit = match plain_step_work() {
+        Ok((instructions, flops)) => {
+            let limit = flops / (2.0 * ghz * 1e9);
+            println!(
+                "crank train, one fixed RK4 step without contact: {:.2} µs, {instructions:.0} instructions, {flops:.0} flops \
+                 (counted by callgrind: at 2 flops per cycle and {ghz:.1} GHz {:.2} µs), {:.1}× that limit",
+                plain * 1e6,
+                limit * 1e6,
+                plain / limit
+            );
+            Some(limit)
+        }
+        Err(why) => {
+            println!("crank train, one fixed RK4 step without contact: {:.2} µs (flops not counted: {why})", plain * 1e6);
+            None
+        }
+    };
+    least_work(cycle, plain, limit);
     thesis_study();
 }
 
@@ -138,7 +159,7 @@ fn plain_steps(steps: usize) -> f64 {
 /// would allow if every step cost what a plain one does and nothing else (event search, impact
 /// and sliding resolutions, projections, the FMU) cost anything: a bound the optimizations of
 /// the core cannot pass.
-fn least_work(cycle: f64, plain: f64) {
+fn least_work(cycle: f64, plain: f64, limit: Option<f64>) {
     let (cycles, h) = (10.0, 1e-2);
     let mut model = CrankTrain::new(&Parameters::default(), 0.0).expect("default parameters");
     let (inputs, mut events) = (Inputs::default(), Vec::new());
@@ -148,10 +169,11 @@ fn least_work(cycle: f64, plain: f64) {
     let c = model.step_counts();
     let per_cycle = |n: u64| n as f64 / cycles;
     let least = per_cycle(c.accepted + c.located);
+    let at_limit = limit.map_or(String::new(), |limit| format!("; at the flop limit of a step, {:.0}×", cycle / (least * limit)));
     println!(
         "crank train, default case at {:.0} ms steps, per cycle: {:.0} events recorded; RK4 steps {:.0} accepted, {:.0} rejected, \
          {:.0} locating the {:.0} events found inside a step; the least ({:.0} accepted + one landing per located event) at the \
-         plain step's cost and nothing else: {:.3} ms per cycle, at most {:.0}× real time",
+         plain step's cost and nothing else: {:.3} ms per cycle, at most {:.0}× real time{at_limit}",
         h * 1e3,
         per_cycle(events.len() as u64),
         per_cycle(c.accepted),
@@ -164,13 +186,13 @@ fn least_work(cycle: f64, plain: f64) {
     );
 }
 
-/// Work of one RK4 step of the prescribed-crank train, counted by hand (a multiply-add = 2):
-/// per evaluation, linkage (3×3 inertia from three 2×3 link Jacobians ≈ 110, forces and damping
-/// ≈ 40, four gaps with their Jacobian and bias ≈ 60, pressure curve ≈ 40 plus pow/exp), the
-/// Delassus frame (2×2 inverse and products with Jᵀ and f ≈ 40, W = J M⁻¹Jᵀ ≈ 64, Jᵀ ≈ 0) and
-/// three sin/cos pairs (≈ 20 each as polynomial work): ≈ 420; four evaluations per step (three
-/// stages and the end sample) plus the stage updates (≈ 40) ≈ 1700.
-const FLOPS_PER_STEP: u64 = 1700;
+/// Instructions and flops of one plain step: the difference between runs of 40 and 20 steps
+/// (so that the start-up's work drops out), each counted under callgrind.
+fn plain_step_work() -> Result<(f64, f64), String> {
+    let run = |steps: u32| flop_count::count(&[PLAIN_STEPS.to_string(), steps.to_string()]);
+    let ((i20, f20), (i40, f40)) = (run(20)?, run(40)?);
+    Ok(((i40 - i20) as f64 / 20.0, (f40 - f20) as f64 / 20.0))
+}
 
 /// Nominal clock of the machine, GHz: half its BogoMIPS (what the kernel calibrates its delay
 /// loop to, two per cycle on x86), or 2.3 where /proc/cpuinfo does not tell.
