@@ -265,7 +265,9 @@ fn sample<S: System<N, M>, const N: usize, const M: usize>(
 }
 
 /// The sample at `(t, q, q̇)` from its evaluation `ev` (borrowed: callers use it again, and a
-/// moved evaluation is a copy that showed in the profile).
+/// moved evaluation is a copy that showed in the profile). Inlined, like `rk4_step`, so that the
+/// sample is built where the caller keeps it: returned through `Result`, it was copied by `memcpy`.
+#[inline(always)]
 fn sample_of<const N: usize, const M: usize>(
     ev: &Evaluation<N, M>,
     t: f64,
@@ -300,6 +302,7 @@ fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
 
 /// `rk4_to`, with the end's evaluation and the step's last slopes (for `local_error`).
 #[allow(clippy::type_complexity)]
+#[inline(always)]
 fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     s0: &Sample<N, M>,
