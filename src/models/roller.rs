@@ -60,8 +60,9 @@ pub struct RollerSystem {
 
 impl System<1, 2> for RollerSystem {
     fn evaluate(&self, t: f64, q: &Vector1<f64>, qd: &Vector1<f64>) -> Evaluation<1, 2> {
-        let limit = self.mechanism.psi_max(t, self.rho);
-        let force = self.mechanism.forcing(t, self.lambda) - self.lambda * qd[0] - self.mechanism.stiffness(t) * q[0];
+        let at = self.mechanism.at(t);
+        let limit = at.psi_max(self.rho);
+        let force = at.forcing(self.lambda) - self.lambda * qd[0] - at.stiffness() * q[0];
         Evaluation {
             mass: SMatrix::<f64, 1, 1>::new(self.mechanism.inertia()),
             force: Vector1::new(force),
@@ -73,7 +74,7 @@ impl System<1, 2> for RollerSystem {
     }
 
     fn gaps(&self, t: f64, q: &Vector1<f64>) -> Vector2<f64> {
-        let limit = self.mechanism.psi_max(t, self.rho).value;
+        let limit = self.mechanism.at(t).psi_max(self.rho).value;
         Vector2::new(limit + q[0], limit - q[0])
     }
 
@@ -134,12 +135,12 @@ impl Roller {
 
     /// Metres of lateral motion per radian of ψ, and m/s of normal speed per unit of ḣ in θ-time.
     fn lateral_scale(&self, theta: f64) -> f64 {
-        self.rod_length * self.mechanism().cos_phi(theta).value
+        self.rod_length * self.mechanism().at(theta).cos_phi.value
     }
 
     /// Pin position along the cylinder axis: r cos θ + l cos(φ − ψ).
     fn axial_position(&self, theta: f64, psi: f64) -> f64 {
-        let phi = self.mechanism().rod_angle(theta).value;
+        let phi = self.mechanism().at(theta).rod_angle().value;
         self.crank_radius * theta.cos() + self.rod_length * (phi - psi).cos()
     }
 
@@ -260,7 +261,8 @@ impl EngineModel for Roller {
         let dpsi = self.stepper.velocity()[0];
         let omega = self.crank_speed;
         let mechanism = self.mechanism();
-        let cos_phi = mechanism.cos_phi(theta);
+        let at = mechanism.at(theta);
+        let cos_phi = at.cos_phi;
         let l = self.rod_length;
         // Wall force F = M l Ω² λ_core / Λ (the core's multiplier acts on ψ, the wall on y = l Λ ψ).
         let forces = self.stepper.multipliers() * (self.piston_mass * l * omega * omega / cos_phi.value);
@@ -269,7 +271,7 @@ impl EngineModel for Roller {
         out.piston_tilt = 0.0;
         out.piston_axial = self.axial_position(theta, psi);
         out.crank_angle = theta + 2.0 * PI * self.turns;
-        out.rod_angle = psi - mechanism.rod_angle(theta).value;
+        out.rod_angle = psi - at.rod_angle().value;
         let psi_jet = [psi, dpsi, self.stepper.acceleration()[0]];
         let lambda = self.stepper.system().lambda;
         out.crank_torque = mechanism.drive_torque(theta, psi_jet, lambda) * self.piston_mass * (l * omega).powi(2);

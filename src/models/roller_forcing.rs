@@ -54,36 +54,27 @@ pub struct SliderCrank {
     pub forcing: Forcing,
 }
 
-impl SliderCrank {
+/// The mechanism at one crank angle τ: sin τ, cos τ and Λ = cos φ with its derivatives, computed
+/// once for every term of an evaluation (each term computing its own made sine and cosine a third
+/// of the roller's run time).
+#[derive(Clone, Copy, Debug)]
+pub struct AtAngle {
+    mechanism: SliderCrank,
+    sin: f64,
+    cos: f64,
     /// Λ = cos φ = √(1 − ξ² sin²τ), with Λ' = −ξ² sin 2τ / (2Λ) and Λ'' = −ξ² cos 2τ / Λ − Λ'²/Λ.
-    pub fn cos_phi(&self, tau: f64) -> Jet {
+    pub cos_phi: Jet,
+}
+
+impl SliderCrank {
+    /// The mechanism's terms at crank angle `tau`.
+    pub fn at(&self, tau: f64) -> AtAngle {
         let xi2 = self.xi * self.xi;
         let (s, c) = tau.sin_cos();
         let value = (1.0 - xi2 * s * s).sqrt();
         let d1 = -xi2 * s * c / value;
         let d2 = -xi2 * (c * c - s * s) / value - d1 * d1 / value;
-        Jet { value, d1, d2 }
-    }
-
-    /// φ' = ξ cos τ / Λ and φ'' = (ξ³ − ξ) sin τ / Λ³ (value: φ itself).
-    pub fn rod_angle(&self, tau: f64) -> Jet {
-        let (s, c) = tau.sin_cos();
-        let cos_phi = self.cos_phi(tau).value;
-        Jet {
-            value: (self.xi * s).asin(),
-            d1: self.xi * c / cos_phi,
-            d2: (self.xi.powi(3) - self.xi) * s / cos_phi.powi(3),
-        }
-    }
-
-    /// ψ_max = ρ/Λ (eq 2.14; ψ_min = −ψ_max, eq 2.15) for the dimensionless clearance ρ = Δ/l.
-    pub fn psi_max(&self, tau: f64, rho: f64) -> Jet {
-        let l = self.cos_phi(tau);
-        Jet {
-            value: rho / l.value,
-            d1: -rho * l.d1 / (l.value * l.value),
-            d2: rho * (2.0 * l.d1 * l.d1 / l.value - l.d2) / (l.value * l.value),
-        }
+        AtAngle { mechanism: *self, sin: s, cos: c, cos_phi: Jet { value, d1, d2 } }
     }
 
     /// a of eq 2.13: the rod and roller inertia about the crank pin, over M l².
@@ -91,39 +82,15 @@ impl SliderCrank {
         1.0 + self.alpha / 4.0 + self.beta
     }
 
-    /// c(τ) of eq 2.13: (1 + α/2) ξ (Λ cos τ − ξ sin²τ).
-    pub fn stiffness(&self, tau: f64) -> f64 {
-        let (s, c) = tau.sin_cos();
-        (1.0 + self.alpha / 2.0) * self.xi * (self.cos_phi(tau).value * c - self.xi * s * s)
-    }
-
-    /// f(τ) of eq 2.13 at damping λ = c₂/(M l² Ω).
-    pub fn forcing(&self, tau: f64, lambda: f64) -> f64 {
-        let (s, c) = tau.sin_cos();
-        let cos_phi = self.cos_phi(tau).value;
-        let phi = self.rod_angle(tau);
-        let phi_coefficient = match self.forcing {
-            Forcing::Printed => 1.0 + self.alpha / 4.0 - self.beta,
-            Forcing::Corrected => self.inertia(),
-        };
-        // sin(τ + φ) = Λ sin τ + ξ sin τ cos τ.
-        phi_coefficient * phi.d2 + (1.0 + self.alpha / 2.0) * self.xi * s * (cos_phi + self.xi * c) + lambda * (1.0 + phi.d1)
-    }
-
-    /// ψ'' of free flight (eqs 3.1–3.3): (f − λψ' − cψ)/a.
-    pub fn free_acceleration(&self, tau: f64, psi: f64, dpsi: f64, lambda: f64) -> f64 {
-        (self.forcing(tau, lambda) - lambda * dpsi - self.stiffness(tau) * psi) / self.inertia()
-    }
-
     /// (f_u, f_l) of eq 2.29, linearized like eq 2.13: the dimensionless wall forces F/(M l Ω²) that
     /// keep the roller on ψ = ψ_max (upper wall) or ψ = ψ_min (lower wall); positive = compressive.
     /// The upper wall acts on ψ through ∂y/∂ψ = l cos(φ − ψ) ≈ l Λ, so a ψ_max'' = a ψ''_free − Λ f_u.
     pub fn constraint_forces(&self, tau: f64, lambda: f64, rho: f64) -> (f64, f64) {
-        let a = self.inertia();
-        let cos_phi = self.cos_phi(tau).value;
-        let limit = self.psi_max(tau, rho);
-        let upper = a * (self.free_acceleration(tau, limit.value, limit.d1, lambda) - limit.d2) / cos_phi;
-        let lower = a * (-limit.d2 - self.free_acceleration(tau, -limit.value, -limit.d1, lambda)) / cos_phi;
+        let (a, at) = (self.inertia(), self.at(tau));
+        let cos_phi = at.cos_phi.value;
+        let limit = at.psi_max(rho);
+        let upper = a * (at.free_acceleration(limit.value, limit.d1, lambda) - limit.d2) / cos_phi;
+        let lower = a * (-limit.d2 - at.free_acceleration(-limit.value, -limit.d1, lambda)) / cos_phi;
         (upper, lower)
     }
     /// The region of Fig 2.10 for (λ, ρ), from the signs of f_u, f_l on `samples` crank angles.
@@ -149,11 +116,58 @@ impl SliderCrank {
     /// τ = a u'u'' − k u'' cos(τ + u) + k u'(1 + u') sin(τ + u) + λ (1 + u')², with u = φ − ψ and
     /// k = (1 + α/2) ξ. Exact in ψ; with the printed forcing it is the torque of the corrected physics.
     pub fn drive_torque(&self, tau: f64, psi: [f64; 3], lambda: f64) -> f64 {
-        let phi = self.rod_angle(tau);
+        let phi = self.at(tau).rod_angle();
         let (u, du, ddu) = (phi.value - psi[0], phi.d1 - psi[1], phi.d2 - psi[2]);
         let k = (1.0 + self.alpha / 2.0) * self.xi;
         let (s, c) = (tau + u).sin_cos();
         self.inertia() * du * ddu - k * ddu * c + k * du * (1.0 + du) * s + lambda * (1.0 + du) * (1.0 + du)
+    }
+}
+
+impl AtAngle {
+    /// φ' = ξ cos τ / Λ and φ'' = (ξ³ − ξ) sin τ / Λ³.
+    fn rod_rates(&self) -> (f64, f64) {
+        let (xi, cos_phi) = (self.mechanism.xi, self.cos_phi.value);
+        (xi * self.cos / cos_phi, (xi.powi(3) - xi) * self.sin / cos_phi.powi(3))
+    }
+
+    /// The rod angle φ (value) with φ' and φ''.
+    pub fn rod_angle(&self) -> Jet {
+        let (d1, d2) = self.rod_rates();
+        Jet { value: (self.mechanism.xi * self.sin).asin(), d1, d2 }
+    }
+
+    /// ψ_max = ρ/Λ (eq 2.14; ψ_min = −ψ_max, eq 2.15) for the dimensionless clearance ρ = Δ/l.
+    pub fn psi_max(&self, rho: f64) -> Jet {
+        let l = self.cos_phi;
+        Jet {
+            value: rho / l.value,
+            d1: -rho * l.d1 / (l.value * l.value),
+            d2: rho * (2.0 * l.d1 * l.d1 / l.value - l.d2) / (l.value * l.value),
+        }
+    }
+
+    /// c(τ) of eq 2.13: (1 + α/2) ξ (Λ cos τ − ξ sin²τ).
+    pub fn stiffness(&self) -> f64 {
+        let (m, s, c) = (&self.mechanism, self.sin, self.cos);
+        (1.0 + m.alpha / 2.0) * m.xi * (self.cos_phi.value * c - m.xi * s * s)
+    }
+
+    /// f(τ) of eq 2.13 at damping λ = c₂/(M l² Ω).
+    pub fn forcing(&self, lambda: f64) -> f64 {
+        let (m, s, c) = (&self.mechanism, self.sin, self.cos);
+        let (phi_d1, phi_d2) = self.rod_rates();
+        let phi_coefficient = match m.forcing {
+            Forcing::Printed => 1.0 + m.alpha / 4.0 - m.beta,
+            Forcing::Corrected => m.inertia(),
+        };
+        // sin(τ + φ) = Λ sin τ + ξ sin τ cos τ.
+        phi_coefficient * phi_d2 + (1.0 + m.alpha / 2.0) * m.xi * s * (self.cos_phi.value + m.xi * c) + lambda * (1.0 + phi_d1)
+    }
+
+    /// ψ'' of free flight (eqs 3.1–3.3): (f − λψ' − cψ)/a.
+    pub fn free_acceleration(&self, psi: f64, dpsi: f64, lambda: f64) -> f64 {
+        (self.forcing(lambda) - lambda * dpsi - self.stiffness() * psi) / self.mechanism.inertia()
     }
 }
 
@@ -170,7 +184,7 @@ mod tests {
     /// Exact kinetic energy with l = M = Ω = 1, for a rod angular velocity ψ̇ − φ̇ (consistent) or
     /// φ̇ + ψ̇ (as the thesis writes it in eq 2.1).
     fn kinetic_energy(sc: &SliderCrank, consistent: bool, psi: f64, dpsi: f64, t: f64) -> f64 {
-        let phi = sc.rod_angle(t);
+        let phi = sc.at(t).rod_angle();
         let (u, du) = (phi.value - psi, phi.d1 - dpsi);
         let (s, c) = t.sin_cos();
         let speed2 = |k: f64| {
@@ -192,7 +206,7 @@ mod tests {
         let [p, dp] = path(t);
         let dt_momentum = (momentum(t + h) - momentum(t - h)) / (2.0 * h);
         let d_psi = (kinetic_energy(sc, consistent, p + h, dp, t) - kinetic_energy(sc, consistent, p - h, dp, t)) / (2.0 * h);
-        let generalized_damping = -lambda * (dp - sc.rod_angle(t).d1 - 1.0);
+        let generalized_damping = -lambda * (dp - sc.at(t).rod_angle().d1 - 1.0);
         dt_momentum - d_psi - generalized_damping
     }
 
@@ -206,7 +220,7 @@ mod tests {
                 let t = 2.0 * PI * k as f64 / 24.0 + 0.1;
                 let [p, dp] = path(t);
                 let ddp = -1.7 * 1.7 * p;
-                let linear = sc.inertia() * ddp + lambda * dp + sc.stiffness(t) * p - sc.forcing(t, lambda);
+                let linear = sc.inertia() * ddp + lambda * dp + sc.at(t).stiffness() * p - sc.at(t).forcing(lambda);
                 let exact = lagrange_residual(&sc, consistent, lambda, &path, t);
                 assert!((linear - exact).abs() < 1e-6 + 2.0 * eps * eps, "{forcing:?} eps {eps} t {t}: {linear} vs {exact}");
             }
@@ -228,11 +242,11 @@ mod tests {
         let (p, c) = (thesis(Forcing::Printed), thesis(Forcing::Corrected));
         for k in 0..16 {
             let t = k as f64 * 0.4;
-            let difference = c.forcing(t, 0.1) - p.forcing(t, 0.1);
-            assert!((difference - 2.0 * 0.4719 * c.rod_angle(t).d2).abs() < 1e-14);
+            let difference = c.at(t).forcing(0.1) - p.at(t).forcing(0.1);
+            assert!((difference - 2.0 * 0.4719 * c.at(t).rod_angle().d2).abs() < 1e-14);
         }
         // Large enough to matter: |2βφ''| reaches 2β(ξ − ξ³) ≈ 0.26 at τ = π/2.
-        assert!((c.forcing(PI / 2.0, 0.0) - p.forcing(PI / 2.0, 0.0)).abs() > 0.25);
+        assert!((c.at(PI / 2.0).forcing(0.0) - p.at(PI / 2.0).forcing(0.0)).abs() > 0.25);
     }
 
     /// `sc.forcing` equals `formula(ξ, α, β, λ, τ, Λ)` over a cycle.
@@ -240,7 +254,7 @@ mod tests {
         for k in 0..16 {
             let t = k as f64 * 0.41;
             let big = (1.0 - sc.xi * sc.xi * t.sin().powi(2)).sqrt();
-            assert!((sc.forcing(t, lambda) - formula(sc.xi, sc.alpha, sc.beta, lambda, t, big)).abs() < 1e-14);
+            assert!((sc.at(t).forcing(lambda) - formula(sc.xi, sc.alpha, sc.beta, lambda, t, big)).abs() < 1e-14);
         }
     }
 
@@ -277,17 +291,17 @@ mod tests {
         let rho = 1e-3;
         for k in 0..16 {
             let t = k as f64 * 0.4;
-            let phi = sc.rod_angle(t).value;
+            let phi = sc.at(t).rod_angle().value;
             let exact = phi - (phi.sin() - rho).asin();
-            let jet = sc.psi_max(t, rho);
+            let jet = sc.at(t).psi_max(rho);
             assert!((jet.value - exact).abs() < rho * rho);
-            let big = sc.cos_phi(t).value;
+            let big = sc.at(t).cos_phi.value;
             assert!((jet.d1 - jet.value * sc.xi * sc.xi * t.sin() * t.cos() / (big * big)).abs() < 1e-15);
             let h = 1e-4;
-            let d2 = (sc.psi_max(t + h, rho).value - 2.0 * jet.value + sc.psi_max(t - h, rho).value) / (h * h);
+            let d2 = (sc.at(t + h).psi_max(rho).value - 2.0 * jet.value + sc.at(t - h).psi_max(rho).value) / (h * h);
             assert!((jet.d2 - d2).abs() < 1e-8);
-            let phi_d2 = (sc.rod_angle(t + h).value - 2.0 * phi + sc.rod_angle(t - h).value) / (h * h);
-            assert!((sc.rod_angle(t).d2 - phi_d2).abs() < 1e-6);
+            let phi_d2 = (sc.at(t + h).rod_angle().value - 2.0 * phi + sc.at(t - h).rod_angle().value) / (h * h);
+            assert!((sc.at(t).rod_angle().d2 - phi_d2).abs() < 1e-6);
         }
     }
 
@@ -347,7 +361,7 @@ mod tests {
     #[test]
     fn drive_torque_of_a_massless_rod_is_the_piston_inertia_torque() {
         let sc = SliderCrank { xi: 0.3030, alpha: 0.0, beta: 0.0, forcing: Forcing::Corrected };
-        let x = |t: f64| sc.xi * t.cos() + sc.cos_phi(t).value;
+        let x = |t: f64| sc.xi * t.cos() + sc.at(t).cos_phi.value;
         let h = 1e-4;
         for k in 0..24 {
             let t = k as f64 * 0.27;
@@ -368,7 +382,7 @@ mod tests {
         for k in 0..n {
             let t = k as f64 * dt;
             work += sc.drive_torque(t, [0.0; 3], lambda) * dt;
-            loss += lambda * (1.0 + sc.rod_angle(t).d1).powi(2) * dt;
+            loss += lambda * (1.0 + sc.at(t).rod_angle().d1).powi(2) * dt;
         }
         assert!((work - loss).abs() < 1e-9 && loss > 1.0);
     }

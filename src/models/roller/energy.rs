@@ -32,7 +32,8 @@ impl EnergyBalance for Roller {
     fn power_flows(&self) -> PowerFlows {
         let s = &self.stepper;
         let (sys, theta, psi, rate) = (s.system(), s.time(), s.position()[0], s.velocity()[0]);
-        let forcing = sys.mechanism.forcing(theta, sys.lambda) - sys.mechanism.stiffness(theta) * psi;
+        let at = sys.mechanism.at(theta);
+        let forcing = at.forcing(sys.lambda) - at.stiffness() * psi;
         let walls = s.multipliers()[super::LOWER] - s.multipliers()[super::UPPER];
         // Rates per radian of crank angle, times Ω for per second.
         let watts = self.energy_scale() * self.crank_speed;
