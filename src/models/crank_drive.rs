@@ -6,12 +6,12 @@
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
 use super::crank_linkage::{Linkage, Loads, Trig};
+use super::last_value::LastValue;
 use super::pressure::FourStrokePressure;
 use super::{Inputs, Parameters};
 use crate::dynamics::{Evaluation, System};
 use nalgebra::{Matrix2, Matrix3, Matrix4x2, SVector, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
-use std::cell::Cell;
 
 /// Where the gas pressure comes from.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -33,22 +33,9 @@ pub struct Engine {
     pub restitution: f64,
 }
 
-/// The prescribed crank's terms at the last crank angle evaluated. RK4's two half-step stages share
-/// a time, and so do a step's last stage and its end sample: with the crank prescribed, they share
-/// the crank angle too. A cache, not state: not saved, equal in comparisons.
-#[derive(Clone, Debug, Default)]
-struct LastCrank(Cell<Option<Crank>>);
-
-impl PartialEq for LastCrank {
-    fn eq(&self, _: &Self) -> bool {
-        true
-    }
-}
-
 /// What an evaluation needs of the crank angle alone.
 #[derive(Clone, Copy, Debug)]
 struct Crank {
-    angle: f64,
     sin: f64,
     cos: f64,
     /// The built-in curve's gauge pressure; 0 with a held pressure.
@@ -96,11 +83,11 @@ impl Engine {
             GasPressure::BuiltIn(curve) => curve.gauge_at(angle, sin, cos),
             GasPressure::Held(_) => 0.0,
         };
-        Crank { angle, sin, cos, curve }
+        Crank { sin, cos, curve }
     }
 
-    /// The linkage's evaluation at (φ, φ̇) with the gas force at φ1 = `crank.angle` and the load
-    /// torque `load_torque`.
+    /// The linkage's evaluation at (φ, φ̇) with the gas force at the crank angle of `crank` and
+    /// the load torque `load_torque`.
     #[inline(always)]
     fn evaluate(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> Evaluation<3, 4> {
         let loads = Loads { gas_force: self.gas_force_at(&crank), load_torque };
@@ -122,13 +109,14 @@ pub struct PrescribedCrank {
     angle_ref: f64,
     time_ref: f64,
     speed: f64,
+    /// The crank's terms at the last crank angle evaluated (RK4's paired stages share it).
     #[serde(skip)]
-    last_crank: LastCrank,
+    last_crank: LastValue<Crank>,
 }
 
 impl PrescribedCrank {
     pub fn new(engine: Engine, crank_angle: f64, time: f64, speed: f64) -> Self {
-        Self { engine, angle_ref: crank_angle, time_ref: time, speed, last_crank: LastCrank::default() }
+        Self { engine, angle_ref: crank_angle, time_ref: time, speed, last_crank: LastValue::default() }
     }
 
     pub fn crank_angle(&self, t: f64) -> f64 {
@@ -150,14 +138,7 @@ impl PrescribedCrank {
 
     /// The crank terms at `angle`, from the cache when it is the last angle evaluated.
     fn crank(&self, angle: f64) -> Crank {
-        match self.last_crank.0.get() {
-            Some(last) if last.angle == angle => last,
-            _ => {
-                let crank = self.engine.crank(angle);
-                self.last_crank.0.set(Some(crank));
-                crank
-            }
-        }
+        self.last_crank.get_or(angle, || self.engine.crank(angle))
     }
 
     /// Full coordinates and velocities at `(t, q, q̇)`.

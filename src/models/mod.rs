@@ -8,6 +8,7 @@ pub mod crank_kinematics;
 pub mod crank_linkage;
 pub mod crank_train;
 mod energy_balance;
+mod last_value;
 pub mod pressure;
 mod roller;
 mod roller_forcing;

@@ -15,7 +15,8 @@
 //! prescribed (crank_mode = 1 only). Lateral positions are linearized like the model: y = l Λ ψ, so
 //! the walls are at y = ±Δ exactly.
 
-use super::roller_forcing::{Forcing, SliderCrank};
+use super::last_value::LastValue;
+use super::roller_forcing::{AtAngle, Forcing, SliderCrank};
 use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
 use crate::dynamics::{Evaluation, Event, EventKind, Stepper, StepperOptions, System};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
@@ -50,17 +51,27 @@ pub const SLIDING_THRESHOLD_PER_CLEARANCE: f64 = 1e-3;
 /// Eqs 2.13–2.17 as a core `System`: time = crank angle, q = ψ, everything over M l² Ω².
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RollerSystem {
-    pub mechanism: SliderCrank,
+    /// Private: `last_angle` caches its terms.
+    mechanism: SliderCrank,
     /// ρ = Δ/l.
     pub rho: f64,
     /// λ = c₂/(M l² Ω), held with the crank speed.
     pub lambda: f64,
     pub restitution: f64,
+    /// The mechanism's terms at the last crank angle evaluated (RK4's paired stages share it).
+    #[serde(skip)]
+    last_angle: LastValue<AtAngle>,
+}
+
+impl RollerSystem {
+    pub fn mechanism(&self) -> &SliderCrank {
+        &self.mechanism
+    }
 }
 
 impl System<1, 2> for RollerSystem {
     fn evaluate(&self, t: f64, q: &Vector1<f64>, qd: &Vector1<f64>) -> Evaluation<1, 2> {
-        let at = self.mechanism.at(t);
+        let at = self.last_angle.get_or(t, || self.mechanism.at(t));
         let limit = at.psi_max(self.rho);
         let force = at.forcing(self.lambda) - self.lambda * qd[0] - at.stiffness() * q[0];
         Evaluation {
@@ -130,7 +141,7 @@ impl Roller {
     }
 
     fn mechanism(&self) -> &SliderCrank {
-        &self.stepper.system().mechanism
+        self.stepper.system().mechanism()
     }
 
     /// Metres of lateral motion per radian of ψ, and m/s of normal speed per unit of ḣ in θ-time.
@@ -213,6 +224,7 @@ impl EngineModel for Roller {
             rho: clearance / l,
             lambda: 0.0,
             restitution: p.restitution,
+            last_angle: LastValue::default(),
         };
         let velocity_tolerance = match system.mechanism.forcing {
             Forcing::Printed => THESIS_SLIDING_THRESHOLD,

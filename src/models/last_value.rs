@@ -1,0 +1,55 @@
+//! A pure function's value at the last argument it was asked for. RK4's two half-step stages
+//! share a time, and so do a step's last stage and its end sample: where the terms of a time are
+//! costly (the crank's sine, cosine and pressure; the roller's Λ), the second of a pair reuses them.
+
+use std::cell::Cell;
+
+/// A cache, not state: not saved, equal in every comparison, and never changing a result (it
+/// hands back exactly what the function gave for the same argument, bit for bit).
+#[derive(Clone, Debug)]
+pub(crate) struct LastValue<T: Copy>(Cell<Option<(f64, T)>>);
+
+impl<T: Copy> LastValue<T> {
+    /// `compute()`'s value at `arg`, from the cache when `arg` is the last argument, bit for bit.
+    pub fn get_or(&self, arg: f64, compute: impl FnOnce() -> T) -> T {
+        match self.0.get() {
+            Some((last, value)) if last.to_bits() == arg.to_bits() => value,
+            _ => {
+                let value = compute();
+                self.0.set(Some((arg, value)));
+                value
+            }
+        }
+    }
+}
+
+impl<T: Copy> Default for LastValue<T> {
+    fn default() -> Self {
+        Self(Cell::new(None))
+    }
+}
+
+impl<T: Copy> PartialEq for LastValue<T> {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn computes_once_per_repeated_argument_and_again_for_any_other_bit_pattern() {
+        let (cache, calls) = (LastValue::default(), Cell::new(0));
+        let value = |x: f64| {
+            calls.set(calls.get() + 1);
+            x.sin()
+        };
+        for (arg, computed) in [(0.5, 1), (0.5, 1), (0.25, 2), (0.5, 3), (0.0, 4), (-0.0, 5), (-0.0, 5)] {
+            let got = cache.get_or(arg, || value(arg));
+            assert_eq!(got.to_bits(), arg.sin().to_bits(), "{arg}");
+            assert_eq!(calls.get(), computed, "calls after {arg}");
+        }
+    }
+}
