@@ -382,12 +382,13 @@ impl<E: Model> Instance<E> {
         match sim.step(&self.core.inputs, t_end) {
             Ok(()) => {
                 for e in sim.step_events() {
-                    let message = format!(
-                        "{:?} of corner {} at t = {} s, crank angle {} rad: normal velocity {} → {} m/s, {} J lost",
-                        e.kind, e.corner, e.time, e.crank_angle, e.normal_velocity_before, e.normal_velocity_after,
-                        e.energy_lost
-                    );
-                    self.logger.debug("logEvents", &message);
+                    self.logger.debug("logEvents", || {
+                        format!(
+                            "{:?} of corner {} at t = {} s, crank angle {} rad: normal velocity {} → {} m/s, {} J lost",
+                            e.kind, e.corner, e.time, e.crank_angle, e.normal_velocity_before, e.normal_velocity_after,
+                            e.energy_lost
+                        )
+                    });
                 }
                 Ok(())
             }

@@ -61,14 +61,15 @@ impl Logger {
         self.send(status, category, message);
     }
 
-    /// A debug message, sent only when its category is enabled.
-    pub fn debug(&self, category: &str, message: &str) {
+    /// A debug message, written and sent only when its category is enabled (a step's events
+    /// would otherwise each cost a formatted string nobody reads).
+    pub fn debug(&self, category: &str, message: impl FnOnce() -> String) {
         if LOG_CATEGORIES
             .iter()
             .zip(self.enabled)
             .any(|(c, on)| on && *c == category)
         {
-            self.send(Status::Ok, category, message);
+            self.send(Status::Ok, category, &message());
         }
     }
 

@@ -1,0 +1,99 @@
+//! Issue 6: no heap allocation inside a step. A global allocator that counts, per thread, the
+//! allocations of steady-state steps of both engine models: through their `advance` (the core's
+//! step loop, events included) and through `Simulation::step` (what fmi2DoStep runs).
+
+use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters, Roller};
+use pistonslap::simulation::Simulation;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+struct Counting;
+
+thread_local! {
+    /// Per thread, so that the tests of this binary, run in parallel, do not count each other's.
+    static ALLOCATIONS: Cell<usize> = const { Cell::new(0) };
+}
+
+// SAFETY: forwards every call to the system allocator unchanged; it only counts.
+unsafe impl GlobalAlloc for Counting {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        ALLOCATIONS.with(|n| n.set(n.get() + 1));
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        ALLOCATIONS.with(|n| n.set(n.get() + 1));
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+#[global_allocator]
+static COUNTING: Counting = Counting;
+
+/// Allocations made by `f`.
+fn allocations(f: impl FnOnce()) -> usize {
+    let before = ALLOCATIONS.with(Cell::get);
+    f();
+    ALLOCATIONS.with(Cell::get) - before
+}
+
+/// Two 0.1 s engine cycles (1200 rpm) of 1 ms steps to warm up, then one measured.
+const STEP: f64 = 1e-3;
+const WARM_UP: usize = 200;
+const MEASURED: usize = 100;
+
+fn roller() -> Parameters {
+    Parameters { model_variant: 2, ..Parameters::default() }
+}
+
+/// Allocations and events of the measured steps of model `M`'s `advance`, the event list reused
+/// as a host of the model would.
+fn advance<M: EngineModel>(params: &Parameters) -> (usize, usize) {
+    let (inputs, mut events) = (Inputs::default(), Vec::new());
+    let mut model = M::new(params, 0.0).expect("default parameters");
+    let mut step = |k: usize| {
+        events.clear();
+        model.advance(&inputs, k as f64 * STEP, &mut events).expect("step");
+        events.len()
+    };
+    for k in 1..=WARM_UP {
+        step(k);
+    }
+    let mut count = 0;
+    let n = allocations(|| (WARM_UP + 1..=WARM_UP + MEASURED).for_each(|k| count += step(k)));
+    (n, count)
+}
+
+#[test]
+fn the_core_steps_of_both_models_allocate_nothing() {
+    for (what, (n, events)) in [("crank train", advance::<CrankTrain>(&Parameters::default())), ("roller", advance::<Roller>(&roller()))] {
+        assert!(events > MEASURED / 2, "{what}: the measured steps must have events, got {events}");
+        assert_eq!(n, 0, "{what}: {n} allocations in {MEASURED} steps with {events} events");
+    }
+}
+
+/// `Simulation::step` is all or nothing: it advances a copy of the model and keeps the step's
+/// events in a new list. The copy's event list (empty when copied) and the step's list are the
+/// only allocations: none for a step without events, and for `n` events no more than the two
+/// lists' growth to `n` (capacities 4, 8, 16, …).
+#[test]
+fn a_simulation_step_allocates_only_its_event_lists() {
+    for params in [Parameters::default(), roller()] {
+        let inputs = Inputs::default();
+        let mut sim: Simulation = Simulation::new(&params, 0.0).expect("default parameters");
+        for k in 1..=WARM_UP {
+            sim.step(&inputs, k as f64 * STEP).expect("step");
+        }
+        let (mut quiet, mut busy) = (0, 0);
+        for k in WARM_UP + 1..=WARM_UP + MEASURED {
+            let n = allocations(|| sim.step(&inputs, k as f64 * STEP).expect("step"));
+            let events = sim.step_events().len();
+            let growth = if events == 0 { 0 } else { 1 + (events as f64 / 4.0).log2().ceil().max(0.0) as usize };
+            assert!(n <= 2 * growth, "variant {}, step {k}: {n} allocations with {events} events", params.model_variant);
+            if events == 0 { quiet += 1 } else { busy += 1 }
+        }
+        assert!(quiet > 0 && busy > 0, "variant {}: both kinds of step measured ({quiet} quiet, {busy} busy)", params.model_variant);
+    }
+}
