@@ -90,15 +90,20 @@ impl Engine {
     /// the load torque `load_torque`.
     #[inline(always)]
     fn evaluate(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> Evaluation<3, 4> {
-        let loads = Loads { gas_force: self.gas_force_at(&crank), load_torque };
-        self.linkage.evaluate_with(&Trig::with_crank((crank.sin, crank.cos), phi), phid, loads)
+        let (trig, loads) = self.trig_and_loads(phi, load_torque, &crank);
+        self.linkage.evaluate_with(&trig, phid, loads)
     }
 
     /// M and f of [`Self::evaluate`] alone.
     #[inline(always)]
     fn inertia_and_force(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> (Matrix3<f64>, Vector3<f64>) {
-        let loads = Loads { gas_force: self.gas_force_at(&crank), load_torque };
-        self.linkage.inertia_and_force_with(&Trig::with_crank((crank.sin, crank.cos), phi), phid, loads)
+        let (trig, loads) = self.trig_and_loads(phi, load_torque, &crank);
+        self.linkage.inertia_and_force_with(&trig, phid, loads)
+    }
+
+    #[inline(always)]
+    fn trig_and_loads(&self, phi: &Vector3<f64>, load_torque: f64, crank: &Crank) -> (Trig, Loads) {
+        (Trig::with_crank((crank.sin, crank.cos), phi), Loads { gas_force: self.gas_force_at(crank), load_torque })
     }
 }
 
@@ -164,9 +169,10 @@ impl PrescribedCrank {
 impl System<2, 4> for PrescribedCrank {
     fn evaluate(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
         let full = self.evaluate_full(t, q, qd);
+        let (mass, force) = rod_and_piston_rows(&full.mass, &full.force);
         Evaluation {
-            mass: full.mass.fixed_view::<2, 2>(1, 1).into_owned(),
-            force: full.force.fixed_rows::<2>(1).into_owned(),
+            mass,
+            force,
             gap: full.gap,
             gap_jacobian: Matrix4x2::from_columns(&[full.gap_jacobian.column(1), full.gap_jacobian.column(2)]),
             gap_time_rate: full.gap_jacobian.column(0) * self.speed,
@@ -177,7 +183,7 @@ impl System<2, 4> for PrescribedCrank {
     fn inertia_and_force(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Matrix2<f64>, Vector2<f64>) {
         let (phi, phid) = self.full_state(t, q, qd);
         let (mass, force) = self.engine.inertia_and_force(&phi, &phid, 0.0, self.crank(phi[0]));
-        (mass.fixed_view::<2, 2>(1, 1).into_owned(), force.fixed_rows::<2>(1).into_owned())
+        rod_and_piston_rows(&mass, &force)
     }
 
     fn gaps(&self, t: f64, q: &Vector2<f64>) -> Vector4<f64> {
@@ -187,6 +193,12 @@ impl System<2, 4> for PrescribedCrank {
     fn restitution(&self, _constraint: usize) -> f64 {
         self.engine.restitution
     }
+}
+
+/// The rod and piston rows of the full M and f: the crank's angle is given, not a coordinate.
+#[inline(always)]
+fn rod_and_piston_rows(mass: &Matrix3<f64>, force: &Vector3<f64>) -> (Matrix2<f64>, Vector2<f64>) {
+    (mass.fixed_view::<2, 2>(1, 1).into_owned(), force.fixed_rows::<2>(1).into_owned())
 }
 
 /// Crank, rod and piston, the crank loaded by a held torque.
