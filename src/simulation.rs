@@ -25,6 +25,26 @@ pub struct Simulation<E = Engine> {
     statistics: ImpactStatistics,
     step_events: Vec<EngineEvent>,
     log: Option<ImpactLog>,
+    /// The event list of the step before last, lent to the next step (see [`Self::step`]).
+    #[serde(skip)]
+    spare_events: Scratch<Vec<EngineEvent>>,
+}
+
+/// A buffer lent from step to step so that a step allocates nothing: not state, so not saved,
+/// not copied (a copy starts empty) and equal in every comparison.
+#[derive(Debug, Default)]
+struct Scratch<T: Default>(T);
+
+impl<T: Default> Clone for Scratch<T> {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl<T: Default> PartialEq for Scratch<T> {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
 }
 
 impl<E: EngineModel> Simulation<E> {
@@ -43,6 +63,7 @@ impl<E: EngineModel> Simulation<E> {
             statistics: ImpactStatistics::default(),
             step_events: Vec::new(),
             log: None,
+            spare_events: Scratch::default(),
         };
         sim.write_outputs();
         Ok(sim)
@@ -87,40 +108,56 @@ impl<E: EngineModel> Simulation<E> {
                 self.time
             )));
         }
-        let mut model = self.model.clone();
-        let mut events = Vec::new();
-        model.advance(inputs, t_end, &mut events).map_err(|e| {
-            ModelError(format!(
-                "step from t = {} s to {t_end} s failed: {e}",
-                self.time
-            ))
-        })?;
-        let mut next = Self {
-            model,
-            time: t_end,
-            outputs: self.outputs.clone(),
-            statistics: self.statistics.clone(),
-            step_events: events,
-            log: self.log.clone(),
-        };
-        next.statistics.record_step(&next.step_events);
-        next.write_outputs();
-        next.check().map_err(|e| {
-            ModelError(format!("step from t = {} s to {t_end} s refused: {}", self.time, e.0))
-        })?;
-        if let Some(log) = &mut next.log {
-            log.append(&next.step_events)?;
+        // The model advances in place, so that the event list inside it keeps its capacity from
+        // step to step, and the step's events go into the list of the step before last: no
+        // allocation. The copy taken first (allocation-free: between steps the model holds no
+        // events) puts the model back if the step fails.
+        let before = self.model.clone();
+        let mut events = std::mem::take(&mut self.spare_events.0);
+        events.clear();
+        match self.try_step(inputs, t_end, &mut events) {
+            Ok((outputs, statistics)) => {
+                (self.time, self.outputs, self.statistics) = (t_end, outputs, statistics);
+                self.spare_events.0 = std::mem::replace(&mut self.step_events, events);
+                Ok(())
+            }
+            Err(e) => {
+                self.model = before;
+                self.spare_events.0 = events;
+                Err(e)
+            }
         }
-        *self = next;
-        Ok(())
+    }
+
+    /// The fallible part of [`Self::step`]: advances the model into `events` and returns the
+    /// outputs and statistics after it. Changes nothing else of `self` (the impact log only once
+    /// nothing can fail any more).
+    fn try_step(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(Outputs, ImpactStatistics), ModelError> {
+        let failed = |what: &str, e: &dyn std::fmt::Display| ModelError(format!("step from t = {} s to {t_end} s {what}: {e}", self.time));
+        self.model.advance(inputs, t_end, events).map_err(|e| failed("failed", &e))?;
+        let mut statistics = self.statistics.clone();
+        statistics.record_step(events);
+        let mut outputs = self.outputs.clone();
+        self.model.write_outputs(&mut outputs);
+        statistics.write(&mut outputs);
+        Self::valid(t_end, &outputs).map_err(|e| failed("refused", &e.0))?;
+        if let Some(log) = &mut self.log {
+            // Cuts the file back and keeps its cursor when it fails.
+            log.append(events)?;
+        }
+        Ok((outputs, statistics))
     }
 
     /// What every state must satisfy (a restored one included): a finite time and finite outputs.
     pub fn check(&self) -> Result<(), ModelError> {
-        if !self.time.is_finite() {
-            return Err(ModelError(format!("time {} s is not finite", self.time)));
+        Self::valid(self.time, &self.outputs)
+    }
+
+    fn valid(time: f64, outputs: &Outputs) -> Result<(), ModelError> {
+        if !time.is_finite() {
+            return Err(ModelError(format!("time {time} s is not finite")));
         }
-        match self.outputs.first_non_finite() {
+        match outputs.first_non_finite() {
             Some((name, x)) => Err(ModelError(format!("{name} = {x} is not finite"))),
             None => Ok(()),
         }
