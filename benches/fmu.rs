@@ -7,86 +7,29 @@
 //! Each figure is the median of several runs.
 
 use pistonslap::dynamics::StepperOptions;
-use pistonslap::fmi::description::{GUID, VARIABLES};
 use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters};
-use pistonslap::fmi::exports::*;
-use pistonslap::fmi::types::{fmi2CallbackFunctions, fmi2CallbackLogger, fmi2Component, Status, FMI2_CO_SIMULATION, FMI2_FALSE};
-use std::ffi::{c_char, c_int, c_void, CString};
 use std::time::Instant;
 
 #[path = "fmu/flop_count.rs"]
 mod flop_count;
+#[path = "../tests/fmu_host/mod.rs"]
+mod fmu_host;
+
+use fmu_host::{vr, Host};
 
 const RUNS: usize = 5;
 
-/// Receives `logger(env, name, status, category, "%s", message)` and drops it. Declared with the
-/// fixed arguments only (variadic definitions are unstable): on the C ABI the extra argument is
-/// simply not read.
-unsafe extern "C" fn quiet_logger(_: *mut c_void, _: *const c_char, _: c_int, _: *const c_char, _: *const c_char) {}
-
-fn vr(name: &str) -> u32 {
-    VARIABLES.iter().position(|v| v.name == name).expect(name) as u32
-}
-
-fn ok(status: Status, what: &str) {
-    assert_eq!(status, Status::Ok, "{what}");
-}
-
-/// An instance initialized with `integers` and `reals` set, ready to step from t = 0.
-struct Host {
-    c: fmi2Component,
-    _callbacks: Box<fmi2CallbackFunctions>,
-}
-
-impl Host {
-    fn new(integers: &[(&str, i32)], reals: &[(&str, f64)]) -> Self {
-        let callbacks = Box::new(fmi2CallbackFunctions {
-            // SAFETY: see `quiet_logger`.
-            logger: Some(unsafe { std::mem::transmute::<unsafe extern "C" fn(*mut c_void, *const c_char, c_int, *const c_char, *const c_char), fmi2CallbackLogger>(quiet_logger) }),
-            allocate_memory: Some(libc::calloc),
-            free_memory: Some(libc::free),
-            step_finished: None,
-            component_environment: std::ptr::null_mut(),
-        });
-        let (name, guid, resources) = (CString::new("bench").unwrap(), CString::new(GUID).unwrap(), CString::new("file:///tmp").unwrap());
-        unsafe {
-            let c = fmi2Instantiate(name.as_ptr(), FMI2_CO_SIMULATION, guid.as_ptr(), resources.as_ptr(), &*callbacks, FMI2_FALSE, FMI2_FALSE);
-            assert!(!c.is_null(), "instantiate");
-            ok(fmi2SetupExperiment(c, FMI2_FALSE, 0.0, 0.0, FMI2_FALSE, 0.0), "setup");
-            ok(fmi2EnterInitializationMode(c), "enter initialization");
-            for &(n, v) in integers {
-                ok(fmi2SetInteger(c, &vr(n), 1, &v), n);
-            }
-            for &(n, v) in reals {
-                ok(fmi2SetReal(c, &vr(n), 1, &v), n);
-            }
-            ok(fmi2ExitInitializationMode(c), "exit initialization");
-            Self { c, _callbacks: callbacks }
-        }
+/// Steps `host` to `stop` with communication step `h`, reading two outputs per step as a host
+/// does; returns the wall time in seconds.
+fn run(host: &Host, stop: f64, h: f64) -> f64 {
+    let start = Instant::now();
+    let refs = [vr("crank_angle"), vr("side_force")];
+    let mut out = [0.0; 2];
+    for k in 0..(stop / h).round() as usize {
+        host.step(k as f64 * h, h, &refs, &mut out);
     }
-
-    /// Steps to `stop` with communication step `h`, reading two outputs per step as a host does;
-    /// returns the wall time in seconds.
-    fn run(&self, stop: f64, h: f64) -> f64 {
-        let start = Instant::now();
-        let steps = (stop / h).round() as usize;
-        let refs = [vr("crank_angle"), vr("side_force")];
-        let mut out = [0.0; 2];
-        for k in 0..steps {
-            unsafe {
-                ok(fmi2DoStep(self.c, k as f64 * h, h, 1), "doStep");
-                ok(fmi2GetReal(self.c, refs.as_ptr(), 2, out.as_mut_ptr()), "getReal");
-            }
-        }
-        std::hint::black_box(out);
-        start.elapsed().as_secs_f64()
-    }
-}
-
-impl Drop for Host {
-    fn drop(&mut self) {
-        unsafe { fmi2FreeInstance(self.c) }
-    }
+    std::hint::black_box(out);
+    start.elapsed().as_secs_f64()
 }
 
 fn median(mut x: Vec<f64>) -> f64 {
@@ -96,7 +39,7 @@ fn median(mut x: Vec<f64>) -> f64 {
 
 /// Median real-time factor of `stop` simulated seconds in steps of `h` (a fresh instance per run).
 fn real_time_factor(integers: &[(&str, i32)], reals: &[(&str, f64)], stop: f64, h: f64) -> f64 {
-    median((0..RUNS).map(|_| stop / Host::new(integers, reals).run(stop, h)).collect())
+    median((0..RUNS).map(|_| stop / run(&Host::new(integers, reals), stop, h)).collect())
 }
 
 /// The argument that makes this executable only take plain steps (the flop count's child run).
@@ -226,7 +169,7 @@ fn thesis_study() {
                 ("crank_speed", 1.0),
             ];
             let host = Host::new(&[("model_variant", 2), ("roller_forcing", 1)], &reals);
-            wall += host.run(stop, 2.0 * std::f64::consts::PI);
+            wall += run(&host, stop, 2.0 * std::f64::consts::PI);
         }
     }
     println!("thesis study (18 cases × 1530 crank cycles, one per communication step): {:.1} s wall (measured on 153 cycles each, ×10)", wall * fraction);

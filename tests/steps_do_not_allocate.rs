@@ -1,10 +1,13 @@
 //! Issue 6: no heap allocation inside a step. A global allocator that counts, per thread, the
 //! allocations of steady-state steps of both engine models: through their `advance` (the core's
-//! step loop, events included) and through `Simulation::step` (what fmi2DoStep runs).
+//! step loop, events included), through `Simulation::step` and through the exported fmi2DoStep.
+
+mod fmu_host;
 
 use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters, Roller};
 use pistonslap::simulation::Simulation;
 use std::alloc::{GlobalAlloc, Layout, System};
+use fmu_host::{vr, Host};
 use std::cell::Cell;
 
 struct Counting;
@@ -96,5 +99,28 @@ fn a_simulation_step_allocates_nothing() {
         });
         assert!(events > MEASURED / 2, "variant {}: the measured steps must have events, got {events}", params.model_variant);
         assert_eq!(n, 0, "variant {}: {n} allocations in {MEASURED} steps with {events} events", params.model_variant);
+    }
+}
+
+/// fmi2DoStep adds argument checks and the event log messages, which are written only when
+/// logEvents is on: it allocates nothing either, nor does a host's fmi2GetReal.
+#[test]
+fn fmi2_do_step_allocates_nothing() {
+    for variant in [1, 2] {
+        let host = Host::new(&[("model_variant", variant)], &[]);
+        let refs = [vr("max_impact_velocity_in_step"), vr("side_force")];
+        let mut out = [0.0; 2];
+        for k in 0..WARM_UP {
+            host.step(k as f64 * STEP, STEP, &refs, &mut out);
+        }
+        let mut with_impacts = 0;
+        let n = allocations(|| {
+            for k in WARM_UP..WARM_UP + MEASURED {
+                host.step(k as f64 * STEP, STEP, &refs, &mut out);
+                with_impacts += usize::from(out[0] > 0.0);
+            }
+        });
+        assert!(with_impacts > 10, "variant {variant}: the measured steps must have impacts, {with_impacts} had");
+        assert_eq!(n, 0, "variant {variant}: {n} allocations in {MEASURED} steps, {with_impacts} with impacts");
     }
 }

@@ -302,8 +302,7 @@ unsafe fn get<E: Model, T: Copy>(
     run::<E>(c, function, |comp| {
         let vrs = slice(vr, n, "vr")?;
         let out = slice_mut(value, n, "value")?;
-        out.copy_from_slice(&comp.instance.get(function, vrs, kind, read)?);
-        Ok(())
+        comp.instance.get(function, vrs, kind, read, out)
     })
 }
 
@@ -350,9 +349,10 @@ pub unsafe fn get_string<E: Model>(
     run::<E>(c, "fmi2GetString", |comp| {
         let vrs = slice(vr, n, "vr")?;
         let out = slice_mut(value, n, "value")?;
-        comp.strings = comp
-            .instance
-            .get("fmi2GetString", vrs, Kind::String, c_string_of)?;
+        let mut strings = vec![CString::default(); n];
+        comp.instance
+            .get("fmi2GetString", vrs, Kind::String, c_string_of, &mut strings)?;
+        comp.strings = strings;
         for (o, s) in out.iter_mut().zip(&comp.strings) {
             *o = s.as_ptr();
         }

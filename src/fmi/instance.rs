@@ -305,7 +305,8 @@ impl<E: Model> Instance<E> {
         vrs: &[u32],
         kind: Kind,
         read: impl for<'a> Fn(u32, &'a Parameters, &'a Inputs, &'a crate::models::Outputs) -> Option<T>,
-    ) -> Outcome<Vec<T>> {
+        out: &mut [T],
+    ) -> Outcome {
         self.require(function, GET)?;
         for &vr in vrs {
             typed_variable(vr, kind)?;
@@ -323,12 +324,13 @@ impl<E: Model> Instance<E> {
             _ => &crate::models::Outputs::default(),
         };
         let (p, i) = (&self.core.parameters, &self.core.inputs);
-        vrs.iter()
-            .map(|&vr| {
-                read(vr, p, i, outputs)
-                    .ok_or_else(|| Refusal::error(format!("value reference {vr} has no field")))
-            })
-            .collect()
+        // Into the host's array directly: a host reads outputs every step, and a list collected
+        // first was an allocation per call.
+        for (&vr, value) in vrs.iter().zip(out) {
+            *value = read(vr, p, i, outputs)
+                .ok_or_else(|| Refusal::error(format!("value reference {vr} has no field")))?;
+        }
+        Ok(())
     }
 
     /// fmi2GetBoolean / fmi2SetBoolean: PistonSlap has no Boolean variable, so any value reference is

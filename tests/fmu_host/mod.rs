@@ -1,0 +1,70 @@
+//! A host of the FMU's exported C functions in the same process, written in Rust so that a host's
+//! own cost stays out of what is measured: shared by `benches/fmu.rs` and the allocation test.
+#![allow(dead_code)]
+
+use pistonslap::fmi::description::{GUID, VARIABLES};
+use pistonslap::fmi::exports::*;
+use pistonslap::fmi::types::{fmi2CallbackFunctions, fmi2CallbackLogger, fmi2Component, Status, FMI2_CO_SIMULATION, FMI2_FALSE};
+use std::ffi::{c_char, c_int, c_void, CString};
+
+/// Receives `logger(env, name, status, category, "%s", message)` and drops it. Declared with the
+/// fixed arguments only (variadic definitions are unstable): on the C ABI the extra argument is
+/// simply not read.
+unsafe extern "C" fn quiet_logger(_: *mut c_void, _: *const c_char, _: c_int, _: *const c_char, _: *const c_char) {}
+
+pub fn vr(name: &str) -> u32 {
+    VARIABLES.iter().position(|v| v.name == name).expect(name) as u32
+}
+
+fn ok(status: Status, what: &str) {
+    assert_eq!(status, Status::Ok, "{what}");
+}
+
+/// An instance initialized with `integers` and `reals` set, ready to step from t = 0.
+pub struct Host {
+    c: fmi2Component,
+    _callbacks: Box<fmi2CallbackFunctions>,
+}
+
+impl Host {
+    pub fn new(integers: &[(&str, i32)], reals: &[(&str, f64)]) -> Self {
+        let callbacks = Box::new(fmi2CallbackFunctions {
+            // SAFETY: see `quiet_logger`.
+            logger: Some(unsafe { std::mem::transmute::<unsafe extern "C" fn(*mut c_void, *const c_char, c_int, *const c_char, *const c_char), fmi2CallbackLogger>(quiet_logger) }),
+            allocate_memory: Some(libc::calloc),
+            free_memory: Some(libc::free),
+            step_finished: None,
+            component_environment: std::ptr::null_mut(),
+        });
+        let (name, guid, resources) = (CString::new("host").unwrap(), CString::new(GUID).unwrap(), CString::new("file:///tmp").unwrap());
+        unsafe {
+            let c = fmi2Instantiate(name.as_ptr(), FMI2_CO_SIMULATION, guid.as_ptr(), resources.as_ptr(), &*callbacks, FMI2_FALSE, FMI2_FALSE);
+            assert!(!c.is_null(), "instantiate");
+            ok(fmi2SetupExperiment(c, FMI2_FALSE, 0.0, 0.0, FMI2_FALSE, 0.0), "setup");
+            ok(fmi2EnterInitializationMode(c), "enter initialization");
+            for &(n, v) in integers {
+                ok(fmi2SetInteger(c, &vr(n), 1, &v), n);
+            }
+            for &(n, v) in reals {
+                ok(fmi2SetReal(c, &vr(n), 1, &v), n);
+            }
+            ok(fmi2ExitInitializationMode(c), "exit initialization");
+            Self { c, _callbacks: callbacks }
+        }
+    }
+
+    /// fmi2DoStep from `t` over `h`, then fmi2GetReal of `refs` into `out`, as a host does.
+    pub fn step(&self, t: f64, h: f64, refs: &[u32], out: &mut [f64]) {
+        assert_eq!(refs.len(), out.len());
+        unsafe {
+            ok(fmi2DoStep(self.c, t, h, 1), "doStep");
+            ok(fmi2GetReal(self.c, refs.as_ptr(), refs.len(), out.as_mut_ptr()), "getReal");
+        }
+    }
+}
+
+impl Drop for Host {
+    fn drop(&mut self) {
+        unsafe { fmi2FreeInstance(self.c) }
+    }
+}
