@@ -55,8 +55,8 @@ pub struct SliderCrank {
 }
 
 /// The mechanism at one crank angle τ: sin τ, cos τ and Λ = cos φ with its derivatives, computed
-/// once for every term of an evaluation (each term computing its own made sine and cosine a third
-/// of the roller's run time).
+/// once for every term of an evaluation (when each term computed its own, sine and cosine were a
+/// third of the roller's run time).
 #[derive(Clone, Copy, Debug)]
 pub struct AtAngle {
     mechanism: SliderCrank,

@@ -1,6 +1,5 @@
 //! A host of the FMU's exported C functions in the same process, written in Rust so that a host's
 //! own cost stays out of what is measured: shared by `benches/fmu.rs` and the allocation test.
-#![allow(dead_code)]
 
 use pistonslap::fmi::description::{GUID, VARIABLES};
 use pistonslap::fmi::exports::*;
