@@ -14,7 +14,6 @@ struct Outcome {
     steps: f64,
     events: usize,
     evaluations: u64,
-    gap_calls: u64,
 }
 
 fn run<S: System<N, M> + Clone, const N: usize, const M: usize>(
@@ -43,7 +42,6 @@ fn run<S: System<N, M> + Clone, const N: usize, const M: usize>(
         steps: t_end / step,
         events: s.events().len(),
         evaluations: s.system().evaluations.get(),
-        gap_calls: s.system().gap_calls.get(),
     }
 }
 
@@ -89,9 +87,8 @@ fn main() {
         // Evaluations beyond the 4 per nominal step that plain stepping costs.
         let per_event = |o: &Outcome| (o.evaluations as f64 - 4.0 * o.steps) / o.events.max(1) as f64;
         println!(
-            "  -> location: {:.1} evaluations/event (+ {:.1} gap-only) with dense output vs {:.1} with step halving; whole run {:.2}x faster",
+            "  -> location: {:.1} evaluations/event with dense output vs {:.1} with step halving; whole run {:.2}x faster",
             per_event(&d),
-            d.gap_calls as f64 / d.events.max(1) as f64,
             per_event(&h),
             h.time.as_secs_f64() / d.time.as_secs_f64()
         );

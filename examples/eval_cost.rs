@@ -1,5 +1,5 @@
 //! Cost of the crank train's model side on the default case (1200 rpm, built-in pressure):
-//! ns per `System::evaluate` and per `System::gaps` call of both crank modes, at states spread
+//! ns per `System::evaluate` call of both crank modes, at states spread
 //! over one engine cycle near the nominal slider-crank motion, and the wall time of 10 cycles of
 //! the whole model at 10 ms communication steps. Medians of several runs.
 //! `cargo run --release --example eval_cost`.
@@ -65,12 +65,10 @@ fn main() {
     let prescribed = PrescribedCrank::new(Engine::new(&p), p.crank_angle_start, 0.0, speed);
     let reduced = |x: &SVector<f64, 3>| Vector2::new(x[1], x[2]);
     let evaluate = ns_per_call(&states, |(t, q, qd)| prescribed.evaluate(*t, &reduced(q), &reduced(qd)).gap_bias[0]);
-    let gaps = ns_per_call(&states, |(t, q, _)| prescribed.gaps(*t, &reduced(q))[0]);
-    println!("prescribed crank: evaluate {:6.1} ns (min {:6.1}), gaps {:5.1} ns (min {:5.1})", evaluate.0, evaluate.1, gaps.0, gaps.1);
+    println!("prescribed crank: evaluate {:6.1} ns (min {:6.1})", evaluate.0, evaluate.1);
     let free = FreeCrank { engine: Engine::new(&p), load_torque: 20.0 };
     let evaluate = ns_per_call(&states, |(_, q, qd)| free.evaluate(0.0, q, qd).gap_bias[0]);
-    let gaps = ns_per_call(&states, |(_, q, _)| free.gaps(0.0, q)[0]);
-    println!("free crank:       evaluate {:6.1} ns (min {:6.1}), gaps {:5.1} ns (min {:5.1})", evaluate.0, evaluate.1, gaps.0, gaps.1);
+    println!("free crank:       evaluate {:6.1} ns (min {:6.1})", evaluate.0, evaluate.1);
 
     // The run is deterministic, so each communication step does the same work in every run: the
     // sum of the steps' fastest times is the wall time of an undisturbed run.

@@ -7,7 +7,8 @@
 //!   saddle-point system of eqs 17–20 (`contact.rs`); after each step in contact, `q` and `q̇`
 //!   are projected back onto `h_A = 0`, `ḣ_A = 0` (drift control);
 //! - events: a free gap falling below `−ε_h`, an active multiplier below `−ε_λ`, located by
-//!   Illinois on a quintic Hermite extension of the step and confirmed on the RK4 map
+//!   Illinois on a quintic Hermite extension of the step (of the gaps themselves, from `h`, `ḣ`,
+//!   `ḧ` at its ends; of `q` for the multipliers) and confirmed on the RK4 map
 //!   ([`EventLocator`]; the paper's step halving is kept for comparison);
 //! - at an event, the closed set (gaps within `ε_h`) is resolved together: the generalized Newton
 //!   impact as a complementarity problem (DESIGN §6.4; exactly eq 11 for one constraint), then

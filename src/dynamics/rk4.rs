@@ -35,7 +35,8 @@ pub(crate) struct Step<const N: usize> {
     pub last_slopes: (SVector<f64, N>, SVector<f64, N>),
 }
 
-/// Quintic Hermite interpolant of one step, matching `q`, `q̇`, `q̈` at both ends.
+/// Quintic Hermite interpolant of one step, matching `q`, `q̇`, `q̈` at both ends; `q` is any
+/// smooth function of time: the coordinates, or the gaps `h` (with `ḣ` and `ḧ = J q̈ + d`).
 ///
 /// Its interpolation error is O(dt⁶), below the O(dt⁵) local error of the RK4 step itself, so
 /// event location on it is as accurate as the step; the stepper still confirms every located
@@ -66,17 +67,32 @@ impl<const N: usize> Hermite5<N> {
         (self.position(t), v)
     }
 
-    /// `q` alone at time `t` (the gap scans need no velocity: half the work of [`Self::at`]).
+    /// `q` alone at time `t`.
     pub fn position(&self, t: f64) -> SVector<f64, N> {
-        let (dt, s) = (self.dt, (t - self.t0) / self.dt);
+        let [h1, h2, h3, h4, h5] = self.position_weights(t);
+        let dt = self.dt;
+        self.q0 + (self.q1 - self.q0) * h3 + (self.v0 * h1 + self.v1 * h4) * dt + (self.a0 * h2 + self.a1 * h5) * (dt * dt)
+    }
+
+    /// Component `i` of `q` at time `t`: the event search watches one gap at a time.
+    pub fn position_of(&self, i: usize, t: f64) -> f64 {
+        let [h1, h2, h3, h4, h5] = self.position_weights(t);
+        let dt = self.dt;
+        self.q0[i] + (self.q1[i] - self.q0[i]) * h3 + (self.v0[i] * h1 + self.v1[i] * h4) * dt + (self.a0[i] * h2 + self.a1[i] * h5) * (dt * dt)
+    }
+
+    /// The weights of `q̇₀ dt`, `q̈₀ dt²`, `q₁ − q₀`, `q̇₁ dt`, `q̈₁ dt²` in `q(t)`.
+    fn position_weights(&self, t: f64) -> [f64; 5] {
+        let s = (t - self.t0) / self.dt;
         let (s2, s3) = (s * s, s * s * s);
         let (s4, s5) = (s3 * s, s3 * s2);
-        let h3 = 10.0 * s3 - 15.0 * s4 + 6.0 * s5;
-        let h1 = s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5;
-        let h2 = 0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5;
-        let h4 = -4.0 * s3 + 7.0 * s4 - 3.0 * s5;
-        let h5 = 0.5 * s3 - s4 + 0.5 * s5;
-        self.q0 + (self.q1 - self.q0) * h3 + (self.v0 * h1 + self.v1 * h4) * dt + (self.a0 * h2 + self.a1 * h5) * (dt * dt)
+        [
+            s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5,
+            0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5,
+            10.0 * s3 - 15.0 * s4 + 6.0 * s5,
+            -4.0 * s3 + 7.0 * s4 - 3.0 * s5,
+            0.5 * s3 - s4 + 0.5 * s5,
+        ]
     }
 }
 
@@ -106,7 +122,7 @@ mod tests {
         for k in 0..=10 {
             let t = t0 + dt * k as f64 / 10.0;
             let (q, qd) = h.at(t);
-            assert!((q[0] - p(t)).abs() < 1e-13, "q at {t}");
+            assert!((q[0] - p(t)).abs() < 1e-13 && (h.position_of(0, t) - p(t)).abs() < 1e-13, "q at {t}");
             assert!((qd[0] - dp(t)).abs() < 1e-12, "q̇ at {t}");
         }
     }

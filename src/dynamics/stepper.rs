@@ -8,7 +8,7 @@ use super::rk4::{self, Hermite5};
 use super::{impact, Evaluation, System};
 use nalgebra::{SMatrix, SVector};
 use serde::{Deserialize, Serialize};
-use std::cell::Cell;
+use std::cell::{Cell, OnceCell};
 use std::fmt;
 
 /// Zeno guard: after an impact a closed constraint whose free flight would rise no higher than
@@ -199,6 +199,9 @@ struct Sample<const N: usize, const M: usize> {
     gap: SVector<f64, M>,
     /// ḣ = J q̇ + ∂h/∂t.
     hd: SVector<f64, M>,
+    /// ḧ = J q̈ + d: with `h` and `ḣ` at both ends of a step it gives the gaps' own quintic
+    /// extension, so that event search samples no configuration.
+    hdd: SVector<f64, M>,
 }
 
 /// A sample with the system's evaluation there (the impact and sliding laws and the drift
@@ -277,9 +280,10 @@ fn sample_of<const N: usize, const M: usize>(
 ) -> Result<Sample<N, M>, DynamicsError> {
     let (acc, lambda) = acceleration(ev, t, active)?;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
-    let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd };
+    let hdd = ev.gap_jacobian * acc + ev.gap_bias;
+    let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd, hdd };
     let finite = |x: &[f64]| x.iter().all(|v| v.is_finite());
-    if [s.q.as_slice(), s.v.as_slice(), s.acc.as_slice(), s.lambda.as_slice(), s.gap.as_slice(), s.hd.as_slice()]
+    if [s.q.as_slice(), s.v.as_slice(), s.acc.as_slice(), s.lambda.as_slice(), s.gap.as_slice(), s.hd.as_slice(), s.hdd.as_slice()]
         .into_iter()
         .all(finite)
     {
@@ -564,9 +568,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     fn step(&mut self, t_end: f64) -> Result<bool, DynamicsError> {
         let (s1, ev1) = self.trial_step(t_end)?;
         self.count(|c| c.accepted += 1);
-        let (s0, active) = (&self.state, self.active);
-        let dense = Hermite5 { t0: s0.t, dt: s1.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: s1.q, v1: s1.v, a1: s1.acc };
-        match self.first_event(&dense, (s1, Some(ev1)))? {
+        let active = self.active;
+        match self.first_event((s1, Some(ev1)))? {
             Ok((s1, ev)) => {
                 self.state = s1;
                 if active != 0 {
@@ -601,29 +604,37 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     #[allow(clippy::type_complexity)]
     fn first_event(
         &self,
-        dense: &Hermite5<N>,
         s1: Evaluated<N, M>,
     ) -> Result<Result<Evaluated<N, M>, (Evaluated<N, M>, usize, Watch)>, DynamicsError> {
         let (sys, s0, active) = (&self.system, &self.state, self.active);
         let watch_of = |i| if contains(active, i) { Watch::Multiplier } else { Watch::Gap };
+        let step_end = &s1.0;
+        // The step's quintic extensions, of the gaps and of the configuration, built once a scan
+        // needs them (most steps scan nothing).
+        let (gaps, configuration) = (OnceCell::new(), OnceCell::new());
         let on_dense = |t: f64, i: usize, w: Watch| -> Result<f64, DynamicsError> {
+            let e = step_end;
             match w {
-                Watch::Gap => Ok(sys.gaps(t, &dense.position(t))[i]),
+                Watch::Gap => Ok(gaps
+                    .get_or_init(|| Hermite5 { t0: s0.t, dt: e.t - s0.t, q0: s0.gap, v0: s0.hd, a0: s0.hdd, q1: e.gap, v1: e.hd, a1: e.hdd })
+                    .position_of(i, t)),
                 Watch::Multiplier => {
+                    let dense = configuration
+                        .get_or_init(|| Hermite5 { t0: s0.t, dt: e.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: e.q, v1: e.v, a1: e.acc });
                     let (q, v) = dense.at(t);
                     Ok(sample(sys, t, q, v, active)?.lambda[i])
                 }
             }
         };
-        let mut end = s1;
         // A located event is checked against the others at its own state; if one of them has
-        // already crossed there, the search repeats on the shorter step (at most M times).
+        // already crossed there, the search repeats on the shorter step, to that state (at most M times).
+        let mut located: Option<Evaluated<N, M>> = None;
         for _ in 0..=M {
             let mut earliest: Option<(f64, usize, Watch, Start)> = None;
             for i in 0..M {
                 let w = watch_of(i);
                 let tol = self.tolerance(w);
-                let e = &end.0;
+                let e = located.as_ref().map_or(step_end, |l| &l.0);
                 let (g0, g1) = (s0.watched(i, w), e.watched(i, w));
                 let dip = w == Watch::Gap && s0.hd[i] < 0.0 && e.hd[i] > 0.0 && g0.min(g1) < 2.0 * (e.t - s0.t) * -s0.hd[i];
                 if g1 >= -tol && !dip {
@@ -652,7 +663,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     earliest = Some((estimate, i, w, start.expect("matched above")));
                 }
             }
-            let Some((estimate, i, w, start)) = earliest else { return Ok(Ok(end)) };
+            let Some((estimate, i, w, start)) = earliest else { return Ok(Ok(located.unwrap_or(s1))) };
             let br = match start {
                 Start::Immediate => return Ok(Err(((s0.clone(), None), i, w))),
                 Start::Within(br) => br,
@@ -662,9 +673,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             if !crossed_before {
                 return Ok(Err(((s, Some(ev)), i, w)));
             }
-            end = (s, Some(ev));
+            located = Some((s, Some(ev)));
         }
         // Only reachable with round-off ties between constraints: take the last located state.
+        let end = located.unwrap_or(s1);
         let j = (0..M).find(|&j| end.0.watched(j, watch_of(j)) < 0.0).unwrap_or(0);
         Ok(Err((end, j, watch_of(j))))
     }

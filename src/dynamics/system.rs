@@ -35,9 +35,6 @@ pub trait System<const N: usize, const M: usize> {
         (ev.mass, ev.force)
     }
 
-    /// `h(q,t)` alone: event location calls this many times.
-    fn gaps(&self, t: f64, q: &SVector<f64, N>) -> SVector<f64, M>;
-
     /// Newton restitution coefficient `e_i ∈ [0, 1]` of constraint `i`.
     fn restitution(&self, constraint: usize) -> f64;
 }

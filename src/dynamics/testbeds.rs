@@ -12,12 +12,11 @@ use std::cell::Cell;
 pub struct Counted<S> {
     pub inner: S,
     pub evaluations: Cell<u64>,
-    pub gap_calls: Cell<u64>,
 }
 
 impl<S> Counted<S> {
     pub fn new(inner: S) -> Self {
-        Self { inner, evaluations: Cell::new(0), gap_calls: Cell::new(0) }
+        Self { inner, evaluations: Cell::new(0) }
     }
 }
 
@@ -25,10 +24,6 @@ impl<S: System<N, M>, const N: usize, const M: usize> System<N, M> for Counted<S
     fn evaluate(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> Evaluation<N, M> {
         self.evaluations.set(self.evaluations.get() + 1);
         self.inner.evaluate(t, q, qd)
-    }
-    fn gaps(&self, t: f64, q: &SVector<f64, N>) -> SVector<f64, M> {
-        self.gap_calls.set(self.gap_calls.get() + 1);
-        self.inner.gaps(t, q)
     }
     fn restitution(&self, i: usize) -> f64 {
         self.inner.restitution(i)
@@ -81,9 +76,6 @@ impl System<1, 1> for Ball {
             gap_bias: Vector1::new(-af),
         }
     }
-    fn gaps(&self, t: f64, q: &Vector1<f64>) -> Vector1<f64> {
-        Vector1::new(q[0] - self.floor.motion(t).0)
-    }
     fn restitution(&self, _: usize) -> f64 {
         self.restitution
     }
@@ -114,20 +106,16 @@ impl System<3, 2> for Rod {
         let half = 0.5 * self.length;
         let (s, c) = q[2].sin_cos();
         let spin = half * s * qd[2] * qd[2];
-        let (_, vf, af) = self.floor.motion(t);
+        let (yf, vf, af) = self.floor.motion(t);
+        let (centre, rise) = (q[1] - yf, half * s);
         Evaluation {
             mass: Matrix3::from_diagonal(&Vector3::new(self.mass, self.mass, self.inertia())),
             force: Vector3::new(0.0, -self.mass * self.gravity, 0.0),
-            gap: self.gaps(t, q),
+            gap: Vector2::new(centre - rise, centre + rise),
             gap_jacobian: SMatrix::<f64, 2, 3>::new(0.0, 1.0, -half * c, 0.0, 1.0, half * c),
             gap_time_rate: Vector2::new(-vf, -vf),
             gap_bias: Vector2::new(spin - af, -spin - af),
         }
-    }
-    fn gaps(&self, t: f64, q: &Vector3<f64>) -> Vector2<f64> {
-        let rise = 0.5 * self.length * q[2].sin();
-        let centre = q[1] - self.floor.motion(t).0;
-        Vector2::new(centre - rise, centre + rise)
     }
     fn restitution(&self, _: usize) -> f64 {
         self.restitution
@@ -151,18 +139,15 @@ impl Wedge {
 }
 
 impl System<2, 2> for Wedge {
-    fn evaluate(&self, t: f64, q: &Vector2<f64>, _qd: &Vector2<f64>) -> Evaluation<2, 2> {
+    fn evaluate(&self, _t: f64, q: &Vector2<f64>, _qd: &Vector2<f64>) -> Evaluation<2, 2> {
         Evaluation {
             mass: Matrix2::identity() * self.mass,
             force: self.gravity * self.mass,
-            gap: self.gaps(t, q),
+            gap: self.jacobian() * q,
             gap_jacobian: self.jacobian(),
             gap_time_rate: Vector2::zeros(),
             gap_bias: Vector2::zeros(),
         }
-    }
-    fn gaps(&self, _t: f64, q: &Vector2<f64>) -> Vector2<f64> {
-        self.jacobian() * q
     }
     fn restitution(&self, _: usize) -> f64 {
         self.restitution
@@ -197,7 +182,7 @@ impl DoublePendulum {
 }
 
 impl System<2, 1> for DoublePendulum {
-    fn evaluate(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 1> {
+    fn evaluate(&self, _t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 1> {
         let ([m1, m2], [l1, l2], g) = (self.masses, self.lengths, self.gravity);
         let (s1, c1) = q[0].sin_cos();
         let (s2, c2) = q[1].sin_cos();
@@ -205,14 +190,11 @@ impl System<2, 1> for DoublePendulum {
         Evaluation {
             mass: self.mass_matrix(q),
             force: Vector2::new(-cross * qd[1] * qd[1] - (m1 + m2) * g * l1 * s1, cross * qd[0] * qd[0] - m2 * g * l2 * s2),
-            gap: self.gaps(t, q),
+            gap: Vector1::new(l1 * s1 + l2 * s2 + self.wall),
             gap_jacobian: RowVector2::new(l1 * c1, l2 * c2),
             gap_time_rate: Vector1::zeros(),
             gap_bias: Vector1::new(-l1 * s1 * qd[0] * qd[0] - l2 * s2 * qd[1] * qd[1]),
         }
-    }
-    fn gaps(&self, _t: f64, q: &Vector2<f64>) -> Vector1<f64> {
-        Vector1::new(self.lengths[0] * q[0].sin() + self.lengths[1] * q[1].sin() + self.wall)
     }
     fn restitution(&self, _: usize) -> f64 {
         self.restitution

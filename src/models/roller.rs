@@ -84,11 +84,6 @@ impl System<1, 2> for RollerSystem {
         }
     }
 
-    fn gaps(&self, t: f64, q: &Vector1<f64>) -> Vector2<f64> {
-        let limit = self.mechanism.at(t).psi_max(self.rho).value;
-        Vector2::new(limit + q[0], limit - q[0])
-    }
-
     fn restitution(&self, _constraint: usize) -> f64 {
         self.restitution
     }
