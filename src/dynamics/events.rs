@@ -123,10 +123,15 @@ pub(crate) fn illinois<E>(
         if br.collapsed() {
             break;
         }
+        // A secant that rounds onto an end (one end's g far smaller than the other's) puts the
+        // root within an ulp of that end: the float next to it, not bisection, which would take
+        // some forty halvings to get there.
         let secant = (br.lo * br.g_hi - br.hi * br.g_lo) / (br.g_hi - br.g_lo);
         let t = match guess.take() {
             Some(t) if t > br.lo && t < br.hi => t,
             _ if secant > br.lo && secant < br.hi => secant,
+            _ if secant <= br.lo => br.lo.next_up(),
+            _ if secant >= br.hi => br.hi.next_down(),
             _ => br.lo + 0.5 * (br.hi - br.lo),
         };
         let gt = g(t)?;
@@ -188,6 +193,22 @@ mod tests {
         let (tb, nb) = run(f, |g, br| bisect(g, br, 1e-13).unwrap());
         assert!((ti - 0.3).abs() < 1e-12 && (tb - 0.3).abs() < 1e-12);
         assert!(ni < 15 && nb > 30, "illinois {ni} calls, bisection {nb}");
+    }
+
+    /// A root within an ulp of the bracket's end, where `g` is far smaller than at the other
+    /// end, so that the secant rounds onto the end (a release on the RK4 map, found by the
+    /// crank train): the float next to it at once, not some fifty bisections.
+    #[test]
+    fn a_secant_rounding_onto_an_end_tries_the_next_float() {
+        let f = |t: f64| if t < 1.0 { 1.0 - t } else { -1e-17 };
+        let calls = std::cell::Cell::new(0);
+        let g = |t: f64| {
+            calls.set(calls.get() + 1);
+            Ok::<_, Infallible>(f(t))
+        };
+        let located = illinois(g, Bracket { lo: 0.0, g_lo: 1.0, hi: 1.0, g_hi: f(1.0) }, 1e-20, None).unwrap();
+        assert_eq!(located, Located::Collapsed(Bracket { lo: 1.0_f64.next_down(), g_lo: f(1.0_f64.next_down()), hi: 1.0, g_hi: -1e-17 }));
+        assert_eq!(calls.get(), 1);
     }
 
     #[test]

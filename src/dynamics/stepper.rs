@@ -622,7 +622,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     let dense = configuration
                         .get_or_init(|| Hermite5 { t0: s0.t, dt: e.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: e.q, v1: e.v, a1: e.acc });
                     let (q, v) = dense.at(t);
-                    Ok(sample(sys, t, q, v, active)?.lambda[i])
+                    let lambda = acceleration(&sys.evaluate(t, &q, &v), t, active)?.1[i];
+                    if lambda.is_finite() {
+                        Ok(lambda)
+                    } else {
+                        Err(DynamicsError::NonFinite { time: t })
+                    }
                 }
             }
         };
