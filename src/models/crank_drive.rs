@@ -77,8 +77,9 @@ impl Engine {
         pressure * self.crown_area
     }
 
+    #[inline(always)]
     fn crank(&self, angle: f64) -> Crank {
-        let (sin, cos) = angle.sin_cos();
+        let (sin, cos) = super::trig::sin_cos(angle);
         let curve = match &self.pressure {
             GasPressure::BuiltIn(curve) => curve.gauge_at(angle, sin, cos),
             GasPressure::Held(_) => 0.0,
@@ -142,6 +143,7 @@ impl PrescribedCrank {
     }
 
     /// The crank terms at `angle`, from the cache when it is the last angle evaluated.
+    #[inline(always)]
     fn crank(&self, angle: f64) -> Crank {
         self.last_crank.get_or(angle, || self.engine.crank(angle))
     }

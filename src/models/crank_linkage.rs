@@ -23,7 +23,7 @@
 //! w = −(d/2 + a) (K1, K2) or d/2 − a (K3, K4); gaps `h_i = D/2 + x_K` (K1, K2, wall −D/2) and
 //! `D/2 − x_K` (K3, K4), in metres, so a multiplier is the normal contact force in newtons.
 
-use super::{small_angle, Parameters};
+use super::{trig, Parameters};
 use crate::dynamics::Evaluation;
 use nalgebra::{Matrix3, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -122,7 +122,7 @@ impl Trig {
 
     /// With the crank angle's sine and cosine at hand.
     pub fn with_crank((s1, c1): (f64, f64), phi: &Vector3<f64>) -> Self {
-        let [(s2, c2), (s3, c3)] = [small_angle::sin_cos(phi[1]), small_angle::sin_cos(phi[2])];
+        let [(s2, c2), (s3, c3)] = [trig::small_sin_cos(phi[1]), trig::small_sin_cos(phi[2])];
         Self { sin: [s1, s2, s3], cos: [c1, c2, c3] }
     }
 }
@@ -163,8 +163,8 @@ impl Linkage {
     /// Corner gaps h(φ), m.
     pub fn gaps(&self, phi: &Vector3<f64>) -> Vector4<f64> {
         let [l1, l2] = self.bodies.links;
-        let (s3, c3) = small_angle::sin_cos(phi[2]);
-        self.corner_gaps(-l1 * phi[0].sin() - l2 * small_angle::sin_cos(phi[1]).0, s3, c3)
+        let (s3, c3) = trig::small_sin_cos(phi[2]);
+        self.corner_gaps(-l1 * phi[0].sin() - l2 * trig::small_sin_cos(phi[1]).0, s3, c3)
     }
 
     /// Gaps from the pin's lateral position and the piston tilt's sine and cosine.

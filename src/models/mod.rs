@@ -12,7 +12,7 @@ mod last_value;
 pub mod pressure;
 mod roller;
 mod roller_forcing;
-mod small_angle;
+mod trig;
 
 pub use crank_efficiency::{EfficiencyCalibration, EfficiencyTarget};
 pub use crank_train::CrankTrain;
