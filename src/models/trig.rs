@@ -56,14 +56,14 @@ pub(crate) fn small_sin_cos(x: f64) -> (f64, f64) {
 }
 
 /// π/2 in three parts (their sum is π/2 to 1e-37): the first two of at most 32 significant bits,
-/// so that their products with k, and x − k·part₁, are exact for the |k| ≤ 2¹⁰ of [`REDUCIBLE`]; the last
+/// so that their products with k, and x − k·part₁, are exact for the |k| ≤ 2¹⁴ of [`REDUCIBLE`]; the last
 /// rounded, its error far below an ulp of the smallest remainder (|r| ≳ 6e-17 |k| at x = k·π/2
 /// rounded to a double).
 const HALF_PI: [f64; 3] = [1.570_796_326_734_125_6, 6.077_100_506_303_966e-11, 2.022_266_248_795_950_6e-21];
 
-/// Angles whose quarter turns [`sin_cos`] takes off itself; beyond, libm (a crank angle is kept
-/// within a cycle, 4π).
-const REDUCIBLE: f64 = 1024.0 * std::f64::consts::FRAC_PI_2;
+/// Angles whose quarter turns [`sin_cos`] takes off itself; beyond, libm (the crank train keeps
+/// its crank angle within a cycle, 4π, the roller within 2048 turns).
+const REDUCIBLE: f64 = 16384.0 * std::f64::consts::FRAC_PI_2;
 
 /// `x.sin_cos()` of any angle, within 2 ulp of libm up to [`REDUCIBLE`]: x = k π/2 + r with
 /// |r| ≤ π/4, then the polynomials on r. libm's reduction made its call ≈ 150 instructions, 7 %
@@ -139,7 +139,7 @@ mod tests {
         grid(REDUCIBLE).for_each(check_any);
         // Where one of the two crosses zero its relative error is set by the reduction, and
         // halfway between, by the polynomials at their widest |r| = π/4.
-        for k in -1024..=1024 {
+        for k in -16384..=16384 {
             for x in [f64::from(k) * FRAC_PI_2, (f64::from(k) + 0.5) * FRAC_PI_2] {
                 [x, x.next_up(), x.next_down(), x + 1e-9, x - 1e-9].into_iter().for_each(check_any);
             }
