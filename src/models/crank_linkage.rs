@@ -117,7 +117,7 @@ pub struct Trig {
 
 impl Trig {
     pub fn new(phi: &Vector3<f64>) -> Self {
-        Self::with_crank(phi[0].sin_cos(), phi)
+        Self::with_crank(trig::sin_cos(phi[0]), phi)
     }
 
     /// With the crank angle's sine and cosine at hand.
@@ -164,7 +164,7 @@ impl Linkage {
     pub fn gaps(&self, phi: &Vector3<f64>) -> Vector4<f64> {
         let [l1, l2] = self.bodies.links;
         let (s3, c3) = trig::small_sin_cos(phi[2]);
-        self.corner_gaps(-l1 * phi[0].sin() - l2 * trig::small_sin_cos(phi[1]).0, s3, c3)
+        self.corner_gaps(-l1 * trig::sin_cos(phi[0]).0 - l2 * trig::small_sin_cos(phi[1]).0, s3, c3)
     }
 
     /// Gaps from the pin's lateral position and the piston tilt's sine and cosine.

@@ -40,16 +40,22 @@ fn horner(y: f64, c: &[f64]) -> f64 {
     rest.iter().rfold(*last, |acc, &c| acc * y + c)
 }
 
+/// The two Taylor series in x with the given coefficients. Inlined, so that the slices' lengths
+/// are constants and the loops unroll.
+#[inline(always)]
+fn series(x: f64, sin: &[f64], cos: &[f64]) -> (f64, f64) {
+    let y = x * x;
+    (x + x * y * horner(y, sin), 1.0 + y * horner(y, cos))
+}
+
 /// `x.sin_cos()` within an ulp or so, by polynomials for |x| ≤ [`LIMIT`], by libm otherwise
 /// (NaN and infinities included).
 #[inline]
 pub(crate) fn small_sin_cos(x: f64) -> (f64, f64) {
     if x.abs() <= TILT_LIMIT {
-        let y = x * x;
-        (x + x * y * horner(y, &SIN[..2]), 1.0 + y * horner(y, &COS[..2]))
+        series(x, &SIN[..2], &COS[..2])
     } else if x.abs() <= LIMIT {
-        let y = x * x;
-        (x + x * y * horner(y, &SIN[..6]), 1.0 + y * horner(y, &COS[..7]))
+        series(x, &SIN[..6], &COS[..7])
     } else {
         x.sin_cos()
     }
@@ -76,8 +82,7 @@ pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
     let shifter = 6_755_399_441_055_744.0;
     let k = (x * std::f64::consts::FRAC_2_PI + shifter) - shifter;
     let r = ((x - k * HALF_PI[0]) - k * HALF_PI[1]) - k * HALF_PI[2];
-    let y = r * r;
-    let (s, c) = (r + r * y * horner(y, &SIN), 1.0 + y * horner(y, &COS));
+    let (s, c) = series(r, &SIN, &COS);
     match (k as i64) & 3 {
         0 => (s, c),
         1 => (c, -s),
