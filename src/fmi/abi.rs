@@ -12,6 +12,7 @@ use super::instance::{
     SET, STATE, STATUS,
 };
 use super::logger::Logger;
+use super::sibling;
 use super::types::*;
 use crate::models::{Inputs, Outputs, Parameters};
 use std::any::Any;
@@ -204,6 +205,7 @@ pub unsafe fn instantiate<E: Model>(
         };
         match check() {
             Ok(()) => {
+                logger.debug("logBuild", sibling::description);
                 let component = Component {
                     tag: INSTANCE_TAG,
                     instance: Instance::<E>::new(logger),
