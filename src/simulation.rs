@@ -49,7 +49,7 @@ impl<T: Default> PartialEq for Scratch<T> {
 
 impl<E: EngineModel> Simulation<E> {
     /// Validates the parameters (generic ranges, then the model's own checks) and builds the model at
-    /// `start_time` with its initial outputs. Touches no file: the impact log starts with [`Self::start_log`].
+    /// `start_time` with its initial outputs. Touches no file: the impact log starts with [`Self::start`].
     pub fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         if !start_time.is_finite() {
             return Err(ModelError(format!("start time {start_time} is not finite")));

@@ -1,6 +1,6 @@
 //! The exported C symbols of `fmi_headers/fmi2Functions.h`: the common and Co-Simulation functions,
 //! each a one-line call of its generic body in `abi.rs` with the shipped [`Engine`], written once in
-//! [`exports!`] which also makes the table [`Functions`] of them all.
+//! `exports!`, which also makes the table [`Functions`] of them all.
 #![allow(non_snake_case, clippy::missing_safety_doc)]
 
 use super::abi;
@@ -14,7 +14,7 @@ use std::ffi::{c_char, c_int, c_void, CStr};
 macro_rules! exports {
     ($(fn $name:ident($($arg:ident: $ty:ty),*) $(-> $ret:ty)? $body:block)*) => {
         /// The exported functions as pointers: this build's own ([`Functions::NATIVE`]) or those of
-        /// another copy of the library opened with `dlopen` ([`Functions::load`]).
+        /// another copy of the library opened with `dlopen` (`sibling::open`).
         #[derive(Clone, Copy)]
         pub struct Functions {
             $(pub $name: unsafe extern "C" fn($($ty),*) $(-> $ret)?,)*
@@ -24,7 +24,7 @@ macro_rules! exports {
             pub const NATIVE: Functions = Functions { $($name,)* };
 
             /// The functions of `library`, a handle from `dlopen`; `None` if one is missing.
-            pub unsafe fn load(library: *mut c_void) -> Option<Functions> {
+            pub(super) unsafe fn load(library: *mut c_void) -> Option<Functions> {
                 Some(Functions {
                     $($name: std::mem::transmute::<*mut c_void, unsafe extern "C" fn($($ty),*) $(-> $ret)?>(
                         symbol(library, concat!(stringify!($name), "\0"))?,

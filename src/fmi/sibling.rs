@@ -17,7 +17,7 @@ use std::sync::OnceLock;
 /// The sibling's file name, in the FMU's `binaries/linux64/`.
 pub const FILE_NAME: &str = "PistonSlap.x86-64-v3.so";
 
-/// The environment variable that keeps the portable build when set to [`PORTABLE`].
+/// The environment variable that keeps the portable build when set to `x86-64`.
 pub const CHOICE_VARIABLE: &str = "PISTONSLAP_BUILD";
 
 const PORTABLE: &CStr = c"x86-64";
