@@ -65,7 +65,7 @@ impl<E: EngineModel> Simulation<E> {
             log: None,
             spare_events: Scratch::default(),
         };
-        sim.write_outputs();
+        Self::write_outputs(&sim.model, &sim.statistics, &mut sim.outputs);
         Ok(sim)
     }
 
@@ -138,8 +138,7 @@ impl<E: EngineModel> Simulation<E> {
         let mut statistics = self.statistics.clone();
         statistics.record_step(events);
         let mut outputs = self.outputs.clone();
-        self.model.write_outputs(&mut outputs);
-        statistics.write(&mut outputs);
+        Self::write_outputs(&self.model, &statistics, &mut outputs);
         Self::valid(t_end, &outputs).map_err(|e| failed("refused", &e.0))?;
         if let Some(log) = &mut self.log {
             // Cuts the file back and keeps its cursor when it fails.
@@ -173,9 +172,10 @@ impl<E: EngineModel> Simulation<E> {
         self.log.as_ref().map_or(Ok(()), ImpactLog::rewind)
     }
 
-    fn write_outputs(&mut self) {
-        self.model.write_outputs(&mut self.outputs);
-        self.statistics.write(&mut self.outputs);
+    /// The outputs of `model` with the impact statistics `statistics`.
+    fn write_outputs(model: &E, statistics: &ImpactStatistics, outputs: &mut Outputs) {
+        model.write_outputs(outputs);
+        statistics.write(outputs);
     }
 }
 
