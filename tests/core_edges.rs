@@ -52,13 +52,21 @@ fn advance_ends_exactly_at_the_end_time() {
 }
 
 #[test]
-fn an_accumulation_beyond_the_budget_is_an_error() {
+fn more_events_than_the_budget_within_one_nominal_step_are_an_error_and_a_long_span_is_not() {
+    // An elastic ball dropped from 1 m bounces every 2√(2/g) = 0.903 s, eleven times in 10 s; RK4
+    // integrates its parabolas exactly at any step, so the nominal step only sets the window.
     let ball = Ball { mass: 1.0, gravity: G, restitution: 1.0, floor: Floor::Fixed };
-    let mut s = Stepper::new(ball, 0.0, Vector1::new(1.0), Vector1::zeros(), StepperOptions { step: 1e-3, ..Default::default() }).unwrap();
-    s.set_event_budget(3);
-    let err = s.advance(10.0).unwrap_err();
-    assert!(matches!(err, DynamicsError::EventBudget { events: 3, .. }), "{err}");
-    assert!(err.to_string().contains("more than 3 events"));
+    let run = |step: f64| {
+        let mut s = Stepper::new(ball.clone(), 0.0, Vector1::new(1.0), Vector1::zeros(), StepperOptions { step, ..Default::default() }).unwrap();
+        s.set_event_budget(3);
+        s.advance(10.0).map(|()| s.events().len())
+    };
+    // All eleven in one 10 s window: the fourth is refused.
+    let err = run(10.0).unwrap_err();
+    assert!(matches!(err, DynamicsError::EventBudget { events: 3, time, .. } if (time - 0.4515 - 3.0 * 0.9031).abs() < 1e-3), "{err}");
+    assert!(err.to_string().contains("more than 3 events within 10 s"), "{err}");
+    // At most one per 0.5 s window: all eleven in one advance.
+    assert_eq!(run(0.5).unwrap(), 11);
 }
 
 #[test]

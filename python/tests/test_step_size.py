@@ -4,7 +4,10 @@ two engine cycles of the default engine with communication steps of 1e-3 s and 1
 Measured (1e-3 vs 1e-4 vs 1e-5 s): the 172 impacts faster than 1 mm/s pair one to one, same corner, times within
 1.3e-10 s, approach speeds within 2e-5 relative. The assertions leave a factor of about 100 on the times and 50 on
 the speeds, and are still 1e5 times finer than the coarse step, on whose grid an FMU that detected impacts only at
-the end of the step would put them."""
+the end of the step would put them.
+
+A host may also take one long step: 10 s in one `fmi2DoStep` holds ≈ 9600 events, which the core must not mistake
+for an accumulation of impacts."""
 
 import numpy as np
 import pytest
@@ -18,6 +21,7 @@ SPEED_TOLERANCE = 1e-3  # relative
 #: Slower impacts end bounce sequences that converge to sliding (their length depends on where the integrator's
 #: steps fall) or are closed corners taking part in a neighbour's impact: counted, not paired.
 SLOW = 1e-3  # m/s
+LONG = 10.0  # s, a hundred cycles in one communication step
 
 
 @pytest.fixture(scope="module")
@@ -50,3 +54,11 @@ def test_impacts_are_not_on_the_communication_grid(runs):
     times = impacts(runs[COARSE])["time"]
     on_grid = np.abs(times / COARSE - np.round(times / COARSE)) < 1e-6
     assert on_grid.mean() < 0.05
+
+
+def test_one_long_step_gives_the_impacts_of_short_ones(fmu_file):
+    long, short = (simulate_with_events(stop_time=LONG, output_interval=h)[1] for h in (LONG, 1e-2))
+    fast = [impacts((None, events), SLOW) for events in (long, short)]
+    assert len(fast[0]) == len(fast[1]) > 5000
+    np.testing.assert_array_equal(fast[0]["corner"], fast[1]["corner"])
+    np.testing.assert_allclose(fast[0]["time"], fast[1]["time"], rtol=0, atol=TIME_TOLERANCE)

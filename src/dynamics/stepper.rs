@@ -28,7 +28,8 @@ const DRIFT_FRACTION: f64 = 0.1;
 /// accepted whatever its error estimate (it is then far below the nominal step's error).
 const MIN_STEP_FRACTION: f64 = 1e-4;
 
-/// Default bound on the events handled in one `advance` (see `Stepper::set_event_budget`).
+/// Default bound on the events handled while the time advances by less than one nominal step
+/// (see `Stepper::set_event_budget`).
 pub const DEFAULT_EVENT_BUDGET: usize = 10_000;
 
 /// Constraints that can be enumerated by the complementarity solvers (2^M supports).
@@ -140,8 +141,9 @@ pub enum DynamicsError {
     ContactUnresolved { time: f64, constraints: u32 },
     /// A constraint is violated by more than ε_h where it must be admissible.
     Penetration { time: f64, constraint: usize, gap: f64 },
-    /// More events than the budget in one `advance` (an unresolved accumulation).
-    EventBudget { time: f64, events: usize },
+    /// More events than the budget while the time advanced by less than `span`, the nominal step
+    /// (an unresolved accumulation).
+    EventBudget { time: f64, events: usize, span: f64 },
     /// A refused argument: bad options, or an end time before the current time.
     InvalidArgument { time: f64, reason: &'static str },
 }
@@ -178,8 +180,8 @@ impl fmt::Display for DynamicsError {
             Penetration { time, constraint, gap } => {
                 write!(f, "at t = {time} s: constraint {constraint} is violated, gap {gap:e} below the tolerance")
             }
-            EventBudget { time, events } => {
-                write!(f, "at t = {time} s: more than {events} events in one step (accumulation not resolved)")
+            EventBudget { time, events, span } => {
+                write!(f, "at t = {time} s: more than {events} events within {span} s (accumulation not resolved)")
             }
             InvalidArgument { time, reason } => write!(f, "at t = {time} s: {reason}"),
         }
@@ -411,7 +413,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             return Err(DynamicsError::InvalidArgument { time: self.state.t, reason });
         }
         self.reexamine()?;
-        let (mut handled, mut steps) = (0, 0.0);
+        // Events are counted per window of one nominal step: an accumulation piles them up in a
+        // vanishing time, while a long span of ordinary impacts only needs more windows.
+        let (mut handled, mut steps, mut window_start) = (0, 0.0, self.state.t);
         while self.state.t < t_end {
             // The adaptive step may be far below the nominal one: its work is bounded here.
             steps += 1.0;
@@ -419,9 +423,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 return Err(DynamicsError::InvalidArgument { time: self.state.t, reason: TOO_MANY_STEPS });
             }
             if self.step(t_end)? {
+                if self.state.t - window_start >= self.options.step {
+                    (handled, window_start) = (0, self.state.t);
+                }
                 handled += 1;
                 if handled > self.event_budget {
-                    return Err(DynamicsError::EventBudget { time: self.state.t, events: self.event_budget });
+                    return Err(DynamicsError::EventBudget { time: self.state.t, events: self.event_budget, span: self.options.step });
                 }
             }
         }
@@ -492,8 +499,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     pub fn set_locator(&mut self, locator: EventLocator) {
         self.locator = locator;
     }
-    /// Bounds the events handled in one `advance` (default `DEFAULT_EVENT_BUDGET`); beyond it
-    /// `advance` returns `DynamicsError::EventBudget` instead of spinning.
+    /// Bounds the events handled while the time advances by less than one nominal step (default
+    /// `DEFAULT_EVENT_BUDGET`); beyond it `advance` returns `DynamicsError::EventBudget` instead of
+    /// spinning.
     pub fn set_event_budget(&mut self, events: usize) {
         self.event_budget = events;
     }
