@@ -64,7 +64,7 @@ fn more_events_than_the_budget_within_one_nominal_step_are_an_error_and_a_long_s
     // All eleven in one 10 s window: the fourth is refused.
     let err = run(10.0).unwrap_err();
     assert!(matches!(err, DynamicsError::EventBudget { events: 3, time, .. } if (time - 0.4515 - 3.0 * 0.9031).abs() < 1e-3), "{err}");
-    assert!(err.to_string().contains("more than 3 events within 10 s"), "{err}");
+    assert!(err.to_string().contains("more than 3 events within one nominal step"), "{err}");
     // At most one per 0.5 s window: all eleven in one advance.
     assert_eq!(run(0.5).unwrap(), 11);
 }

@@ -233,3 +233,14 @@ fn refuses_what_the_model_cannot_do() {
     let mut model = Roller::new(&thesis_case(0.05, 0.01, 0.9), 0.0).unwrap();
     assert!(model.advance(&speed(0.0), 1.0, &mut Vec::new()).unwrap_err().0.contains("crank_speed"));
 }
+
+/// The core runs on the crank angle; its errors reach the host on the engine's clock. A span of
+/// 10³ s needs 2.5·10⁷ steps of 0.005 rad, more than one step may take: refused at t = 1 s, where
+/// the crank angle is 125.66 rad.
+#[test]
+fn core_errors_give_the_engine_time() {
+    let mut model = Roller::new(&thesis_case(0.05, 0.01, 0.9), 0.0).unwrap();
+    model.advance(&speed(125.66), 1.0, &mut Vec::new()).unwrap();
+    let message = model.advance(&speed(125.66), 1001.0, &mut Vec::new()).unwrap_err().0;
+    assert!(message.contains("at t = 1 s") && message.contains("10⁷ RK4 steps"), "{message}");
+}

@@ -141,9 +141,9 @@ pub enum DynamicsError {
     ContactUnresolved { time: f64, constraints: u32 },
     /// A constraint is violated by more than ε_h where it must be admissible.
     Penetration { time: f64, constraint: usize, gap: f64 },
-    /// More events than the budget while the time advanced by less than `span`, the nominal step
-    /// (an unresolved accumulation).
-    EventBudget { time: f64, events: usize, span: f64 },
+    /// More events than the budget while the time advanced by less than one nominal step (an
+    /// unresolved accumulation).
+    EventBudget { time: f64, events: usize },
     /// A refused argument: bad options, or an end time before the current time.
     InvalidArgument { time: f64, reason: &'static str },
 }
@@ -180,8 +180,8 @@ impl fmt::Display for DynamicsError {
             Penetration { time, constraint, gap } => {
                 write!(f, "at t = {time} s: constraint {constraint} is violated, gap {gap:e} below the tolerance")
             }
-            EventBudget { time, events, span } => {
-                write!(f, "at t = {time} s: more than {events} events within {span} s (accumulation not resolved)")
+            EventBudget { time, events } => {
+                write!(f, "at t = {time} s: more than {events} events within one nominal step (accumulation not resolved)")
             }
             InvalidArgument { time, reason } => write!(f, "at t = {time} s: {reason}"),
         }
@@ -189,6 +189,24 @@ impl fmt::Display for DynamicsError {
 }
 
 impl std::error::Error for DynamicsError {}
+
+impl DynamicsError {
+    /// The same error with its time mapped by `clock` (for a model whose core runs on another
+    /// independent variable, such as a crank angle).
+    pub fn map_time(mut self, clock: impl FnOnce(f64) -> f64) -> Self {
+        use DynamicsError::*;
+        let (NonFinite { time }
+        | SingularMass { time }
+        | DependentContacts { time, .. }
+        | MultipleImpact { time, .. }
+        | ContactUnresolved { time, .. }
+        | Penetration { time, .. }
+        | EventBudget { time, .. }
+        | InvalidArgument { time, .. }) = &mut self;
+        *time = clock(*time);
+        self
+    }
+}
 
 /// Everything the loop needs at one `(t, q, q̇)` with a given contact set.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -428,7 +446,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 }
                 handled += 1;
                 if handled > self.event_budget {
-                    return Err(DynamicsError::EventBudget { time: self.state.t, events: self.event_budget, span: self.options.step });
+                    return Err(DynamicsError::EventBudget { time: self.state.t, events: self.event_budget });
                 }
             }
         }

@@ -18,7 +18,7 @@
 use super::last_value::LastValue;
 use super::roller_forcing::{AtAngle, Forcing, SliderCrank};
 use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
-use crate::dynamics::{Evaluation, Event, EventKind, Stepper, StepperOptions, System};
+use crate::dynamics::{DynamicsError, Evaluation, Event, EventKind, Stepper, StepperOptions, System};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -116,8 +116,10 @@ fn require(ok: bool, name: &str, range: &str) -> Result<(), ModelError> {
     }
 }
 
-fn core_error(error: impl std::fmt::Display) -> ModelError {
-    ModelError(format!("model_variant 2: {error}"))
+/// A core error with its time on the engine's clock: the core's time is the crank angle, which
+/// `clock` turns into seconds.
+fn core_error(error: DynamicsError, clock: impl FnOnce(f64) -> f64) -> ModelError {
+    ModelError(format!("model_variant 2: {}", error.map_time(clock)))
 }
 
 /// Corner number of the impact log for a constraint index.
@@ -159,7 +161,8 @@ impl Roller {
         system.lambda = self.damping / (self.piston_mass * self.rod_length * self.rod_length * omega);
         let rate = if self.crank_speed > 0.0 { self.crank_speed / omega } else { 0.0 };
         let (theta, q, qd) = (self.stepper.time(), *self.stepper.position(), *self.stepper.velocity() * rate);
-        self.stepper = Stepper::new(system, theta, q, qd, self.options.clone()).map_err(core_error)?;
+        let now = self.time;
+        self.stepper = Stepper::new(system, theta, q, qd, self.options.clone()).map_err(|e| core_error(e, |_| now))?;
         self.crank_speed = omega;
         Ok(())
     }
@@ -170,7 +173,8 @@ impl Roller {
     fn keep_angle_bounded(&mut self) -> Result<(), ModelError> {
         let turns = (self.stepper.time() / (2.0 * PI * WRAP_TURNS)).floor() * WRAP_TURNS;
         if turns != 0.0 {
-            self.stepper.shift(-2.0 * PI * turns, &SVector::zeros()).map_err(core_error)?;
+            let now = self.time;
+            self.stepper.shift(-2.0 * PI * turns, &SVector::zeros()).map_err(|e| core_error(e, |_| now))?;
             self.turns += turns;
         }
         Ok(())
@@ -226,7 +230,7 @@ impl EngineModel for Roller {
             Forcing::Corrected => SLIDING_THRESHOLD_PER_CLEARANCE * system.rho,
         };
         let options = StepperOptions { step: THESIS_STEP, velocity_tolerance, ..StepperOptions::default() };
-        let stepper = Stepper::new(system, p.crank_angle_start, SVector::zeros(), SVector::zeros(), options.clone()).map_err(core_error)?;
+        let stepper = Stepper::new(system, p.crank_angle_start, SVector::zeros(), SVector::zeros(), options.clone()).map_err(|e| core_error(e, |_| start_time))?;
         Ok(Self {
             stepper,
             options,
@@ -253,7 +257,8 @@ impl EngineModel for Roller {
         self.keep_angle_bounded()?;
         let theta_start = self.stepper.time();
         self.stepper.clear_events();
-        self.stepper.advance(theta_start + omega * (t_end - self.time)).map_err(core_error)?;
+        let now = self.time;
+        self.stepper.advance(theta_start + omega * (t_end - now)).map_err(|e| core_error(e, |theta| now + (theta - theta_start) / omega))?;
         events.extend(self.stepper.events().iter().map(|e| self.engine_event(e, theta_start)));
         let system = self.stepper.system();
         self.impulse_work += self.stepper.events().iter().map(|e| system.impulse_work(e)).sum::<f64>() * self.energy_scale();
