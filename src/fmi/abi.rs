@@ -12,6 +12,7 @@ use super::instance::{
     SET, STATE, STATUS,
 };
 use super::logger::Logger;
+use super::reentry::Entered;
 use super::sibling;
 use super::types::*;
 use crate::models::{Inputs, Outputs, Parameters};
@@ -44,6 +45,10 @@ unsafe fn call<E: Model>(
     function: &str,
     f: impl FnOnce(&mut Component<E>) -> Outcome<Status>,
 ) -> Status {
+    // Not logged: the logger is what called back in.
+    let Some(_call) = Entered::new(c as usize) else {
+        return Status::Error;
+    };
     let Some(component) = component::<E>(c) else {
         return Status::Error;
     };
@@ -226,6 +231,10 @@ pub unsafe fn instantiate<E: Model>(
 }
 
 pub unsafe fn free_instance<E: Model>(c: fmi2Component) {
+    // Freed from its own logger, the instance would vanish under the call that logs: kept instead.
+    let Some(_call) = Entered::new(c as usize) else {
+        return;
+    };
     if let Some(component) = component::<E>(c) {
         component.tag = 0;
         let owned = Box::from_raw(component as *mut Component<E>);

@@ -907,3 +907,4 @@ fn engine_instances_in_threads_agree_bit_for_bit() {
 mod state_machine;
 mod fuzz;
 mod threads;
+mod reentry;
