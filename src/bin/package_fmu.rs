@@ -158,6 +158,10 @@ without tilt, moving with the zero-clearance slider-crank kinematics.</li>
 <li>Parameters are fixed after initialization; out-of-range values are refused at
 <code>fmi2ExitInitializationMode</code> with a message naming the parameter.</li>
 <li>FMU states can be saved, restored and serialized; a restored state continues bit-identically.</li>
+<li>A communication step may span many engine cycles (up to 10<sup>7</sup> internal RK4 steps, about
+2500 s of the default case).</li>
+<li>A logger callback that calls back into the instance that is logging gets <code>fmi2Error</code>, and
+<code>fmi2FreeInstance</code> from there does nothing; calls into other instances are fine.</li>
 </ul>
 <h2>Two builds</h2>
 <p><code>binaries/linux64/PistonSlap.so</code> runs on any x86-64 CPU. On a CPU with the x86-64-v3 features
