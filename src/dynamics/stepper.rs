@@ -163,7 +163,11 @@ impl fmt::Display for DynamicsError {
         use DynamicsError::*;
         match *self {
             NonFinite { time } => write!(f, "at t = {time} s: the state became non-finite (NaN or infinity)"),
-            SingularMass { time } => write!(f, "at t = {time} s: the inertia matrix is not positive definite"),
+            // Physical inertia is positive definite at every finite state: the usual cause is an
+            // overflow (a stage's state gone NaN), not the mechanism.
+            SingularMass { time } => {
+                write!(f, "at t = {time} s: the inertia matrix is not positive definite (a state gone non-finite, or a degenerate mechanism)")
+            }
             DependentContacts { time, constraints } => {
                 write!(f, "at t = {time} s: constraints {} held closed have dependent gradients", Constraints(constraints))
             }
@@ -253,7 +257,7 @@ fn frame_at<S: System<N, M>, const N: usize, const M: usize>(
     known: Option<Evaluation<N, M>>,
 ) -> Result<(Evaluation<N, M>, Frame<N, M>), DynamicsError> {
     let ev = known.unwrap_or_else(|| sys.evaluate(t, q, v));
-    let frame = Frame::new(&ev).ok_or_else(|| unfactorable(&ev.mass, t))?;
+    let frame = Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: t })?;
     Ok((ev, frame))
 }
 
@@ -272,19 +276,9 @@ fn acceleration<const N: usize, const M: usize>(
 
 /// `M⁻¹` and the acceleration `M⁻¹ f` with no constraint held.
 fn free_motion<const N: usize>(mass: &SMatrix<f64, N, N>, force: &SVector<f64, N>, t: f64) -> Result<(Inertia<N>, SVector<f64, N>), DynamicsError> {
-    let inertia = Inertia::new(mass).ok_or_else(|| unfactorable(mass, t))?;
+    let inertia = Inertia::new(mass).ok_or(DynamicsError::SingularMass { time: t })?;
     let acc = inertia.solve(force);
     Ok((inertia, acc))
-}
-
-/// Why `M` has no factor: a state gone non-finite (a step under overflowing forces) makes `M(q)`
-/// NaN, which is not the same fault as a singular inertia.
-fn unfactorable<const N: usize>(mass: &SMatrix<f64, N, N>, t: f64) -> DynamicsError {
-    if mass.iter().all(|m| m.is_finite()) {
-        DynamicsError::SingularMass { time: t }
-    } else {
-        DynamicsError::NonFinite { time: t }
-    }
 }
 
 fn sample<S: System<N, M>, const N: usize, const M: usize>(
@@ -370,7 +364,7 @@ fn local_error<const N: usize, const M: usize>(
     let (t, dt) = (s1.t, s1.t - s0.t);
     let (mut dq, mut dv) = ((v4 - s1.v) * (dt / 6.0), (a4 - s1.acc) * (dt / 6.0));
     if active != 0 {
-        let frame = Frame::new(ev).ok_or_else(|| unfactorable(&ev.mass, t))?;
+        let frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
         let dependent = || DynamicsError::DependentContacts { time: t, constraints: active };
         dq += frame.projection(&(ev.gap_jacobian * dq), active).ok_or_else(dependent)?.0;
         dv += frame.projection(&(ev.gap_jacobian * dv), active).ok_or_else(dependent)?.0;
