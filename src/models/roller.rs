@@ -152,6 +152,12 @@ impl Roller {
         self.crank_radius * theta.cos() + self.rod_length * (phi - psi).cos()
     }
 
+    /// [`core_error`] between steps, where the core's crank angle is the one at `self.time`.
+    fn error_now(&self) -> impl FnOnce(DynamicsError) -> ModelError {
+        let now = self.time;
+        move |e| core_error(e, |_| now)
+    }
+
     /// Holds a new crank speed: λ changes with Ω, and ψ' = ψ̇/Ω is rescaled so ψ̇ stays continuous.
     fn hold_crank_speed(&mut self, omega: f64) -> Result<(), ModelError> {
         if omega == self.crank_speed {
@@ -161,8 +167,7 @@ impl Roller {
         system.lambda = self.damping / (self.piston_mass * self.rod_length * self.rod_length * omega);
         let rate = if self.crank_speed > 0.0 { self.crank_speed / omega } else { 0.0 };
         let (theta, q, qd) = (self.stepper.time(), *self.stepper.position(), *self.stepper.velocity() * rate);
-        let now = self.time;
-        self.stepper = Stepper::new(system, theta, q, qd, self.options.clone()).map_err(|e| core_error(e, |_| now))?;
+        self.stepper = Stepper::new(system, theta, q, qd, self.options.clone()).map_err(self.error_now())?;
         self.crank_speed = omega;
         Ok(())
     }
@@ -173,8 +178,7 @@ impl Roller {
     fn keep_angle_bounded(&mut self) -> Result<(), ModelError> {
         let turns = (self.stepper.time() / (2.0 * PI * WRAP_TURNS)).floor() * WRAP_TURNS;
         if turns != 0.0 {
-            let now = self.time;
-            self.stepper.shift(-2.0 * PI * turns, &SVector::zeros()).map_err(|e| core_error(e, |_| now))?;
+            self.stepper.shift(-2.0 * PI * turns, &SVector::zeros()).map_err(self.error_now())?;
             self.turns += turns;
         }
         Ok(())
