@@ -67,12 +67,39 @@ impl<const N: usize, const M: usize> Frame<N, M> {
 
     /// The sliding law over `candidates`: `λ ≥ 0`, `ḧ = W λ + ḧ_free ≥ 0`, `λᵢ ḧᵢ = 0`.
     /// The complementarity tolerance scales with the terms of `ḧ_free = J M⁻¹ f + d`, which
-    /// cancel where a contact is about to open.
-    pub fn sliding(&self, ev: &Evaluation<N, M>, candidates: Set) -> Option<(SVector<f64, M>, Set)> {
+    /// cancel where a contact is about to open. `force_tolerance` (ε_λ, N) is the force below
+    /// which a contact counts as unloaded whatever the scale.
+    pub fn sliding(&self, ev: &Evaluation<N, M>, candidates: Set, force_tolerance: f64) -> Option<Sliding<M>> {
         let drive = ev.gap_jacobian * self.free_acc;
         let scale = members::<M>(candidates).fold(0.0_f64, |s, i| s.max(drive[i].abs() + ev.gap_bias[i].abs()));
-        solve_lcp(&self.w, &(drive + ev.gap_bias), candidates, scale)
+        let b = drive + ev.gap_bias;
+        let (lambda, support) = solve_lcp(&self.w, &b, candidates, scale)?;
+        let gap_acc = self.w * lambda + b;
+        let w_max = members::<M>(candidates).fold(0.0_f64, |s, i| s.max(self.w[(i, i)]));
+        let tie_force = (TIE_FRACTION * scale / w_max).max(TIE_FORCE_FACTOR * force_tolerance);
+        let ties = candidates
+            & select::<M>(|i| if contains(support, i) { lambda[i] <= tie_force } else { gap_acc[i] <= tie_force * w_max });
+        Some(Sliding { lambda, support, ties })
     }
+}
+
+/// Margin of an undecided contact, relative to the scale of the sliding law's terms: a contact
+/// whose force and gap acceleration both lie within it at an instant (a contact about to open,
+/// or two trading places as the piston pivots) is decided by the law a moment later.
+const TIE_FRACTION: f64 = 1e-6;
+
+/// The same margin on the force, in units of ε_λ: a release is located to within ε_λ of zero force.
+const TIE_FORCE_FACTOR: f64 = 10.0;
+
+/// A solution of the sliding law.
+pub(crate) struct Sliding<const M: usize> {
+    /// λ ≥ 0, zero outside the support.
+    pub lambda: SVector<f64, M>,
+    /// The constraints that stay closed.
+    pub support: Set,
+    /// The candidates whose state this instant does not decide: in the support with a force, or
+    /// outside it with a gap acceleration, within the tie margin of zero.
+    pub ties: Set,
 }
 
 /// Acceleration and multipliers with the set `active` held closed (eqs 15–20): `ḧ_A = 0` gives

@@ -4,7 +4,7 @@
 use super::crank_drive::{Engine, FreeCrank, PrescribedCrank};
 use super::crank_kinematics::SliderCrank;
 use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
-use crate::dynamics::{Event, EventKind, StepCounts, Stepper, StepperOptions};
+use crate::dynamics::{DynamicsError, Event, EventKind, StepCounts, Stepper, StepperOptions};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -64,8 +64,14 @@ fn validate(p: &Parameters) -> Result<(), ModelError> {
     })
 }
 
-fn dynamics_error(e: impl std::fmt::Display) -> ModelError {
-    ModelError(format!("crank train: {e}"))
+/// The core's error in the crank train's words: a violated constraint is a corner in the liner.
+fn dynamics_error(e: DynamicsError) -> ModelError {
+    match e {
+        DynamicsError::Penetration { time, constraint, gap } => {
+            ModelError(format!("crank train: at t = {time} s: corner K{} is {:e} m inside the liner", constraint + 1, -gap))
+        }
+        e => ModelError(format!("crank train: {e}")),
+    }
 }
 
 impl CrankTrain {
@@ -244,7 +250,7 @@ impl EngineModel for CrankTrain {
                 self.log(s.events(), |e| Vector3::new(sys.crank_angle(e.time), e.q[0], e.q[1]), events);
                 for e in s.events().iter().filter(|e| e.impulses != Vector4::zeros()) {
                     let work = sys.impulse_work(e.time, &e.q, &e.impulses);
-                    self.impulse_work += work.ok_or_else(|| dynamics_error(format!("at t = {} s: the rod and piston inertia is singular", e.time)))?;
+                    self.impulse_work += work.ok_or_else(|| ModelError(format!("crank train: at t = {} s: the rod and piston inertia is singular", e.time)))?;
                 }
             }
             Drive::Free(s) => self.log(s.events(), |e| e.q, events),
