@@ -371,16 +371,20 @@ fn local_error<const N: usize, const M: usize>(
     (s1, ev): (&Sample<N, M>, &Evaluation<N, M>),
     (v4, a4): (SVector<f64, N>, SVector<f64, N>),
     active: Set,
+    lengths: &SVector<f64, N>,
 ) -> Result<f64, DynamicsError> {
     let (t, dt) = (s1.t, s1.t - s0.t);
     let (mut dq, mut dv) = ((v4 - s1.v) * (dt / 6.0), (a4 - s1.acc) * (dt / 6.0));
-    if active != 0 {
-        let frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
-        let dependent = || DynamicsError::DependentContacts { time: t, constraints: active };
-        dq += frame.projection(&(ev.gap_jacobian * dq), active).ok_or_else(dependent)?.0;
-        dv += frame.projection(&(ev.gap_jacobian * dv), active).ok_or_else(dependent)?.0;
+    let on_gaps = |dq: &SVector<f64, N>, dv: &SVector<f64, N>| (ev.gap_jacobian * dq).amax().max((ev.gap_jacobian * dv).amax() * dt);
+    if active == 0 {
+        return Ok(on_gaps(&dq, &dv));
     }
-    Ok((ev.gap_jacobian * dq).amax().max((ev.gap_jacobian * dv).amax() * dt))
+    let frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
+    let dependent = || DynamicsError::DependentContacts { time: t, constraints: active };
+    dq += frame.projection(&(ev.gap_jacobian * dq), active).ok_or_else(dependent)?.0;
+    dv += frame.projection(&(ev.gap_jacobian * dv), active).ok_or_else(dependent)?.0;
+    let along = lengths.component_mul(&dq).amax().max(lengths.component_mul(&dv).amax() * dt);
+    Ok(on_gaps(&dq, &dv).max(along))
 }
 
 /// The event-driven integrator: owns the system and its state.
@@ -588,7 +592,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             }
             let (s1, ev, slopes) = rk4_step(&self.system, &self.state, t1, self.active)?;
             let Some(tol) = tol else { return Ok((s1, ev)) };
-            let ratio = local_error(&self.state, (&s1, &ev), slopes, self.active)? / tol;
+            let ratio = local_error(&self.state, (&s1, &ev), slopes, self.active, &self.system.coordinate_lengths())? / tol;
             if ratio.is_nan() {
                 return Err(DynamicsError::NonFinite { time: t1 });
             }

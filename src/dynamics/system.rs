@@ -35,6 +35,14 @@ pub trait System<const N: usize, const M: usize> {
         (ev.mass, ev.force)
     }
 
+    /// Lengths `L_k` (m per unit of coordinate `k`) that turn an error of coordinate `k` into a
+    /// displacement of the mechanism. With constraints held, the adaptive step bounds `|L_k δq_k|`
+    /// on the motion left along them, which the gaps do not see (a crank turning while the piston
+    /// slides flat on the liner). Zero, the default: not measured.
+    fn coordinate_lengths(&self) -> SVector<f64, N> {
+        SVector::zeros()
+    }
+
     /// Newton restitution coefficient `e_i ∈ [0, 1]` of constraint `i`.
     fn restitution(&self, constraint: usize) -> f64;
 }

@@ -191,6 +191,11 @@ impl System<2, 4> for PrescribedCrank {
         rod_and_piston_rows(&mass, &force)
     }
 
+    fn coordinate_lengths(&self) -> Vector2<f64> {
+        let lengths = self.engine.linkage.lengths();
+        Vector2::new(lengths[1], lengths[2])
+    }
+
     fn restitution(&self, _constraint: usize) -> f64 {
         self.engine.restitution
     }
@@ -217,6 +222,10 @@ impl System<3, 4> for FreeCrank {
 
     fn inertia_and_force(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> (Matrix3<f64>, Vector3<f64>) {
         self.engine.inertia_and_force(q, qd, self.load_torque, self.engine.crank(q[0]))
+    }
+
+    fn coordinate_lengths(&self) -> Vector3<f64> {
+        self.engine.linkage.lengths()
     }
 
     fn restitution(&self, _constraint: usize) -> f64 {

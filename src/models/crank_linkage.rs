@@ -160,6 +160,14 @@ impl Linkage {
         self.bodies.links[0] * along(phi[0]) + self.bodies.links[1] * along(phi[1])
     }
 
+    /// Lengths that turn errors of (φ1, φ2, φ3) into displacements: the crank, the rod, and the
+    /// farthest corner from the pin, m.
+    pub fn lengths(&self) -> Vector3<f64> {
+        let b = &self.bodies;
+        let corner = b.corners.iter().fold(0.0_f64, |r, &(z, w, _)| r.max(z.hypot(w)));
+        Vector3::new(b.links[0], b.links[1], corner)
+    }
+
     /// Corner gaps h(φ), m.
     pub fn gaps(&self, phi: &Vector3<f64>) -> Vector4<f64> {
         let [l1, l2] = self.bodies.links;

@@ -27,6 +27,7 @@ pub const LOCAL_ERROR: f64 = 1e-11;
 pub struct CrankTrain {
     drive: Drive,
     geometry: SliderCrank,
+    start: StartOffset,
     /// The initial state is rebuilt with the first step's crank speed (DESIGN.md §4: nominal kinematics).
     started: bool,
     options: StepperOptions,
@@ -34,6 +35,33 @@ pub struct CrankTrain {
     impulse_work: f64,
     /// Whole cycles (4π) taken off the crank angle (`keep_angle_within_a_cycle`).
     cycles: f64,
+}
+
+/// How the start departs from the nominal (zero-clearance) slider-crank state: the pin's lateral
+/// displacement from its centred position x = pin_offset, the piston's tilt, and their rates.
+#[derive(Clone, Copy, Debug, Serialize, Deserialize)]
+struct StartOffset {
+    lateral: f64,
+    lateral_velocity: f64,
+    tilt: f64,
+    tilt_rate: f64,
+}
+
+impl StartOffset {
+    fn of(p: &Parameters) -> Self {
+        Self { lateral: p.piston_lateral_start, lateral_velocity: p.piston_lateral_velocity_start, tilt: p.piston_tilt_start, tilt_rate: p.piston_tilt_rate_start }
+    }
+
+    /// (φ2, φ3) and their rates at crank angle φ1 turning at ω: the pin at x = a + x₀ (l2 sin φ2 =
+    /// −(a + x₀ + l1 sin φ1)) moving at ẋ₀ (−l2 cos φ2 φ̇2 = ẋ₀ + l1 cos φ1 ω), the tilt as given.
+    fn state(&self, geometry: &SliderCrank, crank_angle: f64, speed: f64) -> Result<(Vector2<f64>, Vector2<f64>), ModelError> {
+        let shifted = SliderCrank { pin_offset: geometry.pin_offset + self.lateral, ..*geometry };
+        let sine = -(shifted.pin_offset + shifted.crank_radius * crank_angle.sin()) / shifted.rod_length;
+        check(sine.abs() < 1.0, || format!("piston_lateral_start ({} m) puts the pin out of the rod's reach", self.lateral))?;
+        let s = shifted.at(crank_angle);
+        let rod_rate = s.rod_rate * speed - self.lateral_velocity / (shifted.rod_length * s.rod_angle.cos());
+        Ok((Vector2::new(s.rod_angle, self.tilt), Vector2::new(rod_rate, self.tilt_rate)))
+    }
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -81,42 +109,67 @@ impl CrankTrain {
         check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
         let engine = Engine::new(params);
         let geometry = SliderCrank { crank_radius: params.crank_radius, rod_length: params.rod_length, pin_offset: params.pin_offset };
+        let start = StartOffset::of(params);
+        let angle = params.crank_angle_start;
+        let (q, _) = start.state(&geometry, angle, 0.0)?;
+        let gaps = engine.linkage.gaps(&Vector3::new(angle, q[0], q[1]));
+        if let Some(i) = (0..4).find(|&i| gaps[i] < -options.gap_tolerance) {
+            return Err(ModelError(format!(
+                "piston_lateral_start ({} m) and piston_tilt_start ({} rad) put corner K{} {:e} m outside the bore",
+                start.lateral,
+                start.tilt,
+                i + 1,
+                -gaps[i]
+            )));
+        }
         let speed = Inputs::default().crank_speed;
         let drive = if params.crank_mode == 1 {
-            Drive::Prescribed(Self::prescribed(engine, &geometry, params.crank_angle_start, start_time, speed, &options)?)
+            Drive::Prescribed(Self::prescribed(engine, &geometry, &start, angle, start_time, speed, &options)?)
         } else {
             let system = FreeCrank { engine, load_torque: Inputs::default().load_torque };
-            Drive::Free(Self::free(system, &geometry, params.crank_angle_start, start_time, speed, &options)?)
+            Drive::Free(Self::free(system, &geometry, &start, angle, start_time, speed, &options)?)
         };
-        Ok(Self { drive, geometry, started: false, options, impulse_work: 0.0, cycles: 0.0 })
+        Ok(Self { drive, geometry, start, started: false, options, impulse_work: 0.0, cycles: 0.0 })
     }
 
-    /// Nominal slider-crank state at crank angle φ1 turning at ω: (φ2, φ3 = 0) and their rates.
-    fn nominal(geometry: &SliderCrank, crank_angle: f64, speed: f64) -> (Vector2<f64>, Vector2<f64>) {
-        let s = geometry.at(crank_angle);
-        (Vector2::new(s.rod_angle, 0.0), Vector2::new(s.rod_rate * speed, 0.0))
-    }
-
-    fn prescribed(engine: Engine, geometry: &SliderCrank, angle: f64, time: f64, speed: f64, options: &StepperOptions) -> Result<Stepper<PrescribedCrank, 2, 4>, ModelError> {
-        let (q, qd) = Self::nominal(geometry, angle, speed);
+    fn prescribed(
+        engine: Engine,
+        geometry: &SliderCrank,
+        start: &StartOffset,
+        angle: f64,
+        time: f64,
+        speed: f64,
+        options: &StepperOptions,
+    ) -> Result<Stepper<PrescribedCrank, 2, 4>, ModelError> {
+        let (q, qd) = start.state(geometry, angle, speed)?;
         Stepper::new(PrescribedCrank::new(engine, angle, time, speed), time, q, qd, options.clone()).map_err(dynamics_error)
     }
 
-    fn free(system: FreeCrank, geometry: &SliderCrank, angle: f64, time: f64, speed: f64, options: &StepperOptions) -> Result<Stepper<FreeCrank, 3, 4>, ModelError> {
-        let (q, qd) = Self::nominal(geometry, angle, speed);
+    fn free(
+        system: FreeCrank,
+        geometry: &SliderCrank,
+        start: &StartOffset,
+        angle: f64,
+        time: f64,
+        speed: f64,
+        options: &StepperOptions,
+    ) -> Result<Stepper<FreeCrank, 3, 4>, ModelError> {
+        let (q, qd) = start.state(geometry, angle, speed)?;
         let (q, qd) = (Vector3::new(angle, q[0], q[1]), Vector3::new(speed, qd[0], qd[1]));
         Stepper::new(system, time, q, qd, options.clone()).map_err(dynamics_error)
     }
 
-    /// Restarts from the initial state with the first step's crank speed (both modes).
+    /// Restarts from the initial state with the first step's crank speed (both modes): the free
+    /// crank's initial speed is the `crank_speed` input as the first step starts.
     fn start(&mut self, speed: f64) -> Result<(), ModelError> {
+        let (geometry, start) = (&self.geometry, &self.start);
         self.drive = match &self.drive {
             Drive::Prescribed(s) => {
                 let sys = s.system();
                 let (angle, time) = (sys.crank_angle(s.time()), s.time());
-                Drive::Prescribed(Self::prescribed(sys.engine.clone(), &self.geometry, angle, time, speed, &self.options)?)
+                Drive::Prescribed(Self::prescribed(sys.engine.clone(), geometry, start, angle, time, speed, &self.options)?)
             }
-            Drive::Free(s) => Drive::Free(Self::free(s.system().clone(), &self.geometry, s.position()[0], s.time(), speed, &self.options)?),
+            Drive::Free(s) => Drive::Free(Self::free(s.system().clone(), geometry, start, s.position()[0], s.time(), speed, &self.options)?),
         };
         self.started = true;
         Ok(())
@@ -283,6 +336,11 @@ impl EngineModel for CrankTrain {
         [out.contact_force_1, out.contact_force_2, out.contact_force_3, out.contact_force_4] = [forces[0], forces[1], forces[2], forces[3]];
         // K1, K2 touch the −D/2 wall (push toward +x), K3, K4 the +D/2 wall.
         out.side_force = forces[0] + forces[1] - forces[2] - forces[3];
+        out.crank_speed_actual = match &self.drive {
+            Drive::Prescribed(s) => s.system().speed(),
+            Drive::Free(_) => phid[0],
+        };
+        out.kinetic_energy = linkage.energy(&phi, &phid).0;
     }
 }
 

@@ -49,6 +49,10 @@ pub struct Parameters {
     pub damping_piston_pin: f64,
     pub gravity: f64,
     pub crank_angle_start: f64,
+    pub piston_lateral_start: f64,
+    pub piston_lateral_velocity_start: f64,
+    pub piston_tilt_start: f64,
+    pub piston_tilt_rate_start: f64,
     pub impact_log: String,
 }
 
@@ -91,6 +95,8 @@ pub struct Outputs {
     pub contact_force_3: f64,
     pub contact_force_4: f64,
     pub side_force: f64,
+    pub crank_speed_actual: f64,
+    pub kinetic_energy: f64,
 }
 
 impl Outputs {
@@ -114,6 +120,8 @@ impl Outputs {
             ("contact_force_3", self.contact_force_3),
             ("contact_force_4", self.contact_force_4),
             ("side_force", self.side_force),
+            ("crank_speed_actual", self.crank_speed_actual),
+            ("kinetic_energy", self.kinetic_energy),
         ]
         .into_iter()
         .find(|(_, x)| !x.is_finite())

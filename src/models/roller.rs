@@ -98,6 +98,8 @@ pub struct Roller {
     rod_length: f64,
     piston_mass: f64,
     damping: f64,
+    /// The crank's moment of inertia about its axis, J1 + m1 ey1², kg·m² (for the kinetic energy).
+    crank_inertia: f64,
     /// Held crank speed Ω, rad/s; 0 before the first step.
     crank_speed: f64,
     /// SI time at the stepper's current crank angle.
@@ -213,6 +215,14 @@ impl EngineModel for Roller {
         require(p.crank_mode == 1, "crank_mode", "1 (the thesis's crank turns at a prescribed speed)")?;
         // The model is linear in ψ ≤ ρ/Λ: beyond a few degrees it no longer describes the mechanism.
         require(clearance <= 0.05 * p.rod_length, "bore", "larger than piston_diameter by at most 10 % of rod_length")?;
+        for (name, value) in [
+            ("piston_lateral_start", p.piston_lateral_start),
+            ("piston_lateral_velocity_start", p.piston_lateral_velocity_start),
+            ("piston_tilt_start", p.piston_tilt_start),
+            ("piston_tilt_rate_start", p.piston_tilt_rate_start),
+        ] {
+            require(value == 0.0, name, "0 (the roller starts on its nominal path, ψ = ψ' = 0)")?;
+        }
         if !start_time.is_finite() {
             return Err(ModelError(format!("model_variant 2: the start time ({start_time} s) must be finite")));
         }
@@ -242,6 +252,7 @@ impl EngineModel for Roller {
             rod_length: l,
             piston_mass: mass,
             damping: p.damping_crank_pin,
+            crank_inertia: p.crank_inertia + p.crank_mass * p.crank_com * p.crank_com,
             crank_speed: 0.0,
             time: start_time,
             impulse_work: 0.0,
@@ -300,5 +311,7 @@ impl EngineModel for Roller {
         out.contact_force_3 = forces[UPPER];
         out.contact_force_4 = 0.0;
         out.side_force = forces[LOWER] - forces[UPPER];
+        out.crank_speed_actual = omega;
+        out.kinetic_energy = mechanism.kinetic_energy(theta, psi, dpsi) * self.energy_scale() + 0.5 * self.crank_inertia * omega * omega;
     }
 }

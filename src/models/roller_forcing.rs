@@ -124,6 +124,28 @@ impl SliderCrank {
     }
 }
 
+impl SliderCrank {
+    /// Kinetic energy of rod and roller over M l² Ω² at crank angle τ, exact in ψ: the rod's
+    /// angular velocity is ψ' − φ' (module doc), its centre of mass at mid-length.
+    pub fn kinetic_energy(&self, tau: f64, psi: f64, dpsi: f64) -> f64 {
+        self.kinetic_energy_with(tau, psi, dpsi, dpsi - self.at(tau).rod_angle().d1)
+    }
+
+    /// The same for a given rod angular velocity over Ω (the thesis's eq 2.1 takes another).
+    fn kinetic_energy_with(&self, tau: f64, psi: f64, dpsi: f64, rod_rate: f64) -> f64 {
+        let phi = self.at(tau).rod_angle();
+        let (u, du) = (phi.value - psi, phi.d1 - dpsi);
+        let (s, c) = tau.sin_cos();
+        // Speed² of the point a fraction k along the rod from the crank pin (k = 1: the roller).
+        let speed2 = |k: f64| {
+            let vx = -self.xi * s - k * du * u.sin();
+            let vy = self.xi * c - k * du * u.cos();
+            vx * vx + vy * vy
+        };
+        0.5 * self.alpha * speed2(0.5) + 0.5 * self.beta * rod_rate * rod_rate + 0.5 * speed2(1.0)
+    }
+}
+
 impl AtAngle {
     /// φ' = ξ cos τ / Λ and φ'' = (ξ³ − ξ) sin τ / Λ³.
     fn rod_rates(&self) -> (f64, f64) {
@@ -185,15 +207,8 @@ mod tests {
     /// φ̇ + ψ̇ (as the thesis writes it in eq 2.1).
     fn kinetic_energy(sc: &SliderCrank, consistent: bool, psi: f64, dpsi: f64, t: f64) -> f64 {
         let phi = sc.at(t).rod_angle();
-        let (u, du) = (phi.value - psi, phi.d1 - dpsi);
-        let (s, c) = t.sin_cos();
-        let speed2 = |k: f64| {
-            let vx = -sc.xi * s - k * du * u.sin();
-            let vy = sc.xi * c - k * du * u.cos();
-            vx * vx + vy * vy
-        };
         let rod_rate = if consistent { dpsi - phi.d1 } else { phi.d1 + dpsi };
-        0.5 * sc.alpha * speed2(0.5) + 0.5 * sc.beta * rod_rate * rod_rate + 0.5 * speed2(1.0)
+        sc.kinetic_energy_with(t, psi, dpsi, rod_rate)
     }
 
     /// d/dt ∂T/∂ψ̇ − ∂T/∂ψ − Q' along ψ(t), by central differences (exact for T quadratic in ψ̇).
