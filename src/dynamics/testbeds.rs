@@ -200,3 +200,39 @@ impl System<2, 1> for DoublePendulum {
         self.restitution
     }
 }
+
+/// A plank resting with both ends on a floor, lifted at its centre by `F = m g + lift_rate · t`
+/// and turned by `τ = torque_rate · max(t, 0)`: `q = (y, θ)`, the centre's height and the tilt;
+/// `h = y ∓ a sin θ` for the left and right ends (a = half-length). Both contact forces are
+/// `(m g − F)/2 = −lift_rate · t / 2` while it rests, so they reach zero together at `t = 0`, the
+/// instant the torque starts: a tie that only the motion after it decides.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Plank {
+    pub mass: f64,
+    /// About the centre.
+    pub inertia: f64,
+    pub half_length: f64,
+    pub gravity: f64,
+    /// N/s.
+    pub lift_rate: f64,
+    /// N·m/s.
+    pub torque_rate: f64,
+}
+
+impl System<2, 2> for Plank {
+    fn evaluate(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 2> {
+        let (s, c) = q[1].sin_cos();
+        let a = self.half_length;
+        Evaluation {
+            mass: Matrix2::new(self.mass, 0.0, 0.0, self.inertia),
+            force: Vector2::new(self.lift_rate * t, self.torque_rate * t.max(0.0)),
+            gap: Vector2::new(q[0] - a * s, q[0] + a * s),
+            gap_jacobian: Matrix2::new(1.0, -a * c, 1.0, a * c),
+            gap_time_rate: Vector2::zeros(),
+            gap_bias: Vector2::new(a * s * qd[1] * qd[1], -a * s * qd[1] * qd[1]),
+        }
+    }
+    fn restitution(&self, _: usize) -> f64 {
+        0.5
+    }
+}

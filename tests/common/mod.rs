@@ -2,6 +2,8 @@
 //! step, and measures what A&K section 8 reports: side changes, contact phases, impacts per landing.
 #![allow(dead_code)]
 
+pub mod designs;
+
 use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
 use std::f64::consts::PI;
 

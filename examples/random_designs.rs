@@ -1,0 +1,35 @@
+//! Runs N seeded random designs of each family (`tests/common/designs.rs`) and reports every one
+//! that fails, and the sliders' worst energy balance: the sweep behind the suite's smaller
+//! random-design test.
+//! `cargo run --release --example random_designs -- 2000 [first_seed]`
+
+#[path = "../tests/common/designs.rs"]
+mod designs;
+
+use designs::{engine, run, slider, Random};
+use std::time::Instant;
+
+fn main() {
+    let args: Vec<u64> = std::env::args().skip(1).map(|a| a.parse().expect("a whole number")).collect();
+    let (n, first) = (args.first().copied().unwrap_or(1000), args.get(1).copied().unwrap_or(0));
+    for (family, make) in [("engine", engine as fn(&mut Random) -> designs::Design), ("slider", slider)] {
+        let (start, mut failed, mut events, mut worst) = (Instant::now(), 0, 0, 0.0_f64);
+        for seed in first..first + n {
+            let design = make(&mut Random::new(seed));
+            match run(&design) {
+                Ok(finished) => {
+                    events += finished.events.len();
+                    worst = worst.max(finished.energy_balance().abs());
+                }
+                Err(e) => {
+                    failed += 1;
+                    println!("{family} seed {seed}: {e}\n  {design:?}");
+                }
+            }
+        }
+        let elapsed = start.elapsed().as_secs_f64();
+        // Only the sliders are free of damping, gas and gravity: the engines' balance holds their work.
+        let balance = if family == "slider" { format!(", worst |energy balance| {worst:.1e}") } else { String::new() };
+        println!("{family}: {n} designs, {failed} failed, {events} events{balance}, {elapsed:.1} s");
+    }
+}

@@ -1,0 +1,38 @@
+//! Every physical design runs (DESIGN §5): seeded random engines and light sliders
+//! (`common/designs.rs`) a few cycles each, none ending in an error. The light sliders have no
+//! damping, gas or gravity, so their energy balance closes too: T(0) = T(end) + what the impacts
+//! and sliding starts dissipated. `examples/random_designs` runs the same families by the thousand.
+
+mod common;
+
+use common::designs::{engine, run, slider, Design, Random};
+
+const DESIGNS: u64 = 250;
+
+fn failures(make: fn(&mut Random) -> Design, check: impl Fn(&Design, &common::designs::Finished) -> Result<(), String>) -> Vec<String> {
+    (0..DESIGNS)
+        .filter_map(|seed| {
+            let design = make(&mut Random::new(seed));
+            run(&design).and_then(|finished| check(&design, &finished)).err().map(|e| format!("seed {seed}: {e}\n  {design:?}"))
+        })
+        .collect()
+}
+
+#[test]
+fn random_engines_all_run() {
+    let failed = failures(engine, |_, _| Ok(()));
+    assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
+}
+
+#[test]
+fn random_light_sliders_all_run_and_conserve_energy() {
+    let failed = failures(slider, |_, f| {
+        let balance = f.energy_balance();
+        if balance.abs() < 1e-6 {
+            Ok(())
+        } else {
+            Err(format!("energy balance off by {balance:e}"))
+        }
+    });
+    assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
+}
