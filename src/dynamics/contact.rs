@@ -77,8 +77,8 @@ impl<const N: usize, const M: usize> Frame<N, M> {
         let gap_acc = self.w * lambda + b;
         let w_max = members::<M>(candidates).fold(0.0_f64, |s, i| s.max(self.w[(i, i)]));
         let tie_force = (TIE_FRACTION * scale / w_max).max(TIE_FORCE_FACTOR * force_tolerance);
-        let ties = candidates
-            & select::<M>(|i| if contains(support, i) { lambda[i] <= tie_force } else { gap_acc[i] <= tie_force * w_max });
+        let ties =
+            candidates & select::<M>(|i| if contains(support, i) { lambda[i] <= tie_force } else { gap_acc[i] <= tie_force * w_max });
         Some(Sliding { lambda, support, ties })
     }
 }
@@ -192,7 +192,12 @@ pub(crate) fn solve_on<const M: usize>(w: &SMatrix<f64, M, M>, r: &SVector<f64, 
 /// positive definite on `set` the solution is unique; supports with dependent constraints are
 /// skipped. `M ≤ 4` in our models, so this is at most 16 tiny solves. Returns `x` and its support.
 /// `scale` is the magnitude of `b` before cancellation: the checks tolerate round-off of it.
-pub(crate) fn solve_lcp<const M: usize>(w: &SMatrix<f64, M, M>, b: &SVector<f64, M>, set: Set, scale: f64) -> Option<(SVector<f64, M>, Set)> {
+pub(crate) fn solve_lcp<const M: usize>(
+    w: &SMatrix<f64, M, M>,
+    b: &SVector<f64, M>,
+    set: Set,
+    scale: f64,
+) -> Option<(SVector<f64, M>, Set)> {
     let w_max = members::<M>(set).fold(0.0_f64, |s, i| s.max(w[(i, i)]));
     let tol_y = COMPLEMENTARITY_TOL * scale + f64::MIN_POSITIVE;
     let tol_x = if w_max > 0.0 { tol_y / w_max } else { tol_y };

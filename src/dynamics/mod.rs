@@ -19,16 +19,26 @@
 //! Constraint sets are bitmasks, all matrices are fixed-size: no heap use but the event record.
 
 mod contact;
+mod error;
 mod events;
 mod impact;
 mod inertia;
+mod options;
+mod record;
 mod rk4;
+mod sample;
+mod search;
+mod settle;
 mod stepper;
 mod system;
 #[cfg(test)]
 mod test_random;
 pub mod testbeds;
 
+pub use error::DynamicsError;
 pub use events::EventLocator;
-pub use stepper::{DynamicsError, Event, EventKind, StepCounts, Stepper, StepperOptions, DEFAULT_EVENT_BUDGET, ZENO_APEX_FACTOR};
+pub use options::{StepperOptions, DEFAULT_EVENT_BUDGET};
+pub use record::{Event, EventKind, StepCounts};
+pub use settle::ZENO_APEX_FACTOR;
+pub use stepper::Stepper;
 pub use system::{Evaluation, System};

@@ -78,7 +78,10 @@ impl<const N: usize> Hermite5<N> {
     pub fn position_of(&self, i: usize, t: f64) -> f64 {
         let [h1, h2, h3, h4, h5] = self.position_weights(t);
         let dt = self.dt;
-        self.q0[i] + (self.q1[i] - self.q0[i]) * h3 + (self.v0[i] * h1 + self.v1[i] * h4) * dt + (self.a0[i] * h2 + self.a1[i] * h5) * (dt * dt)
+        self.q0[i]
+            + (self.q1[i] - self.q0[i]) * h3
+            + (self.v0[i] * h1 + self.v1[i] * h4) * dt
+            + (self.a0[i] * h2 + self.a1[i] * h5) * (dt * dt)
     }
 
     /// The weights of `q̇₀ dt`, `q̈₀ dt²`, `q₁ − q₀`, `q̇₁ dt`, `q̈₁ dt²` in `q(t)`.

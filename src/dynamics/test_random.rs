@@ -12,6 +12,14 @@ pub(crate) fn uniform(mut seed: u64) -> impl FnMut() -> f64 {
 
 /// A symmetric positive definite `L Lᵀ`, `L` lower triangular with its diagonal in [1, 1.5).
 pub(crate) fn positive_definite<const N: usize>(random: &mut impl FnMut() -> f64) -> SMatrix<f64, N, N> {
-    let l = SMatrix::<f64, N, N>::from_fn(|i, j| if i == j { 1.0 + random().abs() } else if i > j { random() } else { 0.0 });
+    let l = SMatrix::<f64, N, N>::from_fn(|i, j| {
+        if i == j {
+            1.0 + random().abs()
+        } else if i > j {
+            random()
+        } else {
+            0.0
+        }
+    });
     l * l.transpose()
 }

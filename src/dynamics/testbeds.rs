@@ -35,9 +35,14 @@ impl<S: System<N, M>, const N: usize, const M: usize> System<N, M> for Counted<S
 pub enum Floor {
     Fixed,
     /// `y_f = velocity · t`.
-    Moving { velocity: f64 },
+    Moving {
+        velocity: f64,
+    },
     /// `y_f = amplitude · sin(ω t)`.
-    Oscillating { amplitude: f64, angular_frequency: f64 },
+    Oscillating {
+        amplitude: f64,
+        angular_frequency: f64,
+    },
 }
 
 impl Floor {

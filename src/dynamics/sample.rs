@@ -1,0 +1,176 @@
+//! The state the loop carries between steps (a sample of the motion with its contact forces and
+//! gap rates), and the RK4 step and its error estimate that make the next one.
+
+use super::contact::{held_acceleration, Frame, Set};
+use super::inertia::Inertia;
+use super::{rk4, DynamicsError, Evaluation, System};
+use nalgebra::{SMatrix, SVector};
+use serde::{Deserialize, Serialize};
+
+/// Everything the loop needs at one `(t, q, q̇)` with a given contact set.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub(super) struct Sample<const N: usize, const M: usize> {
+    pub(super) t: f64,
+    pub(super) q: SVector<f64, N>,
+    pub(super) v: SVector<f64, N>,
+    pub(super) acc: SVector<f64, N>,
+    pub(super) lambda: SVector<f64, M>,
+    pub(super) gap: SVector<f64, M>,
+    /// ḣ = J q̇ + ∂h/∂t.
+    pub(super) hd: SVector<f64, M>,
+    /// ḧ = J q̈ + d: with `h` and `ḣ` at both ends of a step it gives the gaps' own quintic
+    /// extension, so that event search samples no configuration.
+    pub(super) hdd: SVector<f64, M>,
+}
+
+/// A sample with the system's evaluation there (the impact and sliding laws and the drift
+/// projection reuse it), or without one where none is at hand.
+pub(super) type Evaluated<const N: usize, const M: usize> = (Sample<N, M>, Option<Evaluation<N, M>>);
+
+/// Which function of constraint `i` an event watches.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Watch {
+    Gap,
+    Multiplier,
+}
+
+impl<const N: usize, const M: usize> Sample<N, M> {
+    pub(super) fn watched(&self, i: usize, w: Watch) -> f64 {
+        match w {
+            Watch::Gap => self.gap[i],
+            Watch::Multiplier => self.lambda[i],
+        }
+    }
+}
+
+/// The evaluation at `(t, q, q̇)` and its contact frame; `known`: that evaluation, if at hand.
+pub(super) fn frame_at<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    t: f64,
+    q: &SVector<f64, N>,
+    v: &SVector<f64, N>,
+    known: Option<Evaluation<N, M>>,
+) -> Result<(Evaluation<N, M>, Frame<N, M>), DynamicsError> {
+    let ev = known.unwrap_or_else(|| sys.evaluate(t, q, v));
+    let frame = Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: t })?;
+    Ok((ev, frame))
+}
+
+/// `q̈` and `λ` with the set `active` held; free flight needs only `M⁻¹ f`.
+pub(super) fn acceleration<const N: usize, const M: usize>(
+    ev: &Evaluation<N, M>,
+    t: f64,
+    active: Set,
+) -> Result<(SVector<f64, N>, SVector<f64, M>), DynamicsError> {
+    let (inertia, free_acc) = free_motion(&ev.mass, &ev.force, t)?;
+    if active == 0 {
+        return Ok((free_acc, SVector::zeros()));
+    }
+    held_acceleration(ev, &inertia, free_acc, active).ok_or(DynamicsError::DependentContacts { time: t, constraints: active })
+}
+
+/// `M⁻¹` and the acceleration `M⁻¹ f` with no constraint held.
+pub(super) fn free_motion<const N: usize>(
+    mass: &SMatrix<f64, N, N>,
+    force: &SVector<f64, N>,
+    t: f64,
+) -> Result<(Inertia<N>, SVector<f64, N>), DynamicsError> {
+    let inertia = Inertia::new(mass).ok_or(DynamicsError::SingularMass { time: t })?;
+    let acc = inertia.solve(force);
+    Ok((inertia, acc))
+}
+
+pub(super) fn sample<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    t: f64,
+    q: SVector<f64, N>,
+    v: SVector<f64, N>,
+    active: Set,
+) -> Result<Sample<N, M>, DynamicsError> {
+    sample_of(&sys.evaluate(t, &q, &v), t, q, v, active)
+}
+
+/// The sample at `(t, q, q̇)` from its evaluation `ev` (borrowed: callers use it again, and a
+/// moved evaluation is a copy). Inlined, like `rk4_step`, so that the sample is built where the
+/// caller keeps it rather than copied out of the `Result`.
+#[inline(always)]
+pub(super) fn sample_of<const N: usize, const M: usize>(
+    ev: &Evaluation<N, M>,
+    t: f64,
+    q: SVector<f64, N>,
+    v: SVector<f64, N>,
+    active: Set,
+) -> Result<Sample<N, M>, DynamicsError> {
+    let (acc, lambda) = acceleration(ev, t, active)?;
+    let hd = ev.gap_jacobian * v + ev.gap_time_rate;
+    let hdd = ev.gap_jacobian * acc + ev.gap_bias;
+    let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd, hdd };
+    let finite = |x: &[f64]| x.iter().all(|v| v.is_finite());
+    if [s.q.as_slice(), s.v.as_slice(), s.acc.as_slice(), s.lambda.as_slice(), s.gap.as_slice(), s.hd.as_slice(), s.hdd.as_slice()]
+        .into_iter()
+        .all(finite)
+    {
+        Ok(s)
+    } else {
+        Err(DynamicsError::NonFinite { time: t })
+    }
+}
+
+/// One RK4 step from `s0` to `t` with the contact set `active` held, and the end's evaluation.
+pub(super) fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    s0: &Sample<N, M>,
+    t: f64,
+    active: Set,
+) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
+    let (s, ev, _) = rk4_step(sys, s0, t, active)?;
+    Ok((s, ev))
+}
+
+/// `rk4_to`, with the end's evaluation and the step's last slopes (for `local_error`).
+#[allow(clippy::type_complexity)]
+#[inline(always)]
+pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    s0: &Sample<N, M>,
+    t: f64,
+    active: Set,
+) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
+    let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
+        if active == 0 {
+            let (mass, force) = sys.inertia_and_force(t, q, v);
+            Ok(free_motion(&mass, &force, t)?.1)
+        } else {
+            Ok(acceleration(&sys.evaluate(t, q, v), t, active)?.0)
+        }
+    };
+    let step = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
+    let ev = sys.evaluate(t, &step.q, &step.v);
+    let s = sample_of(&ev, t, step.q, step.v, active)?;
+    Ok((s, ev, step.last_slopes))
+}
+
+/// The local error of the RK4 step `s0 → s1` on the gaps, m: the embedded third-order estimate
+/// `(δq, δq̇)` mapped through `J`, the velocity part as the gap error it makes over the step.
+/// With constraints held, only the error along their manifold counts: `stabilize` removes the
+/// rest (a fully constrained motion has no error left at all).
+pub(super) fn local_error<const N: usize, const M: usize>(
+    s0: &Sample<N, M>,
+    (s1, ev): (&Sample<N, M>, &Evaluation<N, M>),
+    (v4, a4): (SVector<f64, N>, SVector<f64, N>),
+    active: Set,
+    lengths: &SVector<f64, N>,
+) -> Result<f64, DynamicsError> {
+    let (t, dt) = (s1.t, s1.t - s0.t);
+    let (mut dq, mut dv) = ((v4 - s1.v) * (dt / 6.0), (a4 - s1.acc) * (dt / 6.0));
+    let on_gaps = |dq: &SVector<f64, N>, dv: &SVector<f64, N>| (ev.gap_jacobian * dq).amax().max((ev.gap_jacobian * dv).amax() * dt);
+    if active == 0 {
+        return Ok(on_gaps(&dq, &dv));
+    }
+    let frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
+    let dependent = || DynamicsError::DependentContacts { time: t, constraints: active };
+    dq += frame.projection(&(ev.gap_jacobian * dq), active).ok_or_else(dependent)?.0;
+    dv += frame.projection(&(ev.gap_jacobian * dv), active).ok_or_else(dependent)?.0;
+    let along = lengths.component_mul(&dq).amax().max(lengths.component_mul(&dv).amax() * dt);
+    Ok(on_gaps(&dq, &dv).max(along))
+}

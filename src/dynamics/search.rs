@@ -1,0 +1,163 @@
+//! The event search of one RK4 step: the earliest gap or multiplier crossing, located on the
+//! step's quintic extension and confirmed on the RK4 map.
+
+use super::contact::contains;
+use super::events::{self, Bracket, EventLocator, Located, Start};
+use super::rk4::Hermite5;
+use super::sample::{acceleration, rk4_to, Evaluated, Sample, Watch};
+use super::{DynamicsError, Evaluation, Stepper, System};
+use std::cell::OnceCell;
+
+/// How a step ends: clear of events, or at the first one.
+pub(super) enum StepEnd<const N: usize, const M: usize> {
+    /// No event: the step's end, with its evaluation.
+    Clear(Evaluated<N, M>),
+    /// The state where `constraint` crossed, on the RK4 map within tolerance.
+    Event { at: Evaluated<N, M>, constraint: usize },
+}
+
+impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
+    fn tolerance(&self, watch: Watch) -> f64 {
+        match watch {
+            Watch::Gap => self.options.gap_tolerance,
+            Watch::Multiplier => self.options.multiplier_tolerance,
+        }
+    }
+
+    /// The earliest event in the step `self.state → s1`.
+    pub(super) fn first_event(&self, s1: Evaluated<N, M>) -> Result<StepEnd<N, M>, DynamicsError> {
+        let (sys, s0, active) = (&self.system, &self.state, self.active);
+        let watch_of = |i| if contains(active, i) { Watch::Multiplier } else { Watch::Gap };
+        let step_end = &s1.0;
+        // The step's quintic extensions, of the gaps and of the configuration, built once a scan
+        // needs them (most steps scan nothing).
+        let (gaps, configuration) = (OnceCell::new(), OnceCell::new());
+        let on_dense = |t: f64, i: usize, w: Watch| -> Result<f64, DynamicsError> {
+            let e = step_end;
+            match w {
+                Watch::Gap => Ok(gaps
+                    .get_or_init(|| Hermite5 {
+                        t0: s0.t,
+                        dt: e.t - s0.t,
+                        q0: s0.gap,
+                        v0: s0.hd,
+                        a0: s0.hdd,
+                        q1: e.gap,
+                        v1: e.hd,
+                        a1: e.hdd,
+                    })
+                    .position_of(i, t)),
+                Watch::Multiplier => {
+                    let dense = configuration.get_or_init(|| Hermite5 {
+                        t0: s0.t,
+                        dt: e.t - s0.t,
+                        q0: s0.q,
+                        v0: s0.v,
+                        a0: s0.acc,
+                        q1: e.q,
+                        v1: e.v,
+                        a1: e.acc,
+                    });
+                    let (q, v) = dense.at(t);
+                    let lambda = acceleration(&sys.evaluate(t, &q, &v), t, active)?.1[i];
+                    if lambda.is_finite() {
+                        Ok(lambda)
+                    } else {
+                        Err(DynamicsError::NonFinite { time: t })
+                    }
+                }
+            }
+        };
+        // A located event is checked against the others at its own state; if one of them has
+        // already crossed there, the search repeats on the shorter step, to that state (at most M times).
+        let mut located: Option<Evaluated<N, M>> = None;
+        for _ in 0..=M {
+            let mut earliest: Option<(f64, usize, Watch, Start)> = None;
+            for i in 0..M {
+                let w = watch_of(i);
+                let tol = self.tolerance(w);
+                let e = located.as_ref().map_or(step_end, |l| &l.0);
+                let (g0, g1) = (s0.watched(i, w), e.watched(i, w));
+                let dip = w == Watch::Gap && s0.hd[i] < 0.0 && e.hd[i] > 0.0 && g0.min(g1) < 2.0 * (e.t - s0.t) * -s0.hd[i];
+                if g1 >= -tol && !dip {
+                    continue;
+                }
+                let start = match self.locator {
+                    EventLocator::DenseOutput => {
+                        let rising = w == Watch::Gap && s0.hd[i] > 0.0;
+                        events::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (e.t, g1), tol, rising)?
+                    }
+                    EventLocator::StepHalving if g1 < -tol && g0 > 0.0 => {
+                        Some(Start::Within(Bracket { lo: s0.t, g_lo: g0, hi: e.t, g_hi: g1 }))
+                    }
+                    EventLocator::StepHalving if g1 < -tol => Some(Start::Immediate),
+                    EventLocator::StepHalving => None,
+                };
+                let estimate = match start {
+                    None => continue,
+                    Some(Start::Immediate) => s0.t,
+                    Some(Start::Within(br)) => match self.locator {
+                        EventLocator::DenseOutput => pick(events::illinois(|t| on_dense(t, i, w), br, 0.25 * tol, None)?, w),
+                        EventLocator::StepHalving => br.lo, // located on the RK4 map below
+                    },
+                };
+                if earliest.is_none_or(|(t, ..)| estimate < t) {
+                    earliest = Some((estimate, i, w, start.expect("matched above")));
+                }
+            }
+            let Some((estimate, i, w, start)) = earliest else { return Ok(StepEnd::Clear(located.unwrap_or(s1))) };
+            let br = match start {
+                Start::Immediate => return Ok(StepEnd::Event { at: (s0.clone(), None), constraint: i }),
+                Start::Within(br) => br,
+            };
+            let (s, ev) = self.locate_on_rk4(br, estimate, i, w)?;
+            let crossed_before = (0..M).any(|j| j != i && s.watched(j, watch_of(j)) < -self.tolerance(watch_of(j)));
+            if !crossed_before {
+                return Ok(StepEnd::Event { at: (s, Some(ev)), constraint: i });
+            }
+            located = Some((s, Some(ev)));
+        }
+        // Only reachable with round-off ties between constraints: take the last located state.
+        let end = located.unwrap_or(s1);
+        let j = (0..M).find(|&j| end.0.watched(j, watch_of(j)) < 0.0).unwrap_or(0);
+        Ok(StepEnd::Event { at: end, constraint: j })
+    }
+
+    /// The state where `g_i` crosses zero, on the RK4 map from the step start: Illinois started
+    /// at the dense-output estimate (usually accepted at once), or bisection (step halving).
+    fn locate_on_rk4(&self, br: Bracket, estimate: f64, i: usize, w: Watch) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
+        let (sys, s0, active) = (&self.system, &self.state, self.active);
+        let tol = self.tolerance(w);
+        let mut last: Option<(Sample<N, M>, Evaluation<N, M>)> = None;
+        self.count(|c| c.located += 1);
+        let locating = |t: f64| {
+            self.count(|c| c.locating += 1);
+            rk4_to(sys, s0, t, active)
+        };
+        let mut g = |t: f64| -> Result<f64, DynamicsError> {
+            let s = locating(t)?;
+            let gt = s.0.watched(i, w);
+            last = Some(s);
+            Ok(gt)
+        };
+        let located = match self.locator {
+            EventLocator::DenseOutput => events::illinois(&mut g, br, tol, Some(estimate))?,
+            EventLocator::StepHalving => events::bisect(&mut g, br, tol)?,
+        };
+        let t = pick(located, w);
+        match last {
+            Some(s) if s.0.t == t => Ok(s),
+            _ => locating(t),
+        }
+    }
+}
+
+/// The time of a located crossing; a collapsed bracket resolves to its admissible end: before
+/// the gap crossing (h ≥ 0), after the multiplier crossing (λ ≤ 0, so the release is real).
+fn pick(located: Located, w: Watch) -> f64 {
+    match (located, w) {
+        (Located::Root(t), _) => t,
+        (Located::Collapsed(br), Watch::Gap) => br.lo,
+        (Located::Collapsed(br), Watch::Multiplier) => br.hi,
+    }
+}

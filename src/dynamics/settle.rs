@@ -1,0 +1,213 @@
+//! What happens at an event: the contact set decided and the state put on it (A&K Fig. 1 at a
+//! discontinuity point), and the drift of held contacts removed between events.
+
+use super::contact::{members, select, solve_on, Frame, Set};
+use super::sample::{frame_at, rk4_to, sample, sample_of, Sample};
+use super::{impact, DynamicsError, Evaluation, Event, EventKind, Stepper, System};
+use nalgebra::SVector;
+
+/// Zeno guard: after an impact a closed constraint whose free flight would rise no higher than
+/// `ZENO_APEX_FACTOR · ε_h` (apex `ḣ⁺² / (2|ḧ|)` with `ḧ < 0` the gap acceleration under the
+/// current contact forces) is put into persistent contact instead of flying. Such a flight is
+/// below what event location resolves, and with `e < 1` the bounces before it decay
+/// geometrically, so an accumulation of impacts always ends in sliding after a bounded number of
+/// events. The time given up is at most `2 ḣ⁺ / (|ḧ| (1 − e))` (≈ 6e-5 s for a ball under
+/// gravity with e = 0.5 and the default ε_h).
+pub const ZENO_APEX_FACTOR: f64 = 1e3;
+
+/// Drift of a held constraint (as a fraction of ε_h on `h`, of ε_ḣ on `ḣ`) that `stabilize`
+/// tolerates before it projects the state back onto the contact manifold.
+const DRIFT_FRACTION: f64 = 0.1;
+
+/// A free gap below `−PENETRATION_FACTOR · ε_h` at a communication point is a penetration (an
+/// error); one above it is a closed constraint, resolved and projected like any other.
+pub(super) const PENETRATION_FACTOR: f64 = 100.0;
+
+/// Newton steps `onto_contacts` takes at most (quadratic convergence: two or three reach round-off).
+const MAX_PROJECTIONS: usize = 4;
+
+/// How far ahead, in nominal steps, the sliding law looks to decide a tie (`Stepper::sliding_law`):
+/// far enough that the trend outweighs round-off, near enough that it is the trend at the instant.
+const TIE_PROBE: f64 = 1e-4;
+
+impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
+    /// Keeps active constraints on the manifold against RK4 drift: once `h_A` or `ḣ_A` has drifted
+    /// beyond `DRIFT_FRACTION` of its tolerance, one M-metric Newton projection of `q` onto
+    /// `h_A = 0` and of `q̇` onto `ḣ_A = 0`. The drift is O(dt⁵) per step, so the order of the
+    /// method is kept, and most steps need no projection (nor the evaluation it costs). `ev`: the
+    /// evaluation at the state, if at hand; returns the one at the state afterwards, likewise.
+    pub(super) fn stabilize(&mut self, ev: Option<Evaluation<N, M>>) -> Result<Option<Evaluation<N, M>>, DynamicsError> {
+        let (s, active) = (&self.state, self.active);
+        let (gap_tol, rate_tol) = (DRIFT_FRACTION * self.options.gap_tolerance, DRIFT_FRACTION * self.options.velocity_tolerance);
+        if members::<M>(active).all(|i| s.gap[i].abs() <= gap_tol && s.hd[i].abs() <= rate_tol) {
+            return Ok(ev);
+        }
+        let (t, v) = (s.t, s.v);
+        let (q, ev, frame) = self.onto_contacts(t, s.q, &v, active, frame_at(&self.system, t, &s.q, &v, ev)?)?;
+        let hd = ev.gap_jacobian * v + ev.gap_time_rate;
+        let dependent = DynamicsError::DependentContacts { time: t, constraints: active };
+        let v = v + frame.projection(&hd, active).ok_or(dependent)?.0;
+        let ev = self.system.evaluate(t, &q, &v);
+        self.state = sample_of(&ev, t, q, v, active)?;
+        Ok(Some(ev))
+    }
+
+    /// `q` moved onto `h_S = 0` by Newton steps in the metric of `M` until every gap of `set` is
+    /// within `DRIFT_FRACTION · ε_h` (each step leaves about the square of the last residual: a
+    /// drift of microns after a long step held in contact needs two), with the evaluation and
+    /// frame there. The velocity is left to the caller, to be projected with these gradients:
+    /// those at the drifted configuration leave `ḣ` off by the change of `J` times `q̇`.
+    fn onto_contacts(
+        &self,
+        t: f64,
+        mut q: SVector<f64, N>,
+        v: &SVector<f64, N>,
+        set: Set,
+        (mut ev, mut frame): (Evaluation<N, M>, Frame<N, M>),
+    ) -> Result<(SVector<f64, N>, Evaluation<N, M>, Frame<N, M>), DynamicsError> {
+        let tol = DRIFT_FRACTION * self.options.gap_tolerance;
+        for _ in 0..MAX_PROJECTIONS {
+            if members::<M>(set).all(|i| ev.gap[i].abs() <= tol) {
+                break;
+            }
+            q += frame.projection(&ev.gap, set).ok_or(DynamicsError::DependentContacts { time: t, constraints: set })?.0;
+            (ev, frame) = frame_at(&self.system, t, &q, v, None)?;
+        }
+        Ok((q, ev, frame))
+    }
+
+    /// Records one event per constraint of `set` at the current configuration; the first carries
+    /// `impulses` (see `Event::impulses`).
+    fn record(
+        &mut self,
+        kind: EventKind,
+        set: Set,
+        hd: &SVector<f64, M>,
+        hd_after: &SVector<f64, M>,
+        lost: &SVector<f64, M>,
+        impulses: SVector<f64, M>,
+    ) {
+        let (time, q, mut carried) = (self.state.t, self.state.q, impulses);
+        for i in members::<M>(set) {
+            let (velocity_before, velocity_after, energy_lost) = (hd[i], hd_after[i], lost[i]);
+            self.events.push(Event { time, kind, constraint: i, velocity_before, velocity_after, energy_lost, q, impulses: carried });
+            carried = SVector::zeros();
+        }
+    }
+
+    /// The sliding law over `candidates` at `(t, q, q̇)`, with the tie rule: a candidate this
+    /// instant leaves undecided (zero force and zero gap acceleration together, as where a
+    /// contact opens, or where two corners trade places as the piston starts to pivot) takes the
+    /// law's answer `TIE_PROBE` nominal steps later along the motion with this instant's support
+    /// held. Every support consistent with the ties gives the same acceleration now, so the
+    /// motions differ at second order and any of them shows the first-order trend that decides.
+    /// A tie that persists there opens (the law's smallest support). Returns `λ` now and the support.
+    fn sliding_law(
+        &self,
+        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
+        ev: &Evaluation<N, M>,
+        frame: &Frame<N, M>,
+        candidates: Set,
+    ) -> Result<(SVector<f64, M>, Set), DynamicsError> {
+        let eps = self.options.multiplier_tolerance;
+        let unresolved = |time| DynamicsError::ContactUnresolved { time, constraints: candidates };
+        let now = frame.sliding(ev, candidates, eps).ok_or(unresolved(t))?;
+        if now.ties == 0 {
+            return Ok((now.lambda, now.support));
+        }
+        let start = sample_of(ev, t, *q, *v, now.support)?;
+        let (_, ev_ahead) = rk4_to(&self.system, &start, t + TIE_PROBE * self.options.step, now.support)?;
+        let frame_ahead = Frame::new(&ev_ahead).ok_or(DynamicsError::SingularMass { time: t })?;
+        let ahead = frame_ahead.sliding(&ev_ahead, candidates, eps).ok_or(unresolved(t))?;
+        if ahead.support == now.support {
+            return Ok((now.lambda, now.support));
+        }
+        let free = Frame::gap_acceleration(ev, &frame.free_acc);
+        let lambda =
+            solve_on(&frame.w, &-free, ahead.support).ok_or(DynamicsError::DependentContacts { time: t, constraints: ahead.support })?;
+        Ok((lambda.map(|x| x.max(0.0)), ahead.support))
+    }
+
+    /// Resolves the closed constraints at the current instant (Fig. 1 at a discontinuity point):
+    /// 1. if any approaches (`ḣ < −ε_ḣ`), the generalized Newton impact over all of `closed`;
+    /// 2. persistent contact for those now at rest (`|ḣ| < ε_ḣ`, or caught by the Zeno guard)
+    ///    as the sliding complementarity problem over all of them decides (`sliding_law`): one
+    ///    whose multiplier just crossed zero is not released on its own word, since the others'
+    ///    forces change with it; one still approaching (−ε_ḣ ≤ ḣ < 0) that sliding refuses gets
+    ///    the impact of 1. after all;
+    /// 3. projection of `q` and `q̇` onto the new active set, which becomes the held set.
+    ///
+    /// `known`: the system's evaluation at the current state, if the caller has it.
+    pub(super) fn settle(&mut self, closed: Set, known: Option<Evaluation<N, M>>) -> Result<(), DynamicsError> {
+        let Sample { t, q, mut v, .. } = self.state;
+        let was_active = self.active;
+        let opts = self.options.clone();
+        let (mut ev, mut frame) = frame_at(&self.system, t, &q, &v, known)?;
+        let mut hd = ev.gap_jacobian * v + ev.gap_time_rate;
+
+        let mut approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
+        let mut impacted: Set = 0;
+        let zeno_apex = ZENO_APEX_FACTOR * opts.gap_tolerance;
+        let support = loop {
+            if approaching != 0 {
+                let e = SVector::<f64, M>::from_fn(|i, _| self.system.restitution(i));
+                let impulse = impact::newton_impulses(&frame, &hd, &e, closed)
+                    .ok_or(DynamicsError::MultipleImpact { time: t, constraints: closed })?;
+                let v_plus = v + frame.minv_jt * impulse;
+                let hd_plus = hd + frame.w * impulse;
+                let lost = impact::energy_lost(&impulse, &hd, &hd_plus);
+                // Recorded: every approaching constraint, and any other not held in contact that
+                // took a real impulse (one that changes its own ḣ by more than ε_ḣ). A held one
+                // pushed harder keeps ḣ = 0 on both sides: a reaction that dissipates nothing, not
+                // an impact (counting it would inflate the impact statistics with zero speeds).
+                let pushed = !was_active & select::<M>(|i| impulse[i] * frame.w[(i, i)] > opts.velocity_tolerance);
+                self.record(EventKind::Impact, closed & (approaching | pushed), &hd, &hd_plus, &lost, impulse);
+                (v, hd) = (v_plus, hd_plus);
+                (ev, frame) = frame_at(&self.system, t, &q, &v, None)?;
+                impacted |= approaching;
+            }
+
+            let mut candidates = closed & select::<M>(|i| hd[i] < opts.velocity_tolerance);
+            let support = loop {
+                let (lambda, support) = self.sliding_law((t, &q, &v), &ev, &frame, candidates)?;
+                let hdd = Frame::gap_acceleration(&ev, &(frame.free_acc + frame.minv_jt * lambda));
+                let zeno = closed & !candidates & select::<M>(|i| hd[i] > 0.0 && hdd[i] < 0.0 && hd[i] * hd[i] < -2.0 * zeno_apex * hdd[i]);
+                if zeno == 0 {
+                    break support;
+                }
+                candidates |= zeno;
+            };
+            // An approach slower than ε_ḣ that sliding refuses (its force would pull) still needs
+            // the impact law, or the gap closes at the next instant with nothing to resolve it.
+            // A constraint leaving persistent contact has ḣ = 0 up to round-off: no impact.
+            let grazing = closed & !support & !impacted & !was_active & select::<M>(|i| hd[i] < 0.0);
+            if grazing == 0 {
+                break support;
+            }
+            approaching = grazing;
+        };
+
+        // The new contacts are put on the manifold, and with them any closed constraint that
+        // opens a hair below zero (the drift of a step held in contact, or of a projection onto
+        // its neighbours), so that it leaves from h = 0, not from an apparent penetration; where
+        // that set is dependent, the contacts alone.
+        let below = closed & !support & select::<M>(|i| ev.gap[i] < -opts.gap_tolerance);
+        let onto = if members::<M>(support | below).count() <= N { support | below } else { support };
+        let state = if onto == 0 {
+            // Nothing held or moved: q and q̇ are those `ev` was made at (after any impact).
+            sample_of(&ev, t, q, v, 0)?
+        } else {
+            let (q, ev, frame) = self.onto_contacts(t, q, &v, onto, (ev, frame))?;
+            let hd = ev.gap_jacobian * v + ev.gap_time_rate;
+            let (dv, impulse) = frame.projection(&hd, support).ok_or(DynamicsError::DependentContacts { time: t, constraints: support })?;
+            let hd_after = hd + frame.w * impulse;
+            let lost = impact::energy_lost(&impulse, &hd, &hd_after);
+            self.record(EventKind::Slide, support & !was_active, &hd, &hd_after, &lost, impulse);
+            sample(&self.system, t, q, v + dv, support)?
+        };
+        self.record(EventKind::Release, was_active & !support, &hd, &hd, &SVector::zeros(), SVector::zeros());
+        self.active = support;
+        self.state = state;
+        Ok(())
+    }
+}
