@@ -160,8 +160,6 @@ impl Resolved<'_> {
 fn main() {
     println!("cargo:rerun-if-changed={TABLE}");
     println!("cargo:rerun-if-changed=build.rs");
-    // For `packaging::build_sibling`, which builds this crate again for the same target.
-    println!("cargo:rustc-env=PISTONSLAP_TARGET={}", std::env::var("TARGET").expect("TARGET"));
     let source = std::fs::read_to_string(TABLE).expect("read modelDescription/variables.xml");
     let table: Table =
         quick_xml::de::from_str(&source).expect("parse modelDescription/variables.xml");
@@ -328,7 +326,7 @@ fn model_description(table: &Table, variables: &[Resolved], guid: &str) -> io::R
 }
 
 /// Log categories: (name, description). The FMI layer accepts exactly these in fmi2SetDebugLogging.
-const LOG_CATEGORIES: [(&str, &str); 4] = [
+const LOG_CATEGORIES: [(&str, &str); 3] = [
     (
         "logStatusError",
         "Errors: refused calls, bad parameters, failed steps",
@@ -340,10 +338,6 @@ const LOG_CATEGORIES: [(&str, &str); 4] = [
     (
         "logEvents",
         "Debug: impacts and sliding starts/releases during doStep",
-    ),
-    (
-        "logBuild",
-        "Debug: at fmi2Instantiate, which build of the binary runs the instance (x86-64 or x86-64-v3) and why",
     ),
 ];
 

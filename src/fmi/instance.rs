@@ -1,61 +1,23 @@
-//! One FMU instance and the FMI 2.0 Co-Simulation state machine (standard §4.2.4), in safe code.
+//! One FMU instance, in safe code: what each fmi2 function does once the state machine
+//! (`state_machine.rs`) has allowed the call.
 //!
-//! Every operation first checks that the standard allows it in the current state; a forbidden call,
-//! a bad argument or an unknown value reference is *refused*: `Err` with a message, nothing changed.
+//! A bad argument or an unknown value reference is *refused*: `Err` with a message, nothing changed.
 //! A *failure* of the model (parameters refused at fmi2ExitInitializationMode, a step that cannot be
 //! computed) puts the instance in the error state, as the standard says; its state is still the one
 //! before the call, so fmi2SetFMUstate or fmi2Reset continue from there.
 
 use super::description::{self, Causality, Kind, GUID};
 use super::logger::Logger;
+use super::state_machine::Mode::{self, *};
 use super::state_bytes;
 use super::types::Status;
 use crate::models::{EngineModel, Inputs, ModelError, Parameters};
 use crate::simulation::Simulation;
 use serde::{de::DeserializeOwned, Deserialize, Serialize};
-use std::fmt;
 
 /// What the FMU layer needs of an engine model: run it, and save it in an FMU state.
 pub trait Model: EngineModel + Serialize + DeserializeOwned {}
 impl<E: EngineModel + Serialize + DeserializeOwned> Model for E {}
-
-/// The states of the standard's Co-Simulation state machine that a synchronous FMU can be in
-/// (named as in the standard).
-#[allow(clippy::enum_variant_names)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Mode {
-    Instantiated,
-    InitializationMode,
-    StepComplete,
-    Terminated,
-    Error,
-    Fatal,
-}
-
-impl fmt::Display for Mode {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        fmt::Debug::fmt(self, f)
-    }
-}
-
-use Mode::*;
-
-/// Allowed states per function group (standard §4.2.4 table; stepInProgress, stepFailed and
-/// stepCanceled cannot occur: fmi2DoStep is synchronous and never returns fmi2Discard).
-pub const CONFIGURE: &[Mode] = &[Instantiated];
-pub const GET: &[Mode] = &[InitializationMode, StepComplete, Terminated, Error];
-pub const SET: &[Mode] = &[Instantiated, InitializationMode, StepComplete];
-pub const STATE: &[Mode] = &[
-    Instantiated,
-    InitializationMode,
-    StepComplete,
-    Terminated,
-    Error,
-];
-pub const STEP: &[Mode] = &[StepComplete];
-pub const STATUS: &[Mode] = &[StepComplete, Terminated];
-pub const INPUT_DERIVATIVES: &[Mode] = &[Instantiated, InitializationMode, StepComplete];
-pub const OUTPUT_DERIVATIVES: &[Mode] = &[StepComplete, Terminated, Error];
 
 /// A refused or failed call: the status to return and the message to log.
 #[derive(Debug, Clone, PartialEq)]
@@ -183,30 +145,12 @@ impl<E: Model> Instance<E> {
         })
     }
 
-    /// Refuses `function` unless the current state is one of `allowed`.
-    pub fn require(&self, function: &str, allowed: &[Mode]) -> Outcome {
-        let mode = self.mode();
-        if allowed.contains(&mode) {
-            return Ok(());
-        }
-        let allowed: Vec<String> = allowed.iter().map(Mode::to_string).collect();
-        Err(Refusal::error(format!(
-            "{function} is not allowed in state {mode} (allowed in: {})",
-            if allowed.is_empty() {
-                "none".to_string()
-            } else {
-                allowed.join(", ")
-            }
-        )))
-    }
-
     /// After a caught panic: the instance can only be freed.
     pub fn set_fatal(&mut self) {
         self.failure = Some(Fatal);
     }
 
     pub fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> Outcome {
-        self.require("fmi2SetupExperiment", CONFIGURE)?;
         if !start.is_finite() {
             return Err(Refusal::error(format!("startTime = {start} is not finite")));
         }
@@ -221,14 +165,12 @@ impl<E: Model> Instance<E> {
     }
 
     pub fn enter_initialization_mode(&mut self) -> Outcome {
-        self.require("fmi2EnterInitializationMode", CONFIGURE)?;
         self.core.phase = Phase::InitializationMode;
         Ok(())
     }
 
     /// Builds the simulation from the parameters: bad parameters are a failure naming the parameter.
     pub fn exit_initialization_mode(&mut self) -> Outcome {
-        self.require("fmi2ExitInitializationMode", &[InitializationMode])?;
         let sim = Simulation::start(&self.core.parameters, self.core.start_time)
             .map_err(|e| self.fail(e))?;
         self.core.phase = Phase::StepComplete(sim);
@@ -236,7 +178,6 @@ impl<E: Model> Instance<E> {
     }
 
     pub fn terminate(&mut self) -> Outcome {
-        self.require("fmi2Terminate", STEP)?;
         if let Phase::StepComplete(sim) =
             std::mem::replace(&mut self.core.phase, Phase::Instantiated)
         {
@@ -247,15 +188,13 @@ impl<E: Model> Instance<E> {
 
     /// Back to the state after fmi2Instantiate (debug-logging settings are kept).
     pub fn reset(&mut self) -> Outcome {
-        self.require("fmi2Reset", STATE)?;
         self.core = Core::default();
         self.failure = None;
         Ok(())
     }
 
     /// Checks every (value reference, value) pair before changing anything: all or nothing.
-    pub fn set(&mut self, function: &str, values: &[(u32, Value)]) -> Outcome {
-        self.require(function, SET)?;
+    pub fn set(&mut self, values: &[(u32, Value)]) -> Outcome {
         for (vr, value) in values {
             self.check_settable(*vr, value)?;
         }
@@ -301,13 +240,11 @@ impl<E: Model> Instance<E> {
     /// simulation built from the current parameters.
     pub fn get<T>(
         &self,
-        function: &str,
         vrs: &[u32],
         kind: Kind,
         read: impl for<'a> Fn(u32, &'a Parameters, &'a Inputs, &'a crate::models::Outputs) -> Option<T>,
         out: &mut [T],
     ) -> Outcome {
-        self.require(function, GET)?;
         for &vr in vrs {
             typed_variable(vr, kind)?;
         }
@@ -335,8 +272,7 @@ impl<E: Model> Instance<E> {
 
     /// fmi2GetBoolean / fmi2SetBoolean: PistonSlap has no Boolean variable, so any value reference is
     /// refused (an empty list is fine).
-    pub fn booleans(&self, function: &str, allowed: &[Mode], vrs: &[u32]) -> Outcome {
-        self.require(function, allowed)?;
+    pub fn booleans(&self, vrs: &[u32]) -> Outcome {
         match vrs.first() {
             None => Ok(()),
             Some(&vr) => Err(match description::variable(vr) {
@@ -351,9 +287,8 @@ impl<E: Model> Instance<E> {
 
     /// Advances from `t` (which must be the current time) to exactly `t + h` with the inputs held.
     pub fn do_step(&mut self, t: f64, h: f64) -> Outcome {
-        self.require("fmi2DoStep", STEP)?;
         let Phase::StepComplete(sim) = &mut self.core.phase else {
-            unreachable!("checked by require")
+            return Err(Refusal::error("no simulation to step"));
         };
         let now = sim.time();
         if !(h.is_finite() && h > 0.0) {
@@ -406,14 +341,12 @@ impl<E: Model> Instance<E> {
         }
     }
 
-    pub fn state(&self, function: &str) -> Outcome<Core<E>> {
-        self.require(function, STATE)?;
-        Ok(self.core.clone())
+    pub fn state(&self) -> Core<E> {
+        self.core.clone()
     }
 
     /// Restores a saved state (and cuts the impact log back to it); leaves the error state.
     pub fn set_state(&mut self, core: &Core<E>) -> Outcome {
-        self.require("fmi2SetFMUstate", STATE)?;
         if let Phase::StepComplete(sim) | Phase::Terminated(sim) = &core.phase {
             // Restoring cuts the state's log file: only this instance's own log may be cut, so
             // foreign or crafted state bytes cannot truncate an arbitrary file.
@@ -431,13 +364,11 @@ impl<E: Model> Instance<E> {
         Ok(())
     }
 
-    pub fn serialize(&self, function: &str, core: &Core<E>) -> Outcome<Vec<u8>> {
-        self.require(function, STATE)?;
+    pub fn serialize(&self, core: &Core<E>) -> Outcome<Vec<u8>> {
         state_bytes::encode(core, GUID).map_err(Refusal::error)
     }
 
     pub fn deserialize(&self, bytes: &[u8]) -> Outcome<Core<E>> {
-        self.require("fmi2DeSerializeFMUstate", STATE)?;
         let core: Core<E> = state_bytes::decode(bytes, GUID)
             .map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
         core.check()

@@ -1,7 +1,7 @@
-//! The FMI layer through its C-level functions (`abi`, which the exports call with the shipped
+//! The FMI layer through its C-level functions (`functions`, which the exports call with the shipped
 //! engine), driven with the test-only shuttle model whose impacts have closed-form times.
 
-use super::abi;
+use super::functions;
 use super::description::{self, GUID, VARIABLES};
 use super::instance::Model;
 use super::types::*;
@@ -103,7 +103,7 @@ impl<E: Model> Host<E> {
         let log = Box::new(Log::default());
         let functions = callbacks(&log);
         let c = unsafe {
-            abi::instantiate::<E>(
+            functions::instantiate::<E>(
                 name.as_ptr(),
                 fmu_type,
                 guid.as_ptr(),
@@ -140,10 +140,8 @@ impl<E: Model> Host<E> {
 
     fn setup(&self, start: f64, stop: Option<f64>) -> Status {
         unsafe {
-            abi::setup_experiment::<E>(
+            functions::setup_experiment::<E>(
                 self.c,
-                FMI2_FALSE,
-                0.0,
                 start,
                 stop.is_some() as c_int,
                 stop.unwrap_or(0.0),
@@ -151,24 +149,24 @@ impl<E: Model> Host<E> {
         }
     }
     fn enter(&self) -> Status {
-        unsafe { abi::enter_initialization_mode::<E>(self.c) }
+        unsafe { functions::enter_initialization_mode::<E>(self.c) }
     }
     fn exit(&self) -> Status {
-        unsafe { abi::exit_initialization_mode::<E>(self.c) }
+        unsafe { functions::exit_initialization_mode::<E>(self.c) }
     }
     fn step(&self, t: f64, h: f64) -> Status {
-        unsafe { abi::do_step::<E>(self.c, t, h) }
+        unsafe { functions::do_step::<E>(self.c, t, h) }
     }
     fn set_real(&self, name: &str, value: f64) -> Status {
-        unsafe { abi::set_real::<E>(self.c, &vr(name), 1, &value) }
+        unsafe { functions::set_real::<E>(self.c, &vr(name), 1, &value) }
     }
     fn set_integer(&self, name: &str, value: i32) -> Status {
-        unsafe { abi::set_integer::<E>(self.c, &vr(name), 1, &value) }
+        unsafe { functions::set_integer::<E>(self.c, &vr(name), 1, &value) }
     }
     fn real(&self, name: &str) -> f64 {
         let mut value = f64::NAN;
         assert_eq!(
-            unsafe { abi::get_real::<E>(self.c, &vr(name), 1, &mut value) },
+            unsafe { functions::get_real::<E>(self.c, &vr(name), 1, &mut value) },
             Status::Ok,
             "{name}"
         );
@@ -177,7 +175,7 @@ impl<E: Model> Host<E> {
     fn integer(&self, name: &str) -> i32 {
         let mut value = -1;
         assert_eq!(
-            unsafe { abi::get_integer::<E>(self.c, &vr(name), 1, &mut value) },
+            unsafe { functions::get_integer::<E>(self.c, &vr(name), 1, &mut value) },
             Status::Ok,
             "{name}"
         );
@@ -197,17 +195,17 @@ impl<E: Model> Host<E> {
     fn get_state(&self) -> fmi2FMUstate {
         let mut state = null_mut();
         assert_eq!(
-            unsafe { abi::get_fmu_state::<E>(self.c, &mut state) },
+            unsafe { functions::get_fmu_state::<E>(self.c, &mut state) },
             Status::Ok
         );
         state
     }
     fn set_state(&self, state: fmi2FMUstate) -> Status {
-        unsafe { abi::set_fmu_state::<E>(self.c, state) }
+        unsafe { functions::set_fmu_state::<E>(self.c, state) }
     }
     fn free_state(&self, mut state: fmi2FMUstate) {
         assert_eq!(
-            unsafe { abi::free_fmu_state::<E>(self.c, &mut state) },
+            unsafe { functions::free_fmu_state::<E>(self.c, &mut state) },
             Status::Ok
         );
         assert!(state.is_null());
@@ -215,12 +213,12 @@ impl<E: Model> Host<E> {
     fn serialize(&self, state: fmi2FMUstate) -> Vec<u8> {
         let mut size = 0;
         assert_eq!(
-            unsafe { abi::serialized_fmu_state_size::<E>(self.c, state, &mut size) },
+            unsafe { functions::serialized_fmu_state_size::<E>(self.c, state, &mut size) },
             Status::Ok
         );
         let mut bytes = vec![0u8; size];
         let status = unsafe {
-            abi::serialize_fmu_state::<E>(self.c, state, bytes.as_mut_ptr() as *mut c_char, size)
+            functions::serialize_fmu_state::<E>(self.c, state, bytes.as_mut_ptr() as *mut c_char, size)
         };
         assert_eq!(status, Status::Ok);
         bytes
@@ -228,7 +226,7 @@ impl<E: Model> Host<E> {
     fn deserialize(&self, bytes: &[u8]) -> (Status, fmi2FMUstate) {
         let mut state = null_mut();
         let status = unsafe {
-            abi::deserialize_fmu_state::<E>(
+            functions::deserialize_fmu_state::<E>(
                 self.c,
                 bytes.as_ptr() as *const c_char,
                 bytes.len(),
@@ -276,7 +274,7 @@ impl<E: Model> Host<E> {
 
 impl<E: Model> Drop for Host<E> {
     fn drop(&mut self) {
-        unsafe { abi::free_instance::<E>(self.c) }
+        unsafe { functions::free_instance::<E>(self.c) }
     }
 }
 
@@ -289,7 +287,7 @@ fn a_full_cycle_gives_the_closed_form_impacts() {
     assert_eq!(host.integer("impact_count"), 3);
     assert_eq!(host.integer("last_impact_corner"), 3);
     assert!((host.real("impact_velocity") - 0.25 * SHUTTLE_SPEED).abs() < 1e-15);
-    assert_eq!(unsafe { abi::terminate::<Shuttle>(host.c) }, Status::Ok);
+    assert_eq!(unsafe { functions::terminate::<Shuttle>(host.c) }, Status::Ok);
     assert_eq!(
         host.integer("impact_count"),
         3,
@@ -302,14 +300,14 @@ fn a_full_cycle_gives_the_closed_form_impacts() {
 fn calls_in_states_the_standard_forbids_are_refused_and_change_nothing() {
     let host = ShuttleHost::new();
     assert_eq!(host.step(0.0, 1e-3), Status::Error);
-    host.logged("fmi2DoStep is not allowed in state Instantiated");
+    host.logged("fmi2DoStep: not allowed in state Instantiated");
     assert_eq!(host.exit(), Status::Error);
     let mut x = 0.0;
     assert_eq!(
-        unsafe { abi::get_real::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut x) },
+        unsafe { functions::get_real::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut x) },
         Status::Error
     );
-    assert_eq!(unsafe { abi::terminate::<Shuttle>(host.c) }, Status::Error);
+    assert_eq!(unsafe { functions::terminate::<Shuttle>(host.c) }, Status::Error);
     assert_eq!(host.enter(), Status::Ok);
     assert_eq!(
         host.setup(0.0, None),
@@ -327,13 +325,13 @@ fn calls_in_states_the_standard_forbids_are_refused_and_change_nothing() {
         "inputs may be set in step mode"
     );
     assert_eq!(
-        unsafe { abi::cancel_step::<Shuttle>(host.c) },
+        unsafe { functions::cancel_step::<Shuttle>(host.c) },
         Status::Error
     );
-    assert_eq!(unsafe { abi::terminate::<Shuttle>(host.c) }, Status::Ok);
+    assert_eq!(unsafe { functions::terminate::<Shuttle>(host.c) }, Status::Ok);
     assert_eq!(host.step(0.0, 1e-3), Status::Error);
     host.logged("not allowed in state Terminated");
-    assert_eq!(unsafe { abi::reset::<Shuttle>(host.c) }, Status::Ok);
+    assert_eq!(unsafe { functions::reset::<Shuttle>(host.c) }, Status::Ok);
     assert_eq!(
         host.setup(0.0, None),
         Status::Ok,
@@ -351,76 +349,76 @@ fn null_pointers_unknown_references_and_wrong_types_are_refused() {
     let mut i = 0;
     unsafe {
         assert_eq!(
-            abi::do_step::<Shuttle>(null_mut(), 0.0, 1e-3),
+            functions::do_step::<Shuttle>(null_mut(), 0.0, 1e-3),
             Status::Error
         );
         assert_eq!(
-            abi::get_real::<Shuttle>(host.c, null(), 1, &mut x),
+            functions::get_real::<Shuttle>(host.c, null(), 1, &mut x),
             Status::Error
         );
         host.logged("vr is NULL");
         assert_eq!(
-            abi::get_real::<Shuttle>(host.c, &vr("crank_angle"), 1, null_mut()),
+            functions::get_real::<Shuttle>(host.c, &vr("crank_angle"), 1, null_mut()),
             Status::Error
         );
         assert_eq!(
-            abi::set_real::<Shuttle>(host.c, &vr("crank_speed"), 1, null()),
+            functions::set_real::<Shuttle>(host.c, &vr("crank_speed"), 1, null()),
             Status::Error
         );
         assert_eq!(
-            abi::get_real::<Shuttle>(host.c, null(), 0, null_mut()),
+            functions::get_real::<Shuttle>(host.c, null(), 0, null_mut()),
             Status::Ok,
             "nothing asked"
         );
         assert_eq!(
-            abi::get_real::<Shuttle>(host.c, &9999, 1, &mut x),
+            functions::get_real::<Shuttle>(host.c, &9999, 1, &mut x),
             Status::Error
         );
         host.logged("unknown value reference 9999");
         assert_eq!(
-            abi::get_integer::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut i),
+            functions::get_integer::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut i),
             Status::Error
         );
         host.logged("not Integer");
         let mut b = 0;
         assert_eq!(
-            abi::get_boolean::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut b),
+            functions::get_boolean::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut b),
             Status::Error
         );
         assert_eq!(
-            abi::set_boolean::<Shuttle>(host.c, &0, 1, &1),
+            functions::set_boolean::<Shuttle>(host.c, &0, 1, &1),
             Status::Error
         );
         assert_eq!(
-            abi::set_string::<Shuttle>(host.c, &vr("impact_log"), 1, &null()),
+            functions::set_string::<Shuttle>(host.c, &vr("impact_log"), 1, &null()),
             Status::Error
         );
         let mut state = null_mut();
         assert_eq!(
-            abi::get_fmu_state::<Shuttle>(host.c, null_mut()),
+            functions::get_fmu_state::<Shuttle>(host.c, null_mut()),
             Status::Error
         );
         assert_eq!(
-            abi::set_fmu_state::<Shuttle>(host.c, null_mut()),
+            functions::set_fmu_state::<Shuttle>(host.c, null_mut()),
             Status::Error
         );
         assert_eq!(
-            abi::free_fmu_state::<Shuttle>(host.c, &mut state),
+            functions::free_fmu_state::<Shuttle>(host.c, &mut state),
             Status::Ok,
             "freeing NULL is a no-op"
         );
         assert_eq!(
-            abi::serialized_fmu_state_size::<Shuttle>(host.c, null_mut(), &mut 0),
+            functions::serialized_fmu_state_size::<Shuttle>(host.c, null_mut(), &mut 0),
             Status::Error
         );
         let mut fake = [0u64; 8];
         assert_eq!(
-            abi::set_fmu_state::<Shuttle>(host.c, fake.as_mut_ptr() as fmi2FMUstate),
+            functions::set_fmu_state::<Shuttle>(host.c, fake.as_mut_ptr() as fmi2FMUstate),
             Status::Error
         );
         host.logged("not made by this FMU");
         assert_eq!(
-            abi::get_status::<Shuttle>(host.c, FMI2_DO_STEP_STATUS, null_mut()),
+            functions::get_status::<Shuttle>(host.c, FMI2_DO_STEP_STATUS, null_mut()),
             Status::Error
         );
     }
@@ -429,7 +427,7 @@ fn null_pointers_unknown_references_and_wrong_types_are_refused() {
     // A mixed list is all or nothing: the valid first value is not applied.
     let (vrs, values) = ([vr("crank_speed"), 9999], [50.0, 1.0]);
     assert_eq!(
-        unsafe { abi::set_real::<Shuttle>(host.c, vrs.as_ptr(), 2, values.as_ptr()) },
+        unsafe { functions::set_real::<Shuttle>(host.c, vrs.as_ptr(), 2, values.as_ptr()) },
         Status::Error
     );
     assert_eq!(host.real("crank_speed"), 125.66);
@@ -504,7 +502,7 @@ fn instantiate_checks_its_arguments() {
     let log = Log::default();
     let mut functions = callbacks(&log);
     unsafe {
-        let c = abi::instantiate::<Shuttle>(
+        let c = functions::instantiate::<Shuttle>(
             null(),
             1,
             guid.as_ptr(),
@@ -513,7 +511,7 @@ fn instantiate_checks_its_arguments() {
             0,
         );
         assert!(c.is_null());
-        assert!(abi::instantiate::<Shuttle>(
+        assert!(functions::instantiate::<Shuttle>(
             c"x".as_ptr(),
             1,
             guid.as_ptr(),
@@ -523,7 +521,7 @@ fn instantiate_checks_its_arguments() {
         )
         .is_null());
         functions.logger = None;
-        assert!(abi::instantiate::<Shuttle>(
+        assert!(functions::instantiate::<Shuttle>(
             c"x".as_ptr(),
             1,
             guid.as_ptr(),
@@ -532,7 +530,7 @@ fn instantiate_checks_its_arguments() {
             0
         )
         .is_null());
-        abi::free_instance::<Shuttle>(null_mut());
+        functions::free_instance::<Shuttle>(null_mut());
     }
 }
 
@@ -546,7 +544,7 @@ fn bad_parameters_are_refused_at_exit_initialization_mode_by_name() {
         "ranges are checked at exit"
     );
     let mut x = 0.0;
-    let status = unsafe { abi::get_real::<Shuttle>(host.c, &vr("piston_lateral"), 1, &mut x) };
+    let status = unsafe { functions::get_real::<Shuttle>(host.c, &vr("piston_lateral"), 1, &mut x) };
     assert_eq!(
         status,
         Status::Error,
@@ -556,7 +554,7 @@ fn bad_parameters_are_refused_at_exit_initialization_mode_by_name() {
     host.logged("piston_mass");
     assert_eq!(host.step(0.0, 1e-3), Status::Error);
     host.logged("state Error");
-    assert_eq!(unsafe { abi::reset::<Shuttle>(host.c) }, Status::Ok);
+    assert_eq!(unsafe { functions::reset::<Shuttle>(host.c) }, Status::Ok);
     assert_eq!(host.enter(), Status::Ok);
     assert_eq!(host.set_integer("model_variant", 3), Status::Ok);
     assert_eq!(host.exit(), Status::Error);
@@ -621,7 +619,7 @@ fn a_restored_state_continues_bit_identically_also_through_bytes_and_other_insta
     // fmi2GetFMUstate into an existing state overwrites it.
     let mut reused = state;
     assert_eq!(
-        unsafe { abi::get_fmu_state::<Shuttle>(host.c, &mut reused) },
+        unsafe { functions::get_fmu_state::<Shuttle>(host.c, &mut reused) },
         Status::Ok
     );
     assert_eq!(reused, state);
@@ -666,13 +664,13 @@ fn corrupt_or_foreign_state_bytes_are_refused() {
     refused(&padded, "trailing byte");
     unsafe {
         assert_eq!(
-            abi::deserialize_fmu_state::<Shuttle>(host.c, null(), 10, &mut null_mut()),
+            functions::deserialize_fmu_state::<Shuttle>(host.c, null(), 10, &mut null_mut()),
             Status::Error
         );
         let mut small = vec![0 as c_char; 4];
         let state = host.get_state();
         assert_eq!(
-            abi::serialize_fmu_state::<Shuttle>(host.c, state, small.as_mut_ptr(), 4),
+            functions::serialize_fmu_state::<Shuttle>(host.c, state, small.as_mut_ptr(), 4),
             Status::Error
         );
         host.free_state(state);
@@ -692,11 +690,11 @@ fn a_panic_is_contained_as_fatal() {
     host.logged("internal error (panic");
     let mut x = 0.0;
     assert_eq!(
-        unsafe { abi::get_real::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut x) },
+        unsafe { functions::get_real::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut x) },
         Status::Error
     );
     assert_eq!(
-        unsafe { abi::reset::<Shuttle>(host.c) },
+        unsafe { functions::reset::<Shuttle>(host.c) },
         Status::Error,
         "fatal: only fmi2FreeInstance"
     );
@@ -709,17 +707,17 @@ fn strings_status_queries_and_debug_logging() {
     let path_c = CString::new(path.to_str().unwrap()).unwrap();
     unsafe {
         assert_eq!(
-            abi::set_string::<Shuttle>(host.c, &vr("impact_log"), 1, &path_c.as_ptr()),
+            functions::set_string::<Shuttle>(host.c, &vr("impact_log"), 1, &path_c.as_ptr()),
             Status::Ok
         );
         let on = [c"logEvents".as_ptr()];
         assert_eq!(
-            abi::set_debug_logging::<Shuttle>(host.c, FMI2_TRUE, 1, on.as_ptr()),
+            functions::set_debug_logging::<Shuttle>(host.c, FMI2_TRUE, 1, on.as_ptr()),
             Status::Ok
         );
         let unknown = [c"logEverything".as_ptr()];
         assert_eq!(
-            abi::set_debug_logging::<Shuttle>(host.c, FMI2_TRUE, 1, unknown.as_ptr()),
+            functions::set_debug_logging::<Shuttle>(host.c, FMI2_TRUE, 1, unknown.as_ptr()),
             Status::Error
         );
     }
@@ -728,7 +726,7 @@ fn strings_status_queries_and_debug_logging() {
     let mut s: fmi2String = null();
     unsafe {
         assert_eq!(
-            abi::get_string::<Shuttle>(host.c, &vr("impact_log"), 1, &mut s),
+            functions::get_string::<Shuttle>(host.c, &vr("impact_log"), 1, &mut s),
             Status::Ok
         );
         assert_eq!(CStr::from_ptr(s), path_c.as_c_str());
@@ -743,35 +741,35 @@ fn strings_status_queries_and_debug_logging() {
     unsafe {
         let mut t = 0.0;
         assert_eq!(
-            abi::get_real_status::<Shuttle>(host.c, FMI2_LAST_SUCCESSFUL_TIME, &mut t),
+            functions::get_real_status::<Shuttle>(host.c, FMI2_LAST_SUCCESSFUL_TIME, &mut t),
             Status::Ok
         );
         assert!((t - 0.005).abs() < 1e-15);
         let mut status = 0;
         assert_eq!(
-            abi::get_status::<Shuttle>(host.c, FMI2_DO_STEP_STATUS, &mut status),
+            functions::get_status::<Shuttle>(host.c, FMI2_DO_STEP_STATUS, &mut status),
             Status::Discard
         );
         assert_eq!(
-            abi::get_status::<Shuttle>(host.c, FMI2_PENDING_STATUS, &mut status),
+            functions::get_status::<Shuttle>(host.c, FMI2_PENDING_STATUS, &mut status),
             Status::Discard
         );
         let mut terminated = FMI2_TRUE;
         assert_eq!(
-            abi::get_boolean_status::<Shuttle>(host.c, FMI2_TERMINATED, &mut terminated),
+            functions::get_boolean_status::<Shuttle>(host.c, FMI2_TERMINATED, &mut terminated),
             Status::Ok
         );
         assert_eq!(terminated, FMI2_FALSE);
         assert_eq!(
-            abi::get_directional_derivative::<Shuttle>(host.c),
+            functions::get_directional_derivative::<Shuttle>(host.c),
             Status::Error
         );
         assert_eq!(
-            abi::set_real_input_derivatives::<Shuttle>(host.c),
+            functions::set_real_input_derivatives::<Shuttle>(host.c),
             Status::Error
         );
         assert_eq!(
-            abi::get_real_output_derivatives::<Shuttle>(host.c),
+            functions::get_real_output_derivatives::<Shuttle>(host.c),
             Status::Error
         );
     }
@@ -783,7 +781,7 @@ fn a_state_cannot_cut_another_instances_impact_log() {
     let path = std::env::temp_dir().join(format!("pistonslap_foreign_log_{}.csv", std::process::id()));
     let path_c = CString::new(path.to_str().unwrap()).unwrap();
     let writer = ShuttleHost::new();
-    let set = unsafe { abi::set_string::<Shuttle>(writer.c, &vr("impact_log"), 1, &path_c.as_ptr()) };
+    let set = unsafe { functions::set_string::<Shuttle>(writer.c, &vr("impact_log"), 1, &path_c.as_ptr()) };
     assert_eq!(set, Status::Ok);
     assert_eq!((writer.enter(), writer.exit()), (Status::Ok, Status::Ok));
     let state = writer.get_state();

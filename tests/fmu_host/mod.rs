@@ -1,9 +1,8 @@
 //! A host of the FMU's exported C functions in the same process, written in Rust so that a host's
-//! own cost stays out of what is measured: shared by `benches/fmu.rs` and the allocation test. It calls
-//! this build's functions ([`Functions::NATIVE`]) or those of a loaded x86-64-v3 build.
+//! own cost stays out of what is measured: shared by `benches/fmu.rs` and the allocation test.
 
 use pistonslap::fmi::description::{GUID, VARIABLES};
-use pistonslap::fmi::exports::Functions;
+use pistonslap::fmi::exports::*;
 use pistonslap::fmi::types::{fmi2CallbackFunctions, fmi2CallbackLogger, fmi2Component, Status, FMI2_CO_SIMULATION, FMI2_FALSE};
 use std::ffi::{c_char, c_int, c_void, CString};
 
@@ -22,14 +21,12 @@ fn ok(status: Status, what: &str) {
 
 /// An instance initialized with `integers` and `reals` set, ready to step from t = 0.
 pub struct Host {
-    f: Functions,
     c: fmi2Component,
     _callbacks: Box<fmi2CallbackFunctions>,
 }
 
 impl Host {
-    /// On the build whose functions are `f`.
-    pub fn on(f: Functions, integers: &[(&str, i32)], reals: &[(&str, f64)]) -> Self {
+    pub fn new(integers: &[(&str, i32)], reals: &[(&str, f64)]) -> Self {
         let callbacks = Box::new(fmi2CallbackFunctions {
             // SAFETY: see `quiet_logger`.
             logger: Some(unsafe { std::mem::transmute::<unsafe extern "C" fn(*mut c_void, *const c_char, c_int, *const c_char, *const c_char), fmi2CallbackLogger>(quiet_logger) }),
@@ -40,18 +37,18 @@ impl Host {
         });
         let (name, guid, resources) = (CString::new("host").unwrap(), CString::new(GUID).unwrap(), CString::new("file:///tmp").unwrap());
         unsafe {
-            let c = (f.fmi2Instantiate)(name.as_ptr(), FMI2_CO_SIMULATION, guid.as_ptr(), resources.as_ptr(), &*callbacks, FMI2_FALSE, FMI2_FALSE);
+            let c = fmi2Instantiate(name.as_ptr(), FMI2_CO_SIMULATION, guid.as_ptr(), resources.as_ptr(), &*callbacks, FMI2_FALSE, FMI2_FALSE);
             assert!(!c.is_null(), "instantiate");
-            ok((f.fmi2SetupExperiment)(c, FMI2_FALSE, 0.0, 0.0, FMI2_FALSE, 0.0), "setup");
-            ok((f.fmi2EnterInitializationMode)(c), "enter initialization");
+            ok(fmi2SetupExperiment(c, FMI2_FALSE, 0.0, 0.0, FMI2_FALSE, 0.0), "setup");
+            ok(fmi2EnterInitializationMode(c), "enter initialization");
             for &(n, v) in integers {
-                ok((f.fmi2SetInteger)(c, &vr(n), 1, &v), n);
+                ok(fmi2SetInteger(c, &vr(n), 1, &v), n);
             }
             for &(n, v) in reals {
-                ok((f.fmi2SetReal)(c, &vr(n), 1, &v), n);
+                ok(fmi2SetReal(c, &vr(n), 1, &v), n);
             }
-            ok((f.fmi2ExitInitializationMode)(c), "exit initialization");
-            Self { f, c, _callbacks: callbacks }
+            ok(fmi2ExitInitializationMode(c), "exit initialization");
+            Self { c, _callbacks: callbacks }
         }
     }
 
@@ -59,14 +56,14 @@ impl Host {
     pub fn step(&self, t: f64, h: f64, refs: &[u32], out: &mut [f64]) {
         assert_eq!(refs.len(), out.len());
         unsafe {
-            ok((self.f.fmi2DoStep)(self.c, t, h, 1), "doStep");
-            ok((self.f.fmi2GetReal)(self.c, refs.as_ptr(), refs.len(), out.as_mut_ptr()), "getReal");
+            ok(fmi2DoStep(self.c, t, h, 1), "doStep");
+            ok(fmi2GetReal(self.c, refs.as_ptr(), refs.len(), out.as_mut_ptr()), "getReal");
         }
     }
 }
 
 impl Drop for Host {
     fn drop(&mut self) {
-        unsafe { (self.f.fmi2FreeInstance)(self.c) }
+        unsafe { fmi2FreeInstance(self.c) }
     }
 }

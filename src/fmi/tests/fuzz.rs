@@ -131,7 +131,7 @@ fn valid_states() -> Vec<Vec<u8>> {
         assert_eq!(host.exit(), Status::Ok);
         host.run(0.0, 0.05, 1e-3);
         save();
-        assert_eq!(unsafe { abi::terminate::<Engine>(host.c) }, Status::Ok);
+        assert_eq!(unsafe { functions::terminate::<Engine>(host.c) }, Status::Ok);
         save();
     }
     states
@@ -140,7 +140,7 @@ fn valid_states() -> Vec<Vec<u8>> {
 /// The FMU's time, when it is stepping.
 fn time<E: Model>(host: &Host<E>) -> Option<f64> {
     let mut t = f64::NAN;
-    let status = unsafe { abi::get_real_status::<E>(host.c, FMI2_LAST_SUCCESSFUL_TIME, &mut t) };
+    let status = unsafe { functions::get_real_status::<E>(host.c, FMI2_LAST_SUCCESSFUL_TIME, &mut t) };
     (status == Status::Ok).then_some(t)
 }
 
@@ -245,17 +245,17 @@ fn set_checked(rng: &mut Rng, host: &Host<Engine>, read_back: bool, case: &str) 
         match kind {
             0 => {
                 let values: Vec<f64> = (0..n).map(|_| real(rng)).collect();
-                let status = abi::set_real::<Engine>(host.c, vrs.as_ptr(), n, values.as_ptr());
+                let status = functions::set_real::<Engine>(host.c, vrs.as_ptr(), n, values.as_ptr());
                 (status, values.iter().map(|x| x.to_bits().to_string()).collect())
             }
             1 => {
                 let values: Vec<i32> = (0..n).map(|_| integer(rng)).collect();
-                let status = abi::set_integer::<Engine>(host.c, vrs.as_ptr(), n, values.as_ptr());
+                let status = functions::set_integer::<Engine>(host.c, vrs.as_ptr(), n, values.as_ptr());
                 (status, values.iter().map(i32::to_string).collect())
             }
             2 => {
                 let values: Vec<c_int> = (0..n).map(|_| rng.next() as c_int).collect();
-                let status = abi::set_boolean::<Engine>(host.c, vrs.as_ptr(), n, values.as_ptr());
+                let status = functions::set_boolean::<Engine>(host.c, vrs.as_ptr(), n, values.as_ptr());
                 assert!(n == 0 || status == Status::Error, "{case}: PistonSlap has no Boolean");
                 (status, Vec::new())
             }
@@ -274,7 +274,7 @@ fn set_checked(rng: &mut Rng, host: &Host<Engine>, read_back: bool, case: &str) 
                     })
                     .collect();
                 let pointers: Vec<*const c_char> = strings.iter().map(|s| s.as_ptr() as *const c_char).collect();
-                let status = abi::set_string::<Engine>(host.c, vrs.as_ptr(), n, pointers.as_ptr());
+                let status = functions::set_string::<Engine>(host.c, vrs.as_ptr(), n, pointers.as_ptr());
                 let shown = strings.iter().map(|s| CStr::from_bytes_until_nul(s).unwrap().to_string_lossy().into_owned());
                 (status, shown.collect())
             }
@@ -304,7 +304,7 @@ fn set_checked(rng: &mut Rng, host: &Host<Engine>, read_back: bool, case: &str) 
 
 fn string(host: &Host<Engine>, vr: u32) -> String {
     let mut s: fmi2String = null();
-    assert_eq!(unsafe { abi::get_string::<Engine>(host.c, &vr, 1, &mut s) }, Status::Ok);
+    assert_eq!(unsafe { functions::get_string::<Engine>(host.c, &vr, 1, &mut s) }, Status::Ok);
     unsafe { CStr::from_ptr(s) }.to_string_lossy().into_owned()
 }
 
@@ -321,7 +321,7 @@ fn fuzz_setters(seed: u64, cases: usize) -> usize {
         // Whatever was accepted must initialize or be refused by name, then step or be refused. An
         // accepted random impact_log would name a file: cleared first (refused once fixed, in step mode).
         let label = format!("seed {seed} after case {case}");
-        let cleared = unsafe { abi::set_string::<Engine>(host.c, &vr("impact_log"), 1, &c"".as_ptr()) };
+        let cleared = unsafe { functions::set_string::<Engine>(host.c, &vr("impact_log"), 1, &c"".as_ptr()) };
         let _ = (host.setup(0.0, None), host.enter());
         let status = host.exit();
         assert!(matches!(status, Status::Ok | Status::Error), "{label}: exit {status:?}");

@@ -25,9 +25,9 @@ unsafe extern "C" fn calling_back_logger(
     let host = &*(env as *const CallingBack);
     let (logging, other) = (host.logging.load(Ordering::SeqCst), host.other.load(Ordering::SeqCst));
     let mut value = 0.0;
-    let own = abi::get_real::<Shuttle>(logging, &vr("crank_angle"), 1, &mut value);
-    let others = abi::get_real::<Shuttle>(other, &vr("crank_angle"), 1, &mut value);
-    abi::free_instance::<Shuttle>(logging);
+    let own = functions::get_real::<Shuttle>(logging, &vr("crank_angle"), 1, &mut value);
+    let others = functions::get_real::<Shuttle>(other, &vr("crank_angle"), 1, &mut value);
+    functions::free_instance::<Shuttle>(logging);
     host.statuses.lock().unwrap().extend([("own", own), ("other", others)]);
 }
 
@@ -45,7 +45,7 @@ fn a_logger_calling_back_into_its_instance_is_refused_and_the_instance_carries_o
         component_environment: &*calling_back as *const CallingBack as *mut c_void,
     };
     let guid = CString::new(GUID).unwrap();
-    let c = unsafe { abi::instantiate::<Shuttle>(c"logging".as_ptr(), FMI2_CO_SIMULATION, guid.as_ptr(), RESOURCES.as_ptr(), &functions, FMI2_FALSE) };
+    let c = unsafe { functions::instantiate::<Shuttle>(c"logging".as_ptr(), FMI2_CO_SIMULATION, guid.as_ptr(), RESOURCES.as_ptr(), &functions, FMI2_FALSE) };
     assert!(!c.is_null());
     calling_back.logging.store(c, Ordering::SeqCst);
     calling_back.other.store(other.c, Ordering::SeqCst);
