@@ -35,6 +35,21 @@ pub struct Component<E> {
 struct Snapshot<E> {
     tag: u64,
     core: Core<E>,
+    /// The serialized form, encoded once for fmi2SerializedFMUstateSize and fmi2SerializeFMUstate.
+    bytes: Option<Vec<u8>>,
+}
+
+impl<E: Model> Snapshot<E> {
+    fn new(core: Core<E>) -> Self {
+        Self { tag: STATE_TAG, core, bytes: None }
+    }
+
+    fn bytes(&mut self) -> Outcome<&[u8]> {
+        match &mut self.bytes {
+            Some(bytes) => Ok(bytes),
+            slot @ None => Ok(slot.insert(self.core.serialize()?)),
+        }
+    }
 }
 
 /// Runs `f` on the instance behind `c` if the state machine allows `function` in its state: refusals
@@ -107,14 +122,14 @@ unsafe fn snapshot<'a, E>(state: fmi2FMUstate) -> Outcome<&'a mut Snapshot<E>> {
 ///
 /// # Safety
 /// `state` is NULL or points to an `fmi2FMUstate` as [`snapshot`] takes it.
-unsafe fn store<E>(state: *mut fmi2FMUstate, core: Core<E>) -> Outcome {
+unsafe fn store<E: Model>(state: *mut fmi2FMUstate, core: Core<E>) -> Outcome {
     // SAFETY: the caller's contract.
     let state = unsafe { out(state, "FMUstate pointer")? };
     if state.is_null() {
-        *state = Box::into_raw(Box::new(Snapshot { tag: STATE_TAG, core })) as fmi2FMUstate;
+        *state = Box::into_raw(Box::new(Snapshot::new(core))) as fmi2FMUstate;
     } else {
         // SAFETY: the caller's contract.
-        unsafe { snapshot::<E>(*state)? }.core = core;
+        *unsafe { snapshot::<E>(*state)? } = Snapshot::new(core);
     }
     Ok(())
 }
@@ -407,8 +422,8 @@ pub unsafe fn free_fmu_state<E: Model>(c: fmi2Component, state: *mut fmi2FMUstat
 pub unsafe fn serialized_fmu_state_size<E: Model>(c: fmi2Component, state: fmi2FMUstate, size: *mut usize) -> Status {
     // SAFETY: the caller's contract.
     unsafe {
-        run::<E>(c, fmi2SerializedFMUstateSize, |comp| {
-            *out(size, "size")? = comp.instance.serialize(&snapshot::<E>(state)?.core)?.len();
+        run::<E>(c, fmi2SerializedFMUstateSize, |_| {
+            *out(size, "size")? = snapshot::<E>(state)?.bytes()?.len();
             Ok(())
         })
     }
@@ -419,12 +434,12 @@ pub unsafe fn serialized_fmu_state_size<E: Model>(c: fmi2Component, state: fmi2F
 pub unsafe fn serialize_fmu_state<E: Model>(c: fmi2Component, state: fmi2FMUstate, buffer: *mut fmi2Byte, size: usize) -> Status {
     // SAFETY: the caller's contract.
     unsafe {
-        run::<E>(c, fmi2SerializeFMUstate, |comp| {
-            let bytes = comp.instance.serialize(&snapshot::<E>(state)?.core)?;
+        run::<E>(c, fmi2SerializeFMUstate, |_| {
+            let bytes = snapshot::<E>(state)?.bytes()?;
             if size < bytes.len() {
                 return Err(Refusal::error(format!("buffer of {size} bytes, the state needs {}", bytes.len())));
             }
-            slice_mut(buffer as *mut u8, bytes.len(), "serializedState")?.copy_from_slice(&bytes);
+            slice_mut(buffer as *mut u8, bytes.len(), "serializedState")?.copy_from_slice(bytes);
             Ok(())
         })
     }

@@ -75,6 +75,11 @@ impl<E> Default for Core<E> {
 }
 
 impl<E: Model> Core<E> {
+    /// The serialized FMU state.
+    pub fn serialize(&self) -> Outcome<Vec<u8>> {
+        state_bytes::encode(self, GUID).map_err(Refusal::error)
+    }
+
     /// What every state this FMU makes satisfies, so what a restored one must: finite times and
     /// variables (the setters take only finite values), and past initialization, parameters that
     /// passed fmi2ExitInitializationMode and a simulation with a finite time and outputs.
@@ -364,9 +369,6 @@ impl<E: Model> Instance<E> {
         Ok(())
     }
 
-    pub fn serialize(&self, core: &Core<E>) -> Outcome<Vec<u8>> {
-        state_bytes::encode(core, GUID).map_err(Refusal::error)
-    }
 
     pub fn deserialize(&self, bytes: &[u8]) -> Outcome<Core<E>> {
         let core: Core<E> = state_bytes::decode(bytes, GUID)

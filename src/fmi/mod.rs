@@ -9,7 +9,6 @@
 //! - `description`: the variable table generated from `modelDescription/`;
 //! - `state_bytes`: the serialized FMU state.
 
-mod codec;
 pub mod description;
 pub mod exports;
 mod functions;

@@ -6,41 +6,69 @@
 //! | 4 | format version (u32 LE) |
 //! | 2 + n | GUID length (u16 LE) and GUID (UTF-8) of the model description that wrote it |
 //! | 8 | payload length (u64 LE) |
-//! | m | payload: the state in the [`codec`](super::codec) format |
+//! | m | payload: the state in postcard's format (serde; f64 as its 8 IEEE bytes, so a state restores bit-identically) |
 //! | 4 | CRC-32 (IEEE) of everything before it |
 //!
 //! Decoding checks each field in this order and names the first that is wrong: foreign, truncated
 //! or corrupted bytes are an error, never a crash.
 
-use super::codec;
 use serde::{de::DeserializeOwned, Serialize};
 
 const MAGIC: &[u8; 8] = b"PSLAPFMU";
 /// Bump when the layout of the saved state changes.
-pub const FORMAT_VERSION: u32 = 1;
+pub const FORMAT_VERSION: u32 = 2;
 
+/// The state in its envelope, the payload encoded once, straight after the header.
 pub fn encode<T: Serialize>(state: &T, guid: &str) -> Result<Vec<u8>, String> {
-    let payload = codec::to_bytes(state).map_err(|e| format!("cannot encode the state: {e}"))?;
-    seal(&payload, guid)
+    let mut out = header(guid)?;
+    let length_at = out.len();
+    out.extend_from_slice(&0u64.to_le_bytes());
+    let mut out = postcard::to_extend(state, out).map_err(|e| format!("cannot encode the state: {e}"))?;
+    let payload_len = (out.len() - length_at - 8) as u64;
+    out[length_at..length_at + 8].copy_from_slice(&payload_len.to_le_bytes());
+    Ok(sealed(out))
 }
 
-pub fn decode<T: DeserializeOwned>(bytes: &[u8], guid: &str) -> Result<T, String> {
-    codec::from_bytes(open(bytes, guid)?).map_err(|e| format!("cannot decode the state: {e}"))
+/// The state in `bytes`, whose payload must be exactly the encoding of the state it decodes to:
+/// postcard reads lengths and integers written in more bytes than needed, and would otherwise
+/// accept a state that does not re-serialize to its own bytes.
+pub fn decode<T: Serialize + DeserializeOwned>(bytes: &[u8], guid: &str) -> Result<T, String> {
+    let payload = open(bytes, guid)?;
+    let (state, rest) = postcard::take_from_bytes(payload).map_err(|e| format!("cannot decode the state: {e}"))?;
+    if !rest.is_empty() {
+        return Err(format!("cannot decode the state: {} trailing bytes", rest.len()));
+    }
+    if postcard::to_allocvec(&state).map_err(|e| format!("cannot encode the state: {e}"))? != payload {
+        return Err("cannot decode the state: the payload is not in its canonical encoding".into());
+    }
+    Ok(state)
 }
 
-/// Wraps a payload in the envelope.
-pub fn seal(payload: &[u8], guid: &str) -> Result<Vec<u8>, String> {
+/// Magic, format version and GUID.
+fn header(guid: &str) -> Result<Vec<u8>, String> {
     let guid_len = u16::try_from(guid.len()).map_err(|_| "GUID too long".to_string())?;
-    let mut out = Vec::with_capacity(payload.len() + guid.len() + 26);
+    let mut out = Vec::with_capacity(4096);
     out.extend_from_slice(MAGIC);
     out.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
     out.extend_from_slice(&guid_len.to_le_bytes());
     out.extend_from_slice(guid.as_bytes());
+    Ok(out)
+}
+
+/// `body` with its CRC appended.
+fn sealed(mut body: Vec<u8>) -> Vec<u8> {
+    let crc = crc32(&body);
+    body.extend_from_slice(&crc.to_le_bytes());
+    body
+}
+
+/// Wraps a payload in the envelope.
+#[cfg(test)]
+pub fn seal(payload: &[u8], guid: &str) -> Result<Vec<u8>, String> {
+    let mut out = header(guid)?;
     out.extend_from_slice(&(payload.len() as u64).to_le_bytes());
     out.extend_from_slice(payload);
-    let crc = crc32(&out);
-    out.extend_from_slice(&crc.to_le_bytes());
-    Ok(out)
+    Ok(sealed(out))
 }
 
 /// Checks the envelope and returns its payload.
