@@ -5,6 +5,9 @@
 //! - [`models`]: the crank train of Awrejcewicz & Kudra and Farahanchi's roller slider crank;
 //! - `fmi`: the exported `fmi2*` functions, the only `unsafe` code.
 
+#![deny(unsafe_code)]
+#![warn(clippy::undocumented_unsafe_blocks)]
+
 pub mod dynamics;
 pub mod models;
 pub mod fmi;

@@ -160,9 +160,11 @@ pub unsafe fn instantiate<E: Model>(
         // SAFETY: NULL or a NUL-terminated string (the contract).
         let shown = if name.is_null() { "(null)".into() } else { unsafe { CStr::from_ptr(name) }.to_string_lossy() };
         let logger = Logger::new(callback, functions.component_environment, &shown, boolean(logging_on));
-        // SAFETY: the strings are NULL or NUL-terminated (the contract).
         let check = || -> Outcome {
-            if unsafe { string(name, "instanceName")? }.is_empty() {
+            // SAFETY: the strings are NULL or NUL-terminated (the contract).
+            let (name, guid, resources) =
+                unsafe { (string(name, "instanceName")?, string(guid, "fmuGUID")?, string(resource_location, "fmuResourceLocation")?) };
+            if name.is_empty() {
                 return Err(Refusal::error("instanceName is empty"));
             }
             if fmu_type != FMI2_CO_SIMULATION {
@@ -170,11 +172,9 @@ pub unsafe fn instantiate<E: Model>(
                     "fmuType = {fmu_type} refused: PistonSlap is a Co-Simulation FMU (fmi2CoSimulation = {FMI2_CO_SIMULATION})"
                 )));
             }
-            let guid = unsafe { string(guid, "fmuGUID")? };
             if guid != GUID {
                 return Err(Refusal::error(format!("fmuGUID {guid} does not match this binary's {GUID}")));
             }
-            let resources = unsafe { string(resource_location, "fmuResourceLocation")? };
             if !resources.starts_with("file:") {
                 return Err(Refusal::error(format!("fmuResourceLocation {resources:?} is not a file URI")));
             }

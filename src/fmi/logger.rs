@@ -1,4 +1,5 @@
 //! Messages to the host's logger callback, filtered by fmi2SetDebugLogging.
+#![allow(unsafe_code)]
 
 use super::description::LOG_CATEGORIES;
 use super::types::{fmi2CallbackLogger, fmi2ComponentEnvironment, Status};

@@ -1,5 +1,6 @@
 //! The FMI layer through its C-level functions (`functions`, which the exports call with the shipped
 //! engine), driven with the test-only shuttle model whose impacts have closed-form times.
+#![allow(unsafe_code)]
 
 use super::functions;
 use super::description::{self, GUID, VARIABLES};
@@ -102,6 +103,7 @@ impl<E: Model> Host<E> {
     ) -> Result<Self, String> {
         let log = Box::new(Log::default());
         let functions = callbacks(&log);
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         let c = unsafe {
             functions::instantiate::<E>(
                 name.as_ptr(),
@@ -139,6 +141,7 @@ impl<E: Model> Host<E> {
     }
 
     fn setup(&self, start: f64, stop: Option<f64>) -> Status {
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe {
             functions::setup_experiment::<E>(
                 self.c,
@@ -149,23 +152,29 @@ impl<E: Model> Host<E> {
         }
     }
     fn enter(&self) -> Status {
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::enter_initialization_mode::<E>(self.c) }
     }
     fn exit(&self) -> Status {
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::exit_initialization_mode::<E>(self.c) }
     }
     fn step(&self, t: f64, h: f64) -> Status {
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::do_step::<E>(self.c, t, h) }
     }
     fn set_real(&self, name: &str, value: f64) -> Status {
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::set_real::<E>(self.c, &vr(name), 1, &value) }
     }
     fn set_integer(&self, name: &str, value: i32) -> Status {
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::set_integer::<E>(self.c, &vr(name), 1, &value) }
     }
     fn real(&self, name: &str) -> f64 {
         let mut value = f64::NAN;
         assert_eq!(
+            // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
             unsafe { functions::get_real::<E>(self.c, &vr(name), 1, &mut value) },
             Status::Ok,
             "{name}"
@@ -175,6 +184,7 @@ impl<E: Model> Host<E> {
     fn integer(&self, name: &str) -> i32 {
         let mut value = -1;
         assert_eq!(
+            // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
             unsafe { functions::get_integer::<E>(self.c, &vr(name), 1, &mut value) },
             Status::Ok,
             "{name}"
@@ -195,16 +205,19 @@ impl<E: Model> Host<E> {
     fn get_state(&self) -> fmi2FMUstate {
         let mut state = null_mut();
         assert_eq!(
+            // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
             unsafe { functions::get_fmu_state::<E>(self.c, &mut state) },
             Status::Ok
         );
         state
     }
     fn set_state(&self, state: fmi2FMUstate) -> Status {
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::set_fmu_state::<E>(self.c, state) }
     }
     fn free_state(&self, mut state: fmi2FMUstate) {
         assert_eq!(
+            // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
             unsafe { functions::free_fmu_state::<E>(self.c, &mut state) },
             Status::Ok
         );
@@ -213,10 +226,12 @@ impl<E: Model> Host<E> {
     fn serialize(&self, state: fmi2FMUstate) -> Vec<u8> {
         let mut size = 0;
         assert_eq!(
+            // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
             unsafe { functions::serialized_fmu_state_size::<E>(self.c, state, &mut size) },
             Status::Ok
         );
         let mut bytes = vec![0u8; size];
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         let status = unsafe {
             functions::serialize_fmu_state::<E>(self.c, state, bytes.as_mut_ptr() as *mut c_char, size)
         };
@@ -225,6 +240,7 @@ impl<E: Model> Host<E> {
     }
     fn deserialize(&self, bytes: &[u8]) -> (Status, fmi2FMUstate) {
         let mut state = null_mut();
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         let status = unsafe {
             functions::deserialize_fmu_state::<E>(
                 self.c,
@@ -274,6 +290,7 @@ impl<E: Model> Host<E> {
 
 impl<E: Model> Drop for Host<E> {
     fn drop(&mut self) {
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::free_instance::<E>(self.c) }
     }
 }
@@ -287,6 +304,7 @@ fn a_full_cycle_gives_the_closed_form_impacts() {
     assert_eq!(host.integer("impact_count"), 3);
     assert_eq!(host.integer("last_impact_corner"), 3);
     assert!((host.real("impact_velocity") - 0.25 * SHUTTLE_SPEED).abs() < 1e-15);
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     assert_eq!(unsafe { functions::terminate::<Shuttle>(host.c) }, Status::Ok);
     assert_eq!(
         host.integer("impact_count"),
@@ -304,9 +322,11 @@ fn calls_in_states_the_standard_forbids_are_refused_and_change_nothing() {
     assert_eq!(host.exit(), Status::Error);
     let mut x = 0.0;
     assert_eq!(
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::get_real::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut x) },
         Status::Error
     );
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     assert_eq!(unsafe { functions::terminate::<Shuttle>(host.c) }, Status::Error);
     assert_eq!(host.enter(), Status::Ok);
     assert_eq!(
@@ -325,12 +345,15 @@ fn calls_in_states_the_standard_forbids_are_refused_and_change_nothing() {
         "inputs may be set in step mode"
     );
     assert_eq!(
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::cancel_step::<Shuttle>(host.c) },
         Status::Error
     );
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     assert_eq!(unsafe { functions::terminate::<Shuttle>(host.c) }, Status::Ok);
     assert_eq!(host.step(0.0, 1e-3), Status::Error);
     host.logged("not allowed in state Terminated");
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     assert_eq!(unsafe { functions::reset::<Shuttle>(host.c) }, Status::Ok);
     assert_eq!(
         host.setup(0.0, None),
@@ -347,6 +370,7 @@ fn null_pointers_unknown_references_and_wrong_types_are_refused() {
     let host = ShuttleHost::initialized();
     let mut x = 0.0;
     let mut i = 0;
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
         assert_eq!(
             functions::do_step::<Shuttle>(null_mut(), 0.0, 1e-3),
@@ -427,6 +451,7 @@ fn null_pointers_unknown_references_and_wrong_types_are_refused() {
     // A mixed list is all or nothing: the valid first value is not applied.
     let (vrs, values) = ([vr("crank_speed"), 9999], [50.0, 1.0]);
     assert_eq!(
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::set_real::<Shuttle>(host.c, vrs.as_ptr(), 2, values.as_ptr()) },
         Status::Error
     );
@@ -501,6 +526,7 @@ fn instantiate_checks_its_arguments() {
     );
     let log = Log::default();
     let mut functions = callbacks(&log);
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
         let c = functions::instantiate::<Shuttle>(
             null(),
@@ -544,6 +570,7 @@ fn bad_parameters_are_refused_at_exit_initialization_mode_by_name() {
         "ranges are checked at exit"
     );
     let mut x = 0.0;
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     let status = unsafe { functions::get_real::<Shuttle>(host.c, &vr("piston_lateral"), 1, &mut x) };
     assert_eq!(
         status,
@@ -554,6 +581,7 @@ fn bad_parameters_are_refused_at_exit_initialization_mode_by_name() {
     host.logged("piston_mass");
     assert_eq!(host.step(0.0, 1e-3), Status::Error);
     host.logged("state Error");
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     assert_eq!(unsafe { functions::reset::<Shuttle>(host.c) }, Status::Ok);
     assert_eq!(host.enter(), Status::Ok);
     assert_eq!(host.set_integer("model_variant", 3), Status::Ok);
@@ -619,6 +647,7 @@ fn a_restored_state_continues_bit_identically_also_through_bytes_and_other_insta
     // fmi2GetFMUstate into an existing state overwrites it.
     let mut reused = state;
     assert_eq!(
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::get_fmu_state::<Shuttle>(host.c, &mut reused) },
         Status::Ok
     );
@@ -662,6 +691,7 @@ fn corrupt_or_foreign_state_bytes_are_refused() {
     let mut padded = bytes.clone();
     padded.push(0);
     refused(&padded, "trailing byte");
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
         assert_eq!(
             functions::deserialize_fmu_state::<Shuttle>(host.c, null(), 10, &mut null_mut()),
@@ -690,10 +720,12 @@ fn a_panic_is_contained_as_fatal() {
     host.logged("internal error (panic");
     let mut x = 0.0;
     assert_eq!(
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::get_real::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut x) },
         Status::Error
     );
     assert_eq!(
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         unsafe { functions::reset::<Shuttle>(host.c) },
         Status::Error,
         "fatal: only fmi2FreeInstance"
@@ -705,6 +737,7 @@ fn strings_status_queries_and_debug_logging() {
     let host = ShuttleHost::new();
     let path = std::env::temp_dir().join(format!("pistonslap_fmi_{}.csv", std::process::id()));
     let path_c = CString::new(path.to_str().unwrap()).unwrap();
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
         assert_eq!(
             functions::set_string::<Shuttle>(host.c, &vr("impact_log"), 1, &path_c.as_ptr()),
@@ -724,6 +757,7 @@ fn strings_status_queries_and_debug_logging() {
     assert_eq!(host.enter(), Status::Ok);
     assert_eq!(host.exit(), Status::Ok);
     let mut s: fmi2String = null();
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
         assert_eq!(
             functions::get_string::<Shuttle>(host.c, &vr("impact_log"), 1, &mut s),
@@ -738,6 +772,7 @@ fn strings_status_queries_and_debug_logging() {
         2,
         "header and the impact at 4 ms"
     );
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
         let mut t = 0.0;
         assert_eq!(
@@ -781,6 +816,7 @@ fn a_state_cannot_cut_another_instances_impact_log() {
     let path = std::env::temp_dir().join(format!("pistonslap_foreign_log_{}.csv", std::process::id()));
     let path_c = CString::new(path.to_str().unwrap()).unwrap();
     let writer = ShuttleHost::new();
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     let set = unsafe { functions::set_string::<Shuttle>(writer.c, &vr("impact_log"), 1, &path_c.as_ptr()) };
     assert_eq!(set, Status::Ok);
     assert_eq!((writer.enter(), writer.exit()), (Status::Ok, Status::Ok));

@@ -3,6 +3,7 @@
 //! setters with arbitrary value references, values and byte strings. No call may panic (fmi2Fatal) or
 //! crash; each either refuses (fmi2Error and a message) or succeeds, and what it accepted is a state
 //! that can be read back, re-serialized, restored and stepped without fmi2Fatal or a silent NaN.
+#![allow(unsafe_code)]
 
 use super::*;
 use crate::fmi::state_bytes;
@@ -131,6 +132,7 @@ fn valid_states() -> Vec<Vec<u8>> {
         assert_eq!(host.exit(), Status::Ok);
         host.run(0.0, 0.05, 1e-3);
         save();
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         assert_eq!(unsafe { functions::terminate::<Engine>(host.c) }, Status::Ok);
         save();
     }
@@ -140,6 +142,7 @@ fn valid_states() -> Vec<Vec<u8>> {
 /// The FMU's time, when it is stepping.
 fn time<E: Model>(host: &Host<E>) -> Option<f64> {
     let mut t = f64::NAN;
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     let status = unsafe { functions::get_real_status::<E>(host.c, FMI2_LAST_SUCCESSFUL_TIME, &mut t) };
     (status == Status::Ok).then_some(t)
 }
@@ -241,6 +244,7 @@ fn set_checked(rng: &mut Rng, host: &Host<Engine>, read_back: bool, case: &str) 
     let vrs: Vec<u32> = (0..n).map(|_| value_reference(rng)).collect();
     let logged = host.messages().len();
     let kind = rng.below(4);
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     let (status, expected): (Status, Vec<String>) = unsafe {
         match kind {
             0 => {
@@ -304,7 +308,9 @@ fn set_checked(rng: &mut Rng, host: &Host<Engine>, read_back: bool, case: &str) 
 
 fn string(host: &Host<Engine>, vr: u32) -> String {
     let mut s: fmi2String = null();
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     assert_eq!(unsafe { functions::get_string::<Engine>(host.c, &vr, 1, &mut s) }, Status::Ok);
+    // SAFETY: a NUL-terminated string the FMU returned, valid until its next call.
     unsafe { CStr::from_ptr(s) }.to_string_lossy().into_owned()
 }
 
@@ -321,6 +327,7 @@ fn fuzz_setters(seed: u64, cases: usize) -> usize {
         // Whatever was accepted must initialize or be refused by name, then step or be refused. An
         // accepted random impact_log would name a file: cleared first (refused once fixed, in step mode).
         let label = format!("seed {seed} after case {case}");
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         let cleared = unsafe { functions::set_string::<Engine>(host.c, &vr("impact_log"), 1, &c"".as_ptr()) };
         let _ = (host.setup(0.0, None), host.enter());
         let status = host.exit();

@@ -1,6 +1,7 @@
 //! A host whose logger calls back into the instance that is logging: those calls are refused
 //! (fmi2Error; fmi2FreeInstance does nothing) and the instance carries on, while the same logger
 //! may call another instance.
+#![allow(unsafe_code)]
 
 use super::*;
 use std::sync::atomic::{AtomicPtr, Ordering};
@@ -45,6 +46,7 @@ fn a_logger_calling_back_into_its_instance_is_refused_and_the_instance_carries_o
         component_environment: &*calling_back as *const CallingBack as *mut c_void,
     };
     let guid = CString::new(GUID).unwrap();
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     let c = unsafe { functions::instantiate::<Shuttle>(c"logging".as_ptr(), FMI2_CO_SIMULATION, guid.as_ptr(), RESOURCES.as_ptr(), &functions, FMI2_FALSE) };
     assert!(!c.is_null());
     calling_back.logging.store(c, Ordering::SeqCst);

@@ -5,6 +5,7 @@
 //!
 //! Run with the shipped engine (Fatal is unreachable there: no input makes it panic) and with the test
 //! shuttle, whose `load_torque` = 42 panics, for the Fatal column.
+#![allow(unsafe_code)]
 
 use super::*;
 use crate::fmi::functions::Component;
@@ -120,6 +121,7 @@ fn reach<E: Model>(subject: &Subject<E>, state: Mode) -> Host<E> {
         assert_eq!(host.step(0.0, H), Status::Ok, "{:?}", host.messages());
     }
     match state {
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         Mode::Terminated => assert_eq!(unsafe { functions::terminate::<E>(host.c) }, Status::Ok),
         Mode::Error => {
             (subject.break_step)(&host);
@@ -158,8 +160,10 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
     let crank_mode = [vr("crank_mode")];
     let impact_log = [vr("impact_log")];
     let no_value = (Status::Discard, Some("has no value"));
+    // SAFETY: a NUL-terminated string the FMU returned, valid until its next call.
     let c_string = |p: *const c_char| unsafe { CStr::from_ptr(p) }.to_str().unwrap();
     let constant = |ok: bool| (if ok { Status::Ok } else { Status::Error }, OK);
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
         match function {
             "fmi2GetTypesPlatform" => constant(c_string(exports::fmi2GetTypesPlatform()) == "default"),
@@ -323,6 +327,7 @@ fn free_in_every_state<E: Model>(subject: &Subject<E>) {
             continue;
         }
         let host = ManuallyDrop::new(reach(subject, state));
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
         let freed = freed_bytes(|| unsafe { functions::free_instance::<E>(host.c) });
         assert!(freed >= std::mem::size_of::<Component<E>>(), "{state}: {freed} bytes freed");
         assert!(host.messages().is_empty(), "{state}: {:?}", host.messages());
