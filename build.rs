@@ -160,6 +160,12 @@ impl Resolved<'_> {
 fn main() {
     println!("cargo:rerun-if-changed={TABLE}");
     println!("cargo:rerun-if-changed=build.rs");
+    // The memcheck test (tests/c_abi.rs) runs where valgrind is installed and is reported ignored elsewhere.
+    println!("cargo::rustc-check-cfg=cfg(valgrind)");
+    println!("cargo:rerun-if-env-changed=PATH");
+    if std::process::Command::new("valgrind").arg("--version").output().is_ok_and(|o| o.status.success()) {
+        println!("cargo:rustc-cfg=valgrind");
+    }
     let source = std::fs::read_to_string(TABLE).expect("read modelDescription/variables.xml");
     let table: Table =
         quick_xml::de::from_str(&source).expect("parse modelDescription/variables.xml");

@@ -35,6 +35,11 @@ pub struct Variable {
     pub description: &'static str,
 }
 
+/// The value reference of the variable called `name`.
+pub fn value_reference(name: &str) -> Option<u32> {
+    VARIABLES.iter().position(|v| v.name == name).and_then(|vr| u32::try_from(vr).ok())
+}
+
 /// The variable with value reference `vr`.
 pub fn variable(vr: u32) -> Option<&'static Variable> {
     VARIABLES.get(usize::try_from(vr).ok()?)

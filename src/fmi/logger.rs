@@ -2,8 +2,22 @@
 #![allow(unsafe_code)]
 
 use super::description::LOG_CATEGORIES;
-use super::types::{fmi2CallbackLogger, fmi2ComponentEnvironment, Status};
+use super::types::{fmi2CallbackLogger, fmi2ComponentEnvironment, fmi2String, Status};
 use std::ffi::{c_int, CString};
+
+/// A logger callback written with fixed arguments only (variadic definitions are unstable in Rust):
+/// `env, instance name, status, category, format, message`.
+pub type FixedArgumentLogger =
+    unsafe extern "C" fn(fmi2ComponentEnvironment, fmi2String, c_int, fmi2String, fmi2String, fmi2String);
+
+/// `logger` as the FMI's variadic callback type, for hosts written in Rust (the tests, the benchmark).
+/// Sound for this FMU, which always logs through the format `"%s"` with the message as the one
+/// variadic argument: on the C ABI that argument arrives where a sixth fixed one would.
+pub fn fixed_argument_logger(logger: FixedArgumentLogger) -> fmi2CallbackLogger {
+    // SAFETY: both are `extern "C"` function pointers; the calls this FMU makes pass exactly the
+    // arguments `logger` reads (see above).
+    unsafe { std::mem::transmute::<FixedArgumentLogger, fmi2CallbackLogger>(logger) }
+}
 
 /// Where an instance's messages go: the host's callback with its environment pointer.
 pub struct Logger {

@@ -20,5 +20,7 @@ mod state_bytes;
 mod state_machine;
 pub mod types;
 
+pub use logger::{fixed_argument_logger, FixedArgumentLogger};
+
 #[cfg(test)]
 mod tests;

@@ -4,6 +4,7 @@
 
 use super::functions;
 use super::description::{self, GUID, VARIABLES};
+use super::fixed_argument_logger;
 use super::instance::Model;
 use super::types::*;
 use crate::simulation::test_model::{Shuttle, SHUTTLE_SPEED};
@@ -15,8 +16,7 @@ use std::sync::Mutex;
 
 type Log = Mutex<Vec<(c_int, String, String)>>;
 
-/// Receives `logger(env, name, status, category, "%s", message)`: the FMU always passes the message as
-/// the one variadic argument, which on the C ABI arrives like a sixth fixed argument.
+/// Receives `logger(env, name, status, category, "%s", message)` (see `fixed_argument_logger`).
 unsafe extern "C" fn test_logger(
     env: *mut c_void,
     _name: *const c_char,
@@ -33,20 +33,9 @@ unsafe extern "C" fn test_logger(
         .push((status, text(category), text(message)));
 }
 
-type TestLoggerFn = unsafe extern "C" fn(
-    *mut c_void,
-    *const c_char,
-    c_int,
-    *const c_char,
-    *const c_char,
-    *const c_char,
-);
-
 fn callbacks(log: &Log) -> fmi2CallbackFunctions {
-    // SAFETY: see `test_logger`.
-    let logger = unsafe { std::mem::transmute::<TestLoggerFn, fmi2CallbackLogger>(test_logger) };
     fmi2CallbackFunctions {
-        logger: Some(logger),
+        logger: Some(fixed_argument_logger(test_logger)),
         allocate_memory: None,
         free_memory: None,
         step_finished: None,
@@ -55,10 +44,7 @@ fn callbacks(log: &Log) -> fmi2CallbackFunctions {
 }
 
 fn vr(name: &str) -> u32 {
-    VARIABLES
-        .iter()
-        .position(|v| v.name == name)
-        .unwrap_or_else(|| panic!("{name}")) as u32
+    description::value_reference(name).expect(name)
 }
 
 /// A host holding one instance of the FMU with engine model `E`.

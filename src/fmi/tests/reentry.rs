@@ -36,10 +36,8 @@ unsafe extern "C" fn calling_back_logger(
 fn a_logger_calling_back_into_its_instance_is_refused_and_the_instance_carries_on() {
     let other = ShuttleHost::initialized();
     let calling_back = Box::new(CallingBack::default());
-    // SAFETY: as `test_logger`, whose signature this logger shares.
-    let logger = unsafe { std::mem::transmute::<TestLoggerFn, fmi2CallbackLogger>(calling_back_logger) };
     let functions = fmi2CallbackFunctions {
-        logger: Some(logger),
+        logger: Some(fixed_argument_logger(calling_back_logger)),
         allocate_memory: None,
         free_memory: None,
         step_finished: None,

@@ -2,12 +2,10 @@
 //! allocations of steady-state steps of both engine models: through their `advance` (the core's
 //! step loop, events included), through `Simulation::step` and through the exported fmi2DoStep.
 
-mod fmu_host;
-
 use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters, Roller};
 use pistonslap::simulation::Simulation;
 use std::alloc::{GlobalAlloc, Layout, System};
-use fmu_host::{vr, Host};
+use crate::fmu_host::{vr, Host};
 use std::cell::Cell;
 
 struct Counting;

@@ -1,9 +1,8 @@
 //! Work and energy of the crank train: conservation in free-crank mode, the drive torque's work in
 //! prescribed mode, the rigid slider-crank limit and the efficiency calibration (A&K eqs 40–54).
 
-mod common;
 
-use common::*;
+use crate::common::*;
 use nalgebra::Vector3;
 use pistonslap::models::crank_kinematics::SliderCrank;
 use pistonslap::models::crank_linkage::{Linkage, Loads};

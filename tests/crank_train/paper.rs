@@ -1,9 +1,8 @@
 //! A&K section 8 through the FMU's model interface: 1200 rpm, 8 MPa peak gauge pressure (built-in
 //! four-stroke curve), prescribed crank speed.
 
-mod common;
 
-use common::*;
+use crate::common::*;
 use pistonslap::models::pressure::FourStrokePressure;
 use pistonslap::models::{Inputs, Parameters};
 

@@ -1,0 +1,10 @@
+//! The nonsmooth core on the closed-form systems of `dynamics::testbeds`.
+
+mod adaptive;
+mod ball;
+mod corner;
+mod coupled;
+mod edges;
+mod order;
+mod rheonomic;
+mod slow_approach;
