@@ -2,23 +2,23 @@
 //! statistics computed from the event rows) and the impact log. No FFI and no FMI words: the FMI
 //! layer maps its calls and errors onto this.
 
-mod engine;
+mod model_variant;
 mod impact_log;
 mod statistics;
 
-pub use engine::Engine;
+pub use model_variant::ModelVariant;
 pub use impact_log::ImpactLog;
 
 use crate::models::{EngineEvent, EngineModel, Inputs, ModelError, Outputs, Parameters};
 use serde::{Deserialize, Serialize};
 use statistics::ImpactStatistics;
 
-/// A running simulation of engine model `E` (the FMU runs [`Engine`]).
+/// A running simulation of engine model `E` (the FMU runs [`ModelVariant`]).
 ///
 /// Clone + Serialize + Deserialize: it is the whole simulation state an FMU state saves, including
 /// the impact statistics, the events of the last step and the log cursor.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Simulation<E = Engine> {
+pub struct Simulation<E = ModelVariant> {
     model: E,
     time: f64,
     outputs: Outputs,

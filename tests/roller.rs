@@ -1,7 +1,7 @@
 //! Variant 2 (Farahanchi's roller slider crank) on the core: the thesis's statements that do not hang
 //! on chaos details, with roller_forcing = 1 (f(τ) as printed, which produced the thesis's results).
 
-use pistonslap::models::{EngineEvent, EngineEventKind, EngineModel, Forcing, Inputs, Outputs, Parameters, Roller, SliderCrank};
+use pistonslap::models::{EngineEvent, EngineEventKind, EngineModel, Forcing, Inputs, Outputs, Parameters, Roller, RollerMechanism};
 use std::f64::consts::PI;
 
 /// The thesis's mechanism (section 4.1) in its own units: l = 1 m, M = 1 kg; with Ω = 1 rad/s the
@@ -71,7 +71,7 @@ fn outputs(model: &Roller) -> Outputs {
 fn sliding_on_the_upper_wall_carries_the_eq_2_29_force() {
     let (lambda, rho) = (0.35, 0.01);
     let mut model = run(&thesis_case(lambda, rho, 0.0), 1.0, 2).0;
-    let sc = SliderCrank { xi: 0.3030, alpha: 1.9, beta: 0.4719, forcing: Forcing::Printed };
+    let sc = RollerMechanism { xi: 0.3030, alpha: 1.9, beta: 0.4719, forcing: Forcing::Printed };
     let mut events = Vec::new();
     for k in 1..=100 {
         let t = 4.0 * PI + k as f64 * 2.0 * PI / 100.0;

@@ -1,10 +1,10 @@
 //! The exported C symbols of `fmi_headers/fmi2Functions.h`: the common and Co-Simulation functions,
-//! each a call of its generic body in `functions.rs` with the shipped [`Engine`].
+//! each a call of its generic body in `functions.rs` with the shipped [`ModelVariant`].
 #![allow(unsafe_code, non_snake_case, clippy::missing_safety_doc)]
 
 use super::functions;
 use super::types::*;
-use crate::simulation::Engine;
+use crate::simulation::ModelVariant;
 use std::ffi::{c_char, c_int};
 
 #[no_mangle]
@@ -20,7 +20,7 @@ pub unsafe extern "C" fn fmi2GetVersion() -> *const c_char {
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetDebugLogging(c: fmi2Component, on: fmi2Boolean, n: usize, categories: *const fmi2String) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_debug_logging::<Engine>(c, on, n, categories) }
+    unsafe { functions::set_debug_logging::<ModelVariant>(c, on, n, categories) }
 }
 
 #[no_mangle]
@@ -34,13 +34,13 @@ pub unsafe extern "C" fn fmi2Instantiate(
     logging_on: fmi2Boolean
 ) -> fmi2Component {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::instantiate::<Engine>(name, fmu_type, guid, resource_location, functions, logging_on) }
+    unsafe { functions::instantiate::<ModelVariant>(name, fmu_type, guid, resource_location, functions, logging_on) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2FreeInstance(c: fmi2Component) {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::free_instance::<Engine>(c) }
+    unsafe { functions::free_instance::<ModelVariant>(c) }
 }
 
 #[no_mangle]
@@ -53,115 +53,115 @@ pub unsafe extern "C" fn fmi2SetupExperiment(
     stop: fmi2Real
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::setup_experiment::<Engine>(c, start, stop_defined, stop) }
+    unsafe { functions::setup_experiment::<ModelVariant>(c, start, stop_defined, stop) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2EnterInitializationMode(c: fmi2Component) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::enter_initialization_mode::<Engine>(c) }
+    unsafe { functions::enter_initialization_mode::<ModelVariant>(c) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2ExitInitializationMode(c: fmi2Component) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::exit_initialization_mode::<Engine>(c) }
+    unsafe { functions::exit_initialization_mode::<ModelVariant>(c) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2Terminate(c: fmi2Component) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::terminate::<Engine>(c) }
+    unsafe { functions::terminate::<ModelVariant>(c) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2Reset(c: fmi2Component) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::reset::<Engine>(c) }
+    unsafe { functions::reset::<ModelVariant>(c) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetReal(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2Real) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_real::<Engine>(c, vr, n, value) }
+    unsafe { functions::get_real::<ModelVariant>(c, vr, n, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetInteger(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2Integer) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_integer::<Engine>(c, vr, n, value) }
+    unsafe { functions::get_integer::<ModelVariant>(c, vr, n, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetBoolean(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2Boolean) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_boolean::<Engine>(c, vr, n, value) }
+    unsafe { functions::get_boolean::<ModelVariant>(c, vr, n, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetString(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2String) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_string::<Engine>(c, vr, n, value) }
+    unsafe { functions::get_string::<ModelVariant>(c, vr, n, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetReal(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2Real) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_real::<Engine>(c, vr, n, value) }
+    unsafe { functions::set_real::<ModelVariant>(c, vr, n, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetInteger(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2Integer) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_integer::<Engine>(c, vr, n, value) }
+    unsafe { functions::set_integer::<ModelVariant>(c, vr, n, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetBoolean(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2Boolean) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_boolean::<Engine>(c, vr, n, value) }
+    unsafe { functions::set_boolean::<ModelVariant>(c, vr, n, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetString(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2String) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_string::<Engine>(c, vr, n, value) }
+    unsafe { functions::set_string::<ModelVariant>(c, vr, n, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetFMUstate(c: fmi2Component, state: *mut fmi2FMUstate) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_fmu_state::<Engine>(c, state) }
+    unsafe { functions::get_fmu_state::<ModelVariant>(c, state) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetFMUstate(c: fmi2Component, state: fmi2FMUstate) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_fmu_state::<Engine>(c, state) }
+    unsafe { functions::set_fmu_state::<ModelVariant>(c, state) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2FreeFMUstate(c: fmi2Component, state: *mut fmi2FMUstate) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::free_fmu_state::<Engine>(c, state) }
+    unsafe { functions::free_fmu_state::<ModelVariant>(c, state) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SerializedFMUstateSize(c: fmi2Component, state: fmi2FMUstate, size: *mut usize) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::serialized_fmu_state_size::<Engine>(c, state, size) }
+    unsafe { functions::serialized_fmu_state_size::<ModelVariant>(c, state, size) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SerializeFMUstate(c: fmi2Component, state: fmi2FMUstate, buffer: *mut fmi2Byte, size: usize) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::serialize_fmu_state::<Engine>(c, state, buffer, size) }
+    unsafe { functions::serialize_fmu_state::<ModelVariant>(c, state, buffer, size) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2DeSerializeFMUstate(c: fmi2Component, buffer: *const fmi2Byte, size: usize, state: *mut fmi2FMUstate) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::deserialize_fmu_state::<Engine>(c, buffer, size, state) }
+    unsafe { functions::deserialize_fmu_state::<ModelVariant>(c, buffer, size, state) }
 }
 
 #[no_mangle]
@@ -175,7 +175,7 @@ pub unsafe extern "C" fn fmi2GetDirectionalDerivative(
     _dv_unknown: *mut fmi2Real
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_directional_derivative::<Engine>(c) }
+    unsafe { functions::get_directional_derivative::<ModelVariant>(c) }
 }
 
 #[no_mangle]
@@ -187,7 +187,7 @@ pub unsafe extern "C" fn fmi2SetRealInputDerivatives(
     _value: *const fmi2Real
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_real_input_derivatives::<Engine>(c) }
+    unsafe { functions::set_real_input_derivatives::<ModelVariant>(c) }
 }
 
 #[no_mangle]
@@ -199,47 +199,47 @@ pub unsafe extern "C" fn fmi2GetRealOutputDerivatives(
     _value: *mut fmi2Real
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_real_output_derivatives::<Engine>(c) }
+    unsafe { functions::get_real_output_derivatives::<ModelVariant>(c) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2DoStep(c: fmi2Component, t: fmi2Real, h: fmi2Real, _no_set_prior: fmi2Boolean) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::do_step::<Engine>(c, t, h) }
+    unsafe { functions::do_step::<ModelVariant>(c, t, h) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2CancelStep(c: fmi2Component) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::cancel_step::<Engine>(c) }
+    unsafe { functions::cancel_step::<ModelVariant>(c) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetStatus(c: fmi2Component, kind: c_int, value: *mut c_int) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_status::<Engine>(c, kind, value) }
+    unsafe { functions::get_status::<ModelVariant>(c, kind, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetRealStatus(c: fmi2Component, kind: c_int, value: *mut fmi2Real) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_real_status::<Engine>(c, kind, value) }
+    unsafe { functions::get_real_status::<ModelVariant>(c, kind, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetIntegerStatus(c: fmi2Component, kind: c_int, value: *mut fmi2Integer) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_integer_status::<Engine>(c, kind, value) }
+    unsafe { functions::get_integer_status::<ModelVariant>(c, kind, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetBooleanStatus(c: fmi2Component, kind: c_int, value: *mut fmi2Boolean) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_boolean_status::<Engine>(c, kind, value) }
+    unsafe { functions::get_boolean_status::<ModelVariant>(c, kind, value) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetStringStatus(c: fmi2Component, kind: c_int, value: *mut fmi2String) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_string_status::<Engine>(c, kind, value) }
+    unsafe { functions::get_string_status::<ModelVariant>(c, kind, value) }
 }

@@ -8,7 +8,7 @@ use super::fixed_argument_logger;
 use super::instance::Model;
 use super::types::*;
 use crate::simulation::test_model::{Shuttle, SHUTTLE_SPEED};
-use crate::simulation::Engine;
+use crate::simulation::ModelVariant;
 use std::ffi::{c_char, c_int, c_void, CStr, CString};
 use std::marker::PhantomData;
 use std::ptr::{null, null_mut};
@@ -861,7 +861,7 @@ fn instances_in_threads_are_independent() {
 #[test]
 fn both_engine_variants_continue_bit_identically_after_restore_and_through_bytes() {
     for variant in [1, 2] {
-        let host = Host::<Engine>::new();
+        let host = Host::<ModelVariant>::new();
         assert_eq!(host.enter(), Status::Ok);
         assert_eq!(host.set_integer("model_variant", variant), Status::Ok);
         if variant == 2 {
@@ -891,7 +891,7 @@ fn both_engine_variants_continue_bit_identically_after_restore_and_through_bytes
             "variant {variant}: restore in place"
         );
 
-        let other = Host::<Engine>::new();
+        let other = Host::<ModelVariant>::new();
         let (status, copy) = other.deserialize(&bytes);
         assert_eq!(status, Status::Ok, "{:?}", other.messages());
         assert_eq!(other.set_state(copy), Status::Ok);
@@ -913,7 +913,7 @@ fn engine_instances_in_threads_agree_bit_for_bit() {
         let handles: Vec<_> = (0..3)
             .map(|_| {
                 scope.spawn(|| {
-                    let host = Host::<Engine>::initialized();
+                    let host = Host::<ModelVariant>::initialized();
                     host.run(0.0, 0.03, 1e-3);
                     host.output_bits()
                 })

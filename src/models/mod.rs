@@ -19,7 +19,7 @@ pub use crank_train::CrankTrain;
 pub use energy_balance::{EnergyBalance, PowerFlows};
 pub use parameters::{Inputs, ModelError, Outputs, Parameters};
 pub use roller::{Roller, RollerSystem};
-pub use roller_forcing::{Forcing, Jet, SliderCrank, SlidingRegion};
+pub use roller_forcing::{Forcing, Jet, RollerMechanism, SlidingRegion};
 
 use serde::{Deserialize, Serialize};
 

@@ -16,7 +16,7 @@
 //! the walls are at y = ±Δ exactly.
 
 use super::last_value::LastValue;
-use super::roller_forcing::{AtAngle, Forcing, SliderCrank};
+use super::roller_forcing::{AtAngle, Forcing, RollerMechanism};
 use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
 use crate::dynamics::{DynamicsError, Evaluation, Event, EventKind, Stepper, StepperOptions, System};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
@@ -52,7 +52,7 @@ pub const SLIDING_THRESHOLD_PER_CLEARANCE: f64 = 1e-3;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RollerSystem {
     /// Private: `last_angle` caches its terms.
-    mechanism: SliderCrank,
+    mechanism: RollerMechanism,
     /// ρ = Δ/l.
     pub rho: f64,
     /// λ = c₂/(M l² Ω), held with the crank speed.
@@ -64,7 +64,7 @@ pub struct RollerSystem {
 }
 
 impl RollerSystem {
-    pub fn mechanism(&self) -> &SliderCrank {
+    pub fn mechanism(&self) -> &RollerMechanism {
         &self.mechanism
     }
 }
@@ -137,7 +137,7 @@ impl Roller {
         &self.stepper
     }
 
-    fn mechanism(&self) -> &SliderCrank {
+    fn mechanism(&self) -> &RollerMechanism {
         self.stepper.system().mechanism()
     }
 
@@ -218,7 +218,7 @@ impl EngineModel for Roller {
         }
         let (l, mass) = (p.rod_length, p.piston_mass);
         let system = RollerSystem {
-            mechanism: SliderCrank {
+            mechanism: RollerMechanism {
                 xi: p.crank_radius / l,
                 alpha: p.rod_mass / mass,
                 beta: p.rod_inertia / (mass * l * l),

@@ -345,7 +345,7 @@ fn shuttle() -> Subject<Shuttle> {
 }
 
 /// The roller variant, which refuses to step at crank_speed 0 (the crank train steps at any speed).
-fn engine() -> Subject<Engine> {
+fn engine() -> Subject<ModelVariant> {
     Subject {
         configure: |host| assert_eq!(host.set_integer("model_variant", 2), Status::Ok),
         break_step: |host| assert_eq!(host.set_real("crank_speed", 0.0), Status::Ok),

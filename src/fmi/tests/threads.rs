@@ -26,7 +26,7 @@ const DURATION: f64 = 0.04;
 type Trace = (Vec<Vec<u64>>, Vec<u8>);
 
 fn trace(&(variant, restitution, speed, h): &Run, start: &Barrier) -> Trace {
-    let host = Host::<Engine>::new();
+    let host = Host::<ModelVariant>::new();
     assert_eq!(host.set_integer("model_variant", variant), Status::Ok);
     assert_eq!(host.set_real("restitution", restitution), Status::Ok);
     assert_eq!(host.set_real("crank_speed", speed), Status::Ok);

@@ -9,16 +9,16 @@ use serde::{Deserialize, Serialize};
 /// The engine model the FMU runs (one per instance, so the variants' size difference costs nothing).
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[allow(clippy::large_enum_variant)]
-pub enum Engine {
+pub enum ModelVariant {
     CrankTrain(CrankTrain),
     Roller(Roller),
 }
 
-impl EngineModel for Engine {
+impl EngineModel for ModelVariant {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         match params.model_variant {
-            1 => CrankTrain::new(params, start_time).map(Engine::CrankTrain),
-            2 => Roller::new(params, start_time).map(Engine::Roller),
+            1 => CrankTrain::new(params, start_time).map(ModelVariant::CrankTrain),
+            2 => Roller::new(params, start_time).map(ModelVariant::Roller),
             other => Err(ModelError(format!(
                 "model_variant = {other} is not one of 1..=2"
             ))),
@@ -32,15 +32,15 @@ impl EngineModel for Engine {
         events: &mut Vec<EngineEvent>,
     ) -> Result<(), ModelError> {
         match self {
-            Engine::CrankTrain(m) => m.advance(inputs, t_end, events),
-            Engine::Roller(m) => m.advance(inputs, t_end, events),
+            ModelVariant::CrankTrain(m) => m.advance(inputs, t_end, events),
+            ModelVariant::Roller(m) => m.advance(inputs, t_end, events),
         }
     }
 
     fn write_outputs(&self, out: &mut Outputs) {
         match self {
-            Engine::CrankTrain(m) => m.write_outputs(out),
-            Engine::Roller(m) => m.write_outputs(out),
+            ModelVariant::CrankTrain(m) => m.write_outputs(out),
+            ModelVariant::Roller(m) => m.write_outputs(out),
         }
     }
 }
