@@ -1,4 +1,4 @@
-//! Issue 6: no heap allocation inside a step. A global allocator that counts, per thread, the
+//! No heap allocation inside a step. A global allocator that counts, per thread, the
 //! allocations of steady-state steps of both engine models: through their `advance` (the core's
 //! step loop, events included), through `Simulation::step` and through the exported fmi2DoStep.
 

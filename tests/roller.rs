@@ -78,10 +78,11 @@ fn sliding_on_the_upper_wall_carries_the_eq_2_29_force() {
         model.advance(&speed(1.0), t, &mut events).unwrap();
         let out = outputs(&model);
         let (fu, _) = sc.constraint_forces(t, lambda, rho);
-        assert_eq!((out.contact_state_1, out.contact_state_3), (0, 1), "t {t}");
-        assert!((out.contact_force_3 - fu).abs() < 1e-9 * fu.abs().max(1.0), "t {t}: {} vs {fu}", out.contact_force_3);
-        assert_eq!(out.side_force, -out.contact_force_3);
-        assert!((out.piston_lateral - rho).abs() < 1e-12);
+        // The upper wall is the x = −D/2 wall of corner 1, as in variant 1 (DESIGN.md §4).
+        assert_eq!((out.contact_state_1, out.contact_state_3), (1, 0), "t {t}");
+        assert!((out.contact_force_1 - fu).abs() < 1e-9 * fu.abs().max(1.0), "t {t}: {} vs {fu}", out.contact_force_1);
+        assert_eq!(out.side_force, out.contact_force_1);
+        assert!((out.piston_lateral + rho).abs() < 1e-12);
     }
     assert!(events.is_empty());
 }
@@ -131,7 +132,7 @@ fn at_high_damping_the_lower_wall_is_not_hit() {
     let events = run(&thesis_case(0.25, 0.015, 0.9), 1.0, 100).1;
     let impacts = impacts_after(&events, 30);
     assert!(impacts.len() > 100);
-    assert!(impacts.iter().all(|e| e.corner == 3));
+    assert!(impacts.iter().all(|e| e.corner == 1), "the upper wall is corner 1's");
     assert!(events.iter().any(|e| e.kind == EngineEventKind::Slide && cycle_of(e) >= 30));
     assert!(period(&events, 70, 100).is_some());
 }
@@ -153,7 +154,7 @@ fn lower_restitution_makes_the_response_periodic_with_sliding() {
 fn impact_velocities_grow_with_the_clearance() {
     let mean = |rho: f64| {
         let events = run(&thesis_case(0.05, rho, 0.9), 1.0, 200).1;
-        let impacts: Vec<_> = impacts_after(&events, 30).into_iter().filter(|e| e.corner == 3).collect();
+        let impacts: Vec<_> = impacts_after(&events, 30).into_iter().filter(|e| e.corner == 1).collect();
         impacts.iter().map(|e| e.normal_velocity_before).sum::<f64>() / impacts.len() as f64
     };
     let (small, middle, large) = (mean(0.01), mean(0.015), mean(0.02));

@@ -266,8 +266,8 @@ impl<E: Model> Instance<E> {
             _ => &crate::models::Outputs::default(),
         };
         let (p, i) = (&self.core.parameters, &self.core.inputs);
-        // Into the host's array directly: a host reads outputs every step, and a list collected
-        // first was an allocation per call.
+        // Into the host's array directly: a host reads outputs every step, and collecting a list
+        // first would allocate at every call.
         for (&vr, value) in vrs.iter().zip(out) {
             *value = read(vr, p, i, outputs)
                 .ok_or_else(|| Refusal::error(format!("value reference {vr} has no field")))?;

@@ -78,7 +78,7 @@ impl Engine {
     }
 
     /// Inlined, with the cache's lookup (`PrescribedCrank::crank`, `LastValue::get_or`), into
-    /// the evaluations: called out of line, the cache's hit cost a call at every stage (+2 %).
+    /// the evaluations: called out of line, a cache hit would cost a call at every stage.
     #[inline(always)]
     fn crank(&self, angle: f64) -> Crank {
         let (sin, cos) = super::trig::sin_cos(angle);
@@ -157,7 +157,7 @@ impl PrescribedCrank {
     }
 
     /// Linkage evaluation in full coordinates. Inlined, with what it calls, into the reduced
-    /// evaluation, where the crank row's unused terms and a copy then drop out (−7 % instructions).
+    /// evaluation, where the crank row's unused terms and a copy then drop out.
     #[inline(always)]
     pub fn evaluate_full(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<3, 4> {
         let (phi, phid) = self.full_state(t, q, qd);

@@ -17,8 +17,8 @@ mod energy;
 /// where the piston lies flat on a wall (fully constrained, no error to control), ≈ 1e-4 s in
 /// flight. Over ten cycles of the default case against a 2.5 µs fixed-step reference (958
 /// impacts faster than 0.1 mm/s, `examples/step_study.rs`): impact times agree to 4.6e-9 s and
-/// speeds to 2.3e-4 relative, as with the former fixed 1e-4 s step (4.5e-9 s, 2.8e-4) at 2.3×
-/// fewer RK4 steps; 1e-10 m gives 3.0e-8 s and 8.7e-4.
+/// speeds to 2.3e-4 relative, as a fixed 1e-4 s step does (4.5e-9 s, 2.8e-4) with 2.3×
+/// as many RK4 steps; 1e-10 m gives 3.0e-8 s and 8.7e-4.
 pub const MAX_STEP: f64 = 1e-3;
 pub const LOCAL_ERROR: f64 = 1e-11;
 

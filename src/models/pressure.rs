@@ -105,8 +105,8 @@ impl FourStrokePressure {
 }
 
 /// The whole number nearest `x`, ties away from zero, as `x.round()` but for |x| < 2⁵² by a
-/// conversion to an integer: baseline x86-64 has no rounding instruction, and `round`, a call,
-/// was 1.3 % of the crank train's instructions. Where `x + ½` rounds up to a whole number from
+/// conversion to an integer: baseline x86-64 has no rounding instruction, so `round` is a call
+/// in the crank train's every evaluation. Where `x + ½` rounds up to a whole number from
 /// just below a tie, the result is one more than `round`'s: the crank angle then lies at ϑ = ±2π,
 /// where the curve is 0 either way.
 fn nearest_whole(x: f64) -> f64 {

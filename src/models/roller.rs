@@ -2,8 +2,8 @@
 //! nonsmooth core.
 //!
 //! The core integrates the thesis's own dimensionless system (eqs 3.1–3.3): time is the crank angle
-//! θ, the coordinate ψ, the constraints h_lower = ψ − ψ_min(θ) ≥ 0 (corner 1) and
-//! h_upper = ψ_max(θ) − ψ ≥ 0 (corner 3). The core's restitution on ḣ is eq 2.17, restitution
+//! θ, the coordinate ψ, the constraints h_lower = ψ − ψ_min(θ) ≥ 0 (corner 3) and
+//! h_upper = ψ_max(θ) − ψ ≥ 0 (corner 1). The core's restitution on ḣ is eq 2.17, restitution
 //! relative to the moving wall. Working in θ makes the thesis's step (0.005) and sliding threshold
 //! (|ψ' − ψ_max'| < 0.005 after an impact, Appendix B) hold at every crank speed; in SI that threshold
 //! is a normal speed of 0.005 l Λ Ω. The thesis's threshold serves roller_forcing = 1; the corrected
@@ -12,8 +12,10 @@
 //! The FMU's dimensional parameters map as DESIGN.md §4 says: ξ = r/l, α = m/M, β = J_r/(M l²),
 //! ρ = Δ/l with Δ = (bore − piston_diameter)/2, λ = c₂/(M l² Ω) with Ω the `crank_speed` input. As in
 //! the thesis there is no gravity, no gas force and no piston-pin damping, and the crank speed is
-//! prescribed (crank_mode = 1 only). Lateral positions are linearized like the model: y = l Λ ψ, so
-//! the walls are at y = ±Δ exactly.
+//! prescribed (crank_mode = 1 only). Lateral positions are linearized like the model: x = −l Λ ψ, so
+//! the walls are at x = ∓Δ exactly. The sign is variant 1's (DESIGN.md §4): with the crank pin at
+//! x = −r sin θ, the pin is at x = −r sin θ − l sin(ψ − φ) ≈ −l Λ ψ, so the thesis's upper wall
+//! (ψ = ψ_max) is the x = −D/2 wall of corners 1 and 2, and the lower wall that of corners 3 and 4.
 
 use super::last_value::LastValue;
 use super::roller_forcing::{AtAngle, Forcing, RollerMechanism};
@@ -33,9 +35,9 @@ mod energy;
 /// `analysis.classify` calls a response periodic.
 const WRAP_TURNS: f64 = 2048.0;
 
-/// Constraint index of the lower wall (ψ = ψ_min, corner 1).
+/// Constraint index of the lower wall (ψ = ψ_min, x = +D/2, corner 3).
 pub const LOWER: usize = 0;
-/// Constraint index of the upper wall (ψ = ψ_max, corner 3).
+/// Constraint index of the upper wall (ψ = ψ_max, x = −D/2, corner 1).
 pub const UPPER: usize = 1;
 
 /// The thesis's step (Appendix B), in radians of crank angle.
@@ -124,7 +126,7 @@ fn core_error(error: DynamicsError, clock: impl FnOnce(f64) -> f64) -> ModelErro
 
 /// Corner number of the impact log for a constraint index.
 pub fn corner(constraint: usize) -> u8 {
-    if constraint == LOWER {
+    if constraint == UPPER {
         1
     } else {
         3
@@ -282,8 +284,8 @@ impl EngineModel for Roller {
         let l = self.rod_length;
         // Wall force F = M l Ω² λ_core / Λ (the core's multiplier acts on ψ, the wall on y = l Λ ψ).
         let forces = self.stepper.multipliers() * (self.piston_mass * l * omega * omega / cos_phi.value);
-        out.piston_lateral = l * cos_phi.value * psi;
-        out.piston_lateral_velocity = l * omega * (cos_phi.d1 * psi + cos_phi.value * dpsi);
+        out.piston_lateral = -l * cos_phi.value * psi;
+        out.piston_lateral_velocity = -l * omega * (cos_phi.d1 * psi + cos_phi.value * dpsi);
         out.piston_tilt = 0.0;
         out.piston_axial = self.axial_position(theta, psi);
         out.crank_angle = theta + 2.0 * PI * self.turns;
@@ -291,14 +293,15 @@ impl EngineModel for Roller {
         let psi_jet = [psi, dpsi, self.stepper.acceleration()[0]];
         let lambda = self.stepper.system().lambda;
         out.crank_torque = mechanism.drive_torque(theta, psi_jet, lambda) * self.piston_mass * (l * omega).powi(2);
-        out.contact_state_1 = i32::from(self.stepper.in_contact(LOWER));
+        out.contact_state_1 = i32::from(self.stepper.in_contact(UPPER));
         out.contact_state_2 = 0;
-        out.contact_state_3 = i32::from(self.stepper.in_contact(UPPER));
+        out.contact_state_3 = i32::from(self.stepper.in_contact(LOWER));
         out.contact_state_4 = 0;
-        out.contact_force_1 = forces[LOWER];
+        out.contact_force_1 = forces[UPPER];
         out.contact_force_2 = 0.0;
-        out.contact_force_3 = forces[UPPER];
+        out.contact_force_3 = forces[LOWER];
         out.contact_force_4 = 0.0;
-        out.side_force = forces[LOWER] - forces[UPPER];
+        // The −D/2 wall (upper) pushes toward +x.
+        out.side_force = forces[UPPER] - forces[LOWER];
     }
 }
