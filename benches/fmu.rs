@@ -70,7 +70,7 @@ fn main() {
         Ok((instructions, flops)) => {
             let limit = flops / (2.0 * ghz * 1e9);
             println!(
-                "crank train, one fixed RK4 step without contact {:.2} µs, {instructions:.0} instructions, {flops:.0} flops \
+                "crank train, one fixed RK4 step without contact: {:.2} µs, {instructions:.0} instructions, {flops:.0} flops \
                  (counted by callgrind: at 2 flops per cycle and {ghz:.1} GHz {:.2} µs), {:.1}× that limit",
                 plain * 1e6,
                 limit * 1e6,
@@ -79,7 +79,7 @@ fn main() {
             Some(limit)
         }
         Err(why) => {
-            println!("crank train, one fixed RK4 step without contact {:.2} µs (flops not counted: {why})", plain * 1e6);
+            println!("crank train, one fixed RK4 step without contact: {:.2} µs (flops not counted: {why})", plain * 1e6);
             None
         }
     };
