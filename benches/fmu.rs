@@ -142,9 +142,9 @@ fn plain_step_work() -> Result<(f64, f64), String> {
 /// Nominal clock of the machine, GHz: half its BogoMIPS (what the kernel calibrates its delay
 /// loop to, two per cycle on x86), or 2.3 where /proc/cpuinfo does not tell.
 fn ghz() -> f64 {
-    let bogomips = std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|s| s.lines().find(|l| l.to_lowercase().starts_with("bogomips")).and_then(|l| l.split(':').nth(1)?.trim().parse::<f64>().ok()));
+    let bogomips = std::fs::read_to_string("/proc/cpuinfo").ok().and_then(|s| {
+        s.lines().find(|l| l.to_lowercase().starts_with("bogomips")).and_then(|l| l.split(':').nth(1)?.trim().parse::<f64>().ok())
+    });
     bogomips.map_or(2.3, |b| b / 2000.0)
 }
 
@@ -174,7 +174,10 @@ fn thesis_study() {
             wall += run(&host, stop, 2.0 * std::f64::consts::PI);
         }
     }
-    println!("thesis study (18 cases × 1530 crank cycles, one per communication step): {:.1} s wall (measured on 153 cycles each, ×10)", wall * fraction);
+    println!(
+        "thesis study (18 cases × 1530 crank cycles, one per communication step): {:.1} s wall (measured on 153 cycles each, ×10)",
+        wall * fraction
+    );
 }
 
 fn machine() -> String {
@@ -183,5 +186,9 @@ fn machine() -> String {
         .and_then(|s| s.lines().find(|l| l.starts_with("model name")).map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string()))
         .unwrap_or_else(|| "unknown CPU".into());
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
-    format!("{cpu}, {} logical CPUs, load average {}", std::thread::available_parallelism().map_or(0, |n| n.get()), load.split_whitespace().next().unwrap_or("?"))
+    format!(
+        "{cpu}, {} logical CPUs, load average {}",
+        std::thread::available_parallelism().map_or(0, |n| n.get()),
+        load.split_whitespace().next().unwrap_or("?")
+    )
 }

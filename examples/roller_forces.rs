@@ -4,7 +4,7 @@
 //!   roller_forces regions FORCING RHO_MAX LAMBDA_MAX N    rho,lambda,region on an N×N grid (Fig 2.10)
 //! FORCING is the FMU's roller_forcing: 1 = f(τ) as printed, 2 = corrected.
 
-use pistonslap::models::{Forcing, SlidingRegion, RollerMechanism};
+use pistonslap::models::{Forcing, RollerMechanism, SlidingRegion};
 use std::f64::consts::PI;
 use std::process::ExitCode;
 

@@ -2,10 +2,10 @@
 //! allocations of steady-state steps of both engine models: through their `advance` (the core's
 //! step loop, events included), through `Simulation::step` and through the exported fmi2DoStep.
 
+use crate::fmu_host::{vr, Host};
 use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters, Roller};
 use pistonslap::simulation::Simulation;
 use std::alloc::{GlobalAlloc, Layout, System};
-use crate::fmu_host::{vr, Host};
 use std::cell::Cell;
 
 struct Counting;

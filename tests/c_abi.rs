@@ -10,7 +10,6 @@ use std::path::PathBuf;
 use std::process::{Command, Output};
 use std::sync::OnceLock;
 
-
 /// The compiled C host, built once per test binary.
 fn c_host() -> &'static PathBuf {
     static HOST: OnceLock<PathBuf> = OnceLock::new();
@@ -20,11 +19,8 @@ fn c_host() -> &'static PathBuf {
         // does not link the cdylib, so build it (a no-op when fresh) with this test's profile.
         let exe = std::env::current_exe().unwrap();
         let lib_dir = exe.parent().and_then(|deps| deps.parent()).unwrap().to_path_buf();
-        let built = Command::new(env!("CARGO"))
-            .args(["build", "--lib", "--profile", profile()])
-            .current_dir(&root)
-            .status()
-            .expect("cargo");
+        let built =
+            Command::new(env!("CARGO")).args(["build", "--lib", "--profile", profile()]).current_dir(&root).status().expect("cargo");
         assert!(built.success() && lib_dir.join("libpistonslap.so").is_file(), "no cdylib in {}", lib_dir.display());
         let tmp = PathBuf::from(env!("CARGO_TARGET_TMPDIR"));
         let libs = tmp.join("c_host_libs");
@@ -105,7 +101,8 @@ fn ten_thousand_cycles_under_valgrind_leak_nothing() {
         .output()
         .unwrap();
     let stderr = String::from_utf8_lossy(&out.stderr);
-    let summary: Vec<&str> = stderr.lines().filter(|l| l.contains("ERROR SUMMARY") || l.contains("lost:") || l.contains("in use at exit")).collect();
+    let summary: Vec<&str> =
+        stderr.lines().filter(|l| l.contains("ERROR SUMMARY") || l.contains("lost:") || l.contains("in use at exit")).collect();
     println!("memcheck of 10000 cycles in {:?}:\n{}", start.elapsed(), summary.join("\n"));
     check_report(&out);
     assert!(stderr.contains("ERROR SUMMARY: 0 errors"), "{stderr}");

@@ -49,7 +49,11 @@ fn impacts_after(events: &[EngineEvent], first_cycle: usize) -> Vec<&EngineEvent
 /// crank angles within 1e-6 rad.
 fn period(events: &[EngineEvent], from: usize, to: usize) -> Option<usize> {
     let pattern = |k: usize| -> Vec<(u8, f64)> {
-        events.iter().filter(|e| e.kind == EngineEventKind::Impact && cycle_of(e) == k).map(|e| (e.corner, e.crank_angle % (2.0 * PI))).collect()
+        events
+            .iter()
+            .filter(|e| e.kind == EngineEventKind::Impact && cycle_of(e) == k)
+            .map(|e| (e.corner, e.crank_angle % (2.0 * PI)))
+            .collect()
     };
     (1..=8).find(|&p| {
         (from..to - p).all(|k| {

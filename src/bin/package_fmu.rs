@@ -21,34 +21,19 @@ fn main() {
 
 fn run() -> Result<(), String> {
     let here = std::env::current_exe().map_err(|e| e.to_string())?;
-    let profile_dir = here
-        .parent()
-        .ok_or("no executable directory")?
-        .to_path_buf();
+    let profile_dir = here.parent().ok_or("no executable directory")?.to_path_buf();
     let mut args = std::env::args_os().skip(1);
-    let library = args
-        .next()
-        .map_or_else(|| profile_dir.join("libpistonslap.so"), PathBuf::from);
+    let library = args.next().map_or_else(|| profile_dir.join("libpistonslap.so"), PathBuf::from);
     let target_dir = profile_dir.parent().unwrap_or(&profile_dir);
     let default_out = target_dir.join("fmu").join("PistonSlap.fmu");
     let out = args.next().map_or(default_out, PathBuf::from);
-    let binary = std::fs::read(&library).map_err(|e| {
-        format!(
-            "cannot read {} ({e}); run `cargo build --release` first",
-            library.display()
-        )
-    })?;
+    let binary =
+        std::fs::read(&library).map_err(|e| format!("cannot read {} ({e}); run `cargo build --release` first", library.display()))?;
     if let Some(dir) = out.parent() {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     }
     write_fmu(&out, &binary).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
-    println!(
-        "wrote {} ({} variables, binary {})",
-        out.display(),
-        VARIABLES.len(),
-        library.display()
-    );
+    println!("wrote {} ({} variables, binary {})", out.display(), VARIABLES.len(), library.display());
     Ok(())
 }
 
@@ -58,11 +43,7 @@ fn write_fmu(out: &Path, binary: &[u8]) -> zip::result::ZipResult<()> {
     let executable = text.unix_permissions(0o755);
     let documentation = documentation();
     let files: [(&str, &[u8], SimpleFileOptions); 4] = [
-        (
-            "modelDescription.xml",
-            MODEL_DESCRIPTION_XML.as_bytes(),
-            text,
-        ),
+        ("modelDescription.xml", MODEL_DESCRIPTION_XML.as_bytes(), text),
         ("binaries/linux64/PistonSlap.so", binary, executable),
         ("documentation/index.html", documentation.as_bytes(), text),
         ("resources/README.txt", RESOURCES_README.as_bytes(), text),
@@ -83,9 +64,7 @@ scaled so that its maximum is peak_pressure. See documentation/index.html.
 ";
 
 fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
+    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
 }
 
 /// documentation/index.html: what the model is, its variables (from the same table as the XML), its

@@ -5,8 +5,7 @@
 use crate::models::{Inputs, Outputs, Parameters};
 
 /// The shipped `modelDescription.xml`, generated from the same table as the dispatch.
-pub const MODEL_DESCRIPTION_XML: &str =
-    include_str!(concat!(env!("OUT_DIR"), "/modelDescription.xml"));
+pub const MODEL_DESCRIPTION_XML: &str = include_str!(concat!(env!("OUT_DIR"), "/modelDescription.xml"));
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
@@ -129,22 +128,13 @@ mod tests {
     #[test]
     fn start_values_are_the_rust_defaults() {
         let (p, i, o) = (Parameters::default(), Inputs::default(), Outputs::default());
-        for (vr, v) in VARIABLES
-            .iter()
-            .enumerate()
-            .filter(|(_, v)| v.causality != Causality::Output)
-        {
+        for (vr, v) in VARIABLES.iter().enumerate().filter(|(_, v)| v.causality != Causality::Output) {
             let vr = vr as u32;
             match v.kind {
                 Kind::Real => {
                     assert_eq!(get_real(vr, &p, &i, &o), v.start.parse().ok(), "{}", v.name)
                 }
-                Kind::Integer => assert_eq!(
-                    get_integer(vr, &p, &i, &o),
-                    v.start.parse().ok(),
-                    "{}",
-                    v.name
-                ),
+                Kind::Integer => assert_eq!(get_integer(vr, &p, &i, &o), v.start.parse().ok(), "{}", v.name),
                 Kind::String => assert_eq!(get_string(vr, &p, &i, &o), Some(v.start), "{}", v.name),
             }
         }

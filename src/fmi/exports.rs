@@ -31,7 +31,7 @@ pub unsafe extern "C" fn fmi2Instantiate(
     resource_location: fmi2String,
     functions: *const fmi2CallbackFunctions,
     _visible: fmi2Boolean,
-    logging_on: fmi2Boolean
+    logging_on: fmi2Boolean,
 ) -> fmi2Component {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
     unsafe { functions::instantiate::<ModelVariant>(name, fmu_type, guid, resource_location, functions, logging_on) }
@@ -50,7 +50,7 @@ pub unsafe extern "C" fn fmi2SetupExperiment(
     _tolerance: fmi2Real,
     start: fmi2Real,
     stop_defined: fmi2Boolean,
-    stop: fmi2Real
+    stop: fmi2Real,
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
     unsafe { functions::setup_experiment::<ModelVariant>(c, start, stop_defined, stop) }
@@ -159,7 +159,12 @@ pub unsafe extern "C" fn fmi2SerializeFMUstate(c: fmi2Component, state: fmi2FMUs
 }
 
 #[no_mangle]
-pub unsafe extern "C" fn fmi2DeSerializeFMUstate(c: fmi2Component, buffer: *const fmi2Byte, size: usize, state: *mut fmi2FMUstate) -> Status {
+pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
+    c: fmi2Component,
+    buffer: *const fmi2Byte,
+    size: usize,
+    state: *mut fmi2FMUstate,
+) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
     unsafe { functions::deserialize_fmu_state::<ModelVariant>(c, buffer, size, state) }
 }
@@ -172,7 +177,7 @@ pub unsafe extern "C" fn fmi2GetDirectionalDerivative(
     _knowns: *const fmi2ValueReference,
     _n_knowns: usize,
     _dv_known: *const fmi2Real,
-    _dv_unknown: *mut fmi2Real
+    _dv_unknown: *mut fmi2Real,
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
     unsafe { functions::get_directional_derivative::<ModelVariant>(c) }
@@ -184,7 +189,7 @@ pub unsafe extern "C" fn fmi2SetRealInputDerivatives(
     _vr: *const fmi2ValueReference,
     _n: usize,
     _order: *const fmi2Integer,
-    _value: *const fmi2Real
+    _value: *const fmi2Real,
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
     unsafe { functions::set_real_input_derivatives::<ModelVariant>(c) }
@@ -196,7 +201,7 @@ pub unsafe extern "C" fn fmi2GetRealOutputDerivatives(
     _vr: *const fmi2ValueReference,
     _n: usize,
     _order: *const fmi2Integer,
-    _value: *mut fmi2Real
+    _value: *mut fmi2Real,
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
     unsafe { functions::get_real_output_derivatives::<ModelVariant>(c) }

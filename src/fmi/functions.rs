@@ -217,8 +217,10 @@ pub unsafe fn set_debug_logging<E: Model>(c: fmi2Component, on: fmi2Boolean, n: 
     // SAFETY: the caller's contract, for `c` and each pointer read.
     unsafe {
         run::<E>(c, fmi2SetDebugLogging, |comp| {
-            let names =
-                slice(categories, n, "categories")?.iter().map(|&s| string(s, "category").map(str::to_string)).collect::<Outcome<Vec<_>>>()?;
+            let names = slice(categories, n, "categories")?
+                .iter()
+                .map(|&s| string(s, "category").map(str::to_string))
+                .collect::<Outcome<Vec<_>>>()?;
             comp.instance.logger.set_debug_logging(boolean(on), &names).map_err(Refusal::error)
         })
     }
@@ -516,9 +518,8 @@ unsafe fn status<E: Model, T>(
     unsafe {
         run::<E>(c, function, |comp| {
             let value = out(value, "value")?;
-            *value = answer(&comp.instance, kind).ok_or_else(|| {
-                Refusal::discard(format!("status kind {kind} has no value: fmi2DoStep is synchronous and never pending"))
-            })?;
+            *value = answer(&comp.instance, kind)
+                .ok_or_else(|| Refusal::discard(format!("status kind {kind} has no value: fmi2DoStep is synchronous and never pending")))?;
             Ok(())
         })
     }
@@ -535,7 +536,9 @@ pub unsafe fn get_status<E: Model>(c: fmi2Component, kind: c_int, value: *mut c_
 /// As [`status`].
 pub unsafe fn get_real_status<E: Model>(c: fmi2Component, kind: c_int, value: *mut fmi2Real) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { status::<E, fmi2Real>(c, fmi2GetRealStatus, kind, value, |inst, kind| (kind == FMI2_LAST_SUCCESSFUL_TIME).then(|| inst.time())) }
+    unsafe {
+        status::<E, fmi2Real>(c, fmi2GetRealStatus, kind, value, |inst, kind| (kind == FMI2_LAST_SUCCESSFUL_TIME).then(|| inst.time()))
+    }
 }
 
 /// # Safety

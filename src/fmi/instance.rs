@@ -8,8 +8,8 @@
 
 use super::description::{self, Causality, Kind, GUID};
 use super::logger::Logger;
-use super::state_machine::Mode::{self, *};
 use super::state_bytes;
+use super::state_machine::Mode::{self, *};
 use super::types::Status;
 use crate::models::{EngineModel, Inputs, ModelError, Parameters};
 use crate::simulation::Simulation;
@@ -28,16 +28,10 @@ pub struct Refusal {
 
 impl Refusal {
     pub fn error(message: impl Into<String>) -> Self {
-        Self {
-            status: Status::Error,
-            message: message.into(),
-        }
+        Self { status: Status::Error, message: message.into() }
     }
     pub fn discard(message: impl Into<String>) -> Self {
-        Self {
-            status: Status::Discard,
-            message: message.into(),
-        }
+        Self { status: Status::Discard, message: message.into() }
     }
 }
 
@@ -64,13 +58,7 @@ pub struct Core<E> {
 
 impl<E> Default for Core<E> {
     fn default() -> Self {
-        Self {
-            phase: Phase::Instantiated,
-            start_time: 0.0,
-            stop_time: None,
-            parameters: Parameters::default(),
-            inputs: Inputs::default(),
-        }
+        Self { phase: Phase::Instantiated, start_time: 0.0, stop_time: None, parameters: Parameters::default(), inputs: Inputs::default() }
     }
 }
 
@@ -97,9 +85,7 @@ impl<E: Model> Core<E> {
             }
         }
         match &self.phase {
-            Phase::StepComplete(sim) | Phase::Terminated(sim) => {
-                self.parameters.validate().and_then(|()| sim.check()).map_err(|e| e.0)
-            }
+            Phase::StepComplete(sim) | Phase::Terminated(sim) => self.parameters.validate().and_then(|()| sim.check()).map_err(|e| e.0),
             Phase::Instantiated | Phase::InitializationMode => Ok(()),
         }
     }
@@ -134,11 +120,7 @@ const TIME_TOLERANCE: f64 = 1e-9;
 
 impl<E: Model> Instance<E> {
     pub fn new(logger: Logger) -> Self {
-        Self {
-            logger,
-            failure: None,
-            core: Core::default(),
-        }
+        Self { logger, failure: None, core: Core::default() }
     }
 
     pub fn mode(&self) -> Mode {
@@ -160,9 +142,7 @@ impl<E: Model> Instance<E> {
             return Err(Refusal::error(format!("startTime = {start} is not finite")));
         }
         if let Some(stop) = stop.filter(|s| !(s.is_finite() && *s >= start)) {
-            return Err(Refusal::error(format!(
-                "stopTime = {stop} must be finite and ≥ startTime = {start}"
-            )));
+            return Err(Refusal::error(format!("stopTime = {stop} must be finite and ≥ startTime = {start}")));
         }
         self.core.start_time = start;
         self.core.stop_time = stop;
@@ -176,16 +156,13 @@ impl<E: Model> Instance<E> {
 
     /// Builds the simulation from the parameters: bad parameters are a failure naming the parameter.
     pub fn exit_initialization_mode(&mut self) -> Outcome {
-        let sim = Simulation::start(&self.core.parameters, self.core.start_time)
-            .map_err(|e| self.fail(e))?;
+        let sim = Simulation::start(&self.core.parameters, self.core.start_time).map_err(|e| self.fail(e))?;
         self.core.phase = Phase::StepComplete(sim);
         Ok(())
     }
 
     pub fn terminate(&mut self) -> Outcome {
-        if let Phase::StepComplete(sim) =
-            std::mem::replace(&mut self.core.phase, Phase::Instantiated)
-        {
+        if let Phase::StepComplete(sim) = std::mem::replace(&mut self.core.phase, Phase::Instantiated) {
             self.core.phase = Phase::Terminated(sim);
         }
         Ok(())
@@ -209,9 +186,7 @@ impl<E: Model> Instance<E> {
             match value {
                 Value::Real(x) => *description::real_mut(*vr, p, i).ok_or_else(missing)? = *x,
                 Value::Integer(x) => *description::integer_mut(*vr, p, i).ok_or_else(missing)? = *x,
-                Value::String(s) => {
-                    *description::string_mut(*vr, p, i).ok_or_else(missing)? = (*s).to_string()
-                }
+                Value::String(s) => *description::string_mut(*vr, p, i).ok_or_else(missing)? = (*s).to_string(),
             }
         }
         Ok(())
@@ -220,9 +195,7 @@ impl<E: Model> Instance<E> {
     fn check_settable(&self, vr: u32, value: &Value) -> Outcome {
         let v = typed_variable(vr, value.kind())?;
         match v.causality {
-            Causality::Output => {
-                return Err(Refusal::error(format!("{} (value reference {vr}) is an output: it cannot be set", v.name)))
-            }
+            Causality::Output => return Err(Refusal::error(format!("{} (value reference {vr}) is an output: it cannot be set", v.name))),
             Causality::Parameter if !matches!(self.mode(), Instantiated | InitializationMode) => {
                 return Err(Refusal::error(format!(
                     "{} is a fixed parameter: set it before fmi2ExitInitializationMode (state is {})",
@@ -233,10 +206,7 @@ impl<E: Model> Instance<E> {
             _ => {}
         }
         match value {
-            Value::Real(x) if !x.is_finite() => Err(Refusal::error(format!(
-                "{} = {x} refused: values must be finite",
-                v.name
-            ))),
+            Value::Real(x) if !x.is_finite() => Err(Refusal::error(format!("{} = {x} refused: values must be finite", v.name))),
             _ => Ok(()),
         }
     }
@@ -258,9 +228,7 @@ impl<E: Model> Instance<E> {
             Phase::StepComplete(sim) | Phase::Terminated(sim) => sim.outputs(),
             _ if vrs.iter().any(|&vr| is_output(vr)) => {
                 preview = Simulation::<E>::new(&self.core.parameters, self.core.start_time)
-                    .map_err(|e| {
-                        Refusal::error(format!("cannot compute the initial outputs: {e}"))
-                    })?;
+                    .map_err(|e| Refusal::error(format!("cannot compute the initial outputs: {e}")))?;
                 preview.outputs()
             }
             _ => &crate::models::Outputs::default(),
@@ -269,8 +237,7 @@ impl<E: Model> Instance<E> {
         // Into the host's array directly: a host reads outputs every step, and collecting a list
         // first would allocate at every call.
         for (&vr, value) in vrs.iter().zip(out) {
-            *value = read(vr, p, i, outputs)
-                .ok_or_else(|| Refusal::error(format!("value reference {vr} has no field")))?;
+            *value = read(vr, p, i, outputs).ok_or_else(|| Refusal::error(format!("value reference {vr} has no field")))?;
         }
         Ok(())
     }
@@ -281,10 +248,7 @@ impl<E: Model> Instance<E> {
         match vrs.first() {
             None => Ok(()),
             Some(&vr) => Err(match description::variable(vr) {
-                Some(v) => Refusal::error(format!(
-                    "{} (value reference {vr}) is a {:?} variable, not Boolean",
-                    v.name, v.kind
-                )),
+                Some(v) => Refusal::error(format!("{} (value reference {vr}) is a {:?} variable, not Boolean", v.name, v.kind)),
                 None => Refusal::error(format!("unknown value reference {vr}")),
             }),
         }
@@ -297,29 +261,17 @@ impl<E: Model> Instance<E> {
         };
         let now = sim.time();
         if !(h.is_finite() && h > 0.0) {
-            return Err(Refusal::error(format!(
-                "communicationStepSize = {h} must be finite and > 0"
-            )));
+            return Err(Refusal::error(format!("communicationStepSize = {h} must be finite and > 0")));
         }
         if !t.is_finite() || (t - now).abs() > TIME_TOLERANCE * now.abs().max(1.0) {
-            return Err(Refusal::error(format!(
-                "currentCommunicationPoint = {t} s is not the FMU's current time {now} s"
-            )));
+            return Err(Refusal::error(format!("currentCommunicationPoint = {t} s is not the FMU's current time {now} s")));
         }
         let t_end = t + h;
         if t_end <= now {
-            return Err(Refusal::error(format!(
-                "step {h} s is too small to advance from {now} s"
-            )));
+            return Err(Refusal::error(format!("step {h} s is too small to advance from {now} s")));
         }
-        if let Some(stop) = self
-            .core
-            .stop_time
-            .filter(|s| t_end > s + TIME_TOLERANCE * s.abs().max(1.0))
-        {
-            return Err(Refusal::error(format!(
-                "step to {t_end} s goes beyond stopTime = {stop} s"
-            )));
+        if let Some(stop) = self.core.stop_time.filter(|s| t_end > s + TIME_TOLERANCE * s.abs().max(1.0)) {
+            return Err(Refusal::error(format!("step to {t_end} s goes beyond stopTime = {stop} s")));
         }
         match sim.step(&self.core.inputs, t_end) {
             Ok(()) => {
@@ -327,8 +279,7 @@ impl<E: Model> Instance<E> {
                     self.logger.debug("logEvents", || {
                         format!(
                             "{:?} of corner {} at t = {} s, crank angle {} rad: normal velocity {} → {} m/s, {} J lost",
-                            e.kind, e.corner, e.time, e.crank_angle, e.normal_velocity_before, e.normal_velocity_after,
-                            e.energy_lost
+                            e.kind, e.corner, e.time, e.crank_angle, e.normal_velocity_before, e.normal_velocity_after, e.energy_lost
                         )
                     });
                 }
@@ -361,20 +312,16 @@ impl<E: Model> Instance<E> {
                     "the state writes impact_log {path:?}, not this instance's impact_log {own:?}: refused"
                 )));
             }
-            sim.rewind_log()
-                .map_err(|e| Refusal::error(format!("cannot restore the impact log: {e}")))?;
+            sim.rewind_log().map_err(|e| Refusal::error(format!("cannot restore the impact log: {e}")))?;
         }
         self.core = core.clone();
         self.failure = None;
         Ok(())
     }
 
-
     pub fn deserialize(&self, bytes: &[u8]) -> Outcome<Core<E>> {
-        let core: Core<E> = state_bytes::decode(bytes, GUID)
-            .map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
-        core.check()
-            .map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
+        let core: Core<E> = state_bytes::decode(bytes, GUID).map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
+        core.check().map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
         Ok(core)
     }
 
@@ -390,13 +337,9 @@ fn is_output(vr: u32) -> bool {
 
 /// The variable `vr`, refused when unknown or not of `kind`.
 fn typed_variable(vr: u32, kind: Kind) -> Outcome<&'static description::Variable> {
-    let v = description::variable(vr)
-        .ok_or_else(|| Refusal::error(format!("unknown value reference {vr}")))?;
+    let v = description::variable(vr).ok_or_else(|| Refusal::error(format!("unknown value reference {vr}")))?;
     if v.kind != kind {
-        return Err(Refusal::error(format!(
-            "{} (value reference {vr}) is a {:?} variable, not {kind:?}",
-            v.name, v.kind
-        )));
+        return Err(Refusal::error(format!("{} (value reference {vr}) is a {:?} variable, not {kind:?}", v.name, v.kind)));
     }
     Ok(v)
 }

@@ -79,32 +79,21 @@ pub fn open<'a>(bytes: &'a [u8], guid: &str) -> Result<&'a [u8], String> {
     }
     let version = u32::from_le_bytes(r.array()?);
     if version != FORMAT_VERSION {
-        return Err(format!(
-            "state format version {version}, this FMU reads {FORMAT_VERSION}"
-        ));
+        return Err(format!("state format version {version}, this FMU reads {FORMAT_VERSION}"));
     }
     let guid_len = u16::from_le_bytes(r.array()?);
     let written_by = r.take(usize::from(guid_len))?;
     if written_by != guid.as_bytes() {
         let shown = String::from_utf8_lossy(written_by);
-        return Err(format!(
-            "state written by a model with GUID {shown}, this FMU is {guid}"
-        ));
+        return Err(format!("state written by a model with GUID {shown}, this FMU is {guid}"));
     }
     let payload_len = u64::from_le_bytes(r.array()?);
     let expected = r.0.len().checked_sub(4);
     if expected.map(|n| n as u64) != Some(payload_len) {
-        return Err(format!(
-            "payload length {payload_len} does not match the {} bytes given",
-            bytes.len()
-        ));
+        return Err(format!("payload length {payload_len} does not match the {} bytes given", bytes.len()));
     }
     let body_len = bytes.len() - 4;
-    let crc = u32::from_le_bytes(
-        bytes[body_len..]
-            .try_into()
-            .map_err(|_| "truncated".to_string())?,
-    );
+    let crc = u32::from_le_bytes(bytes[body_len..].try_into().map_err(|_| "truncated".to_string())?);
     if crc32(&bytes[..body_len]) != crc {
         return Err("checksum mismatch: the state bytes are corrupted".into());
     }
@@ -139,11 +128,7 @@ fn crc32(bytes: &[u8]) -> u32 {
             let mut c = i as u32;
             let mut k = 0;
             while k < 8 {
-                c = if c & 1 != 0 {
-                    0xEDB8_8320 ^ (c >> 1)
-                } else {
-                    c >> 1
-                };
+                c = if c & 1 != 0 { 0xEDB8_8320 ^ (c >> 1) } else { c >> 1 };
                 k += 1;
             }
             table[i] = c;
@@ -151,9 +136,7 @@ fn crc32(bytes: &[u8]) -> u32 {
         }
         table
     };
-    !bytes.iter().fold(!0u32, |c, &b| {
-        TABLE[((c ^ u32::from(b)) & 0xff) as usize] ^ (c >> 8)
-    })
+    !bytes.iter().fold(!0u32, |c, &b| TABLE[((c ^ u32::from(b)) & 0xff) as usize] ^ (c >> 8))
 }
 
 #[cfg(test)]
@@ -163,11 +146,7 @@ mod tests {
     const GUID: &str = "{test}";
 
     fn sample() -> Vec<u8> {
-        encode(
-            &(vec![0.1f64, -2.5, 1e-9], "log.csv".to_string(), Some(3u8)),
-            GUID,
-        )
-        .unwrap()
+        encode(&(vec![0.1f64, -2.5, 1e-9], "log.csv".to_string(), Some(3u8)), GUID).unwrap()
     }
 
     type Sample = (Vec<f64>, String, Option<u8>);
@@ -180,10 +159,7 @@ mod tests {
     #[test]
     fn round_trip() {
         let back: Sample = decode(&sample(), GUID).unwrap();
-        assert_eq!(
-            back,
-            (vec![0.1, -2.5, 1e-9], "log.csv".to_string(), Some(3))
-        );
+        assert_eq!(back, (vec![0.1, -2.5, 1e-9], "log.csv".to_string(), Some(3)));
     }
 
     #[test]
@@ -239,10 +215,7 @@ mod simulation_tests {
         let back: Simulation<Shuttle> = decode(&bytes, "{g}").unwrap();
         assert_eq!(back, sim);
         let bits = |s: &Simulation<Shuttle>| -> Vec<u64> {
-            s.step_events()
-                .iter()
-                .flat_map(|e| [e.time, e.crank_angle, e.energy_lost].map(f64::to_bits))
-                .collect()
+            s.step_events().iter().flat_map(|e| [e.time, e.crank_angle, e.energy_lost].map(f64::to_bits)).collect()
         };
         assert_eq!(bits(&back), bits(&sim));
     }

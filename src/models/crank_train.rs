@@ -57,8 +57,12 @@ fn validate(p: &Parameters) -> Result<(), ModelError> {
     check(p.skirt_length > 0.0, || format!("skirt_length ({} m) must be positive: the corners K2, K4 lie at its end", p.skirt_length))?;
     // The corner description (A&K eq 26) holds while the piston cannot turn across the bore.
     let diagonal = p.piston_diameter.hypot(p.skirt_length);
-    check(p.bore < diagonal, || format!("bore ({} m) must be below the piston diagonal √(piston_diameter² + skirt_length²) ({diagonal} m)", p.bore))?;
-    check(p.pin_offset.abs() < 0.5 * p.piston_diameter, || format!("pin_offset ({} m) must be smaller than piston_diameter/2 ({} m)", p.pin_offset, 0.5 * p.piston_diameter))?;
+    check(p.bore < diagonal, || {
+        format!("bore ({} m) must be below the piston diagonal √(piston_diameter² + skirt_length²) ({diagonal} m)", p.bore)
+    })?;
+    check(p.pin_offset.abs() < 0.5 * p.piston_diameter, || {
+        format!("pin_offset ({} m) must be smaller than piston_diameter/2 ({} m)", p.pin_offset, 0.5 * p.piston_diameter)
+    })?;
     check(p.rod_length > p.crank_radius + p.pin_offset.abs(), || {
         format!("rod_length ({} m) must exceed crank_radius + |pin_offset| ({} m)", p.rod_length, p.crank_radius + p.pin_offset.abs())
     })
@@ -91,12 +95,26 @@ impl CrankTrain {
         (Vector2::new(s.rod_angle, 0.0), Vector2::new(s.rod_rate * speed, 0.0))
     }
 
-    fn prescribed(engine: Engine, geometry: &SliderCrank, angle: f64, time: f64, speed: f64, options: &StepperOptions) -> Result<Stepper<PrescribedCrank, 2, 4>, ModelError> {
+    fn prescribed(
+        engine: Engine,
+        geometry: &SliderCrank,
+        angle: f64,
+        time: f64,
+        speed: f64,
+        options: &StepperOptions,
+    ) -> Result<Stepper<PrescribedCrank, 2, 4>, ModelError> {
         let (q, qd) = Self::nominal(geometry, angle, speed);
         Stepper::new(PrescribedCrank::new(engine, angle, time, speed), time, q, qd, options.clone()).map_err(dynamics_error)
     }
 
-    fn free(system: FreeCrank, geometry: &SliderCrank, angle: f64, time: f64, speed: f64, options: &StepperOptions) -> Result<Stepper<FreeCrank, 3, 4>, ModelError> {
+    fn free(
+        system: FreeCrank,
+        geometry: &SliderCrank,
+        angle: f64,
+        time: f64,
+        speed: f64,
+        options: &StepperOptions,
+    ) -> Result<Stepper<FreeCrank, 3, 4>, ModelError> {
         let (q, qd) = Self::nominal(geometry, angle, speed);
         let (q, qd) = (Vector3::new(angle, q[0], q[1]), Vector3::new(speed, qd[0], qd[1]));
         Stepper::new(system, time, q, qd, options.clone()).map_err(dynamics_error)
@@ -215,11 +233,17 @@ impl CrankTrain {
 
 impl EngineModel for CrankTrain {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
-        Self::with_options(params, start_time, StepperOptions { step: MAX_STEP, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() })
+        Self::with_options(
+            params,
+            start_time,
+            StepperOptions { step: MAX_STEP, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() },
+        )
     }
 
     fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
-        for (name, value) in [("crank_speed", inputs.crank_speed), ("gas_pressure", inputs.gas_pressure), ("load_torque", inputs.load_torque)] {
+        for (name, value) in
+            [("crank_speed", inputs.crank_speed), ("gas_pressure", inputs.gas_pressure), ("load_torque", inputs.load_torque)]
+        {
             check(value.is_finite(), || format!("input {name} ({value}) must be finite"))?;
         }
         if !self.started {
@@ -244,7 +268,8 @@ impl EngineModel for CrankTrain {
                 self.log(s.events(), |e| Vector3::new(sys.crank_angle(e.time), e.q[0], e.q[1]), events);
                 for e in s.events().iter().filter(|e| e.impulses != Vector4::zeros()) {
                     let work = sys.impulse_work(e.time, &e.q, &e.impulses);
-                    self.impulse_work += work.ok_or_else(|| dynamics_error(format!("at t = {} s: the rod and piston inertia is singular", e.time)))?;
+                    self.impulse_work +=
+                        work.ok_or_else(|| dynamics_error(format!("at t = {} s: the rod and piston inertia is singular", e.time)))?;
                 }
             }
             Drive::Free(s) => self.log(s.events(), |e| e.q, events),
@@ -263,7 +288,8 @@ impl EngineModel for CrankTrain {
         let (forces, in_contact) = self.contacts();
         out.piston_lateral = pin.x;
         // ẋ_O3 = −l1 cos φ1 φ̇1 − l2 cos φ2 φ̇2.
-        out.piston_lateral_velocity = -self.geometry.crank_radius * phi[0].cos() * phid[0] - self.geometry.rod_length * phi[1].cos() * phid[1];
+        out.piston_lateral_velocity =
+            -self.geometry.crank_radius * phi[0].cos() * phid[0] - self.geometry.rod_length * phi[1].cos() * phid[1];
         out.piston_tilt = phi[2];
         out.piston_axial = pin.y;
         out.crank_angle = phi[0];
@@ -297,7 +323,10 @@ mod tests {
             (Parameters { skirt_length: 0.0, ..Parameters::default() }, "skirt_length (0 m) must be positive"),
             (Parameters { bore: 0.2, ..Parameters::default() }, "piston diagonal"),
             (Parameters { pin_offset: -0.041, ..Parameters::default() }, "pin_offset (-0.041 m) must be smaller"),
-            (Parameters { rod_length: 0.05, pin_offset: 0.02, ..Parameters::default() }, "rod_length (0.05 m) must exceed crank_radius + |pin_offset|"),
+            (
+                Parameters { rod_length: 0.05, pin_offset: 0.02, ..Parameters::default() },
+                "rod_length (0.05 m) must exceed crank_radius + |pin_offset|",
+            ),
         ];
         for (params, expected) in cases {
             let message = validate(&params).unwrap_err().0;

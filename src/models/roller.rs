@@ -236,7 +236,8 @@ impl EngineModel for Roller {
             Forcing::Corrected => SLIDING_THRESHOLD_PER_CLEARANCE * system.rho,
         };
         let options = StepperOptions { step: THESIS_STEP, velocity_tolerance, ..StepperOptions::default() };
-        let stepper = Stepper::new(system, p.crank_angle_start, SVector::zeros(), SVector::zeros(), options.clone()).map_err(|e| core_error(e, |_| start_time))?;
+        let stepper = Stepper::new(system, p.crank_angle_start, SVector::zeros(), SVector::zeros(), options.clone())
+            .map_err(|e| core_error(e, |_| start_time))?;
         Ok(Self {
             stepper,
             options,
@@ -264,7 +265,9 @@ impl EngineModel for Roller {
         let theta_start = self.stepper.time();
         self.stepper.clear_events();
         let now = self.time;
-        self.stepper.advance(theta_start + omega * (t_end - now)).map_err(|e| core_error(e, |theta| now + (theta - theta_start) / omega))?;
+        self.stepper
+            .advance(theta_start + omega * (t_end - now))
+            .map_err(|e| core_error(e, |theta| now + (theta - theta_start) / omega))?;
         events.extend(self.stepper.events().iter().map(|e| self.engine_event(e, theta_start)));
         let system = self.stepper.system();
         self.impulse_work += self.stepper.events().iter().map(|e| system.impulse_work(e)).sum::<f64>() * self.energy_scale();

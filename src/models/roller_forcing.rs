@@ -310,7 +310,11 @@ mod tests {
         let n = 20000;
         let force = |k: usize| {
             let (fu, fl) = sc.constraint_forces(2.0 * PI * k as f64 / n as f64, lambda, rho);
-            if upper { fu } else { fl }
+            if upper {
+                fu
+            } else {
+                fl
+            }
         };
         (1..=n).filter(|&k| (force(k) > 0.0) != (force(k - 1) > 0.0)).map(|k| 2.0 * PI * k as f64 / n as f64).collect()
     }

@@ -13,15 +13,8 @@ const TILT_LIMIT: f64 = 1.0 / 256.0;
 
 /// Taylor coefficients in x² from the lowest: sin x = x (1 + Σ SIN_k x^(2k+2)) with SIN_k =
 /// (−1)^(k+1) / (2k+3)!, cos x = 1 + Σ COS_k x^(2k+2) with COS_k = (−1)^(k+1) / (2k+2)!.
-const SIN: [f64; 7] = [
-    -1.0 / 6.0,
-    1.0 / 120.0,
-    -1.0 / 5040.0,
-    1.0 / 362_880.0,
-    -1.0 / 39_916_800.0,
-    1.0 / 6_227_020_800.0,
-    -1.0 / 1_307_674_368_000.0,
-];
+const SIN: [f64; 7] =
+    [-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362_880.0, -1.0 / 39_916_800.0, 1.0 / 6_227_020_800.0, -1.0 / 1_307_674_368_000.0];
 const COS: [f64; 8] = [
     -1.0 / 2.0,
     1.0 / 24.0,
@@ -122,7 +115,9 @@ mod tests {
         grid(LIMIT).for_each(check_small);
         let above = LIMIT.next_up();
         let tilt = [TILT_LIMIT, -TILT_LIMIT, TILT_LIMIT.next_up(), -TILT_LIMIT.next_up(), 1e-3, -1e-3];
-        for x in [0.0, -0.0, 1e-300, -1e-300, 5e-324, -5e-324, 1e-8, -1e-8, LIMIT, -LIMIT, above, -above, 1.0, 1e300].into_iter().chain(tilt) {
+        for x in
+            [0.0, -0.0, 1e-300, -1e-300, 5e-324, -5e-324, 1e-8, -1e-8, LIMIT, -LIMIT, above, -above, 1.0, 1e300].into_iter().chain(tilt)
+        {
             check_small(x);
         }
         for x in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {

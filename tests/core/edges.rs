@@ -57,7 +57,8 @@ fn more_events_than_the_budget_within_one_nominal_step_are_an_error_and_a_long_s
     // integrates its parabolas exactly at any step, so the nominal step only sets the window.
     let ball = Ball { mass: 1.0, gravity: G, restitution: 1.0, floor: Floor::Fixed };
     let run = |step: f64| {
-        let mut s = Stepper::new(ball.clone(), 0.0, Vector1::new(1.0), Vector1::zeros(), StepperOptions { step, ..Default::default() }).unwrap();
+        let mut s =
+            Stepper::new(ball.clone(), 0.0, Vector1::new(1.0), Vector1::zeros(), StepperOptions { step, ..Default::default() }).unwrap();
         s.set_event_budget(3);
         s.advance(10.0).map(|()| s.events().len())
     };

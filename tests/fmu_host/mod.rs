@@ -37,7 +37,8 @@ impl Host {
         let (name, guid, resources) = (CString::new("host").unwrap(), CString::new(GUID).unwrap(), CString::new("file:///tmp").unwrap());
         // SAFETY: the instance is this host's, live until `drop`; the other pointers are to live locals.
         unsafe {
-            let c = fmi2Instantiate(name.as_ptr(), FMI2_CO_SIMULATION, guid.as_ptr(), resources.as_ptr(), &*callbacks, FMI2_FALSE, FMI2_FALSE);
+            let c =
+                fmi2Instantiate(name.as_ptr(), FMI2_CO_SIMULATION, guid.as_ptr(), resources.as_ptr(), &*callbacks, FMI2_FALSE, FMI2_FALSE);
             assert!(!c.is_null(), "instantiate");
             ok(fmi2SetupExperiment(c, FMI2_FALSE, 0.0, 0.0, FMI2_FALSE, 0.0), "setup");
             ok(fmi2EnterInitializationMode(c), "enter initialization");

@@ -45,7 +45,16 @@ fn a_logger_calling_back_into_its_instance_is_refused_and_the_instance_carries_o
     };
     let guid = CString::new(GUID).unwrap();
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-    let c = unsafe { functions::instantiate::<Shuttle>(c"logging".as_ptr(), FMI2_CO_SIMULATION, guid.as_ptr(), RESOURCES.as_ptr(), &functions, FMI2_FALSE) };
+    let c = unsafe {
+        functions::instantiate::<Shuttle>(
+            c"logging".as_ptr(),
+            FMI2_CO_SIMULATION,
+            guid.as_ptr(),
+            RESOURCES.as_ptr(),
+            &functions,
+            FMI2_FALSE,
+        )
+    };
     assert!(!c.is_null());
     calling_back.logging.store(c, Ordering::SeqCst);
     calling_back.other.store(other.c, Ordering::SeqCst);

@@ -8,8 +8,8 @@
 #![allow(unsafe_code)]
 
 use super::*;
-use crate::fmi::functions::Component;
 use crate::fmi::exports;
+use crate::fmi::functions::Component;
 use crate::fmi::state_machine::Mode;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
@@ -48,14 +48,7 @@ fn freed_bytes(f: impl FnOnce()) -> usize {
 /// Columns of [`TABLE`]. The standard's stepInProgress, stepFailed and stepCanceled cannot occur:
 /// fmi2DoStep is synchronous and never returns fmi2Pending or fmi2Discard. Its "start and end" column
 /// only allows fmi2Instantiate (and the two instance-free queries).
-const STATES: [Mode; 6] = [
-    Mode::Instantiated,
-    Mode::InitializationMode,
-    Mode::StepComplete,
-    Mode::Terminated,
-    Mode::Error,
-    Mode::Fatal,
-];
+const STATES: [Mode; 6] = [Mode::Instantiated, Mode::InitializationMode, Mode::StepComplete, Mode::Terminated, Mode::Error, Mode::Fatal];
 
 /// The standard's table for these states: `x` = the call is allowed.
 #[rustfmt::skip]
@@ -232,37 +225,22 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
                 }
                 (status, OK)
             }
-            "fmi2GetDirectionalDerivative" => (
-                functions::get_directional_derivative::<E>(c),
-                (Status::Error, Some("providesDirectionalDerivative = false")),
-            ),
-            "fmi2SetRealInputDerivatives" => (
-                functions::set_real_input_derivatives::<E>(c),
-                (Status::Error, Some("canInterpolateInputs = false")),
-            ),
-            "fmi2GetRealOutputDerivatives" => (
-                functions::get_real_output_derivatives::<E>(c),
-                (Status::Error, Some("maxOutputDerivativeOrder = 0")),
-            ),
+            "fmi2GetDirectionalDerivative" => {
+                (functions::get_directional_derivative::<E>(c), (Status::Error, Some("providesDirectionalDerivative = false")))
+            }
+            "fmi2SetRealInputDerivatives" => {
+                (functions::set_real_input_derivatives::<E>(c), (Status::Error, Some("canInterpolateInputs = false")))
+            }
+            "fmi2GetRealOutputDerivatives" => {
+                (functions::get_real_output_derivatives::<E>(c), (Status::Error, Some("maxOutputDerivativeOrder = 0")))
+            }
             "fmi2DoStep" => (host.step(H, H), OK),
             "fmi2CancelStep" => (functions::cancel_step::<E>(c), OK),
             "fmi2GetStatus" => (functions::get_status::<E>(c, FMI2_DO_STEP_STATUS, &mut int[0]), no_value),
-            "fmi2GetRealStatus" => (
-                functions::get_real_status::<E>(c, FMI2_LAST_SUCCESSFUL_TIME, &mut real[0]),
-                OK,
-            ),
-            "fmi2GetIntegerStatus" => (
-                functions::get_integer_status::<E>(c, FMI2_DO_STEP_STATUS, &mut int[0]),
-                no_value,
-            ),
-            "fmi2GetBooleanStatus" => (
-                functions::get_boolean_status::<E>(c, FMI2_TERMINATED, &mut boolean[0]),
-                OK,
-            ),
-            "fmi2GetStringStatus" => (
-                functions::get_string_status::<E>(c, FMI2_PENDING_STATUS, &mut string[0]),
-                no_value,
-            ),
+            "fmi2GetRealStatus" => (functions::get_real_status::<E>(c, FMI2_LAST_SUCCESSFUL_TIME, &mut real[0]), OK),
+            "fmi2GetIntegerStatus" => (functions::get_integer_status::<E>(c, FMI2_DO_STEP_STATUS, &mut int[0]), no_value),
+            "fmi2GetBooleanStatus" => (functions::get_boolean_status::<E>(c, FMI2_TERMINATED, &mut boolean[0]), OK),
+            "fmi2GetStringStatus" => (functions::get_string_status::<E>(c, FMI2_PENDING_STATUS, &mut string[0]), no_value),
             other => panic!("no call for {other}"),
         }
     }
@@ -306,10 +284,7 @@ fn check_table<E: Model>(subject: &Subject<E>) -> usize {
                 // fmi2CancelStep is allowed in no state that can occur: in a live one its refusal says so.
                 let refusal = format!("{function}: not allowed in state {state}");
                 let why = |m: &str| m.contains(&refusal) || (*function == "fmi2CancelStep" && m.contains("never a step in progress"));
-                assert!(
-                    log.len() == 1 && log[0].0 == Status::Error as c_int && why(&log[0].2),
-                    "{cell}"
-                );
+                assert!(log.len() == 1 && log[0].0 == Status::Error as c_int && why(&log[0].2), "{cell}");
                 assert_eq!(snapshot(&host), before, "{cell}: the state changed");
             }
             cells += 1;
