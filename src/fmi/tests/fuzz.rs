@@ -206,7 +206,7 @@ fn fuzz_deserialize(seed: u64, cases: usize) -> (usize, usize) {
                 assert!(!deserialize_checked(&host, &victim, &bytes, &label), "{label}: corrupted envelope accepted");
             }
         } else {
-            // The payload, resealed with a valid envelope: what the codec and the model must withstand.
+            // The payload, resealed with a valid envelope: what postcard and the model must withstand.
             let mut payload = state_bytes::open(base, GUID).unwrap().to_vec();
             let other = state_bytes::open(other, GUID).unwrap();
             for _ in 0..mutations {
