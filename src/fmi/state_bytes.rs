@@ -47,7 +47,7 @@ pub fn decode<T: Serialize + DeserializeOwned>(bytes: &[u8], guid: &str) -> Resu
 /// Magic, format version and GUID.
 fn header(guid: &str) -> Result<Vec<u8>, String> {
     let guid_len = u16::try_from(guid.len()).map_err(|_| "GUID too long".to_string())?;
-    let mut out = Vec::with_capacity(4096);
+    let mut out = Vec::new();
     out.extend_from_slice(MAGIC);
     out.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
     out.extend_from_slice(&guid_len.to_le_bytes());
