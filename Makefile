@@ -28,8 +28,11 @@ venv: $(VENV_STAMP)
 demo: fmu venv
 	$(VENV_PYTHON) -m pistonslap.demo --out out
 
-# The Rust tests, then the fmpy tests against the packaged FMU; fails if either fails.
+# The style gate (rustfmt, clippy with warnings as errors), the Rust tests, then the fmpy tests
+# against the packaged FMU; fails if any fails.
 test: fmu venv
+	cargo fmt --check
+	cargo clippy --all-targets -- -D warnings
 	cargo test --release
 	$(VENV_PYTHON) -m pytest python/tests
 

@@ -10,7 +10,6 @@
 use quick_xml::events::{BytesDecl, BytesText, Event};
 use quick_xml::Writer;
 use serde::Deserialize;
-use std::fmt::Write as _;
 use std::io;
 use std::path::Path;
 
@@ -22,11 +21,18 @@ struct Table {
     #[serde(rename = "DefaultExperiment")]
     experiment: Experiment,
     #[serde(rename = "Units")]
-    units: Units,
+    units: List<Unit>,
     #[serde(rename = "Types")]
-    types: Types,
+    types: List<TypeDef>,
     #[serde(rename = "Variables")]
-    variables: Variables,
+    variables: List<Variable>,
+}
+
+/// An element's children, all of one type.
+#[derive(Deserialize)]
+struct List<T> {
+    #[serde(rename = "$value")]
+    items: Vec<T>,
 }
 
 #[derive(Deserialize)]
@@ -37,12 +43,6 @@ struct Experiment {
     stop: String,
     #[serde(rename = "@stepSize")]
     step: String,
-}
-
-#[derive(Deserialize)]
-struct Units {
-    #[serde(rename = "Unit")]
-    units: Vec<Unit>,
 }
 
 /// A unit with its SI base-unit exponents and display units.
@@ -71,12 +71,6 @@ struct DisplayUnit {
 }
 
 #[derive(Deserialize)]
-struct Types {
-    #[serde(rename = "Type")]
-    types: Vec<TypeDef>,
-}
-
-#[derive(Deserialize)]
 struct TypeDef {
     #[serde(rename = "@name")]
     name: String,
@@ -86,12 +80,6 @@ struct TypeDef {
     unit: String,
     #[serde(rename = "@displayUnit")]
     display_unit: Option<String>,
-}
-
-#[derive(Deserialize)]
-struct Variables {
-    #[serde(rename = "$value")]
-    variables: Vec<Variable>,
 }
 
 #[derive(Deserialize)]
@@ -148,23 +136,19 @@ impl Resolved<'_> {
             _ => "parameters",
         }
     }
-    fn rust_type(&self) -> &'static str {
-        match self.kind {
-            "Real" => "f64",
-            "Integer" => "i32",
-            _ => "String",
-        }
-    }
 }
 
 fn main() {
     println!("cargo:rerun-if-changed={TABLE}");
     println!("cargo:rerun-if-changed=build.rs");
-    // For `packaging::build_sibling`, which builds this crate again for the same target.
-    println!("cargo:rustc-env=PISTONSLAP_TARGET={}", std::env::var("TARGET").expect("TARGET"));
+    // The memcheck test (tests/c_abi.rs) runs where valgrind is installed and is reported ignored elsewhere.
+    println!("cargo::rustc-check-cfg=cfg(valgrind)");
+    println!("cargo:rerun-if-env-changed=PATH");
+    if std::process::Command::new("valgrind").arg("--version").output().is_ok_and(|o| o.status.success()) {
+        println!("cargo:rustc-cfg=valgrind");
+    }
     let source = std::fs::read_to_string(TABLE).expect("read modelDescription/variables.xml");
-    let table: Table =
-        quick_xml::de::from_str(&source).expect("parse modelDescription/variables.xml");
+    let table: Table = quick_xml::de::from_str(&source).expect("parse modelDescription/variables.xml");
     let guid = guid_of(&source);
     let variables = resolve(&table);
     check(&variables);
@@ -173,16 +157,14 @@ fn main() {
     let out = Path::new(&out_dir);
     let xml = model_description(&table, &variables, &guid).expect("write modelDescription.xml");
     std::fs::write(out.join("modelDescription.xml"), xml).expect("write modelDescription.xml");
-    std::fs::write(out.join("variables.rs"), variables_rs(&variables, &guid))
-        .expect("write variables.rs");
-    std::fs::write(out.join("parameter_defaults.rs"), defaults_rs(&variables))
-        .expect("write parameter_defaults.rs");
+    std::fs::write(out.join("variables.rs"), variables_rs(&variables, &guid)).expect("write variables.rs");
+    std::fs::write(out.join("parameter_defaults.rs"), defaults_rs(&variables)).expect("write parameter_defaults.rs");
 }
 
 fn resolve(table: &Table) -> Vec<Resolved<'_>> {
     table
         .variables
-        .variables
+        .items
         .iter()
         .enumerate()
         .map(|(vr, v)| {
@@ -192,18 +174,12 @@ fn resolve(table: &Table) -> Vec<Resolved<'_>> {
                 Variable::String(a) => ("String", a),
             };
             let declared = a.declared_type.as_deref().map(|t| {
-                let def = table.types.types.iter().find(|d| d.name == t);
+                let def = table.types.items.iter().find(|d| d.name == t);
                 def.unwrap_or_else(|| panic!("{}: unknown type {t}", a.name))
             });
             let unit = declared.map(|d| d.unit.as_str());
             let display_unit = declared.and_then(|d| d.display_unit.as_deref());
-            Resolved {
-                kind,
-                a,
-                vr,
-                unit,
-                display_unit,
-            }
+            Resolved { kind, a, vr, unit, display_unit }
         })
         .collect()
 }
@@ -212,19 +188,11 @@ fn resolve(table: &Table) -> Vec<Resolved<'_>> {
 fn check(variables: &[Resolved]) {
     for (i, v) in variables.iter().enumerate() {
         let a = v.a;
-        assert!(
-            variables[..i].iter().all(|w| w.a.name != a.name),
-            "duplicate variable {}",
-            a.name
-        );
+        assert!(variables[..i].iter().all(|w| w.a.name != a.name), "duplicate variable {}", a.name);
         match a.causality.as_str() {
             "input" | "parameter" => assert!(a.start.is_some(), "{} needs a start value", a.name),
             "output" => {
-                assert!(
-                    a.start.is_none(),
-                    "output {} is calculated: no start",
-                    a.name
-                );
+                assert!(a.start.is_none(), "output {} is calculated: no start", a.name);
                 assert!(
                     matches!(a.initial_deps.as_deref(), Some("none" | "knowns")),
                     "output {} needs initialDeps=\"none\" or \"knowns\"",
@@ -234,11 +202,7 @@ fn check(variables: &[Resolved]) {
             other => panic!("{}: causality {other} is not used by PistonSlap", a.name),
         }
         if v.kind == "String" {
-            assert!(
-                a.causality == "parameter",
-                "String {} must be a parameter",
-                a.name
-            );
+            assert!(a.causality == "parameter", "String {} must be a parameter", a.name);
         }
     }
 }
@@ -246,429 +210,223 @@ fn check(variables: &[Resolved]) {
 /// A stable GUID derived from the table, so that any change of the variables changes it.
 fn guid_of(source: &str) -> String {
     let seed = format!("{}\n{}", env!("CARGO_PKG_VERSION"), source);
-    let hash = |basis: u64| {
-        seed.bytes().fold(basis, |h, b| {
-            (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3)
-        })
-    };
+    let hash = |basis: u64| seed.bytes().fold(basis, |h, b| (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3));
     let (a, b) = (hash(0xcbf2_9ce4_8422_2325), hash(0x6c62_272e_07bb_0142));
-    format!(
-        "{{{:08x}-{:04x}-{:04x}-{:04x}-{:012x}}}",
-        a >> 32,
-        (a >> 16) & 0xffff,
-        a & 0xffff,
-        b >> 48,
-        b & 0xffff_ffff_ffff
-    )
+    format!("{{{:08x}-{:04x}-{:04x}-{:04x}-{:012x}}}", a >> 32, (a >> 16) & 0xffff, a & 0xffff, b >> 48, b & 0xffff_ffff_ffff)
+}
+
+type Xml = Writer<Vec<u8>>;
+
+/// `<name attributes/>`.
+fn empty<'a>(w: &mut Xml, name: &str, attributes: impl IntoIterator<Item = (&'a str, &'a str)>) -> io::Result<()> {
+    w.create_element(name).with_attributes(attributes).write_empty()?;
+    Ok(())
+}
+
+/// `<name attributes>inner</name>`.
+fn parent<'a>(
+    w: &mut Xml,
+    name: &str,
+    attributes: impl IntoIterator<Item = (&'a str, &'a str)>,
+    inner: impl FnOnce(&mut Xml) -> io::Result<()>,
+) -> io::Result<()> {
+    w.create_element(name).with_attributes(attributes).write_inner_content(inner)?;
+    Ok(())
 }
 
 fn model_description(table: &Table, variables: &[Resolved], guid: &str) -> io::Result<Vec<u8>> {
     let mut w = Writer::new_with_indent(Vec::new(), b' ', 2);
     w.write_event(Event::Decl(BytesDecl::new("1.0", Some("UTF-8"), None)))?;
-    let number_of_variables = variables.len().to_string();
-    w.create_element("fmiModelDescription")
-        .with_attributes([
-            ("fmiVersion", "2.0"),
-            ("modelName", MODEL_NAME),
-            ("guid", guid),
-            (
-                "description",
-                "Piston secondary motion (piston slap): crank, connecting rod and piston with clearance, \
-                 impacts and sliding of the piston corners on the liner",
-            ),
-            ("version", env!("CARGO_PKG_VERSION")),
-            ("license", "MIT"),
-            ("generationTool", "PistonSlap build.rs"),
-            ("variableNamingConvention", "flat"),
-            ("numberOfEventIndicators", "0"),
-        ])
-        .write_inner_content(|w| {
-            w.write_event(Event::Comment(BytesText::new(&format!(
-                " generated from modelDescription/variables.xml: {number_of_variables} variables "
-            ))))?;
-            w.create_element("CoSimulation")
-                .with_attributes([
-                    ("modelIdentifier", MODEL_NAME),
-                    ("needsExecutionTool", "false"),
-                    ("canHandleVariableCommunicationStepSize", "true"),
-                    ("canInterpolateInputs", "false"),
-                    ("maxOutputDerivativeOrder", "0"),
-                    ("canRunAsynchronuously", "false"),
-                    ("canBeInstantiatedOnlyOncePerProcess", "false"),
-                    ("canNotUseMemoryManagementFunctions", "true"),
-                    ("canGetAndSetFMUstate", "true"),
-                    ("canSerializeFMUstate", "true"),
-                    ("providesDirectionalDerivative", "false"),
-                ])
-                .write_empty()?;
-            write_units(w, table)?;
-            write_types(w, table)?;
-            w.create_element("LogCategories").write_inner_content(|w| {
-                for (name, description) in LOG_CATEGORIES {
-                    w.create_element("Category")
-                        .with_attributes([("name", name), ("description", description)])
-                        .write_empty()?;
-                }
-                Ok(())
-            })?;
-            let e = &table.experiment;
-            w.create_element("DefaultExperiment")
-                .with_attributes([
-                    ("startTime", e.start.as_str()),
-                    ("stopTime", e.stop.as_str()),
-                    ("stepSize", e.step.as_str()),
-                ])
-                .write_empty()?;
-            write_variables(w, variables)?;
-            write_structure(w, variables)
+    let description = "Piston secondary motion (piston slap): crank, connecting rod and piston with clearance, \
+                       impacts and sliding of the piston corners on the liner";
+    let root = [
+        ("fmiVersion", "2.0"),
+        ("modelName", MODEL_NAME),
+        ("guid", guid),
+        ("description", description),
+        ("version", env!("CARGO_PKG_VERSION")),
+        ("license", "MIT"),
+        ("generationTool", "PistonSlap build.rs"),
+        ("variableNamingConvention", "flat"),
+        ("numberOfEventIndicators", "0"),
+    ];
+    parent(&mut w, "fmiModelDescription", root, |w| {
+        let comment = format!(" generated from modelDescription/variables.xml: {} variables ", variables.len());
+        w.write_event(Event::Comment(BytesText::new(&comment)))?;
+        let capabilities = [
+            ("modelIdentifier", MODEL_NAME),
+            ("needsExecutionTool", "false"),
+            ("canHandleVariableCommunicationStepSize", "true"),
+            ("canInterpolateInputs", "false"),
+            ("maxOutputDerivativeOrder", "0"),
+            ("canRunAsynchronuously", "false"),
+            ("canBeInstantiatedOnlyOncePerProcess", "false"),
+            ("canNotUseMemoryManagementFunctions", "true"),
+            ("canGetAndSetFMUstate", "true"),
+            ("canSerializeFMUstate", "true"),
+            ("providesDirectionalDerivative", "false"),
+        ];
+        empty(w, "CoSimulation", capabilities)?;
+        write_units_and_types(w, table)?;
+        parent(w, "LogCategories", [], |w| {
+            LOG_CATEGORIES.iter().try_for_each(|&(name, description)| empty(w, "Category", [("name", name), ("description", description)]))
         })?;
+        let e = &table.experiment;
+        empty(w, "DefaultExperiment", [("startTime", e.start.as_str()), ("stopTime", e.stop.as_str()), ("stepSize", e.step.as_str())])?;
+        write_variables(w, variables)?;
+        write_structure(w, variables)
+    })?;
     let mut xml = w.into_inner();
     xml.push(b'\n');
     Ok(xml)
 }
 
 /// Log categories: (name, description). The FMI layer accepts exactly these in fmi2SetDebugLogging.
-const LOG_CATEGORIES: [(&str, &str); 4] = [
-    (
-        "logStatusError",
-        "Errors: refused calls, bad parameters, failed steps",
-    ),
-    (
-        "logStatusFatal",
-        "Fatal errors: a caught panic; the instance must be freed",
-    ),
-    (
-        "logEvents",
-        "Debug: impacts and sliding starts/releases during doStep",
-    ),
-    (
-        "logBuild",
-        "Debug: at fmi2Instantiate, which build of the binary runs the instance (x86-64 or x86-64-v3) and why",
-    ),
+const LOG_CATEGORIES: [(&str, &str); 3] = [
+    ("logStatusError", "Errors: refused calls, bad parameters, failed steps"),
+    ("logStatusFatal", "Fatal errors: a caught panic; the instance must be freed"),
+    ("logEvents", "Debug: impacts and sliding starts/releases during doStep"),
 ];
 
-fn write_units(w: &mut Writer<Vec<u8>>, table: &Table) -> io::Result<()> {
-    w.create_element("UnitDefinitions")
-        .write_inner_content(|w| {
-            for u in &table.units.units {
-                w.create_element("Unit")
-                    .with_attribute(("name", u.name.as_str()))
-                    .write_inner_content(|w| {
-                        let exponents = [("kg", &u.kg), ("m", &u.m), ("s", &u.s), ("rad", &u.rad)];
-                        let present = present(&exponents);
-                        w.create_element("BaseUnit")
-                            .with_attributes(present)
-                            .write_empty()?;
-                        for d in &u.display {
-                            w.create_element("DisplayUnit")
-                                .with_attributes([
-                                    ("name", d.name.as_str()),
-                                    ("factor", d.factor.as_str()),
-                                ])
-                                .write_empty()?;
-                        }
-                        Ok(())
-                    })?;
-            }
-            Ok(())
-        })?;
-    Ok(())
+fn write_units_and_types(w: &mut Xml, table: &Table) -> io::Result<()> {
+    parent(w, "UnitDefinitions", [], |w| {
+        table.units.items.iter().try_for_each(|u| {
+            parent(w, "Unit", [("name", u.name.as_str())], |w| {
+                empty(w, "BaseUnit", present(&[("kg", &u.kg), ("m", &u.m), ("s", &u.s), ("rad", &u.rad)]))?;
+                u.display.iter().try_for_each(|d| empty(w, "DisplayUnit", [("name", d.name.as_str()), ("factor", d.factor.as_str())]))
+            })
+        })
+    })?;
+    parent(w, "TypeDefinitions", [], |w| {
+        table.types.items.iter().try_for_each(|t| {
+            parent(w, "SimpleType", [("name", t.name.as_str())], |w| {
+                let display_unit = t.display_unit.as_deref().map(|d| ("displayUnit", d));
+                empty(w, "Real", [("quantity", t.quantity.as_str()), ("unit", t.unit.as_str())].into_iter().chain(display_unit))
+            })
+        })
+    })
 }
 
-fn write_types(w: &mut Writer<Vec<u8>>, table: &Table) -> io::Result<()> {
-    w.create_element("TypeDefinitions")
-        .write_inner_content(|w| {
-            for t in &table.types.types {
-                w.create_element("SimpleType")
-                    .with_attribute(("name", t.name.as_str()))
-                    .write_inner_content(|w| {
-                        let mut real = w.create_element("Real").with_attributes([
-                            ("quantity", t.quantity.as_str()),
-                            ("unit", t.unit.as_str()),
-                        ]);
-                        if let Some(d) = &t.display_unit {
-                            real = real.with_attribute(("displayUnit", d.as_str()));
-                        }
-                        real.write_empty()?;
-                        Ok(())
-                    })?;
-            }
-            Ok(())
-        })?;
-    Ok(())
-}
-
-fn write_variables(w: &mut Writer<Vec<u8>>, variables: &[Resolved]) -> io::Result<()> {
-    w.create_element("ModelVariables")
-        .write_inner_content(|w| {
-            for v in variables {
-                let a = v.a;
-                let vr = v.vr.to_string();
-                let mut sv = w.create_element("ScalarVariable").with_attributes([
-                    ("name", a.name.as_str()),
-                    ("valueReference", vr.as_str()),
-                    ("description", a.description.as_str()),
-                    ("causality", a.causality.as_str()),
-                    ("variability", v.variability()),
-                ]);
-                if a.causality == "parameter" {
-                    sv = sv.with_attribute(("initial", "exact"));
-                }
-                sv.write_inner_content(|w| {
-                    // unit and displayUnit repeat the declared type's: hosts that do not resolve
-                    // declaredType (fmpy's ModelVariable.unit) still see them.
-                    let unit = v.unit.map(str::to_string);
-                    let display_unit = v.display_unit.map(str::to_string);
-                    let optional = [
-                        ("declaredType", &a.declared_type),
-                        ("unit", &unit),
-                        ("displayUnit", &display_unit),
-                        ("start", &a.start),
-                        ("min", &a.min),
-                        ("max", &a.max),
-                    ];
-                    let present = present(&optional);
-                    w.create_element(v.kind)
-                        .with_attributes(present)
-                        .write_empty()?;
-                    Ok(())
-                })?;
-            }
-            Ok(())
-        })?;
-    Ok(())
+fn write_variables(w: &mut Xml, variables: &[Resolved]) -> io::Result<()> {
+    parent(w, "ModelVariables", [], |w| {
+        variables.iter().try_for_each(|v| {
+            let (a, vr) = (v.a, v.vr.to_string());
+            let initial = (a.causality == "parameter").then_some(("initial", "exact"));
+            let attributes = [
+                ("name", a.name.as_str()),
+                ("valueReference", vr.as_str()),
+                ("description", a.description.as_str()),
+                ("causality", a.causality.as_str()),
+                ("variability", v.variability()),
+            ];
+            parent(w, "ScalarVariable", attributes.into_iter().chain(initial), |w| {
+                // unit and displayUnit repeat the declared type's: hosts that do not resolve
+                // declaredType (fmpy's ModelVariable.unit) still see them.
+                let (unit, display_unit) = (v.unit.map(str::to_string), v.display_unit.map(str::to_string));
+                let optional = [
+                    ("declaredType", &a.declared_type),
+                    ("unit", &unit),
+                    ("displayUnit", &display_unit),
+                    ("start", &a.start),
+                    ("min", &a.min),
+                    ("max", &a.max),
+                ];
+                empty(w, v.kind, present(&optional))
+            })
+        })
+    })
 }
 
 /// Outputs are computed at the end of each doStep from the state: no direct feedthrough from the inputs
 /// (dependencies=""). Initially the impact statistics are constants, the kinematics and forces depend on
 /// the inputs and the parameters (except the log file name).
-fn write_structure(w: &mut Writer<Vec<u8>>, variables: &[Resolved]) -> io::Result<()> {
-    let outputs: Vec<&Resolved> = variables
-        .iter()
-        .filter(|v| v.a.causality == "output")
-        .collect();
+fn write_structure(w: &mut Xml, variables: &[Resolved]) -> io::Result<()> {
+    let outputs: Vec<&Resolved> = variables.iter().filter(|v| v.a.causality == "output").collect();
     let knowns: Vec<String> = variables
         .iter()
         .filter(|v| matches!(v.a.causality.as_str(), "input" | "parameter") && v.kind != "String")
         .map(|v| (v.vr + 1).to_string())
         .collect();
     let knowns = knowns.join(" ");
-    w.create_element("ModelStructure")
-        .write_inner_content(|w| {
-            w.create_element("Outputs").write_inner_content(|w| {
-                for v in &outputs {
-                    let index = (v.vr + 1).to_string();
-                    w.create_element("Unknown")
-                        .with_attributes([("index", index.as_str()), ("dependencies", "")])
-                        .write_empty()?;
-                }
-                Ok(())
-            })?;
-            w.create_element("InitialUnknowns")
-                .write_inner_content(|w| {
-                    for v in &outputs {
-                        let index = (v.vr + 1).to_string();
-                        let deps = if v.a.initial_deps.as_deref() == Some("knowns") {
-                            knowns.as_str()
-                        } else {
-                            ""
-                        };
-                        w.create_element("Unknown")
-                            .with_attributes([("index", index.as_str()), ("dependencies", deps)])
-                            .write_empty()?;
-                    }
-                    Ok(())
-                })?;
-            Ok(())
-        })?;
-    Ok(())
+    // Initially, outputs marked initialDeps="knowns" depend on every input and parameter.
+    let unknowns = |w: &mut Xml, name: &str, initial: bool| {
+        parent(w, name, [], |w| {
+            outputs.iter().try_for_each(|v| {
+                let deps = if initial && v.a.initial_deps.as_deref() == Some("knowns") { knowns.as_str() } else { "" };
+                empty(w, "Unknown", [("index", (v.vr + 1).to_string().as_str()), ("dependencies", deps)])
+            })
+        })
+    };
+    parent(w, "ModelStructure", [], |w| {
+        unknowns(w, "Outputs", false)?;
+        unknowns(w, "InitialUnknowns", true)
+    })
 }
 
-/// The dispatch functions and the table, as Rust source.
+/// The table as Rust source: the GUID, the log categories, `VARIABLES`, and per kind the lists of
+/// (value reference => field) per owner, from which `dispatch!` (src/fmi/description.rs) writes the
+/// match arms of the getters and setters.
 fn variables_rs(variables: &[Resolved], guid: &str) -> String {
-    let mut s = String::new();
-    writeln!(
-        s,
-        "/// Fingerprint of the variable table, also in modelDescription.xml."
-    )
-    .unwrap();
-    writeln!(s, "pub const GUID: &str = {guid:?};").unwrap();
-    writeln!(s, "/// Log categories accepted by fmi2SetDebugLogging.").unwrap();
     let names: Vec<&str> = LOG_CATEGORIES.iter().map(|(n, _)| *n).collect();
-    writeln!(
-        s,
-        "pub const LOG_CATEGORIES: [&str; {}] = {names:?};",
-        names.len()
-    )
-    .unwrap();
-    writeln!(s, "/// Every variable, indexed by value reference.").unwrap();
-    writeln!(
-        s,
-        "pub static VARIABLES: [Variable; {}] = [",
-        variables.len()
-    )
-    .unwrap();
+    let mut s = format!("/// Fingerprint of the variable table, also in modelDescription.xml.\npub const GUID: &str = {guid:?};\n");
+    s += &format!("/// Log categories accepted by fmi2SetDebugLogging.\npub const LOG_CATEGORIES: [&str; {}] = {names:?};\n", names.len());
+    s += &format!("/// Every variable, indexed by value reference.\npub static VARIABLES: [Variable; {}] = [\n", variables.len());
     for v in variables {
-        let a = v.a;
-        writeln!(
-            s,
-            "    Variable {{ name: {:?}, kind: Kind::{}, causality: Causality::{}, unit: {:?}, start: {:?}, \
-             description: {:?} }},",
-            a.name,
-            v.kind,
-            capitalize(&a.causality),
-            v.unit.unwrap_or(""),
-            a.start.as_deref().unwrap_or(""),
-            a.description
-        )
-        .unwrap();
+        let (a, causality) = (v.a, capitalize(&v.a.causality));
+        let (unit, start, description) = (v.unit.unwrap_or(""), a.start.as_deref().unwrap_or(""), &a.description);
+        s += &format!("    Variable {{ name: {:?}, kind: Kind::{}, causality: Causality::{causality}, ", a.name, v.kind);
+        s += &format!("unit: {unit:?}, start: {start:?}, description: {description:?} }},\n");
     }
-    writeln!(s, "];").unwrap();
-
-    for (kind, rust, get_ty, get_expr) in [
-        ("Real", "real", "f64", ""),
-        ("Integer", "integer", "i32", ""),
-        ("String", "string", "&'a str", ".as_str()"),
-    ] {
-        let of_kind: Vec<&Resolved> = variables.iter().filter(|v| v.kind == kind).collect();
-        let used = |owner: &str| of_kind.iter().any(|v| v.owner() == owner);
-        let arg = |owner: &str| {
-            if used(owner) {
-                owner.to_string()
-            } else {
-                format!("_{owner}")
-            }
+    s += "];\ndispatch! {\n";
+    for (kind, functions) in
+        [("Real", "get_real real_mut f64"), ("Integer", "get_integer integer_mut i32"), ("String", "get_string string_mut String")]
+    {
+        let fields = |owner: &str| {
+            let of: Vec<String> =
+                variables.iter().filter(|v| v.kind == kind && v.owner() == owner).map(|v| format!("{} => {}", v.vr, v.a.name)).collect();
+            of.join(", ")
         };
-        let field_ty = of_kind.first().map(|v| v.rust_type()).unwrap_or("f64");
-        writeln!(
-            s,
-            "/// The {kind} variable `vr`, or None if `vr` is not one."
-        )
-        .unwrap();
-        writeln!(
-            s,
-            "pub(crate) fn get_{rust}<'a>(vr: u32, {}: &'a Parameters, {}: &'a Inputs, {}: &'a Outputs) -> \
-             Option<{get_ty}> {{\n    match vr {{",
-            arg("parameters"),
-            arg("inputs"),
-            arg("outputs")
-        )
-        .unwrap();
-        for v in &of_kind {
-            writeln!(
-                s,
-                "        {} => Some({}.{}{get_expr}),",
-                v.vr,
-                v.owner(),
-                v.a.name
-            )
-            .unwrap();
-        }
-        writeln!(s, "        _ => None,\n    }}\n}}").unwrap();
-        writeln!(
-            s,
-            "/// The settable (input or parameter) {kind} variable `vr`, or None."
-        )
-        .unwrap();
-        writeln!(
-            s,
-            "pub(crate) fn {rust}_mut<'a>(vr: u32, {}: &'a mut Parameters, {}: &'a mut Inputs) -> \
-             Option<&'a mut {field_ty}> {{\n    match vr {{",
-            arg("parameters"),
-            arg("inputs")
-        )
-        .unwrap();
-        for v in of_kind.iter().filter(|v| v.owner() != "outputs") {
-            writeln!(
-                s,
-                "        {} => Some(&mut {}.{}),",
-                v.vr,
-                v.owner(),
-                v.a.name
-            )
-            .unwrap();
-        }
-        writeln!(s, "        _ => None,\n    }}\n}}").unwrap();
+        let (p, i, o) = (fields("parameters"), fields("inputs"), fields("outputs"));
+        s += &format!("    {functions}: parameters [{p}] inputs [{i}] outputs [{o}];\n");
     }
-    s
+    s + "}\n"
 }
 
 /// `Default` for `Parameters` and `Inputs` from the start values, and the range checks of `Parameters`.
 fn defaults_rs(variables: &[Resolved]) -> String {
+    let literal = |kind: &str, text: &str| match kind {
+        "Real" => format!("{:?}_f64", text.parse::<f64>().expect("Real number")),
+        "Integer" => format!("{}_i32", text.parse::<i32>().expect("Integer number")),
+        _ => format!("String::from({text:?})"),
+    };
     let mut s = String::new();
     for (owner, ty) in [("parameters", "Parameters"), ("inputs", "Inputs")] {
-        writeln!(
-            s,
-            "impl Default for {ty} {{\n    fn default() -> Self {{\n        Self {{"
-        )
-        .unwrap();
+        s += &format!("impl Default for {ty} {{\n    fn default() -> Self {{\n        Self {{\n");
         for v in variables.iter().filter(|v| v.owner() == owner) {
-            let start = v.a.start.as_deref().unwrap_or_default();
-            let value = match v.kind {
-                "Real" => format!("{:?}_f64", start.parse::<f64>().expect("Real start")),
-                "Integer" => format!("{}_i32", start.parse::<i32>().expect("Integer start")),
-                _ => format!("String::from({start:?})"),
-            };
-            writeln!(s, "            {}: {value},", v.a.name).unwrap();
+            s += &format!("            {}: {},\n", v.a.name, literal(v.kind, v.a.start.as_deref().unwrap_or_default()));
         }
-        writeln!(s, "        }}\n    }}\n}}").unwrap();
+        s += "        }\n    }\n}\n";
     }
-    writeln!(s, "impl Parameters {{").unwrap();
-    writeln!(s, "    /// Every Real parameter finite and within the table's min/max (and > 0 where marked positive);").unwrap();
-    writeln!(s, "    /// every Integer parameter within its min/max.").unwrap();
-    writeln!(s, "    fn check_ranges(&self) -> Result<(), ModelError> {{").unwrap();
-    for v in variables.iter().filter(|v| v.owner() == "parameters") {
-        let a = v.a;
-        let bound = |b: &Option<String>, parse: &dyn Fn(&str) -> String| {
-            b.as_deref()
-                .map_or("None".to_string(), |b| format!("Some({})", parse(b)))
+    s += "impl Parameters {\n    /// Every Real parameter finite and within the table's min/max (and > 0 where marked positive);\n";
+    s += "    /// every Integer parameter within its min/max.\n    fn check_ranges(&self) -> Result<(), ModelError> {\n";
+    for v in variables.iter().filter(|v| v.owner() == "parameters" && v.kind != "String") {
+        let (name, unit, positive) = (&v.a.name, v.unit.unwrap_or(""), v.a.positive);
+        let bound = |b: &Option<String>| b.as_deref().map_or("None".to_string(), |b| format!("Some({})", literal(v.kind, b)));
+        let (min, max) = (bound(&v.a.min), bound(&v.a.max));
+        s += &match v.kind {
+            "Real" => format!("        check_real({name:?}, self.{name}, {min}, {max}, {positive}, {unit:?})?;\n"),
+            _ => format!("        check_integer({name:?}, self.{name}, {min}, {max})?;\n"),
         };
-        match v.kind {
-            "Real" => {
-                let f = |b: &str| format!("{:?}", b.parse::<f64>().expect("Real bound"));
-                writeln!(
-                    s,
-                    "        check_real({:?}, self.{}, {}, {}, {}, {:?})?;",
-                    a.name,
-                    a.name,
-                    bound(&a.min, &f),
-                    bound(&a.max, &f),
-                    a.positive,
-                    v.unit.unwrap_or("")
-                )
-                .unwrap();
-            }
-            "Integer" => {
-                let i = |b: &str| b.parse::<i32>().expect("Integer bound").to_string();
-                writeln!(
-                    s,
-                    "        check_integer({:?}, self.{}, {}, {})?;",
-                    a.name,
-                    a.name,
-                    bound(&a.min, &i),
-                    bound(&a.max, &i)
-                )
-                .unwrap();
-            }
-            _ => {}
-        }
     }
-    writeln!(s, "        Ok(())\n    }}\n}}").unwrap();
-    s
+    s + "        Ok(())\n    }\n}\n"
 }
 
 /// The attributes of `pairs` that have a value.
-fn present<'a>(
-    pairs: &'a [(&'a str, &'a Option<String>)],
-) -> impl Iterator<Item = (&'a str, &'a str)> {
-    pairs
-        .iter()
-        .filter_map(|(k, v)| v.as_deref().map(|v| (*k, v)))
+fn present<'a>(pairs: &'a [(&'a str, &'a Option<String>)]) -> impl Iterator<Item = (&'a str, &'a str)> {
+    pairs.iter().filter_map(|(k, v)| v.as_deref().map(|v| (*k, v)))
 }
 
 fn capitalize(word: &str) -> String {
     let mut chars = word.chars();
-    chars
-        .next()
-        .map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
+    chars.next().map_or_else(String::new, |c| c.to_uppercase().chain(chars).collect())
 }

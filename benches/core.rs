@@ -37,12 +37,7 @@ fn run<S: System<N, M> + Clone, const N: usize, const M: usize>(
     }
     times.sort();
     let s = last.expect("RUNS > 0");
-    Outcome {
-        time: times[RUNS / 2],
-        steps: t_end / step,
-        events: s.events().len(),
-        evaluations: s.system().evaluations.get(),
-    }
+    Outcome { time: times[RUNS / 2], steps: t_end / step, events: s.events().len(), evaluations: s.system().evaluations.get() }
 }
 
 fn report(name: &str, o: &Outcome) {

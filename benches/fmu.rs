@@ -4,15 +4,10 @@
 //! thesis study's wall time; the cost of one RK4 step against its floating-point work (counted
 //! under callgrind, `fmu/flop_count.rs`), and the bound that cost and the default case's count of
 //! steps set on its real-time factor.
-//! Each figure is the median of several runs. The FMU's figures are given for both of its builds
-//! (see `fmi::sibling`): the portable one, compiled into this benchmark, and the x86-64-v3 one,
-//! built and loaded as the FMU loads it, runs of the two alternating.
+//! Each figure is the median of several runs.
 
 use pistonslap::dynamics::StepperOptions;
-use pistonslap::fmi::exports::Functions;
-use pistonslap::fmi::sibling;
 use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters};
-use pistonslap::packaging::build_sibling;
 use std::time::Instant;
 
 #[path = "fmu/flop_count.rs"]
@@ -42,38 +37,11 @@ fn median(mut x: Vec<f64>) -> f64 {
     x[x.len() / 2]
 }
 
-/// The builds measured: name and functions.
-type Builds = Vec<(&'static str, Functions)>;
-
-/// This build, and the x86-64-v3 one where this CPU can run it.
-fn builds() -> Builds {
-    let mut builds = vec![("portable x86-64", Functions::NATIVE)];
-    // The benchmark runs from <target>/release/deps.
-    let exe = std::env::current_exe().expect("executable path");
-    let target = exe.ancestors().nth(3).expect("target directory");
-    let wide = match sibling::missing_cpu_feature() {
-        Some(feature) => Err(format!("this CPU lacks {feature}")),
-        // SAFETY: the CPU has the features the library is built for.
-        None => build_sibling(target).and_then(|library| unsafe { sibling::open(&library) }),
-    };
-    match wide {
-        Ok(functions) => builds.push(("x86-64-v3", functions)),
-        Err(why) => println!("x86-64-v3 build not measured: {why}"),
-    }
-    builds
-}
-
-/// Per build, the median real-time factor of `stop` simulated seconds in steps of `h` (a fresh
-/// instance per run), printed after `what`.
-fn real_time_factors(builds: &Builds, what: &str, integers: &[(&str, i32)], reals: &[(&str, f64)], stop: f64, h: f64) {
-    let mut factors = vec![Vec::new(); builds.len()];
-    for _ in 0..RUNS {
-        for (factor, &(_, f)) in factors.iter_mut().zip(builds) {
-            factor.push(stop / run(&Host::on(f, integers, reals), stop, h));
-        }
-    }
-    let shown: Vec<String> = factors.into_iter().zip(builds).map(|(x, (name, _))| format!("{:6.1}× ({name})", median(x))).collect();
-    println!("{what}: {} real time", shown.join(", "));
+/// The median real-time factor of `stop` simulated seconds in steps of `h` (a fresh instance per
+/// run), printed after `what`.
+fn real_time_factor(what: &str, integers: &[(&str, i32)], reals: &[(&str, f64)], stop: f64, h: f64) {
+    let factors = (0..RUNS).map(|_| stop / run(&Host::new(integers, reals), stop, h)).collect();
+    println!("{what}: {:6.1}× real time", median(factors));
 }
 
 /// The argument that makes this executable only take plain steps (the flop count's child run).
@@ -87,13 +55,12 @@ fn main() {
     }
     let cycle = 4.0 * std::f64::consts::PI / 125.66;
     println!("machine: {}", machine());
-    let builds = builds();
     for h in [1e-3, 1e-2] {
         let what = format!("crank train, default case (1200 rpm, built-in pressure, e = 0.5), 10 cycles, step {:>2} ms", h * 1e3);
-        real_time_factors(&builds, &what, &[], &[], 10.0 * cycle, h);
+        real_time_factor(&what, &[], &[], 10.0 * cycle, h);
     }
     let what = "roller variant, default parameters (1200 rpm), 10 cycles, step  1 ms";
-    real_time_factors(&builds, what, &[("model_variant", 2)], &[], 10.0 * cycle, 1e-3);
+    real_time_factor(what, &[("model_variant", 2)], &[], 10.0 * cycle, 1e-3);
 
     // Without contact (a wide bore) and with a fixed step (the FMU's is adaptive, its count not
     // seen from outside) every step is a plain RK4 step: wall time per step, through the model.
@@ -103,7 +70,7 @@ fn main() {
         Ok((instructions, flops)) => {
             let limit = flops / (2.0 * ghz * 1e9);
             println!(
-                "crank train, one fixed RK4 step without contact (portable build): {:.2} µs, {instructions:.0} instructions, {flops:.0} flops \
+                "crank train, one fixed RK4 step without contact: {:.2} µs, {instructions:.0} instructions, {flops:.0} flops \
                  (counted by callgrind: at 2 flops per cycle and {ghz:.1} GHz {:.2} µs), {:.1}× that limit",
                 plain * 1e6,
                 limit * 1e6,
@@ -112,12 +79,12 @@ fn main() {
             Some(limit)
         }
         Err(why) => {
-            println!("crank train, one fixed RK4 step without contact (portable build): {:.2} µs (flops not counted: {why})", plain * 1e6);
+            println!("crank train, one fixed RK4 step without contact: {:.2} µs (flops not counted: {why})", plain * 1e6);
             None
         }
     };
     least_work(cycle, plain, limit);
-    thesis_study(&builds);
+    thesis_study();
 }
 
 /// Wall time of `steps` fixed 1e-4 s RK4 steps of the default crank train in a wide bore, where
@@ -175,20 +142,20 @@ fn plain_step_work() -> Result<(f64, f64), String> {
 /// Nominal clock of the machine, GHz: half its BogoMIPS (what the kernel calibrates its delay
 /// loop to, two per cycle on x86), or 2.3 where /proc/cpuinfo does not tell.
 fn ghz() -> f64 {
-    let bogomips = std::fs::read_to_string("/proc/cpuinfo")
-        .ok()
-        .and_then(|s| s.lines().find(|l| l.to_lowercase().starts_with("bogomips")).and_then(|l| l.split(':').nth(1)?.trim().parse::<f64>().ok()));
+    let bogomips = std::fs::read_to_string("/proc/cpuinfo").ok().and_then(|s| {
+        s.lines().find(|l| l.to_lowercase().starts_with("bogomips")).and_then(|l| l.split(':').nth(1)?.trim().parse::<f64>().ok())
+    });
     bogomips.map_or(2.3, |b| b / 2000.0)
 }
 
 /// The thesis study: THESIS_RUNS' 18 (λ, ρ) cases at e = 0.9 (python/pistonslap/analysis.py),
 /// thesis units (l = 1, M = 1, Ω = 1, roller_forcing = 1). To keep the bench short each case runs
 /// 1/10 of its 1530 crank cycles and the total is scaled by 10 (one run, not a median).
-fn thesis_study(builds: &Builds) {
+fn thesis_study() {
     let (xi, alpha, beta, diameter) = (0.3030, 1.9, 0.4719, 0.08);
     let fraction = 10.0;
     let stop = 1530.0 * 2.0 * std::f64::consts::PI / fraction;
-    let mut wall = vec![0.0; builds.len()];
+    let mut wall = 0.0;
     for lam in [0.025, 0.05, 0.075, 0.15, 0.20, 0.25] {
         for rho in [0.010, 0.015, 0.020] {
             let reals = [
@@ -203,14 +170,14 @@ fn thesis_study(builds: &Builds) {
                 ("restitution", 0.9),
                 ("crank_speed", 1.0),
             ];
-            for (wall, &(_, f)) in wall.iter_mut().zip(builds) {
-                let host = Host::on(f, &[("model_variant", 2), ("roller_forcing", 1)], &reals);
-                *wall += run(&host, stop, 2.0 * std::f64::consts::PI);
-            }
+            let host = Host::new(&[("model_variant", 2), ("roller_forcing", 1)], &reals);
+            wall += run(&host, stop, 2.0 * std::f64::consts::PI);
         }
     }
-    let shown: Vec<String> = wall.iter().zip(builds).map(|(w, (name, _))| format!("{:.1} s ({name})", w * fraction)).collect();
-    println!("thesis study (18 cases × 1530 crank cycles, one per communication step): {} wall (measured on 153 cycles each, ×10)", shown.join(", "));
+    println!(
+        "thesis study (18 cases × 1530 crank cycles, one per communication step): {:.1} s wall (measured on 153 cycles each, ×10)",
+        wall * fraction
+    );
 }
 
 fn machine() -> String {
@@ -219,5 +186,9 @@ fn machine() -> String {
         .and_then(|s| s.lines().find(|l| l.starts_with("model name")).map(|l| l.split(':').nth(1).unwrap_or("").trim().to_string()))
         .unwrap_or_else(|| "unknown CPU".into());
     let load = std::fs::read_to_string("/proc/loadavg").unwrap_or_default();
-    format!("{cpu}, {} logical CPUs, load average {}", std::thread::available_parallelism().map_or(0, |n| n.get()), load.split_whitespace().next().unwrap_or("?"))
+    format!(
+        "{cpu}, {} logical CPUs, load average {}",
+        std::thread::available_parallelism().map_or(0, |n| n.get()),
+        load.split_whitespace().next().unwrap_or("?")
+    )
 }

@@ -4,18 +4,18 @@
 //!   roller_forces regions FORCING RHO_MAX LAMBDA_MAX N    rho,lambda,region on an N×N grid (Fig 2.10)
 //! FORCING is the FMU's roller_forcing: 1 = f(τ) as printed, 2 = corrected.
 
-use pistonslap::models::{Forcing, SlidingRegion, SliderCrank};
+use pistonslap::models::{Forcing, RollerMechanism, SlidingRegion};
 use std::f64::consts::PI;
 use std::process::ExitCode;
 
 /// ξ, α, β of the thesis's Ford engine (section 4.1).
-fn thesis_mechanism(forcing: &str) -> Result<SliderCrank, String> {
+fn thesis_mechanism(forcing: &str) -> Result<RollerMechanism, String> {
     let forcing = match forcing {
         "1" => Forcing::Printed,
         "2" => Forcing::Corrected,
         other => return Err(format!("FORCING must be 1 or 2, got {other}")),
     };
-    Ok(SliderCrank { xi: 0.3030, alpha: 1.9, beta: 0.4719, forcing })
+    Ok(RollerMechanism { xi: 0.3030, alpha: 1.9, beta: 0.4719, forcing })
 }
 
 fn number(text: &str, name: &str) -> Result<f64, String> {

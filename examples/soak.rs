@@ -174,7 +174,15 @@ impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
     /// same time) and the midpoints: Simpson on either side, the trapezoidal rule over the `2δ`
     /// across it. If more events follow in `[a, b]`, the model becomes the copy just after the
     /// first, and the rest of the interval is left to the caller: `Some((from, depth))`.
-    fn around_event(&mut self, a: f64, b: f64, copy: Mo, start: Powers, seen: usize, depth: u32) -> Result<(Powers, Option<(f64, u32)>), String> {
+    fn around_event(
+        &mut self,
+        a: f64,
+        b: f64,
+        copy: Mo,
+        start: Powers,
+        seen: usize,
+        depth: u32,
+    ) -> Result<(Powers, Option<(f64, u32)>), String> {
         self.splits += 1;
         let end = powers(&self.model);
         if depth == DEPTH {
@@ -234,7 +242,8 @@ impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
         let relative = error / (scale + dissipated + impulsive.abs());
         if !relative.is_finite() || relative.abs() > TOLERANCE {
             return Err(format!(
-                "energy balance error {relative:.3e} at t = {t1} s: ΔE {:.6e} J, drive {drive:.6e}, gas {gas:.6e}, damping {damping:.6e}, impacts {dissipated:.6e}, impulsive drive {impulsive:.6e}",
+                "energy balance error {relative:.3e} at t = {t1} s: ΔE {:.6e} J, drive {drive:.6e}, gas {gas:.6e}, \
+                 damping {damping:.6e}, impacts {dissipated:.6e}, impulsive drive {impulsive:.6e}",
                 self.model.mechanical_energy() - energy
             ));
         }
@@ -244,7 +253,15 @@ impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
 
 /// Runs `windows` windows of `period` s, `n` samples each, with progress output; returns the worst error.
 #[allow(clippy::too_many_arguments)]
-fn soak<Mo: EngineModel + EnergyBalance>(name: &str, mut run: Run<Mo>, t0: f64, windows: u64, period: f64, n: usize, failed: &AtomicBool) -> Result<(), String> {
+fn soak<Mo: EngineModel + EnergyBalance>(
+    name: &str,
+    mut run: Run<Mo>,
+    t0: f64,
+    windows: u64,
+    period: f64,
+    n: usize,
+    failed: &AtomicBool,
+) -> Result<(), String> {
     let (start, mut worst, mut events) = (Instant::now(), 0.0_f64, 0usize);
     for w in 1..=windows {
         if failed.load(Ordering::Relaxed) {
@@ -257,14 +274,16 @@ fn soak<Mo: EngineModel + EnergyBalance>(name: &str, mut run: Run<Mo>, t0: f64, 
         if w % (windows / 20).max(1) == 0 {
             let wall = start.elapsed().as_secs_f64();
             eprintln!(
-                "{name}: {w}/{windows}, {wall:.0} s wall (projected {:.0} s), {events} events, {} split, error {error:.1e} (worst {worst:.2e})",
+                "{name}: {w}/{windows}, {wall:.0} s wall (projected {:.0} s), {events} events, {} split, \
+                 error {error:.1e} (worst {worst:.2e})",
                 wall * windows as f64 / w as f64,
                 run.splits
             );
         }
     }
     println!(
-        "{name}: {windows} windows, {events} events, worst energy-balance error {worst:.2e} (tolerance {TOLERANCE:e}), {} intervals past {DEPTH} splits, {:.0} s wall",
+        "{name}: {windows} windows, {events} events, worst energy-balance error {worst:.2e} (tolerance {TOLERANCE:e}), \
+         {} intervals past {DEPTH} splits, {:.0} s wall",
         run.trapezoids,
         start.elapsed().as_secs_f64()
     );

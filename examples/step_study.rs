@@ -24,13 +24,17 @@ fn main() {
     let (reference, _) = run(StepperOptions { step: 2.5e-6, ..Default::default() }, cycles);
     println!("reference, fixed 2.5e-6 s: {} impacts > 0.1 mm/s", reference.len());
     let fixed = [1e-5, 1e-4, 2e-4].map(|step| (format!("fixed {step:e} s"), StepperOptions { step, ..Default::default() }));
-    let adaptive = [1e-12, 1e-11, 1e-10]
-        .map(|tol| (format!("adaptive ≤ 1e-3 s, {tol:e} m"), StepperOptions { step: 1e-3, local_error: Some(tol), ..Default::default() }));
+    let adaptive = [1e-12, 1e-11, 1e-10].map(|tol| {
+        let options = StepperOptions { step: 1e-3, local_error: Some(tol), ..Default::default() };
+        (format!("adaptive ≤ 1e-3 s, {tol:e} m"), options)
+    });
     for (name, options) in fixed.into_iter().chain(adaptive) {
         let (ev, wall) = run(options, cycles);
         let n = ev.len().min(reference.len());
         let dt = (0..n).map(|i| (ev[i].time - reference[i].time).abs()).fold(0.0, f64::max);
-        let dv = (0..n).map(|i| (ev[i].normal_velocity_before - reference[i].normal_velocity_before).abs() / reference[i].normal_velocity_before).fold(0.0, f64::max);
+        let dv = (0..n)
+            .map(|i| (ev[i].normal_velocity_before - reference[i].normal_velocity_before).abs() / reference[i].normal_velocity_before)
+            .fold(0.0, f64::max);
         let corner = (0..n).all(|i| ev[i].corner == reference[i].corner);
         println!("{name}: {} impacts, corners same {corner}, max |Δt| {dt:.2e} s, max rel Δv {dv:.2e}, wall {wall:.3} s", ev.len());
     }

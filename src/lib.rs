@@ -3,11 +3,12 @@
 //! Layers, each knowing only the one below it:
 //! - [`dynamics`]: the nonsmooth core (RK4, events, impacts, sliding), generic over [`dynamics::System`];
 //! - [`models`]: the crank train of Awrejcewicz & Kudra and Farahanchi's roller slider crank;
-//! - `fmi`: the exported `fmi2*` functions, the only `unsafe` code;
-//! - [`packaging`]: how the FMU's second, x86-64-v3 build of this crate is made.
+//! - `fmi`: the exported `fmi2*` functions, the only `unsafe` code.
+
+#![deny(unsafe_code)]
+#![warn(clippy::undocumented_unsafe_blocks)]
 
 pub mod dynamics;
-pub mod models;
 pub mod fmi;
-pub mod packaging;
+pub mod models;
 pub mod simulation;

@@ -2,23 +2,23 @@
 //! statistics computed from the event rows) and the impact log. No FFI and no FMI words: the FMI
 //! layer maps its calls and errors onto this.
 
-mod engine;
 mod impact_log;
+mod model_variant;
 mod statistics;
 
-pub use engine::Engine;
 pub use impact_log::ImpactLog;
+pub use model_variant::ModelVariant;
 
 use crate::models::{EngineEvent, EngineModel, Inputs, ModelError, Outputs, Parameters};
 use serde::{Deserialize, Serialize};
 use statistics::ImpactStatistics;
 
-/// A running simulation of engine model `E` (the FMU runs [`Engine`]).
+/// A running simulation of engine model `E` (the FMU runs [`ModelVariant`]).
 ///
 /// Clone + Serialize + Deserialize: it is the whole simulation state an FMU state saves, including
 /// the impact statistics, the events of the last step and the log cursor.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Simulation<E = Engine> {
+pub struct Simulation<E = ModelVariant> {
     model: E,
     time: f64,
     outputs: Outputs,
@@ -94,19 +94,12 @@ impl<E: EngineModel> Simulation<E> {
 
     /// Advances to exactly `t_end` with `inputs` held. All or nothing: on error `self` is unchanged.
     pub fn step(&mut self, inputs: &Inputs, t_end: f64) -> Result<(), ModelError> {
-        let held = [
-            ("crank_speed", inputs.crank_speed),
-            ("gas_pressure", inputs.gas_pressure),
-            ("load_torque", inputs.load_torque),
-        ];
+        let held = [("crank_speed", inputs.crank_speed), ("gas_pressure", inputs.gas_pressure), ("load_torque", inputs.load_torque)];
         if let Some((name, value)) = held.iter().find(|(_, v)| !v.is_finite()) {
             return Err(ModelError(format!("input {name} = {value} is not finite")));
         }
         if !(t_end.is_finite() && t_end > self.time) {
-            return Err(ModelError(format!(
-                "step end {t_end} s is not after the current time {} s",
-                self.time
-            )));
+            return Err(ModelError(format!("step end {t_end} s is not after the current time {} s", self.time)));
         }
         // The model advances in place, so that the event list inside it keeps its capacity from
         // step to step, and the step's events go into the list of the step before last: no

@@ -1,7 +1,7 @@
 //! Variant 2 (Farahanchi's roller slider crank) on the core: the thesis's statements that do not hang
 //! on chaos details, with roller_forcing = 1 (f(τ) as printed, which produced the thesis's results).
 
-use pistonslap::models::{EngineEvent, EngineEventKind, EngineModel, Forcing, Inputs, Outputs, Parameters, Roller, SliderCrank};
+use pistonslap::models::{EngineEvent, EngineEventKind, EngineModel, Forcing, Inputs, Outputs, Parameters, Roller, RollerMechanism};
 use std::f64::consts::PI;
 
 /// The thesis's mechanism (section 4.1) in its own units: l = 1 m, M = 1 kg; with Ω = 1 rad/s the
@@ -49,7 +49,11 @@ fn impacts_after(events: &[EngineEvent], first_cycle: usize) -> Vec<&EngineEvent
 /// crank angles within 1e-6 rad.
 fn period(events: &[EngineEvent], from: usize, to: usize) -> Option<usize> {
     let pattern = |k: usize| -> Vec<(u8, f64)> {
-        events.iter().filter(|e| e.kind == EngineEventKind::Impact && cycle_of(e) == k).map(|e| (e.corner, e.crank_angle % (2.0 * PI))).collect()
+        events
+            .iter()
+            .filter(|e| e.kind == EngineEventKind::Impact && cycle_of(e) == k)
+            .map(|e| (e.corner, e.crank_angle % (2.0 * PI)))
+            .collect()
     };
     (1..=8).find(|&p| {
         (from..to - p).all(|k| {
@@ -71,17 +75,18 @@ fn outputs(model: &Roller) -> Outputs {
 fn sliding_on_the_upper_wall_carries_the_eq_2_29_force() {
     let (lambda, rho) = (0.35, 0.01);
     let mut model = run(&thesis_case(lambda, rho, 0.0), 1.0, 2).0;
-    let sc = SliderCrank { xi: 0.3030, alpha: 1.9, beta: 0.4719, forcing: Forcing::Printed };
+    let sc = RollerMechanism { xi: 0.3030, alpha: 1.9, beta: 0.4719, forcing: Forcing::Printed };
     let mut events = Vec::new();
     for k in 1..=100 {
         let t = 4.0 * PI + k as f64 * 2.0 * PI / 100.0;
         model.advance(&speed(1.0), t, &mut events).unwrap();
         let out = outputs(&model);
         let (fu, _) = sc.constraint_forces(t, lambda, rho);
-        assert_eq!((out.contact_state_1, out.contact_state_3), (0, 1), "t {t}");
-        assert!((out.contact_force_3 - fu).abs() < 1e-9 * fu.abs().max(1.0), "t {t}: {} vs {fu}", out.contact_force_3);
-        assert_eq!(out.side_force, -out.contact_force_3);
-        assert!((out.piston_lateral - rho).abs() < 1e-12);
+        // The upper wall is the x = −D/2 wall of corner 1, as in variant 1 (DESIGN.md §4).
+        assert_eq!((out.contact_state_1, out.contact_state_3), (1, 0), "t {t}");
+        assert!((out.contact_force_1 - fu).abs() < 1e-9 * fu.abs().max(1.0), "t {t}: {} vs {fu}", out.contact_force_1);
+        assert_eq!(out.side_force, out.contact_force_1);
+        assert!((out.piston_lateral + rho).abs() < 1e-12);
     }
     assert!(events.is_empty());
 }
@@ -131,7 +136,7 @@ fn at_high_damping_the_lower_wall_is_not_hit() {
     let events = run(&thesis_case(0.25, 0.015, 0.9), 1.0, 100).1;
     let impacts = impacts_after(&events, 30);
     assert!(impacts.len() > 100);
-    assert!(impacts.iter().all(|e| e.corner == 3));
+    assert!(impacts.iter().all(|e| e.corner == 1), "the upper wall is corner 1's");
     assert!(events.iter().any(|e| e.kind == EngineEventKind::Slide && cycle_of(e) >= 30));
     assert!(period(&events, 70, 100).is_some());
 }
@@ -153,7 +158,7 @@ fn lower_restitution_makes_the_response_periodic_with_sliding() {
 fn impact_velocities_grow_with_the_clearance() {
     let mean = |rho: f64| {
         let events = run(&thesis_case(0.05, rho, 0.9), 1.0, 200).1;
-        let impacts: Vec<_> = impacts_after(&events, 30).into_iter().filter(|e| e.corner == 3).collect();
+        let impacts: Vec<_> = impacts_after(&events, 30).into_iter().filter(|e| e.corner == 1).collect();
         impacts.iter().map(|e| e.normal_velocity_before).sum::<f64>() / impacts.len() as f64
     };
     let (small, middle, large) = (mean(0.01), mean(0.015), mean(0.02));

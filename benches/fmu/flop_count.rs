@@ -92,7 +92,11 @@ fn flops_of(instruction: &str) -> u64 {
     let lanes = if m.ends_with("sd") {
         1
     } else if m.ends_with("pd") {
-        if operands.contains("ymm") { 4 } else { 2 }
+        if operands.contains("ymm") {
+            4
+        } else {
+            2
+        }
     } else {
         return 0;
     };

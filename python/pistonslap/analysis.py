@@ -84,7 +84,7 @@ def impacts_from_log(events, rho, start=0.0):
     impacts = events[events["kind"] == "impact"]
     theta = start + impacts["time"]  # crank angle, accumulated
     big = np.sqrt(1 - XI**2 * np.sin(theta) ** 2)
-    wall = np.where(impacts["corner"] == 3, 1, -1)
+    wall = np.where(impacts["corner"] == 1, 1, -1)  # the upper wall is corner 1's (x = -D/2)
     approach = impacts["normal_velocity_before"] / big
     # psi_max' = rho xi^2 sin cos / Lambda^3; psi_min' = -psi_max'; approach is toward the wall
     wall_rate = rho * XI**2 * np.sin(theta) * np.cos(theta) / big**3
@@ -360,20 +360,19 @@ def _cross_sequence(events, corners, min_speed):
 
 
 def cross_check(clearance, stop_time=0.05, min_speed=2e-3):
-    """Variant 1 in the roller limit against variant 2 with roller_forcing = 2 (issue 5, point 6): the piston of
+    """Variant 1 in the roller limit against variant 2 with roller_forcing = 2: the piston of
     variant 1 reduced to a short block (skirt 12 mm, pin in its middle, negligible tilt inertia; variant 1 needs
     a piston diagonal longer than the bore) on a uniform rod, no gravity, gas force or piston-pin damping.
 
-    Returns (variant-1 sequence, variant-2 sequence) of impacts and releases. Variant 1's corner 1 is matched
-    with variant 2's corner 3: A&K put the crank pin at x = -l1 sin(phi1) (eq 57), so the wall the pin swings
-    toward after TDC, the thesis's upper wall, is A&K's -D/2 wall."""
+    Returns (variant-1 sequence, variant-2 sequence) of impacts and releases on corner 1, the x = -D/2 wall
+    in both variants (the thesis's upper wall, toward which the crank pin swings after TDC)."""
     common = dict(_CROSS, bore=_CROSS["piston_diameter"] + 2 * clearance)
     crank_train = dict(common, model_variant=1, skirt_length=0.012, pin_height=0.006, piston_com=0.0,
                        rod_com=common["rod_length"] / 2, piston_inertia=1e-7, pressure_source=1, gas_pressure=0.0)
     roller = dict(common, model_variant=2, roller_forcing=2)
     runs = [simulate_with_events(start_values=values, stop_time=stop_time, output_interval=1e-3, output=["impact_count"])[1]
             for values in (crank_train, roller)]
-    return _cross_sequence(runs[0], (1,), min_speed), _cross_sequence(runs[1], (3,), min_speed)
+    return tuple(_cross_sequence(run, (1,), min_speed) for run in runs)
 
 
 def main(argv=None):

@@ -3,12 +3,9 @@
 //! Defaults: the cdylib next to this executable (the same cargo profile directory) and
 //! `<target>/fmu/PistonSlap.fmu`. The archive holds `modelDescription.xml` and the documentation's
 //! variable table, both generated from `modelDescription/variables.xml`, the binary as
-//! `binaries/linux64/PistonSlap.so` with its x86-64-v3 build beside it (built here, under
-//! `<target>/x86-64-v3`), and `resources/`.
+//! `binaries/linux64/PistonSlap.so`, and `resources/`.
 
 use pistonslap::fmi::description::{Causality, Kind, MODEL_DESCRIPTION_XML, VARIABLES};
-use pistonslap::fmi::sibling;
-use pistonslap::packaging::build_sibling;
 use std::fs::File;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -24,55 +21,30 @@ fn main() {
 
 fn run() -> Result<(), String> {
     let here = std::env::current_exe().map_err(|e| e.to_string())?;
-    let profile_dir = here
-        .parent()
-        .ok_or("no executable directory")?
-        .to_path_buf();
+    let profile_dir = here.parent().ok_or("no executable directory")?.to_path_buf();
     let mut args = std::env::args_os().skip(1);
-    let library = args
-        .next()
-        .map_or_else(|| profile_dir.join("libpistonslap.so"), PathBuf::from);
+    let library = args.next().map_or_else(|| profile_dir.join("libpistonslap.so"), PathBuf::from);
     let target_dir = profile_dir.parent().unwrap_or(&profile_dir);
     let default_out = target_dir.join("fmu").join("PistonSlap.fmu");
     let out = args.next().map_or(default_out, PathBuf::from);
-    let binary = std::fs::read(&library).map_err(|e| {
-        format!(
-            "cannot read {} ({e}); run `cargo build --release` first",
-            library.display()
-        )
-    })?;
-    let wide_library = build_sibling(target_dir)?;
-    let wide = std::fs::read(&wide_library)
-        .map_err(|e| format!("cannot read {} ({e})", wide_library.display()))?;
+    let binary =
+        std::fs::read(&library).map_err(|e| format!("cannot read {} ({e}); run `cargo build --release` first", library.display()))?;
     if let Some(dir) = out.parent() {
-        std::fs::create_dir_all(dir)
-            .map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+        std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
     }
-    write_fmu(&out, &binary, &wide).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
-    println!(
-        "wrote {} ({} variables, binaries {} and {})",
-        out.display(),
-        VARIABLES.len(),
-        library.display(),
-        wide_library.display()
-    );
+    write_fmu(&out, &binary).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
+    println!("wrote {} ({} variables, binary {})", out.display(), VARIABLES.len(), library.display());
     Ok(())
 }
 
-fn write_fmu(out: &Path, binary: &[u8], wide: &[u8]) -> zip::result::ZipResult<()> {
+fn write_fmu(out: &Path, binary: &[u8]) -> zip::result::ZipResult<()> {
     let mut zip = zip::ZipWriter::new(File::create(out)?);
     let text = SimpleFileOptions::default().compression_method(CompressionMethod::Deflated);
     let executable = text.unix_permissions(0o755);
     let documentation = documentation();
-    let wide_name = format!("binaries/linux64/{}", sibling::FILE_NAME);
-    let files: [(&str, &[u8], SimpleFileOptions); 5] = [
-        (
-            "modelDescription.xml",
-            MODEL_DESCRIPTION_XML.as_bytes(),
-            text,
-        ),
+    let files: [(&str, &[u8], SimpleFileOptions); 4] = [
+        ("modelDescription.xml", MODEL_DESCRIPTION_XML.as_bytes(), text),
         ("binaries/linux64/PistonSlap.so", binary, executable),
-        (&wide_name, wide, executable),
         ("documentation/index.html", documentation.as_bytes(), text),
         ("resources/README.txt", RESOURCES_README.as_bytes(), text),
     ];
@@ -92,9 +64,7 @@ scaled so that its maximum is peak_pressure. See documentation/index.html.
 ";
 
 fn escape(s: &str) -> String {
-    s.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
+    s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
 }
 
 /// documentation/index.html: what the model is, its variables (from the same table as the XML), its
@@ -163,12 +133,6 @@ without tilt, moving with the zero-clearance slider-crank kinematics.</li>
 <li>A logger callback that calls back into the instance that is logging gets <code>fmi2Error</code>, and
 <code>fmi2FreeInstance</code> from there does nothing; calls into other instances are fine.</li>
 </ul>
-<h2>Two builds</h2>
-<p><code>binaries/linux64/PistonSlap.so</code> runs on any x86-64 CPU. On a CPU with the x86-64-v3 features
-(AVX2, BMI2, FMA: Intel since 2013, AMD since 2015) it hands every call to <code>{wide}</code> beside it,
-the same code built for those CPUs, about 1.15&times; as fast with bit-identical results. The
-environment variable <code>{variable}=x86-64</code> keeps the portable build; the log category
-<code>logBuild</code> says at <code>fmi2Instantiate</code> which build runs the instance.</p>
 <h2>References</h2>
 <ul>
 <li>J. Awrejcewicz, G. Kudra, "The piston–connecting rod–crankshaft system as a triple physical pendulum
@@ -177,8 +141,6 @@ with impacts", International Journal of Bifurcation and Chaos 15(7), 2005.</li>
 Ph.D. thesis, Michigan State University, 1991.</li>
 </ul>
 </body></html>
-"#,
-        wide = sibling::FILE_NAME,
-        variable = sibling::CHOICE_VARIABLE,
+"#
     )
 }

@@ -5,8 +5,7 @@
 use crate::models::{Inputs, Outputs, Parameters};
 
 /// The shipped `modelDescription.xml`, generated from the same table as the dispatch.
-pub const MODEL_DESCRIPTION_XML: &str =
-    include_str!(concat!(env!("OUT_DIR"), "/modelDescription.xml"));
+pub const MODEL_DESCRIPTION_XML: &str = include_str!(concat!(env!("OUT_DIR"), "/modelDescription.xml"));
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
@@ -35,12 +34,71 @@ pub struct Variable {
     pub description: &'static str,
 }
 
+/// The value reference of the variable called `name`.
+pub fn value_reference(name: &str) -> Option<u32> {
+    VARIABLES.iter().position(|v| v.name == name).and_then(|vr| u32::try_from(vr).ok())
+}
+
 /// The variable with value reference `vr`.
 pub fn variable(vr: u32) -> Option<&'static Variable> {
     VARIABLES.get(usize::try_from(vr).ok()?)
 }
 
-// GUID, LOG_CATEGORIES, VARIABLES, get_real/real_mut, get_integer/integer_mut, get_string/string_mut.
+/// A field's value as a getter returns it: numbers by copy, strings borrowed.
+pub trait FieldValue<'a> {
+    type Value;
+    fn value(&'a self) -> Self::Value;
+}
+
+impl FieldValue<'_> for f64 {
+    type Value = f64;
+    fn value(&self) -> f64 {
+        *self
+    }
+}
+
+impl FieldValue<'_> for i32 {
+    type Value = i32;
+    fn value(&self) -> i32 {
+        *self
+    }
+}
+
+impl<'a> FieldValue<'a> for String {
+    type Value = &'a str;
+    fn value(&'a self) -> &'a str {
+        self
+    }
+}
+
+/// Per kind, from the generated lists of `value reference => field` of each owner: `get_<kind>`,
+/// the variable `vr` of that kind or None, and `<kind>_mut`, the settable (input or parameter) one.
+macro_rules! dispatch {
+    ($($get:ident $set:ident $ty:ty: parameters [$($p:literal => $pf:ident),*] inputs [$($i:literal => $if_:ident),*]
+       outputs [$($o:literal => $of:ident),*];)*) => {$(
+        #[allow(unused_variables)]
+        pub(crate) fn $get<'a>(vr: u32, parameters: &'a Parameters, inputs: &'a Inputs, outputs: &'a Outputs)
+            -> Option<<$ty as FieldValue<'a>>::Value> {
+            match vr {
+                $($p => Some(parameters.$pf.value()),)*
+                $($i => Some(inputs.$if_.value()),)*
+                $($o => Some(outputs.$of.value()),)*
+                _ => None,
+            }
+        }
+
+        #[allow(unused_variables)]
+        pub(crate) fn $set<'a>(vr: u32, parameters: &'a mut Parameters, inputs: &'a mut Inputs) -> Option<&'a mut $ty> {
+            match vr {
+                $($p => Some(&mut parameters.$pf),)*
+                $($i => Some(&mut inputs.$if_),)*
+                _ => None,
+            }
+        }
+    )*};
+}
+
+// GUID, LOG_CATEGORIES, VARIABLES, and the dispatch lists.
 include!(concat!(env!("OUT_DIR"), "/variables.rs"));
 
 #[cfg(test)]
@@ -70,22 +128,13 @@ mod tests {
     #[test]
     fn start_values_are_the_rust_defaults() {
         let (p, i, o) = (Parameters::default(), Inputs::default(), Outputs::default());
-        for (vr, v) in VARIABLES
-            .iter()
-            .enumerate()
-            .filter(|(_, v)| v.causality != Causality::Output)
-        {
+        for (vr, v) in VARIABLES.iter().enumerate().filter(|(_, v)| v.causality != Causality::Output) {
             let vr = vr as u32;
             match v.kind {
                 Kind::Real => {
                     assert_eq!(get_real(vr, &p, &i, &o), v.start.parse().ok(), "{}", v.name)
                 }
-                Kind::Integer => assert_eq!(
-                    get_integer(vr, &p, &i, &o),
-                    v.start.parse().ok(),
-                    "{}",
-                    v.name
-                ),
+                Kind::Integer => assert_eq!(get_integer(vr, &p, &i, &o), v.start.parse().ok(), "{}", v.name),
                 Kind::String => assert_eq!(get_string(vr, &p, &i, &o), Some(v.start), "{}", v.name),
             }
         }

@@ -1,7 +1,7 @@
-//! One FMU instance and the FMI 2.0 Co-Simulation state machine (standard §4.2.4), in safe code.
+//! One FMU instance, in safe code: what each fmi2 function does once the state machine
+//! (`state_machine.rs`) has allowed the call.
 //!
-//! Every operation first checks that the standard allows it in the current state; a forbidden call,
-//! a bad argument or an unknown value reference is *refused*: `Err` with a message, nothing changed.
+//! A bad argument or an unknown value reference is *refused*: `Err` with a message, nothing changed.
 //! A *failure* of the model (parameters refused at fmi2ExitInitializationMode, a step that cannot be
 //! computed) puts the instance in the error state, as the standard says; its state is still the one
 //! before the call, so fmi2SetFMUstate or fmi2Reset continue from there.
@@ -9,53 +9,15 @@
 use super::description::{self, Causality, Kind, GUID};
 use super::logger::Logger;
 use super::state_bytes;
+use super::state_machine::Mode::{self, *};
 use super::types::Status;
 use crate::models::{EngineModel, Inputs, ModelError, Parameters};
 use crate::simulation::Simulation;
 use serde::{de::DeserializeOwned, Deserialize, Serialize};
-use std::fmt;
 
 /// What the FMU layer needs of an engine model: run it, and save it in an FMU state.
 pub trait Model: EngineModel + Serialize + DeserializeOwned {}
 impl<E: EngineModel + Serialize + DeserializeOwned> Model for E {}
-
-/// The states of the standard's Co-Simulation state machine that a synchronous FMU can be in
-/// (named as in the standard).
-#[allow(clippy::enum_variant_names)]
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Mode {
-    Instantiated,
-    InitializationMode,
-    StepComplete,
-    Terminated,
-    Error,
-    Fatal,
-}
-
-impl fmt::Display for Mode {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        fmt::Debug::fmt(self, f)
-    }
-}
-
-use Mode::*;
-
-/// Allowed states per function group (standard §4.2.4 table; stepInProgress, stepFailed and
-/// stepCanceled cannot occur: fmi2DoStep is synchronous and never returns fmi2Discard).
-pub const CONFIGURE: &[Mode] = &[Instantiated];
-pub const GET: &[Mode] = &[InitializationMode, StepComplete, Terminated, Error];
-pub const SET: &[Mode] = &[Instantiated, InitializationMode, StepComplete];
-pub const STATE: &[Mode] = &[
-    Instantiated,
-    InitializationMode,
-    StepComplete,
-    Terminated,
-    Error,
-];
-pub const STEP: &[Mode] = &[StepComplete];
-pub const STATUS: &[Mode] = &[StepComplete, Terminated];
-pub const INPUT_DERIVATIVES: &[Mode] = &[Instantiated, InitializationMode, StepComplete];
-pub const OUTPUT_DERIVATIVES: &[Mode] = &[StepComplete, Terminated, Error];
 
 /// A refused or failed call: the status to return and the message to log.
 #[derive(Debug, Clone, PartialEq)]
@@ -66,16 +28,10 @@ pub struct Refusal {
 
 impl Refusal {
     pub fn error(message: impl Into<String>) -> Self {
-        Self {
-            status: Status::Error,
-            message: message.into(),
-        }
+        Self { status: Status::Error, message: message.into() }
     }
     pub fn discard(message: impl Into<String>) -> Self {
-        Self {
-            status: Status::Discard,
-            message: message.into(),
-        }
+        Self { status: Status::Discard, message: message.into() }
     }
 }
 
@@ -102,17 +58,16 @@ pub struct Core<E> {
 
 impl<E> Default for Core<E> {
     fn default() -> Self {
-        Self {
-            phase: Phase::Instantiated,
-            start_time: 0.0,
-            stop_time: None,
-            parameters: Parameters::default(),
-            inputs: Inputs::default(),
-        }
+        Self { phase: Phase::Instantiated, start_time: 0.0, stop_time: None, parameters: Parameters::default(), inputs: Inputs::default() }
     }
 }
 
 impl<E: Model> Core<E> {
+    /// The serialized FMU state.
+    pub fn serialize(&self) -> Outcome<Vec<u8>> {
+        state_bytes::encode(self, GUID).map_err(Refusal::error)
+    }
+
     /// What every state this FMU makes satisfies, so what a restored one must: finite times and
     /// variables (the setters take only finite values), and past initialization, parameters that
     /// passed fmi2ExitInitializationMode and a simulation with a finite time and outputs.
@@ -130,9 +85,7 @@ impl<E: Model> Core<E> {
             }
         }
         match &self.phase {
-            Phase::StepComplete(sim) | Phase::Terminated(sim) => {
-                self.parameters.validate().and_then(|()| sim.check()).map_err(|e| e.0)
-            }
+            Phase::StepComplete(sim) | Phase::Terminated(sim) => self.parameters.validate().and_then(|()| sim.check()).map_err(|e| e.0),
             Phase::Instantiated | Phase::InitializationMode => Ok(()),
         }
     }
@@ -167,11 +120,7 @@ const TIME_TOLERANCE: f64 = 1e-9;
 
 impl<E: Model> Instance<E> {
     pub fn new(logger: Logger) -> Self {
-        Self {
-            logger,
-            failure: None,
-            core: Core::default(),
-        }
+        Self { logger, failure: None, core: Core::default() }
     }
 
     pub fn mode(&self) -> Mode {
@@ -183,37 +132,17 @@ impl<E: Model> Instance<E> {
         })
     }
 
-    /// Refuses `function` unless the current state is one of `allowed`.
-    pub fn require(&self, function: &str, allowed: &[Mode]) -> Outcome {
-        let mode = self.mode();
-        if allowed.contains(&mode) {
-            return Ok(());
-        }
-        let allowed: Vec<String> = allowed.iter().map(Mode::to_string).collect();
-        Err(Refusal::error(format!(
-            "{function} is not allowed in state {mode} (allowed in: {})",
-            if allowed.is_empty() {
-                "none".to_string()
-            } else {
-                allowed.join(", ")
-            }
-        )))
-    }
-
     /// After a caught panic: the instance can only be freed.
     pub fn set_fatal(&mut self) {
         self.failure = Some(Fatal);
     }
 
     pub fn setup_experiment(&mut self, start: f64, stop: Option<f64>) -> Outcome {
-        self.require("fmi2SetupExperiment", CONFIGURE)?;
         if !start.is_finite() {
             return Err(Refusal::error(format!("startTime = {start} is not finite")));
         }
         if let Some(stop) = stop.filter(|s| !(s.is_finite() && *s >= start)) {
-            return Err(Refusal::error(format!(
-                "stopTime = {stop} must be finite and ≥ startTime = {start}"
-            )));
+            return Err(Refusal::error(format!("stopTime = {stop} must be finite and ≥ startTime = {start}")));
         }
         self.core.start_time = start;
         self.core.stop_time = stop;
@@ -221,25 +150,19 @@ impl<E: Model> Instance<E> {
     }
 
     pub fn enter_initialization_mode(&mut self) -> Outcome {
-        self.require("fmi2EnterInitializationMode", CONFIGURE)?;
         self.core.phase = Phase::InitializationMode;
         Ok(())
     }
 
     /// Builds the simulation from the parameters: bad parameters are a failure naming the parameter.
     pub fn exit_initialization_mode(&mut self) -> Outcome {
-        self.require("fmi2ExitInitializationMode", &[InitializationMode])?;
-        let sim = Simulation::start(&self.core.parameters, self.core.start_time)
-            .map_err(|e| self.fail(e))?;
+        let sim = Simulation::start(&self.core.parameters, self.core.start_time).map_err(|e| self.fail(e))?;
         self.core.phase = Phase::StepComplete(sim);
         Ok(())
     }
 
     pub fn terminate(&mut self) -> Outcome {
-        self.require("fmi2Terminate", STEP)?;
-        if let Phase::StepComplete(sim) =
-            std::mem::replace(&mut self.core.phase, Phase::Instantiated)
-        {
+        if let Phase::StepComplete(sim) = std::mem::replace(&mut self.core.phase, Phase::Instantiated) {
             self.core.phase = Phase::Terminated(sim);
         }
         Ok(())
@@ -247,15 +170,13 @@ impl<E: Model> Instance<E> {
 
     /// Back to the state after fmi2Instantiate (debug-logging settings are kept).
     pub fn reset(&mut self) -> Outcome {
-        self.require("fmi2Reset", STATE)?;
         self.core = Core::default();
         self.failure = None;
         Ok(())
     }
 
     /// Checks every (value reference, value) pair before changing anything: all or nothing.
-    pub fn set(&mut self, function: &str, values: &[(u32, Value)]) -> Outcome {
-        self.require(function, SET)?;
+    pub fn set(&mut self, values: &[(u32, Value)]) -> Outcome {
         for (vr, value) in values {
             self.check_settable(*vr, value)?;
         }
@@ -265,9 +186,7 @@ impl<E: Model> Instance<E> {
             match value {
                 Value::Real(x) => *description::real_mut(*vr, p, i).ok_or_else(missing)? = *x,
                 Value::Integer(x) => *description::integer_mut(*vr, p, i).ok_or_else(missing)? = *x,
-                Value::String(s) => {
-                    *description::string_mut(*vr, p, i).ok_or_else(missing)? = (*s).to_string()
-                }
+                Value::String(s) => *description::string_mut(*vr, p, i).ok_or_else(missing)? = (*s).to_string(),
             }
         }
         Ok(())
@@ -276,9 +195,7 @@ impl<E: Model> Instance<E> {
     fn check_settable(&self, vr: u32, value: &Value) -> Outcome {
         let v = typed_variable(vr, value.kind())?;
         match v.causality {
-            Causality::Output => {
-                return Err(Refusal::error(format!("{} (value reference {vr}) is an output: it cannot be set", v.name)))
-            }
+            Causality::Output => return Err(Refusal::error(format!("{} (value reference {vr}) is an output: it cannot be set", v.name))),
             Causality::Parameter if !matches!(self.mode(), Instantiated | InitializationMode) => {
                 return Err(Refusal::error(format!(
                     "{} is a fixed parameter: set it before fmi2ExitInitializationMode (state is {})",
@@ -289,10 +206,7 @@ impl<E: Model> Instance<E> {
             _ => {}
         }
         match value {
-            Value::Real(x) if !x.is_finite() => Err(Refusal::error(format!(
-                "{} = {x} refused: values must be finite",
-                v.name
-            ))),
+            Value::Real(x) if !x.is_finite() => Err(Refusal::error(format!("{} = {x} refused: values must be finite", v.name))),
             _ => Ok(()),
         }
     }
@@ -301,13 +215,11 @@ impl<E: Model> Instance<E> {
     /// simulation built from the current parameters.
     pub fn get<T>(
         &self,
-        function: &str,
         vrs: &[u32],
         kind: Kind,
         read: impl for<'a> Fn(u32, &'a Parameters, &'a Inputs, &'a crate::models::Outputs) -> Option<T>,
         out: &mut [T],
     ) -> Outcome {
-        self.require(function, GET)?;
         for &vr in vrs {
             typed_variable(vr, kind)?;
         }
@@ -316,34 +228,27 @@ impl<E: Model> Instance<E> {
             Phase::StepComplete(sim) | Phase::Terminated(sim) => sim.outputs(),
             _ if vrs.iter().any(|&vr| is_output(vr)) => {
                 preview = Simulation::<E>::new(&self.core.parameters, self.core.start_time)
-                    .map_err(|e| {
-                        Refusal::error(format!("cannot compute the initial outputs: {e}"))
-                    })?;
+                    .map_err(|e| Refusal::error(format!("cannot compute the initial outputs: {e}")))?;
                 preview.outputs()
             }
             _ => &crate::models::Outputs::default(),
         };
         let (p, i) = (&self.core.parameters, &self.core.inputs);
-        // Into the host's array directly: a host reads outputs every step, and a list collected
-        // first was an allocation per call.
+        // Into the host's array directly: a host reads outputs every step, and collecting a list
+        // first would allocate at every call.
         for (&vr, value) in vrs.iter().zip(out) {
-            *value = read(vr, p, i, outputs)
-                .ok_or_else(|| Refusal::error(format!("value reference {vr} has no field")))?;
+            *value = read(vr, p, i, outputs).ok_or_else(|| Refusal::error(format!("value reference {vr} has no field")))?;
         }
         Ok(())
     }
 
     /// fmi2GetBoolean / fmi2SetBoolean: PistonSlap has no Boolean variable, so any value reference is
     /// refused (an empty list is fine).
-    pub fn booleans(&self, function: &str, allowed: &[Mode], vrs: &[u32]) -> Outcome {
-        self.require(function, allowed)?;
+    pub fn booleans(&self, vrs: &[u32]) -> Outcome {
         match vrs.first() {
             None => Ok(()),
             Some(&vr) => Err(match description::variable(vr) {
-                Some(v) => Refusal::error(format!(
-                    "{} (value reference {vr}) is a {:?} variable, not Boolean",
-                    v.name, v.kind
-                )),
+                Some(v) => Refusal::error(format!("{} (value reference {vr}) is a {:?} variable, not Boolean", v.name, v.kind)),
                 None => Refusal::error(format!("unknown value reference {vr}")),
             }),
         }
@@ -351,35 +256,22 @@ impl<E: Model> Instance<E> {
 
     /// Advances from `t` (which must be the current time) to exactly `t + h` with the inputs held.
     pub fn do_step(&mut self, t: f64, h: f64) -> Outcome {
-        self.require("fmi2DoStep", STEP)?;
         let Phase::StepComplete(sim) = &mut self.core.phase else {
-            unreachable!("checked by require")
+            return Err(Refusal::error("no simulation to step"));
         };
         let now = sim.time();
         if !(h.is_finite() && h > 0.0) {
-            return Err(Refusal::error(format!(
-                "communicationStepSize = {h} must be finite and > 0"
-            )));
+            return Err(Refusal::error(format!("communicationStepSize = {h} must be finite and > 0")));
         }
         if !t.is_finite() || (t - now).abs() > TIME_TOLERANCE * now.abs().max(1.0) {
-            return Err(Refusal::error(format!(
-                "currentCommunicationPoint = {t} s is not the FMU's current time {now} s"
-            )));
+            return Err(Refusal::error(format!("currentCommunicationPoint = {t} s is not the FMU's current time {now} s")));
         }
         let t_end = t + h;
         if t_end <= now {
-            return Err(Refusal::error(format!(
-                "step {h} s is too small to advance from {now} s"
-            )));
+            return Err(Refusal::error(format!("step {h} s is too small to advance from {now} s")));
         }
-        if let Some(stop) = self
-            .core
-            .stop_time
-            .filter(|s| t_end > s + TIME_TOLERANCE * s.abs().max(1.0))
-        {
-            return Err(Refusal::error(format!(
-                "step to {t_end} s goes beyond stopTime = {stop} s"
-            )));
+        if let Some(stop) = self.core.stop_time.filter(|s| t_end > s + TIME_TOLERANCE * s.abs().max(1.0)) {
+            return Err(Refusal::error(format!("step to {t_end} s goes beyond stopTime = {stop} s")));
         }
         match sim.step(&self.core.inputs, t_end) {
             Ok(()) => {
@@ -387,8 +279,7 @@ impl<E: Model> Instance<E> {
                     self.logger.debug("logEvents", || {
                         format!(
                             "{:?} of corner {} at t = {} s, crank angle {} rad: normal velocity {} → {} m/s, {} J lost",
-                            e.kind, e.corner, e.time, e.crank_angle, e.normal_velocity_before, e.normal_velocity_after,
-                            e.energy_lost
+                            e.kind, e.corner, e.time, e.crank_angle, e.normal_velocity_before, e.normal_velocity_after, e.energy_lost
                         )
                     });
                 }
@@ -406,14 +297,12 @@ impl<E: Model> Instance<E> {
         }
     }
 
-    pub fn state(&self, function: &str) -> Outcome<Core<E>> {
-        self.require(function, STATE)?;
-        Ok(self.core.clone())
+    pub fn state(&self) -> Core<E> {
+        self.core.clone()
     }
 
     /// Restores a saved state (and cuts the impact log back to it); leaves the error state.
     pub fn set_state(&mut self, core: &Core<E>) -> Outcome {
-        self.require("fmi2SetFMUstate", STATE)?;
         if let Phase::StepComplete(sim) | Phase::Terminated(sim) = &core.phase {
             // Restoring cuts the state's log file: only this instance's own log may be cut, so
             // foreign or crafted state bytes cannot truncate an arbitrary file.
@@ -423,25 +312,16 @@ impl<E: Model> Instance<E> {
                     "the state writes impact_log {path:?}, not this instance's impact_log {own:?}: refused"
                 )));
             }
-            sim.rewind_log()
-                .map_err(|e| Refusal::error(format!("cannot restore the impact log: {e}")))?;
+            sim.rewind_log().map_err(|e| Refusal::error(format!("cannot restore the impact log: {e}")))?;
         }
         self.core = core.clone();
         self.failure = None;
         Ok(())
     }
 
-    pub fn serialize(&self, function: &str, core: &Core<E>) -> Outcome<Vec<u8>> {
-        self.require(function, STATE)?;
-        state_bytes::encode(core, GUID).map_err(Refusal::error)
-    }
-
     pub fn deserialize(&self, bytes: &[u8]) -> Outcome<Core<E>> {
-        self.require("fmi2DeSerializeFMUstate", STATE)?;
-        let core: Core<E> = state_bytes::decode(bytes, GUID)
-            .map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
-        core.check()
-            .map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
+        let core: Core<E> = state_bytes::decode(bytes, GUID).map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
+        core.check().map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
         Ok(core)
     }
 
@@ -457,13 +337,9 @@ fn is_output(vr: u32) -> bool {
 
 /// The variable `vr`, refused when unknown or not of `kind`.
 fn typed_variable(vr: u32, kind: Kind) -> Outcome<&'static description::Variable> {
-    let v = description::variable(vr)
-        .ok_or_else(|| Refusal::error(format!("unknown value reference {vr}")))?;
+    let v = description::variable(vr).ok_or_else(|| Refusal::error(format!("unknown value reference {vr}")))?;
     if v.kind != kind {
-        return Err(Refusal::error(format!(
-            "{} (value reference {vr}) is a {:?} variable, not {kind:?}",
-            v.name, v.kind
-        )));
+        return Err(Refusal::error(format!("{} (value reference {vr}) is a {:?} variable, not {kind:?}", v.name, v.kind)));
     }
     Ok(v)
 }

@@ -1,8 +1,22 @@
 //! Messages to the host's logger callback, filtered by fmi2SetDebugLogging.
+#![allow(unsafe_code)]
 
 use super::description::LOG_CATEGORIES;
-use super::types::{fmi2CallbackLogger, fmi2ComponentEnvironment, Status};
+use super::types::{fmi2CallbackLogger, fmi2ComponentEnvironment, fmi2String, Status};
 use std::ffi::{c_int, CString};
+
+/// A logger callback written with fixed arguments only (variadic definitions are unstable in Rust):
+/// `env, instance name, status, category, format, message`.
+pub type FixedArgumentLogger = unsafe extern "C" fn(fmi2ComponentEnvironment, fmi2String, c_int, fmi2String, fmi2String, fmi2String);
+
+/// `logger` as the FMI's variadic callback type, for hosts written in Rust (the tests, the benchmark).
+/// Sound for this FMU, which always logs through the format `"%s"` with the message as the one
+/// variadic argument: on the C ABI that argument arrives where a sixth fixed one would.
+pub fn fixed_argument_logger(logger: FixedArgumentLogger) -> fmi2CallbackLogger {
+    // SAFETY: both are `extern "C"` function pointers; the calls this FMU makes pass exactly the
+    // arguments `logger` reads (see above).
+    unsafe { std::mem::transmute::<FixedArgumentLogger, fmi2CallbackLogger>(logger) }
+}
 
 /// Where an instance's messages go: the host's callback with its environment pointer.
 pub struct Logger {
@@ -14,18 +28,8 @@ pub struct Logger {
 }
 
 impl Logger {
-    pub fn new(
-        callback: fmi2CallbackLogger,
-        environment: fmi2ComponentEnvironment,
-        instance_name: &str,
-        on: bool,
-    ) -> Self {
-        Self {
-            callback,
-            environment,
-            instance_name: c_string(instance_name),
-            enabled: [on; LOG_CATEGORIES.len()],
-        }
+    pub fn new(callback: fmi2CallbackLogger, environment: fmi2ComponentEnvironment, instance_name: &str, on: bool) -> Self {
+        Self { callback, environment, instance_name: c_string(instance_name), enabled: [on; LOG_CATEGORIES.len()] }
     }
 
     /// fmi2SetDebugLogging: no categories = all of them; an unknown name is refused, nothing changed.
@@ -39,12 +43,7 @@ impl Logger {
             let i = LOG_CATEGORIES
                 .iter()
                 .position(|c| c == name)
-                .ok_or_else(|| {
-                    format!(
-                        "unknown log category {name:?}; known: {}",
-                        LOG_CATEGORIES.join(", ")
-                    )
-                })?;
+                .ok_or_else(|| format!("unknown log category {name:?}; known: {}", LOG_CATEGORIES.join(", ")))?;
             enabled[i] = on;
         }
         self.enabled = enabled;
@@ -53,22 +52,14 @@ impl Logger {
 
     /// Errors and fatal errors always reach the host: a refused call must say why.
     pub fn status(&self, status: Status, message: &str) {
-        let category = if status == Status::Fatal {
-            "logStatusFatal"
-        } else {
-            "logStatusError"
-        };
+        let category = if status == Status::Fatal { "logStatusFatal" } else { "logStatusError" };
         self.send(status, category, message);
     }
 
     /// A debug message, written and sent only when its category is enabled (a step's events
     /// would otherwise each cost a formatted string nobody reads).
     pub fn debug(&self, category: &str, message: impl FnOnce() -> String) {
-        if LOG_CATEGORIES
-            .iter()
-            .zip(self.enabled)
-            .any(|(c, on)| on && *c == category)
-        {
+        if LOG_CATEGORIES.iter().zip(self.enabled).any(|(c, on)| on && *c == category) {
             self.send(Status::Ok, category, &message());
         }
     }

@@ -1,23 +1,26 @@
 //! The FMI 2.0 Co-Simulation interface: the only `unsafe` code of the crate.
 //!
-//! - `exports`: the `#[no_mangle]` fmi2* symbols, one line each;
-//! - `abi`: their bodies, generic over the engine model: pointers in, `catch_unwind`, logging out;
+//! - `exports`: the `#[no_mangle]` fmi2* symbols, each a call of its body in `functions`;
+//! - `functions`: the bodies, generic over the engine model: pointers in (`pointers`), the state
+//!   machine's check, `catch_unwind`, logging out;
+//! - `state_machine`: the states and the one table of the states each function is allowed in;
 //! - `reentry`: refuses a call into an instance from inside its own call (its logger calling back);
-//! - `sibling`: the FMU's second build, for x86-64-v3 CPUs, chosen at run time;
-//! - `instance`: the state machine and every check, in safe code;
+//! - `instance`: what each function does, in safe code;
 //! - `description`: the variable table generated from `modelDescription/`;
-//! - `state_bytes` and `codec`: the serialized FMU state.
+//! - `state_bytes`: the serialized FMU state.
 
-mod abi;
-mod codec;
 pub mod description;
 pub mod exports;
+mod functions;
 mod instance;
 mod logger;
+mod pointers;
 mod reentry;
-pub mod sibling;
 mod state_bytes;
+mod state_machine;
 pub mod types;
+
+pub use logger::{fixed_argument_logger, FixedArgumentLogger};
 
 #[cfg(test)]
 mod tests;

@@ -6,41 +6,69 @@
 //! | 4 | format version (u32 LE) |
 //! | 2 + n | GUID length (u16 LE) and GUID (UTF-8) of the model description that wrote it |
 //! | 8 | payload length (u64 LE) |
-//! | m | payload: the state in the [`codec`](super::codec) format |
+//! | m | payload: the state in postcard's format (serde; f64 as its 8 IEEE bytes, so a state restores bit-identically) |
 //! | 4 | CRC-32 (IEEE) of everything before it |
 //!
 //! Decoding checks each field in this order and names the first that is wrong: foreign, truncated
 //! or corrupted bytes are an error, never a crash.
 
-use super::codec;
 use serde::{de::DeserializeOwned, Serialize};
 
 const MAGIC: &[u8; 8] = b"PSLAPFMU";
 /// Bump when the layout of the saved state changes.
-pub const FORMAT_VERSION: u32 = 1;
+pub const FORMAT_VERSION: u32 = 2;
 
+/// The state in its envelope, the payload encoded once, straight after the header.
 pub fn encode<T: Serialize>(state: &T, guid: &str) -> Result<Vec<u8>, String> {
-    let payload = codec::to_bytes(state).map_err(|e| format!("cannot encode the state: {e}"))?;
-    seal(&payload, guid)
+    let mut out = header(guid)?;
+    let length_at = out.len();
+    out.extend_from_slice(&0u64.to_le_bytes());
+    let mut out = postcard::to_extend(state, out).map_err(|e| format!("cannot encode the state: {e}"))?;
+    let payload_len = (out.len() - length_at - 8) as u64;
+    out[length_at..length_at + 8].copy_from_slice(&payload_len.to_le_bytes());
+    Ok(sealed(out))
 }
 
-pub fn decode<T: DeserializeOwned>(bytes: &[u8], guid: &str) -> Result<T, String> {
-    codec::from_bytes(open(bytes, guid)?).map_err(|e| format!("cannot decode the state: {e}"))
+/// The state in `bytes`, whose payload must be exactly the encoding of the state it decodes to:
+/// postcard reads lengths and integers written in more bytes than needed, and would otherwise
+/// accept a state that does not re-serialize to its own bytes.
+pub fn decode<T: Serialize + DeserializeOwned>(bytes: &[u8], guid: &str) -> Result<T, String> {
+    let payload = open(bytes, guid)?;
+    let (state, rest) = postcard::take_from_bytes(payload).map_err(|e| format!("cannot decode the state: {e}"))?;
+    if !rest.is_empty() {
+        return Err(format!("cannot decode the state: {} trailing bytes", rest.len()));
+    }
+    if postcard::to_allocvec(&state).map_err(|e| format!("cannot encode the state: {e}"))? != payload {
+        return Err("cannot decode the state: the payload is not in its canonical encoding".into());
+    }
+    Ok(state)
 }
 
-/// Wraps a payload in the envelope.
-pub fn seal(payload: &[u8], guid: &str) -> Result<Vec<u8>, String> {
+/// Magic, format version and GUID.
+fn header(guid: &str) -> Result<Vec<u8>, String> {
     let guid_len = u16::try_from(guid.len()).map_err(|_| "GUID too long".to_string())?;
-    let mut out = Vec::with_capacity(payload.len() + guid.len() + 26);
+    let mut out = Vec::new();
     out.extend_from_slice(MAGIC);
     out.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
     out.extend_from_slice(&guid_len.to_le_bytes());
     out.extend_from_slice(guid.as_bytes());
+    Ok(out)
+}
+
+/// `body` with its CRC appended.
+fn sealed(mut body: Vec<u8>) -> Vec<u8> {
+    let crc = crc32(&body);
+    body.extend_from_slice(&crc.to_le_bytes());
+    body
+}
+
+/// Wraps a payload in the envelope.
+#[cfg(test)]
+pub fn seal(payload: &[u8], guid: &str) -> Result<Vec<u8>, String> {
+    let mut out = header(guid)?;
     out.extend_from_slice(&(payload.len() as u64).to_le_bytes());
     out.extend_from_slice(payload);
-    let crc = crc32(&out);
-    out.extend_from_slice(&crc.to_le_bytes());
-    Ok(out)
+    Ok(sealed(out))
 }
 
 /// Checks the envelope and returns its payload.
@@ -51,32 +79,21 @@ pub fn open<'a>(bytes: &'a [u8], guid: &str) -> Result<&'a [u8], String> {
     }
     let version = u32::from_le_bytes(r.array()?);
     if version != FORMAT_VERSION {
-        return Err(format!(
-            "state format version {version}, this FMU reads {FORMAT_VERSION}"
-        ));
+        return Err(format!("state format version {version}, this FMU reads {FORMAT_VERSION}"));
     }
     let guid_len = u16::from_le_bytes(r.array()?);
     let written_by = r.take(usize::from(guid_len))?;
     if written_by != guid.as_bytes() {
         let shown = String::from_utf8_lossy(written_by);
-        return Err(format!(
-            "state written by a model with GUID {shown}, this FMU is {guid}"
-        ));
+        return Err(format!("state written by a model with GUID {shown}, this FMU is {guid}"));
     }
     let payload_len = u64::from_le_bytes(r.array()?);
     let expected = r.0.len().checked_sub(4);
     if expected.map(|n| n as u64) != Some(payload_len) {
-        return Err(format!(
-            "payload length {payload_len} does not match the {} bytes given",
-            bytes.len()
-        ));
+        return Err(format!("payload length {payload_len} does not match the {} bytes given", bytes.len()));
     }
     let body_len = bytes.len() - 4;
-    let crc = u32::from_le_bytes(
-        bytes[body_len..]
-            .try_into()
-            .map_err(|_| "truncated".to_string())?,
-    );
+    let crc = u32::from_le_bytes(bytes[body_len..].try_into().map_err(|_| "truncated".to_string())?);
     if crc32(&bytes[..body_len]) != crc {
         return Err("checksum mismatch: the state bytes are corrupted".into());
     }
@@ -111,11 +128,7 @@ fn crc32(bytes: &[u8]) -> u32 {
             let mut c = i as u32;
             let mut k = 0;
             while k < 8 {
-                c = if c & 1 != 0 {
-                    0xEDB8_8320 ^ (c >> 1)
-                } else {
-                    c >> 1
-                };
+                c = if c & 1 != 0 { 0xEDB8_8320 ^ (c >> 1) } else { c >> 1 };
                 k += 1;
             }
             table[i] = c;
@@ -123,9 +136,7 @@ fn crc32(bytes: &[u8]) -> u32 {
         }
         table
     };
-    !bytes.iter().fold(!0u32, |c, &b| {
-        TABLE[((c ^ u32::from(b)) & 0xff) as usize] ^ (c >> 8)
-    })
+    !bytes.iter().fold(!0u32, |c, &b| TABLE[((c ^ u32::from(b)) & 0xff) as usize] ^ (c >> 8))
 }
 
 #[cfg(test)]
@@ -135,11 +146,7 @@ mod tests {
     const GUID: &str = "{test}";
 
     fn sample() -> Vec<u8> {
-        encode(
-            &(vec![0.1f64, -2.5, 1e-9], "log.csv".to_string(), Some(3u8)),
-            GUID,
-        )
-        .unwrap()
+        encode(&(vec![0.1f64, -2.5, 1e-9], "log.csv".to_string(), Some(3u8)), GUID).unwrap()
     }
 
     type Sample = (Vec<f64>, String, Option<u8>);
@@ -152,10 +159,7 @@ mod tests {
     #[test]
     fn round_trip() {
         let back: Sample = decode(&sample(), GUID).unwrap();
-        assert_eq!(
-            back,
-            (vec![0.1, -2.5, 1e-9], "log.csv".to_string(), Some(3))
-        );
+        assert_eq!(back, (vec![0.1, -2.5, 1e-9], "log.csv".to_string(), Some(3)));
     }
 
     #[test]
@@ -211,10 +215,7 @@ mod simulation_tests {
         let back: Simulation<Shuttle> = decode(&bytes, "{g}").unwrap();
         assert_eq!(back, sim);
         let bits = |s: &Simulation<Shuttle>| -> Vec<u64> {
-            s.step_events()
-                .iter()
-                .flat_map(|e| [e.time, e.crank_angle, e.energy_lost].map(f64::to_bits))
-                .collect()
+            s.step_events().iter().flat_map(|e| [e.time, e.crank_angle, e.energy_lost].map(f64::to_bits)).collect()
         };
         assert_eq!(bits(&back), bits(&sim));
     }

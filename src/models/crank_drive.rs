@@ -78,7 +78,7 @@ impl Engine {
     }
 
     /// Inlined, with the cache's lookup (`PrescribedCrank::crank`, `LastValue::get_or`), into
-    /// the evaluations: called out of line, the cache's hit cost a call at every stage (+2 %).
+    /// the evaluations: called out of line, a cache hit would cost a call at every stage.
     #[inline(always)]
     fn crank(&self, angle: f64) -> Crank {
         let (sin, cos) = super::trig::sin_cos(angle);
@@ -157,7 +157,7 @@ impl PrescribedCrank {
     }
 
     /// Linkage evaluation in full coordinates. Inlined, with what it calls, into the reduced
-    /// evaluation, where the crank row's unused terms and a copy then drop out (−7 % instructions).
+    /// evaluation, where the crank row's unused terms and a copy then drop out.
     #[inline(always)]
     pub fn evaluate_full(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<3, 4> {
         let (phi, phid) = self.full_state(t, q, qd);
@@ -272,7 +272,14 @@ mod tests {
             let p = Parameters { pressure_source, ..Parameters::default() };
             let mut sys = PrescribedCrank::new(Engine::new(&p), 0.1, 0.0, 125.66);
             let (q, qd) = (Vector2::new(0.05, 0.001), Vector2::new(-30.0, 2.0));
-            for (t, held, speed) in [(0.001, 2e6, 125.66), (0.001, 2e6, 125.66), (0.002, 2e6, 125.66), (0.001, 5e6, 125.66), (0.001, 1e6, 80.0), (0.003, 1e6, 80.0)] {
+            for (t, held, speed) in [
+                (0.001, 2e6, 125.66),
+                (0.001, 2e6, 125.66),
+                (0.002, 2e6, 125.66),
+                (0.001, 5e6, 125.66),
+                (0.001, 1e6, 80.0),
+                (0.003, 1e6, 80.0),
+            ] {
                 sys.engine.hold_pressure(held);
                 sys.hold_speed(0.0, speed);
                 let fresh = PrescribedCrank::new(sys.engine.clone(), 0.1, 0.0, speed);
@@ -285,7 +292,9 @@ mod tests {
     fn inertia_and_force_are_those_of_the_full_evaluation() {
         let sys = prescribed();
         let free = FreeCrank { engine: sys.engine.clone(), load_torque: 12.0 };
-        for (t, q, qd) in [(0.013, Vector2::new(-0.05, 0.0007), Vector2::new(-28.0, 3.0)), (0.071, Vector2::new(0.2, -0.01), Vector2::new(5.0, -40.0))] {
+        for (t, q, qd) in
+            [(0.013, Vector2::new(-0.05, 0.0007), Vector2::new(-28.0, 3.0)), (0.071, Vector2::new(0.2, -0.01), Vector2::new(5.0, -40.0))]
+        {
             let ev = sys.evaluate(t, &q, &qd);
             assert_eq!(sys.inertia_and_force(t, &q, &qd), (ev.mass, ev.force));
             let (phi, phid) = sys.full_state(t, &q, &qd);

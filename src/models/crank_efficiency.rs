@@ -107,8 +107,11 @@ mod tests {
         // Eq 46's printed integrand for L_F, integrated independently (Simpson on a finer grid).
         let n = 200_000;
         let h = 4.0 * PI / n as f64;
-        let integrand = |a: f64| curve.gauge(a) * AREA * 0.04 * a.sin() * (1.0 + a.cos() / (lambda * (1.0 - (a.sin() / lambda).powi(2)).sqrt()));
-        let simpson: f64 = (0..n).map(|i| (integrand(i as f64 * h) + 4.0 * integrand((i as f64 + 0.5) * h) + integrand((i as f64 + 1.0) * h)) * h / 6.0).sum();
+        let integrand =
+            |a: f64| curve.gauge(a) * AREA * 0.04 * a.sin() * (1.0 + a.cos() / (lambda * (1.0 - (a.sin() / lambda).powi(2)).sqrt()));
+        let simpson: f64 = (0..n)
+            .map(|i| (integrand(i as f64 * h) + 4.0 * integrand((i as f64 + 0.5) * h) + integrand((i as f64 + 1.0) * h)) * h / 6.0)
+            .sum();
         assert!((cal.gas_work - simpson).abs() < 1e-6 * simpson, "{} vs {simpson}", cal.gas_work);
         // Work balance of eq 40 at the mean speed.
         let damping_work = 4.0 * PI * target.mean_speed * cal.damping[0] * k;
@@ -123,9 +126,8 @@ mod tests {
         let gas_work = 24.7 * 4.0 * PI / 0.85;
         // A pressure constant on the expansion stroke doing exactly that work: L_F = p A · 2 l1.
         let p = gas_work / (AREA * 2.0 * CENTRED.crank_radius);
-        let cal = EfficiencyTarget::default()
-            .calibrate(&CENTRED, AREA, |a: f64| if a.rem_euclid(4.0 * PI) < PI { p } else { 0.0 })
-            .unwrap();
+        let cal =
+            EfficiencyTarget::default().calibrate(&CENTRED, AREA, |a: f64| if a.rem_euclid(4.0 * PI) < PI { p } else { 0.0 }).unwrap();
         assert!((cal.gas_work - gas_work).abs() < 1e-6 * gas_work, "L_F {}", cal.gas_work);
         assert!((cal.load_torque - 24.7).abs() < 1e-5, "M0 {}", cal.load_torque);
         assert!((cal.damping[0] - 0.028645).abs() < 0.000002, "c1 {}", cal.damping[0]);

@@ -276,7 +276,12 @@ mod tests {
     /// The same equations by the generic link loop: `M = Σ m_k J_kᵀ J_k + diag(J_zk)` and
     /// `f = Q − Σ m_k J_kᵀ J̇_k φ̇` from each body's Jacobian columns, the gas force through the
     /// Jacobian of its point, the corner rows from the corner positions. An independent derivation.
-    fn by_link_jacobians(l: &Linkage, phi: &Vector3<f64>, phid: &Vector3<f64>, loads: Loads) -> (Matrix3<f64>, Vector3<f64>, nalgebra::Matrix4x3<f64>, Vector4<f64>) {
+    fn by_link_jacobians(
+        l: &Linkage,
+        phi: &Vector3<f64>,
+        phid: &Vector3<f64>,
+        loads: Loads,
+    ) -> (Matrix3<f64>, Vector3<f64>, nalgebra::Matrix4x3<f64>, Vector4<f64>) {
         let e = [along(phi[0]), along(phi[1]), along(phi[2])];
         let n = [across(phi[0]), across(phi[1]), across(phi[2])];
         let weight = Vector2::new(0.0, -l.bodies.gravity);
@@ -320,7 +325,9 @@ mod tests {
             for j in 0..3 {
                 jacobian[(i, j)] = side * columns[j];
             }
-            let accel = -l.bodies.links[0] * phid[0] * phid[0] * e[0].x - l.bodies.links[1] * phid[1] * phid[1] * e[1].x - phid[2] * phid[2] * tilt.x;
+            let accel = -l.bodies.links[0] * phid[0] * phid[0] * e[0].x
+                - l.bodies.links[1] * phid[1] * phid[1] * e[1].x
+                - phid[2] * phid[2] * tilt.x;
             bias[i] = side * accel;
         }
         (mass, force, jacobian, bias)
@@ -335,7 +342,13 @@ mod tests {
             lo + (hi - lo) * (seed >> 11) as f64 / (1u64 << 53) as f64
         };
         for a in [0.0, 0.002, -0.0035] {
-            let l = Linkage::new(&Parameters { pin_offset: a, damping_main: 0.3, damping_crank_pin: 0.05, damping_piston_pin: 0.02, ..Parameters::default() });
+            let l = Linkage::new(&Parameters {
+                pin_offset: a,
+                damping_main: 0.3,
+                damping_crank_pin: 0.05,
+                damping_piston_pin: 0.02,
+                ..Parameters::default()
+            });
             for _ in 0..200 {
                 let phi = Vector3::new(uniform(-40.0, 40.0), uniform(-0.4, 0.4), uniform(-0.5, 0.5));
                 let phid = Vector3::new(uniform(-300.0, 300.0), uniform(-100.0, 100.0), uniform(-50.0, 50.0));
@@ -345,7 +358,11 @@ mod tests {
                 let close = |x: f64, reference: f64, scale: f64| (x - reference).abs() <= 1e-12 * scale;
                 assert!(ev.mass.iter().zip(mass.iter()).all(|(x, r)| close(*x, *r, mass.norm())), "M {} vs {mass}", ev.mass);
                 assert!(ev.force.iter().zip(force.iter()).all(|(x, r)| close(*x, *r, force.norm())), "f {} vs {force}", ev.force);
-                assert!(ev.gap_jacobian.iter().zip(jacobian.iter()).all(|(x, r)| close(*x, *r, jacobian.norm())), "J {} vs {jacobian}", ev.gap_jacobian);
+                assert!(
+                    ev.gap_jacobian.iter().zip(jacobian.iter()).all(|(x, r)| close(*x, *r, jacobian.norm())),
+                    "J {} vs {jacobian}",
+                    ev.gap_jacobian
+                );
                 assert!(ev.gap_bias.iter().zip(bias.iter()).all(|(x, r)| close(*x, *r, bias.norm())), "d {} vs {bias}", ev.gap_bias);
                 // The corners' gaps from their positions.
                 let pin = l.pin(&phi);
@@ -434,7 +451,11 @@ mod tests {
         let l = linkage(0.0);
         let (m1, m2, m3) = (p.crank_mass, p.rod_mass, p.piston_mass);
         let (l1, l2, e1, e2, e3, g) = (p.crank_radius, p.rod_length, p.crank_com, p.rod_com, p.piston_com, p.gravity);
-        let b = [p.crank_inertia + e1 * e1 * m1 + l1 * l1 * (m2 + m3), p.rod_inertia + e2 * e2 * m2 + l2 * l2 * m3, p.piston_inertia + e3 * e3 * m3];
+        let b = [
+            p.crank_inertia + e1 * e1 * m1 + l1 * l1 * (m2 + m3),
+            p.rod_inertia + e2 * e2 * m2 + l2 * l2 * m3,
+            p.piston_inertia + e3 * e3 * m3,
+        ];
         let (n12, n13, n23) = (m2 * e2 * l1 + m3 * l1 * l2, m3 * e3 * l1, m3 * e3 * l2);
         let big_m = [m1 * g * e1 + (m2 + m3) * g * l1, m2 * g * e2 + m3 * g * l2, m3 * g * e3];
         let (c1, c2, c3) = (p.damping_main, p.damping_crank_pin, p.damping_piston_pin);
@@ -442,8 +463,10 @@ mod tests {
         for (phi, phid) in states() {
             let c = |i: usize, j: usize| (phi[i] - phi[j]).cos();
             let s = |i: usize, j: usize| (phi[i] - phi[j]).sin();
-            let mass = Matrix3::new(b[0], n12 * c(0, 1), n13 * c(0, 2), n12 * c(0, 1), b[1], n23 * c(1, 2), n13 * c(0, 2), n23 * c(1, 2), b[2]);
-            let gyro = Matrix3::new(0.0, n12 * s(0, 1), n13 * s(0, 2), -n12 * s(0, 1), 0.0, n23 * s(1, 2), -n13 * s(0, 2), -n23 * s(1, 2), 0.0);
+            let mass =
+                Matrix3::new(b[0], n12 * c(0, 1), n13 * c(0, 2), n12 * c(0, 1), b[1], n23 * c(1, 2), n13 * c(0, 2), n23 * c(1, 2), b[2]);
+            let gyro =
+                Matrix3::new(0.0, n12 * s(0, 1), n13 * s(0, 2), -n12 * s(0, 1), 0.0, n23 * s(1, 2), -n13 * s(0, 2), -n23 * s(1, 2), 0.0);
             let squares = phid.component_mul(&phid);
             let restoring = -Vector3::new(big_m[0] * phi[0].sin(), big_m[1] * phi[1].sin(), big_m[2] * phi[2].sin());
             let f_e = Vector3::new(LOADS.gas_force * l1 * phi[0].sin() - LOADS.load_torque, LOADS.gas_force * l2 * phi[1].sin(), 0.0);

@@ -17,8 +17,8 @@ mod energy;
 /// where the piston lies flat on a wall (fully constrained, no error to control), ≈ 1e-4 s in
 /// flight. Over ten cycles of the default case against a 2.5 µs fixed-step reference (958
 /// impacts faster than 0.1 mm/s, `examples/step_study.rs`): impact times agree to 4.6e-9 s and
-/// speeds to 2.3e-4 relative, as with the former fixed 1e-4 s step (4.5e-9 s, 2.8e-4) at 2.3×
-/// fewer RK4 steps; 1e-10 m gives 3.0e-8 s and 8.7e-4.
+/// speeds to 2.3e-4 relative, as a fixed 1e-4 s step does (4.5e-9 s, 2.8e-4) with 2.3×
+/// as many RK4 steps; 1e-10 m gives 3.0e-8 s and 8.7e-4.
 pub const MAX_STEP: f64 = 1e-3;
 pub const LOCAL_ERROR: f64 = 1e-11;
 
@@ -49,7 +49,12 @@ struct StartOffset {
 
 impl StartOffset {
     fn of(p: &Parameters) -> Self {
-        Self { lateral: p.piston_lateral_start, lateral_velocity: p.piston_lateral_velocity_start, tilt: p.piston_tilt_start, tilt_rate: p.piston_tilt_rate_start }
+        Self {
+            lateral: p.piston_lateral_start,
+            lateral_velocity: p.piston_lateral_velocity_start,
+            tilt: p.piston_tilt_start,
+            tilt_rate: p.piston_tilt_rate_start,
+        }
     }
 
     /// (φ2, φ3) and their rates at crank angle φ1 turning at ω: the pin at x = a + x₀ (l2 sin φ2 =
@@ -85,8 +90,12 @@ fn validate(p: &Parameters) -> Result<(), ModelError> {
     check(p.skirt_length > 0.0, || format!("skirt_length ({} m) must be positive: the corners K2, K4 lie at its end", p.skirt_length))?;
     // The corner description (A&K eq 26) holds while the piston cannot turn across the bore.
     let diagonal = p.piston_diameter.hypot(p.skirt_length);
-    check(p.bore < diagonal, || format!("bore ({} m) must be below the piston diagonal √(piston_diameter² + skirt_length²) ({diagonal} m)", p.bore))?;
-    check(p.pin_offset.abs() < 0.5 * p.piston_diameter, || format!("pin_offset ({} m) must be smaller than piston_diameter/2 ({} m)", p.pin_offset, 0.5 * p.piston_diameter))?;
+    check(p.bore < diagonal, || {
+        format!("bore ({} m) must be below the piston diagonal √(piston_diameter² + skirt_length²) ({diagonal} m)", p.bore)
+    })?;
+    check(p.pin_offset.abs() < 0.5 * p.piston_diameter, || {
+        format!("pin_offset ({} m) must be smaller than piston_diameter/2 ({} m)", p.pin_offset, 0.5 * p.piston_diameter)
+    })?;
     check(p.rod_length > p.crank_radius + p.pin_offset.abs(), || {
         format!("rod_length ({} m) must exceed crank_radius + |pin_offset| ({} m)", p.rod_length, p.crank_radius + p.pin_offset.abs())
     })
@@ -169,7 +178,9 @@ impl CrankTrain {
                 let (angle, time) = (sys.crank_angle(s.time()), s.time());
                 Drive::Prescribed(Self::prescribed(sys.engine.clone(), geometry, start, angle, time, speed, &self.options)?)
             }
-            Drive::Free(s) => Drive::Free(Self::free(s.system().clone(), geometry, start, s.position()[0], s.time(), speed, &self.options)?),
+            Drive::Free(s) => {
+                Drive::Free(Self::free(s.system().clone(), geometry, start, s.position()[0], s.time(), speed, &self.options)?)
+            }
         };
         self.started = true;
         Ok(())
@@ -274,11 +285,17 @@ impl CrankTrain {
 
 impl EngineModel for CrankTrain {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
-        Self::with_options(params, start_time, StepperOptions { step: MAX_STEP, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() })
+        Self::with_options(
+            params,
+            start_time,
+            StepperOptions { step: MAX_STEP, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() },
+        )
     }
 
     fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
-        for (name, value) in [("crank_speed", inputs.crank_speed), ("gas_pressure", inputs.gas_pressure), ("load_torque", inputs.load_torque)] {
+        for (name, value) in
+            [("crank_speed", inputs.crank_speed), ("gas_pressure", inputs.gas_pressure), ("load_torque", inputs.load_torque)]
+        {
             check(value.is_finite(), || format!("input {name} ({value}) must be finite"))?;
         }
         if !self.started {
@@ -303,7 +320,8 @@ impl EngineModel for CrankTrain {
                 self.log(s.events(), |e| Vector3::new(sys.crank_angle(e.time), e.q[0], e.q[1]), events);
                 for e in s.events().iter().filter(|e| e.impulses != Vector4::zeros()) {
                     let work = sys.impulse_work(e.time, &e.q, &e.impulses);
-                    self.impulse_work += work.ok_or_else(|| ModelError(format!("crank train: at t = {} s: the rod and piston inertia is singular", e.time)))?;
+                    self.impulse_work += work
+                        .ok_or_else(|| ModelError(format!("crank train: at t = {} s: the rod and piston inertia is singular", e.time)))?;
                 }
             }
             Drive::Free(s) => self.log(s.events(), |e| e.q, events),
@@ -322,7 +340,8 @@ impl EngineModel for CrankTrain {
         let (forces, in_contact) = self.contacts();
         out.piston_lateral = pin.x;
         // ẋ_O3 = −l1 cos φ1 φ̇1 − l2 cos φ2 φ̇2.
-        out.piston_lateral_velocity = -self.geometry.crank_radius * phi[0].cos() * phid[0] - self.geometry.rod_length * phi[1].cos() * phid[1];
+        out.piston_lateral_velocity =
+            -self.geometry.crank_radius * phi[0].cos() * phid[0] - self.geometry.rod_length * phi[1].cos() * phid[1];
         out.piston_tilt = phi[2];
         out.piston_axial = pin.y;
         out.crank_angle = phi[0];
@@ -361,7 +380,10 @@ mod tests {
             (Parameters { skirt_length: 0.0, ..Parameters::default() }, "skirt_length (0 m) must be positive"),
             (Parameters { bore: 0.2, ..Parameters::default() }, "piston diagonal"),
             (Parameters { pin_offset: -0.041, ..Parameters::default() }, "pin_offset (-0.041 m) must be smaller"),
-            (Parameters { rod_length: 0.05, pin_offset: 0.02, ..Parameters::default() }, "rod_length (0.05 m) must exceed crank_radius + |pin_offset|"),
+            (
+                Parameters { rod_length: 0.05, pin_offset: 0.02, ..Parameters::default() },
+                "rod_length (0.05 m) must exceed crank_radius + |pin_offset|",
+            ),
         ];
         for (params, expected) in cases {
             let message = validate(&params).unwrap_err().0;

@@ -1,7 +1,6 @@
 //! Engine models on the core: the crank train of Awrejcewicz & Kudra (variant 1) and Farahanchi's
 //! roller slider crank (variant 2), behind one interface the FMU drives.
 
-mod parameters;
 pub mod crank_drive;
 pub mod crank_efficiency;
 pub mod crank_kinematics;
@@ -9,6 +8,7 @@ pub mod crank_linkage;
 pub mod crank_train;
 mod energy_balance;
 mod last_value;
+mod parameters;
 pub mod pressure;
 mod roller;
 mod roller_forcing;
@@ -19,7 +19,7 @@ pub use crank_train::CrankTrain;
 pub use energy_balance::{EnergyBalance, PowerFlows};
 pub use parameters::{Inputs, ModelError, Outputs, Parameters};
 pub use roller::{Roller, RollerSystem};
-pub use roller_forcing::{Forcing, Jet, SliderCrank, SlidingRegion};
+pub use roller_forcing::{Forcing, Jet, RollerMechanism, SlidingRegion};
 
 use serde::{Deserialize, Serialize};
 

@@ -154,19 +154,8 @@ impl Parameters {
     }
 }
 
-fn check_real(
-    name: &str,
-    value: f64,
-    min: Option<f64>,
-    max: Option<f64>,
-    positive: bool,
-    unit: &str,
-) -> Result<(), ModelError> {
-    let refuse = |range: String| {
-        Err(ModelError(format!(
-            "{name} = {value} {unit} is out of range: {range}"
-        )))
-    };
+fn check_real(name: &str, value: f64, min: Option<f64>, max: Option<f64>, positive: bool, unit: &str) -> Result<(), ModelError> {
+    let refuse = |range: String| Err(ModelError(format!("{name} = {value} {unit} is out of range: {range}")));
     if !value.is_finite() {
         return refuse("must be finite".into());
     }
@@ -174,29 +163,20 @@ fn check_real(
         return refuse(format!("must be > 0 {unit}"));
     }
     match (min, max) {
-        (Some(lo), Some(hi)) if !(lo..=hi).contains(&value) => {
-            refuse(format!("must be in [{lo}, {hi}]"))
-        }
+        (Some(lo), Some(hi)) if !(lo..=hi).contains(&value) => refuse(format!("must be in [{lo}, {hi}]")),
         (Some(lo), _) if value < lo => refuse(format!("must be ≥ {lo} {unit}")),
         (_, Some(hi)) if value > hi => refuse(format!("must be ≤ {hi} {unit}")),
         _ => Ok(()),
     }
 }
 
-fn check_integer(
-    name: &str,
-    value: i32,
-    min: Option<i32>,
-    max: Option<i32>,
-) -> Result<(), ModelError> {
+fn check_integer(name: &str, value: i32, min: Option<i32>, max: Option<i32>) -> Result<(), ModelError> {
     let below = min.is_some_and(|lo| value < lo);
     let above = max.is_some_and(|hi| value > hi);
     if below || above {
         let lo = min.map_or("−∞".to_string(), |v| v.to_string());
         let hi = max.map_or("∞".to_string(), |v| v.to_string());
-        return Err(ModelError(format!(
-            "{name} = {value} is not one of {lo}..={hi}"
-        )));
+        return Err(ModelError(format!("{name} = {value} is not one of {lo}..={hi}")));
     }
     Ok(())
 }
@@ -209,29 +189,14 @@ mod tests {
         let mut p = Parameters::default();
         change(&mut p);
         let err = p.validate().expect_err(name);
-        assert!(
-            err.0.contains(name),
-            "message {:?} should name {name}",
-            err.0
-        );
+        assert!(err.0.contains(name), "message {:?} should name {name}", err.0);
     }
 
     #[test]
     fn defaults_are_the_design_values_and_valid() {
         let p = Parameters::default();
-        assert_eq!(
-            (
-                p.model_variant,
-                p.crank_mode,
-                p.pressure_source,
-                p.roller_forcing
-            ),
-            (1, 1, 2, 2)
-        );
-        assert_eq!(
-            (p.bore, p.piston_diameter, p.restitution, p.peak_pressure),
-            (0.08008, 0.08, 0.5, 8e6)
-        );
+        assert_eq!((p.model_variant, p.crank_mode, p.pressure_source, p.roller_forcing), (1, 1, 2, 2));
+        assert_eq!((p.bore, p.piston_diameter, p.restitution, p.peak_pressure), (0.08008, 0.08, 0.5, 8e6));
         assert_eq!(p.impact_log, "");
         assert_eq!(Inputs::default().crank_speed, 125.66);
         p.validate().unwrap();
@@ -255,11 +220,7 @@ mod tests {
 
     #[test]
     fn boundary_values_are_accepted() {
-        let mut p = Parameters {
-            restitution: 0.0,
-            skirt_length: 0.0,
-            ..Parameters::default()
-        };
+        let mut p = Parameters { restitution: 0.0, skirt_length: 0.0, ..Parameters::default() };
         p.validate().unwrap();
         p.restitution = 1.0;
         p.validate().unwrap();

@@ -47,10 +47,8 @@ impl FourStrokePressure {
         // The maximum lies between TDC and 60° after it; a fine scan then a golden-section refinement.
         let samples = 600;
         let spacing = (PI / 3.0) / samples as f64;
-        let coarse = (0..=samples)
-            .map(|k| k as f64 * spacing)
-            .max_by(|a, b| unscaled.gauge(*a).total_cmp(&unscaled.gauge(*b)))
-            .unwrap_or(0.0);
+        let coarse =
+            (0..=samples).map(|k| k as f64 * spacing).max_by(|a, b| unscaled.gauge(*a).total_cmp(&unscaled.gauge(*b))).unwrap_or(0.0);
         let (mut lo, mut hi) = (coarse - spacing, coarse + spacing);
         let ratio = 0.5 * (5f64.sqrt() - 1.0);
         for _ in 0..60 {
@@ -87,11 +85,7 @@ impl FourStrokePressure {
         } else {
             0.0
         };
-        let blowdown = if theta > EXHAUST_OPENS {
-            (FRAC_PI_2 * (theta - EXHAUST_OPENS) / (PI - EXHAUST_OPENS)).cos().powi(2)
-        } else {
-            1.0
-        };
+        let blowdown = if theta > EXHAUST_OPENS { (FRAC_PI_2 * (theta - EXHAUST_OPENS) / (PI - EXHAUST_OPENS)).cos().powi(2) } else { 1.0 };
         let expansion = (BDC_VOLUME / self.volume(sin, cos)).powf(POLYTROPIC_EXPONENT);
         (expansion * (1.0 + (COMBUSTION_PRESSURE_RATIO - 1.0) * burnt) - 1.0) * blowdown
     }
@@ -105,8 +99,8 @@ impl FourStrokePressure {
 }
 
 /// The whole number nearest `x`, ties away from zero, as `x.round()` but for |x| < 2⁵² by a
-/// conversion to an integer: baseline x86-64 has no rounding instruction, and `round`, a call,
-/// was 1.3 % of the crank train's instructions. Where `x + ½` rounds up to a whole number from
+/// conversion to an integer: baseline x86-64 has no rounding instruction, so `round` is a call
+/// in the crank train's every evaluation. Where `x + ½` rounds up to a whole number from
 /// just below a tie, the result is one more than `round`'s: the crank angle then lies at ϑ = ±2π,
 /// where the curve is 0 either way.
 fn nearest_whole(x: f64) -> f64 {
@@ -128,10 +122,13 @@ mod tests {
     #[test]
     fn peak_is_the_requested_value_shortly_after_firing_tdc() {
         let p = curve();
-        let (angle, max) = (0..40_000)
-            .map(|k| k as f64 * 4.0 * PI / 40_000.0)
-            .map(|a| (a, p.gauge(a)))
-            .fold((0.0, f64::MIN), |best, x| if x.1 > best.1 { x } else { best });
+        let (angle, max) = (0..40_000).map(|k| k as f64 * 4.0 * PI / 40_000.0).map(|a| (a, p.gauge(a))).fold((0.0, f64::MIN), |best, x| {
+            if x.1 > best.1 {
+                x
+            } else {
+                best
+            }
+        });
         assert!((max - 8e6).abs() < 1e-6 * 8e6, "max {max}");
         assert!(angle > 0.0 && angle < 20f64.to_radians(), "peak at {} deg", angle.to_degrees());
     }

@@ -2,8 +2,8 @@
 //! nonsmooth core.
 //!
 //! The core integrates the thesis's own dimensionless system (eqs 3.1–3.3): time is the crank angle
-//! θ, the coordinate ψ, the constraints h_lower = ψ − ψ_min(θ) ≥ 0 (corner 1) and
-//! h_upper = ψ_max(θ) − ψ ≥ 0 (corner 3). The core's restitution on ḣ is eq 2.17, restitution
+//! θ, the coordinate ψ, the constraints h_lower = ψ − ψ_min(θ) ≥ 0 (corner 3) and
+//! h_upper = ψ_max(θ) − ψ ≥ 0 (corner 1). The core's restitution on ḣ is eq 2.17, restitution
 //! relative to the moving wall. Working in θ makes the thesis's step (0.005) and sliding threshold
 //! (|ψ' − ψ_max'| < 0.005 after an impact, Appendix B) hold at every crank speed; in SI that threshold
 //! is a normal speed of 0.005 l Λ Ω. The thesis's threshold serves roller_forcing = 1; the corrected
@@ -12,11 +12,13 @@
 //! The FMU's dimensional parameters map as DESIGN.md §4 says: ξ = r/l, α = m/M, β = J_r/(M l²),
 //! ρ = Δ/l with Δ = (bore − piston_diameter)/2, λ = c₂/(M l² Ω) with Ω the `crank_speed` input. As in
 //! the thesis there is no gravity, no gas force and no piston-pin damping, and the crank speed is
-//! prescribed (crank_mode = 1 only). Lateral positions are linearized like the model: y = l Λ ψ, so
-//! the walls are at y = ±Δ exactly.
+//! prescribed (crank_mode = 1 only). Lateral positions are linearized like the model: x = −l Λ ψ, so
+//! the walls are at x = ∓Δ exactly. The sign is variant 1's (DESIGN.md §4): with the crank pin at
+//! x = −r sin θ, the pin is at x = −r sin θ − l sin(ψ − φ) ≈ −l Λ ψ, so the thesis's upper wall
+//! (ψ = ψ_max) is the x = −D/2 wall of corners 1 and 2, and the lower wall that of corners 3 and 4.
 
 use super::last_value::LastValue;
-use super::roller_forcing::{AtAngle, Forcing, SliderCrank};
+use super::roller_forcing::{AtAngle, Forcing, RollerMechanism};
 use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
 use crate::dynamics::{DynamicsError, Evaluation, Event, EventKind, Stepper, StepperOptions, System};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
@@ -33,9 +35,9 @@ mod energy;
 /// `analysis.classify` calls a response periodic.
 const WRAP_TURNS: f64 = 2048.0;
 
-/// Constraint index of the lower wall (ψ = ψ_min, corner 1).
+/// Constraint index of the lower wall (ψ = ψ_min, x = +D/2, corner 3).
 pub const LOWER: usize = 0;
-/// Constraint index of the upper wall (ψ = ψ_max, corner 3).
+/// Constraint index of the upper wall (ψ = ψ_max, x = −D/2, corner 1).
 pub const UPPER: usize = 1;
 
 /// The thesis's step (Appendix B), in radians of crank angle.
@@ -52,7 +54,7 @@ pub const SLIDING_THRESHOLD_PER_CLEARANCE: f64 = 1e-3;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RollerSystem {
     /// Private: `last_angle` caches its terms.
-    mechanism: SliderCrank,
+    mechanism: RollerMechanism,
     /// ρ = Δ/l.
     pub rho: f64,
     /// λ = c₂/(M l² Ω), held with the crank speed.
@@ -64,7 +66,7 @@ pub struct RollerSystem {
 }
 
 impl RollerSystem {
-    pub fn mechanism(&self) -> &SliderCrank {
+    pub fn mechanism(&self) -> &RollerMechanism {
         &self.mechanism
     }
 }
@@ -126,7 +128,7 @@ fn core_error(error: DynamicsError, clock: impl FnOnce(f64) -> f64) -> ModelErro
 
 /// Corner number of the impact log for a constraint index.
 pub fn corner(constraint: usize) -> u8 {
-    if constraint == LOWER {
+    if constraint == UPPER {
         1
     } else {
         3
@@ -139,7 +141,7 @@ impl Roller {
         &self.stepper
     }
 
-    fn mechanism(&self) -> &SliderCrank {
+    fn mechanism(&self) -> &RollerMechanism {
         self.stepper.system().mechanism()
     }
 
@@ -228,7 +230,7 @@ impl EngineModel for Roller {
         }
         let (l, mass) = (p.rod_length, p.piston_mass);
         let system = RollerSystem {
-            mechanism: SliderCrank {
+            mechanism: RollerMechanism {
                 xi: p.crank_radius / l,
                 alpha: p.rod_mass / mass,
                 beta: p.rod_inertia / (mass * l * l),
@@ -244,7 +246,8 @@ impl EngineModel for Roller {
             Forcing::Corrected => SLIDING_THRESHOLD_PER_CLEARANCE * system.rho,
         };
         let options = StepperOptions { step: THESIS_STEP, velocity_tolerance, ..StepperOptions::default() };
-        let stepper = Stepper::new(system, p.crank_angle_start, SVector::zeros(), SVector::zeros(), options.clone()).map_err(|e| core_error(e, |_| start_time))?;
+        let stepper = Stepper::new(system, p.crank_angle_start, SVector::zeros(), SVector::zeros(), options.clone())
+            .map_err(|e| core_error(e, |_| start_time))?;
         Ok(Self {
             stepper,
             options,
@@ -273,7 +276,9 @@ impl EngineModel for Roller {
         let theta_start = self.stepper.time();
         self.stepper.clear_events();
         let now = self.time;
-        self.stepper.advance(theta_start + omega * (t_end - now)).map_err(|e| core_error(e, |theta| now + (theta - theta_start) / omega))?;
+        self.stepper
+            .advance(theta_start + omega * (t_end - now))
+            .map_err(|e| core_error(e, |theta| now + (theta - theta_start) / omega))?;
         events.extend(self.stepper.events().iter().map(|e| self.engine_event(e, theta_start)));
         let system = self.stepper.system();
         self.impulse_work += self.stepper.events().iter().map(|e| system.impulse_work(e)).sum::<f64>() * self.energy_scale();
@@ -293,8 +298,8 @@ impl EngineModel for Roller {
         let l = self.rod_length;
         // Wall force F = M l Ω² λ_core / Λ (the core's multiplier acts on ψ, the wall on y = l Λ ψ).
         let forces = self.stepper.multipliers() * (self.piston_mass * l * omega * omega / cos_phi.value);
-        out.piston_lateral = l * cos_phi.value * psi;
-        out.piston_lateral_velocity = l * omega * (cos_phi.d1 * psi + cos_phi.value * dpsi);
+        out.piston_lateral = -l * cos_phi.value * psi;
+        out.piston_lateral_velocity = -l * omega * (cos_phi.d1 * psi + cos_phi.value * dpsi);
         out.piston_tilt = 0.0;
         out.piston_axial = self.axial_position(theta, psi);
         out.crank_angle = theta + 2.0 * PI * self.turns;
@@ -302,15 +307,16 @@ impl EngineModel for Roller {
         let psi_jet = [psi, dpsi, self.stepper.acceleration()[0]];
         let lambda = self.stepper.system().lambda;
         out.crank_torque = mechanism.drive_torque(theta, psi_jet, lambda) * self.piston_mass * (l * omega).powi(2);
-        out.contact_state_1 = i32::from(self.stepper.in_contact(LOWER));
+        out.contact_state_1 = i32::from(self.stepper.in_contact(UPPER));
         out.contact_state_2 = 0;
-        out.contact_state_3 = i32::from(self.stepper.in_contact(UPPER));
+        out.contact_state_3 = i32::from(self.stepper.in_contact(LOWER));
         out.contact_state_4 = 0;
-        out.contact_force_1 = forces[LOWER];
+        out.contact_force_1 = forces[UPPER];
         out.contact_force_2 = 0.0;
-        out.contact_force_3 = forces[UPPER];
+        out.contact_force_3 = forces[LOWER];
         out.contact_force_4 = 0.0;
-        out.side_force = forces[LOWER] - forces[UPPER];
+        // The −D/2 wall (upper) pushes toward +x.
+        out.side_force = forces[UPPER] - forces[LOWER];
         out.crank_speed_actual = omega;
         out.kinetic_energy = mechanism.kinetic_energy(theta, psi, dpsi) * self.energy_scale() + 0.5 * self.crank_inertia * omega * omega;
     }

@@ -47,7 +47,7 @@ pub struct Jet {
 
 /// The dimensionless mechanism of the thesis: ξ = r/l, α = m/M, β = J_r/(M l²).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-pub struct SliderCrank {
+pub struct RollerMechanism {
     pub xi: f64,
     pub alpha: f64,
     pub beta: f64,
@@ -59,14 +59,14 @@ pub struct SliderCrank {
 /// third of the roller's run time).
 #[derive(Clone, Copy, Debug)]
 pub struct AtAngle {
-    mechanism: SliderCrank,
+    mechanism: RollerMechanism,
     sin: f64,
     cos: f64,
     /// Λ = cos φ = √(1 − ξ² sin²τ), with Λ' = −ξ² sin 2τ / (2Λ) and Λ'' = −ξ² cos 2τ / Λ − Λ'²/Λ.
     pub cos_phi: Jet,
 }
 
-impl SliderCrank {
+impl RollerMechanism {
     /// The mechanism's terms at crank angle `tau`.
     pub fn at(&self, tau: f64) -> AtAngle {
         let xi2 = self.xi * self.xi;
@@ -122,9 +122,7 @@ impl SliderCrank {
         let (s, c) = (tau + u).sin_cos();
         self.inertia() * du * ddu - k * ddu * c + k * du * (1.0 + du) * s + lambda * (1.0 + du) * (1.0 + du)
     }
-}
 
-impl SliderCrank {
     /// Kinetic energy of rod and roller over M l² Ω² at crank angle τ, exact in ψ: the rod's
     /// angular velocity is ψ' − φ' (module doc), its centre of mass at mid-length.
     pub fn kinetic_energy(&self, tau: f64, psi: f64, dpsi: f64) -> f64 {
@@ -199,20 +197,20 @@ mod tests {
     use std::f64::consts::PI;
 
     /// The thesis's mechanism (section 4.1).
-    fn thesis(forcing: Forcing) -> SliderCrank {
-        SliderCrank { xi: 0.3030, alpha: 1.9, beta: 0.4719, forcing }
+    fn thesis(forcing: Forcing) -> RollerMechanism {
+        RollerMechanism { xi: 0.3030, alpha: 1.9, beta: 0.4719, forcing }
     }
 
     /// Exact kinetic energy with l = M = Ω = 1, for a rod angular velocity ψ̇ − φ̇ (consistent) or
     /// φ̇ + ψ̇ (as the thesis writes it in eq 2.1).
-    fn kinetic_energy(sc: &SliderCrank, consistent: bool, psi: f64, dpsi: f64, t: f64) -> f64 {
+    fn kinetic_energy(sc: &RollerMechanism, consistent: bool, psi: f64, dpsi: f64, t: f64) -> f64 {
         let phi = sc.at(t).rod_angle();
         let rod_rate = if consistent { dpsi - phi.d1 } else { phi.d1 + dpsi };
         sc.kinetic_energy_with(t, psi, dpsi, rod_rate)
     }
 
     /// d/dt ∂T/∂ψ̇ − ∂T/∂ψ − Q' along ψ(t), by central differences (exact for T quadratic in ψ̇).
-    fn lagrange_residual(sc: &SliderCrank, consistent: bool, lambda: f64, path: &dyn Fn(f64) -> [f64; 2], t: f64) -> f64 {
+    fn lagrange_residual(sc: &RollerMechanism, consistent: bool, lambda: f64, path: &dyn Fn(f64) -> [f64; 2], t: f64) -> f64 {
         let h = 1e-3;
         let momentum = |t: f64| {
             let [p, dp] = path(t);
@@ -265,7 +263,7 @@ mod tests {
     }
 
     /// `sc.forcing` equals `formula(ξ, α, β, λ, τ, Λ)` over a cycle.
-    fn assert_forcing_is(sc: SliderCrank, lambda: f64, formula: impl Fn(f64, f64, f64, f64, f64, f64) -> f64) {
+    fn assert_forcing_is(sc: RollerMechanism, lambda: f64, formula: impl Fn(f64, f64, f64, f64, f64, f64) -> f64) {
         for k in 0..16 {
             let t = k as f64 * 0.41;
             let big = (1.0 - sc.xi * sc.xi * t.sin().powi(2)).sqrt();
@@ -321,11 +319,15 @@ mod tests {
     }
 
     /// Crank angles in [0, 2π) where f_u (upper) or f_l (lower) changes sign, on a fine grid.
-    fn sign_changes(sc: &SliderCrank, lambda: f64, rho: f64, upper: bool) -> Vec<f64> {
+    fn sign_changes(sc: &RollerMechanism, lambda: f64, rho: f64, upper: bool) -> Vec<f64> {
         let n = 20000;
         let force = |k: usize| {
             let (fu, fl) = sc.constraint_forces(2.0 * PI * k as f64 / n as f64, lambda, rho);
-            if upper { fu } else { fl }
+            if upper {
+                fu
+            } else {
+                fl
+            }
         };
         (1..=n).filter(|&k| (force(k) > 0.0) != (force(k - 1) > 0.0)).map(|k| 2.0 * PI * k as f64 / n as f64).collect()
     }
@@ -375,7 +377,7 @@ mod tests {
     /// τ Ω = M ẋ ẍ with x = r cos θ + l cos φ (finite differences of the nominal kinematics).
     #[test]
     fn drive_torque_of_a_massless_rod_is_the_piston_inertia_torque() {
-        let sc = SliderCrank { xi: 0.3030, alpha: 0.0, beta: 0.0, forcing: Forcing::Corrected };
+        let sc = RollerMechanism { xi: 0.3030, alpha: 0.0, beta: 0.0, forcing: Forcing::Corrected };
         let x = |t: f64| sc.xi * t.cos() + sc.at(t).cos_phi.value;
         let h = 1e-4;
         for k in 0..24 {

@@ -1,6 +1,6 @@
 //! Sine and cosine without libm's general path. For angles known to be small (the rod angle, the
-//! piston tilt) its range reduction is wasted, and its `sin_cos` was a sixth of the crank train's
-//! run time: two polynomials do it in a dozen multiply-adds, a tilt in two. The crank angle, of
+//! piston tilt) its range reduction is wasted, and its `sin_cos` would be a sixth of the crank
+//! train's run time: two polynomials do it in a dozen multiply-adds, a tilt in two. The crank angle, of
 //! any size, takes a quarter-turn reduction and the same polynomials: half of libm's cost.
 
 /// Widest small angle: covers the rod's swing asin(l1/l2) of any sensible engine, and up to it
@@ -13,15 +13,8 @@ const TILT_LIMIT: f64 = 1.0 / 256.0;
 
 /// Taylor coefficients in x² from the lowest: sin x = x (1 + Σ SIN_k x^(2k+2)) with SIN_k =
 /// (−1)^(k+1) / (2k+3)!, cos x = 1 + Σ COS_k x^(2k+2) with COS_k = (−1)^(k+1) / (2k+2)!.
-const SIN: [f64; 7] = [
-    -1.0 / 6.0,
-    1.0 / 120.0,
-    -1.0 / 5040.0,
-    1.0 / 362_880.0,
-    -1.0 / 39_916_800.0,
-    1.0 / 6_227_020_800.0,
-    -1.0 / 1_307_674_368_000.0,
-];
+const SIN: [f64; 7] =
+    [-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362_880.0, -1.0 / 39_916_800.0, 1.0 / 6_227_020_800.0, -1.0 / 1_307_674_368_000.0];
 const COS: [f64; 8] = [
     -1.0 / 2.0,
     1.0 / 24.0,
@@ -34,7 +27,7 @@ const COS: [f64; 8] = [
 ];
 
 /// Σ c_k y^k by Horner. Not `mul_add`: built without target-cpu flags, it calls a software-dispatched
-/// `fma`, which made an evaluation 40 % slower instead of faster.
+/// `fma`, slower than a multiply and an add.
 fn horner(y: f64, c: &[f64]) -> f64 {
     let (last, rest) = c.split_last().expect("coefficients");
     rest.iter().rfold(*last, |acc, &c| acc * y + c)
@@ -72,8 +65,8 @@ const HALF_PI: [f64; 3] = [1.570_796_326_734_125_6, 6.077_100_506_303_966e-11, 2
 const REDUCIBLE: f64 = 16384.0 * std::f64::consts::FRAC_PI_2;
 
 /// `x.sin_cos()` of any angle, within 2 ulp of libm up to [`REDUCIBLE`]: x = k π/2 + r with
-/// |r| ≤ π/4, then the polynomials on r. libm's reduction made its call ≈ 150 instructions, 7 %
-/// of the crank train's; this one takes ≈ 70.
+/// |r| ≤ π/4, then the polynomials on r. libm's reduction makes its call ≈ 150 instructions;
+/// this one takes ≈ 70.
 pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
     if x.abs() > REDUCIBLE || x.is_nan() {
         return x.sin_cos();
@@ -122,7 +115,9 @@ mod tests {
         grid(LIMIT).for_each(check_small);
         let above = LIMIT.next_up();
         let tilt = [TILT_LIMIT, -TILT_LIMIT, TILT_LIMIT.next_up(), -TILT_LIMIT.next_up(), 1e-3, -1e-3];
-        for x in [0.0, -0.0, 1e-300, -1e-300, 5e-324, -5e-324, 1e-8, -1e-8, LIMIT, -LIMIT, above, -above, 1.0, 1e300].into_iter().chain(tilt) {
+        for x in
+            [0.0, -0.0, 1e-300, -1e-300, 5e-324, -5e-324, 1e-8, -1e-8, LIMIT, -LIMIT, above, -above, 1.0, 1e300].into_iter().chain(tilt)
+        {
             check_small(x);
         }
         for x in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {

@@ -21,13 +21,9 @@ pub struct ImpactLog {
 impl ImpactLog {
     /// Creates (or truncates) the file and writes the header.
     pub fn create(path: &str) -> Result<Self, ModelError> {
-        let mut log = Self {
-            path: path.to_string(),
-            length: 0,
-        };
+        let mut log = Self { path: path.to_string(), length: 0 };
         let mut file = File::create(path).map_err(|e| log.error("cannot create", e))?;
-        file.write_all(HEADER.as_bytes())
-            .map_err(|e| log.error("cannot write", e))?;
+        file.write_all(HEADER.as_bytes()).map_err(|e| log.error("cannot write", e))?;
         log.length = HEADER.len() as u64;
         Ok(log)
     }
@@ -38,14 +34,9 @@ impl ImpactLog {
             return Ok(());
         }
         let rows: String = events.iter().map(row).collect();
-        let mut file = OpenOptions::new()
-            .write(true)
-            .open(&self.path)
-            .map_err(|e| self.error("cannot open", e))?;
-        file.set_len(self.length)
-            .map_err(|e| self.error("cannot truncate", e))?;
-        let written = std::io::Seek::seek(&mut file, std::io::SeekFrom::Start(self.length))
-            .and_then(|_| file.write_all(rows.as_bytes()));
+        let mut file = OpenOptions::new().write(true).open(&self.path).map_err(|e| self.error("cannot open", e))?;
+        file.set_len(self.length).map_err(|e| self.error("cannot truncate", e))?;
+        let written = std::io::Seek::seek(&mut file, std::io::SeekFrom::Start(self.length)).and_then(|_| file.write_all(rows.as_bytes()));
         match written {
             Ok(()) => {
                 self.length += rows.len() as u64;
@@ -66,22 +57,15 @@ impl ImpactLog {
     /// Cuts the file back to this cursor (after a state restore). A file shorter than the cursor was
     /// changed by someone else: refused.
     pub fn rewind(&self) -> Result<(), ModelError> {
-        let file = OpenOptions::new()
-            .write(true)
-            .open(&self.path)
-            .map_err(|e| self.error("cannot open", e))?;
-        let actual = file
-            .metadata()
-            .map_err(|e| self.error("cannot inspect", e))?
-            .len();
+        let file = OpenOptions::new().write(true).open(&self.path).map_err(|e| self.error("cannot open", e))?;
+        let actual = file.metadata().map_err(|e| self.error("cannot inspect", e))?.len();
         if actual < self.length {
             return Err(ModelError(format!(
                 "impact_log {:?} holds {actual} bytes, fewer than the {} of the restored state",
                 self.path, self.length
             )));
         }
-        file.set_len(self.length)
-            .map_err(|e| self.error("cannot truncate", e))
+        file.set_len(self.length).map_err(|e| self.error("cannot truncate", e))
     }
 
     fn error(&self, what: &str, e: std::io::Error) -> ModelError {
@@ -98,12 +82,6 @@ fn row(e: &EngineEvent) -> String {
     };
     format!(
         "{},{},{kind},{},{},{},{},{}\n",
-        e.time,
-        e.crank_angle,
-        e.corner,
-        e.normal_velocity_before,
-        e.normal_velocity_after,
-        e.energy_lost,
-        e.position
+        e.time, e.crank_angle, e.corner, e.normal_velocity_before, e.normal_velocity_after, e.energy_lost, e.position
     )
 }

@@ -25,9 +25,7 @@ impl ImpactStatistics {
         self.impact_energy_in_step = 0.0;
         for e in events.iter().filter(|e| e.kind == EngineEventKind::Impact) {
             self.impacts_in_step = self.impacts_in_step.saturating_add(1);
-            self.max_impact_velocity_in_step = self
-                .max_impact_velocity_in_step
-                .max(e.normal_velocity_before);
+            self.max_impact_velocity_in_step = self.max_impact_velocity_in_step.max(e.normal_velocity_before);
             self.impact_energy_in_step += e.energy_lost;
             self.impact_velocity = e.normal_velocity_before;
             self.last_impact_corner = i32::from(e.corner);

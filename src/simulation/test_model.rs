@@ -5,9 +5,7 @@
 //! A negative `gas_pressure` makes `advance` fail, `load_torque` = 42 makes it panic (to test error
 //! handling). Never shipped.
 
-use crate::models::{
-    EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters,
-};
+use crate::models::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -37,16 +35,8 @@ impl EngineModel for Shuttle {
         })
     }
 
-    fn advance(
-        &mut self,
-        inputs: &Inputs,
-        t_end: f64,
-        events: &mut Vec<EngineEvent>,
-    ) -> Result<(), ModelError> {
-        assert!(
-            inputs.load_torque != 42.0,
-            "shuttle: load_torque = 42 panics (to test panic containment)"
-        );
+    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        assert!(inputs.load_torque != 42.0, "shuttle: load_torque = 42 panics (to test panic containment)");
         if inputs.gas_pressure < 0.0 {
             // Move first so that a caller that does not restore its copy would be caught.
             self.time = t_end;
@@ -54,11 +44,7 @@ impl EngineModel for Shuttle {
         }
         while self.time < t_end {
             let wall = self.half_clearance * self.v.signum();
-            let to_wall = if self.v == 0.0 {
-                f64::INFINITY
-            } else {
-                (wall - self.x) / self.v
-            };
+            let to_wall = if self.v == 0.0 { f64::INFINITY } else { (wall - self.x) / self.v };
             let dt = to_wall.min(t_end - self.time);
             self.time += dt;
             self.crank_angle += inputs.crank_speed * dt;
@@ -86,11 +72,6 @@ impl EngineModel for Shuttle {
 
     fn write_outputs(&self, out: &mut Outputs) {
         // Overwrite everything, as a model may: the facade must keep its statistics regardless.
-        *out = Outputs {
-            piston_lateral: self.x,
-            piston_lateral_velocity: self.v,
-            crank_angle: self.crank_angle,
-            ..Outputs::default()
-        };
+        *out = Outputs { piston_lateral: self.x, piston_lateral_velocity: self.v, crank_angle: self.crank_angle, ..Outputs::default() };
     }
 }

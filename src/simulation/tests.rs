@@ -35,10 +35,7 @@ fn impact_statistics_match_the_closed_form() {
     let p = Parameters::default();
     let e = p.restitution;
     let times = impact_times(e, 4);
-    assert!(
-        times[2] < 0.1 && times[3] > 0.1,
-        "three impacts before 0.1 s: {times:?}"
-    );
+    assert!(times[2] < 0.1 && times[3] > 0.1, "three impacts before 0.1 s: {times:?}");
     let inputs = Inputs::default();
     let mut sim = Sim::new(&p, 0.0).unwrap();
     let mut in_steps = 0;
@@ -53,16 +50,9 @@ fn impact_statistics_match_the_closed_form() {
     assert_eq!(in_steps, 3);
     assert_eq!(max_in_steps, SHUTTLE_SPEED);
     assert!((out.impact_velocity - e * e * SHUTTLE_SPEED).abs() < 1e-15);
-    assert_eq!(
-        out.last_impact_corner, 3,
-        "the third impact is on the +x wall again"
-    );
+    assert_eq!(out.last_impact_corner, 3, "the third impact is on the +x wall again");
     let energy = 0.5 * p.piston_mass * SHUTTLE_SPEED.powi(2) * (1.0 - e.powi(6));
-    assert!(
-        (out.impact_energy_total - energy).abs() < 1e-12 * energy,
-        "{} vs {energy}",
-        out.impact_energy_total
-    );
+    assert!((out.impact_energy_total - energy).abs() < 1e-12 * energy, "{} vs {energy}", out.impact_energy_total);
     assert!((out.last_impact_crank_angle - inputs.crank_speed * times[2]).abs() < 1e-9);
     // The model's own outputs come through as well: after 0.1 s the shuttle heads for −c at e³v0.
     assert!((out.piston_lateral_velocity + e.powi(3) * SHUTTLE_SPEED).abs() < 1e-15);
@@ -85,21 +75,12 @@ fn a_failed_step_leaves_the_simulation_as_it_was() {
     let mut sim = Sim::new(&Parameters::default(), 0.0).unwrap();
     run(&mut sim, &Inputs::default(), 0.01, 1e-3);
     let before = sim.clone();
-    let failing = Inputs {
-        gas_pressure: -1.0,
-        ..Inputs::default()
-    };
+    let failing = Inputs { gas_pressure: -1.0, ..Inputs::default() };
     let err = sim.step(&failing, 0.011).unwrap_err();
-    assert!(
-        err.0.contains("negative gas_pressure") && err.0.contains("t = 0.01"),
-        "{err}"
-    );
+    assert!(err.0.contains("negative gas_pressure") && err.0.contains("t = 0.01"), "{err}");
     assert_eq!(sim, before);
     for bad in [f64::NAN, f64::INFINITY] {
-        let nan = Inputs {
-            crank_speed: bad,
-            ..Inputs::default()
-        };
+        let nan = Inputs { crank_speed: bad, ..Inputs::default() };
         assert!(sim.step(&nan, 0.011).unwrap_err().0.contains("crank_speed"));
         assert_eq!(sim, before);
     }
@@ -111,10 +92,7 @@ fn a_failed_step_leaves_the_simulation_as_it_was() {
 
 #[test]
 fn bad_parameters_are_refused_by_name() {
-    let p = Parameters {
-        piston_mass: -1.0,
-        ..Parameters::default()
-    };
+    let p = Parameters { piston_mass: -1.0, ..Parameters::default() };
     let err: ModelError = Sim::new(&p, 0.0).unwrap_err();
     assert!(err.0.contains("piston_mass"), "{err}");
     assert!(Sim::new(&Parameters::default(), f64::NAN).is_err());
@@ -123,10 +101,7 @@ fn bad_parameters_are_refused_by_name() {
 #[test]
 fn the_impact_log_holds_the_rows_of_the_trajectory() {
     let path = temp_path("log");
-    let p = Parameters {
-        impact_log: path.to_str().unwrap().into(),
-        ..Parameters::default()
-    };
+    let p = Parameters { impact_log: path.to_str().unwrap().into(), ..Parameters::default() };
     let mut sim = Sim::start(&p, 0.0).unwrap();
     run(&mut sim, &Inputs::default(), 0.03, 1e-3);
     let saved = sim.clone();
@@ -139,10 +114,7 @@ fn the_impact_log_holds_the_rows_of_the_trajectory() {
         let cols: Vec<&str> = line.split(',').collect();
         assert_eq!(cols.len(), 8);
         assert_eq!(cols[2], "impact");
-        assert!(
-            (cols[0].parse::<f64>().unwrap() - t).abs() < 1e-12,
-            "{line} vs {t}"
-        );
+        assert!((cols[0].parse::<f64>().unwrap() - t).abs() < 1e-12, "{line} vs {t}");
     }
     // Restoring the state saved at 0.03 s (two impacts) cuts the third row away.
     saved.rewind_log().unwrap();
@@ -153,10 +125,7 @@ fn the_impact_log_holds_the_rows_of_the_trajectory() {
 
 #[test]
 fn an_unwritable_log_path_is_an_error_at_start() {
-    let p = Parameters {
-        impact_log: "/nonexistent-dir/pistonslap/log.csv".into(),
-        ..Parameters::default()
-    };
+    let p = Parameters { impact_log: "/nonexistent-dir/pistonslap/log.csv".into(), ..Parameters::default() };
     let err = Sim::start(&p, 0.0).unwrap_err();
     assert!(err.0.contains("impact_log"), "{err}");
     assert!(Sim::new(&p, 0.0).is_ok(), "new touches no file");

@@ -117,7 +117,7 @@ int main(int argc, char **argv) {
     CHECK(fmi2Terminate(c));
     fmi2FreeInstance(c);
 
-    /* Logging on at instantiation only: its one message (logBuild) names the build that runs. */
+    /* Logging on at instantiation only, switched off before anything would be logged. */
     straight = fmi2Instantiate("straight", fmi2CoSimulation, argv[1], "file:///tmp", &callbacks, fmi2False, fmi2True);
     if (!straight) return 5;
     CHECK(fmi2SetDebugLogging(straight, fmi2False, 0, NULL));

@@ -3,6 +3,7 @@
 //! setters with arbitrary value references, values and byte strings. No call may panic (fmi2Fatal) or
 //! crash; each either refuses (fmi2Error and a message) or succeeds, and what it accepted is a state
 //! that can be read back, re-serialized, restored and stepped without fmi2Fatal or a silent NaN.
+#![allow(unsafe_code)]
 
 use super::*;
 use crate::fmi::state_bytes;
@@ -118,7 +119,7 @@ fn mutate(rng: &mut Rng, bytes: &mut Vec<u8>, other: &[u8]) {
 fn valid_states() -> Vec<Vec<u8>> {
     let mut states = Vec::new();
     for variant in [1, 2] {
-        let host = Host::<Engine>::new();
+        let host = Host::<ModelVariant>::new();
         assert_eq!(host.set_integer("model_variant", variant), Status::Ok);
         let mut save = || {
             let state = host.get_state();
@@ -131,7 +132,8 @@ fn valid_states() -> Vec<Vec<u8>> {
         assert_eq!(host.exit(), Status::Ok);
         host.run(0.0, 0.05, 1e-3);
         save();
-        assert_eq!(unsafe { abi::terminate::<Engine>(host.c) }, Status::Ok);
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
+        assert_eq!(unsafe { functions::terminate::<ModelVariant>(host.c) }, Status::Ok);
         save();
     }
     states
@@ -140,7 +142,8 @@ fn valid_states() -> Vec<Vec<u8>> {
 /// The FMU's time, when it is stepping.
 fn time<E: Model>(host: &Host<E>) -> Option<f64> {
     let mut t = f64::NAN;
-    let status = unsafe { abi::get_real_status::<E>(host.c, FMI2_LAST_SUCCESSFUL_TIME, &mut t) };
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
+    let status = unsafe { functions::get_real_status::<E>(host.c, FMI2_LAST_SUCCESSFUL_TIME, &mut t) };
     (status == Status::Ok).then_some(t)
 }
 
@@ -159,7 +162,7 @@ fn step_checked<E: Model>(host: &Host<E>, case: &str) {
 
 /// Deserializes `bytes`; what is accepted must re-serialize to the same bytes, restore, and step.
 /// Returns whether it was accepted.
-fn deserialize_checked(host: &Host<Engine>, victim: &Host<Engine>, bytes: &[u8], case: &str) -> bool {
+fn deserialize_checked(host: &Host<ModelVariant>, victim: &Host<ModelVariant>, bytes: &[u8], case: &str) -> bool {
     let logged = host.messages().len();
     let (status, state) = host.deserialize(bytes);
     match status {
@@ -186,8 +189,8 @@ fn deserialize_checked(host: &Host<Engine>, victim: &Host<Engine>, bytes: &[u8],
 fn fuzz_deserialize(seed: u64, cases: usize) -> (usize, usize) {
     let mut rng = Rng(seed);
     let bases = valid_states();
-    let host = Host::<Engine>::new();
-    let victim = Host::<Engine>::new();
+    let host = Host::<ModelVariant>::new();
+    let victim = Host::<ModelVariant>::new();
     let mut accepted = 0;
     for case in 0..cases {
         let label = format!("seed {seed} case {case}");
@@ -203,7 +206,7 @@ fn fuzz_deserialize(seed: u64, cases: usize) -> (usize, usize) {
                 assert!(!deserialize_checked(&host, &victim, &bytes, &label), "{label}: corrupted envelope accepted");
             }
         } else {
-            // The payload, resealed with a valid envelope: what the codec and the model must withstand.
+            // The payload, resealed with a valid envelope: what postcard and the model must withstand.
             let mut payload = state_bytes::open(base, GUID).unwrap().to_vec();
             let other = state_bytes::open(other, GUID).unwrap();
             for _ in 0..mutations {
@@ -221,8 +224,8 @@ fn fuzz_deserialize(seed: u64, cases: usize) -> (usize, usize) {
 
 /// A fresh instance of the shipped engine in Instantiated, InitializationMode or StepComplete, and
 /// whether its variables can be read (all but Instantiated).
-fn instance(rng: &mut Rng) -> (Host<Engine>, bool) {
-    let host = Host::<Engine>::new();
+fn instance(rng: &mut Rng) -> (Host<ModelVariant>, bool) {
+    let host = Host::<ModelVariant>::new();
     assert_eq!(host.set_integer("model_variant", rng.pick(&[1, 2])), Status::Ok);
     let depth = rng.below(3);
     if depth >= 1 {
@@ -236,26 +239,27 @@ fn instance(rng: &mut Rng) -> (Host<Engine>, bool) {
 }
 
 /// One fmi2Set* call with random references and values; on fmi2OK every value reads back as set.
-fn set_checked(rng: &mut Rng, host: &Host<Engine>, read_back: bool, case: &str) {
+fn set_checked(rng: &mut Rng, host: &Host<ModelVariant>, read_back: bool, case: &str) {
     let n = rng.below(4);
     let vrs: Vec<u32> = (0..n).map(|_| value_reference(rng)).collect();
     let logged = host.messages().len();
     let kind = rng.below(4);
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     let (status, expected): (Status, Vec<String>) = unsafe {
         match kind {
             0 => {
                 let values: Vec<f64> = (0..n).map(|_| real(rng)).collect();
-                let status = abi::set_real::<Engine>(host.c, vrs.as_ptr(), n, values.as_ptr());
+                let status = functions::set_real::<ModelVariant>(host.c, vrs.as_ptr(), n, values.as_ptr());
                 (status, values.iter().map(|x| x.to_bits().to_string()).collect())
             }
             1 => {
                 let values: Vec<i32> = (0..n).map(|_| integer(rng)).collect();
-                let status = abi::set_integer::<Engine>(host.c, vrs.as_ptr(), n, values.as_ptr());
+                let status = functions::set_integer::<ModelVariant>(host.c, vrs.as_ptr(), n, values.as_ptr());
                 (status, values.iter().map(i32::to_string).collect())
             }
             2 => {
                 let values: Vec<c_int> = (0..n).map(|_| rng.next() as c_int).collect();
-                let status = abi::set_boolean::<Engine>(host.c, vrs.as_ptr(), n, values.as_ptr());
+                let status = functions::set_boolean::<ModelVariant>(host.c, vrs.as_ptr(), n, values.as_ptr());
                 assert!(n == 0 || status == Status::Error, "{case}: PistonSlap has no Boolean");
                 (status, Vec::new())
             }
@@ -274,7 +278,7 @@ fn set_checked(rng: &mut Rng, host: &Host<Engine>, read_back: bool, case: &str) 
                     })
                     .collect();
                 let pointers: Vec<*const c_char> = strings.iter().map(|s| s.as_ptr() as *const c_char).collect();
-                let status = abi::set_string::<Engine>(host.c, vrs.as_ptr(), n, pointers.as_ptr());
+                let status = functions::set_string::<ModelVariant>(host.c, vrs.as_ptr(), n, pointers.as_ptr());
                 let shown = strings.iter().map(|s| CStr::from_bytes_until_nul(s).unwrap().to_string_lossy().into_owned());
                 (status, shown.collect())
             }
@@ -302,9 +306,11 @@ fn set_checked(rng: &mut Rng, host: &Host<Engine>, read_back: bool, case: &str) 
     }
 }
 
-fn string(host: &Host<Engine>, vr: u32) -> String {
+fn string(host: &Host<ModelVariant>, vr: u32) -> String {
     let mut s: fmi2String = null();
-    assert_eq!(unsafe { abi::get_string::<Engine>(host.c, &vr, 1, &mut s) }, Status::Ok);
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
+    assert_eq!(unsafe { functions::get_string::<ModelVariant>(host.c, &vr, 1, &mut s) }, Status::Ok);
+    // SAFETY: a NUL-terminated string the FMU returned, valid until its next call.
     unsafe { CStr::from_ptr(s) }.to_string_lossy().into_owned()
 }
 
@@ -321,7 +327,8 @@ fn fuzz_setters(seed: u64, cases: usize) -> usize {
         // Whatever was accepted must initialize or be refused by name, then step or be refused. An
         // accepted random impact_log would name a file: cleared first (refused once fixed, in step mode).
         let label = format!("seed {seed} after case {case}");
-        let cleared = unsafe { abi::set_string::<Engine>(host.c, &vr("impact_log"), 1, &c"".as_ptr()) };
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
+        let cleared = unsafe { functions::set_string::<ModelVariant>(host.c, &vr("impact_log"), 1, &c"".as_ptr()) };
         let _ = (host.setup(0.0, None), host.enter());
         let status = host.exit();
         assert!(matches!(status, Status::Ok | Status::Error), "{label}: exit {status:?}");

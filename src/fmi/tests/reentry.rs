@@ -1,6 +1,7 @@
 //! A host whose logger calls back into the instance that is logging: those calls are refused
 //! (fmi2Error; fmi2FreeInstance does nothing) and the instance carries on, while the same logger
 //! may call another instance.
+#![allow(unsafe_code)]
 
 use super::*;
 use std::sync::atomic::{AtomicPtr, Ordering};
@@ -25,9 +26,9 @@ unsafe extern "C" fn calling_back_logger(
     let host = &*(env as *const CallingBack);
     let (logging, other) = (host.logging.load(Ordering::SeqCst), host.other.load(Ordering::SeqCst));
     let mut value = 0.0;
-    let own = abi::get_real::<Shuttle>(logging, &vr("crank_angle"), 1, &mut value);
-    let others = abi::get_real::<Shuttle>(other, &vr("crank_angle"), 1, &mut value);
-    abi::free_instance::<Shuttle>(logging);
+    let own = functions::get_real::<Shuttle>(logging, &vr("crank_angle"), 1, &mut value);
+    let others = functions::get_real::<Shuttle>(other, &vr("crank_angle"), 1, &mut value);
+    functions::free_instance::<Shuttle>(logging);
     host.statuses.lock().unwrap().extend([("own", own), ("other", others)]);
 }
 
@@ -35,17 +36,25 @@ unsafe extern "C" fn calling_back_logger(
 fn a_logger_calling_back_into_its_instance_is_refused_and_the_instance_carries_on() {
     let other = ShuttleHost::initialized();
     let calling_back = Box::new(CallingBack::default());
-    // SAFETY: as `test_logger`, whose signature this logger shares.
-    let logger = unsafe { std::mem::transmute::<TestLoggerFn, fmi2CallbackLogger>(calling_back_logger) };
     let functions = fmi2CallbackFunctions {
-        logger: Some(logger),
+        logger: Some(fixed_argument_logger(calling_back_logger)),
         allocate_memory: None,
         free_memory: None,
         step_finished: None,
         component_environment: &*calling_back as *const CallingBack as *mut c_void,
     };
     let guid = CString::new(GUID).unwrap();
-    let c = unsafe { abi::instantiate::<Shuttle>(c"logging".as_ptr(), FMI2_CO_SIMULATION, guid.as_ptr(), RESOURCES.as_ptr(), &functions, FMI2_FALSE) };
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
+    let c = unsafe {
+        functions::instantiate::<Shuttle>(
+            c"logging".as_ptr(),
+            FMI2_CO_SIMULATION,
+            guid.as_ptr(),
+            RESOURCES.as_ptr(),
+            &functions,
+            FMI2_FALSE,
+        )
+    };
     assert!(!c.is_null());
     calling_back.logging.store(c, Ordering::SeqCst);
     calling_back.other.store(other.c, Ordering::SeqCst);

@@ -5,24 +5,50 @@
 //!
 //! Run with the shipped engine (Fatal is unreachable there: no input makes it panic) and with the test
 //! shuttle, whose `load_torque` = 42 panics, for the Fatal column.
+#![allow(unsafe_code)]
 
 use super::*;
-use crate::fmi::abi::Component;
 use crate::fmi::exports;
-use crate::fmi::instance::Mode;
+use crate::fmi::functions::Component;
+use crate::fmi::state_machine::Mode;
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
 use std::mem::ManuallyDrop;
+
+/// The system allocator, counting per thread the bytes given back (tests run in parallel threads).
+struct CountingFrees;
+
+thread_local! {
+    static FREED: Cell<usize> = const { Cell::new(0) };
+}
+
+// SAFETY: forwards every call to the system allocator unchanged; it only counts.
+unsafe impl GlobalAlloc for CountingFrees {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        // SAFETY: the caller's contract, passed on.
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        FREED.with(|n| n.set(n.get() + layout.size()));
+        // SAFETY: the caller's contract, passed on.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+}
+
+#[global_allocator]
+static COUNTING_FREES: CountingFrees = CountingFrees;
+
+/// Bytes this thread gave back while running `f`.
+fn freed_bytes(f: impl FnOnce()) -> usize {
+    let before = FREED.with(Cell::get);
+    f();
+    FREED.with(Cell::get) - before
+}
 
 /// Columns of [`TABLE`]. The standard's stepInProgress, stepFailed and stepCanceled cannot occur:
 /// fmi2DoStep is synchronous and never returns fmi2Pending or fmi2Discard. Its "start and end" column
 /// only allows fmi2Instantiate (and the two instance-free queries).
-const STATES: [Mode; 6] = [
-    Mode::Instantiated,
-    Mode::InitializationMode,
-    Mode::StepComplete,
-    Mode::Terminated,
-    Mode::Error,
-    Mode::Fatal,
-];
+const STATES: [Mode; 6] = [Mode::Instantiated, Mode::InitializationMode, Mode::StepComplete, Mode::Terminated, Mode::Error, Mode::Fatal];
 
 /// The standard's table for these states: `x` = the call is allowed.
 #[rustfmt::skip]
@@ -88,7 +114,8 @@ fn reach<E: Model>(subject: &Subject<E>, state: Mode) -> Host<E> {
         assert_eq!(host.step(0.0, H), Status::Ok, "{:?}", host.messages());
     }
     match state {
-        Mode::Terminated => assert_eq!(unsafe { abi::terminate::<E>(host.c) }, Status::Ok),
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
+        Mode::Terminated => assert_eq!(unsafe { functions::terminate::<E>(host.c) }, Status::Ok),
         Mode::Error => {
             (subject.break_step)(&host);
             assert_eq!(host.step(H, H), Status::Error);
@@ -105,7 +132,7 @@ fn reach<E: Model>(subject: &Subject<E>, state: Mode) -> Host<E> {
 }
 
 fn mode<E: Model>(host: &Host<E>) -> Mode {
-    // SAFETY: `host.c` is a live instance of `E` made by `abi::instantiate::<E>`.
+    // SAFETY: `host.c` is a live instance of `E` made by `functions::instantiate::<E>`.
     unsafe { (*(host.c as *const Component<E>)).instance.mode() }
 }
 
@@ -126,32 +153,34 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
     let crank_mode = [vr("crank_mode")];
     let impact_log = [vr("impact_log")];
     let no_value = (Status::Discard, Some("has no value"));
+    // SAFETY: a NUL-terminated string the FMU returned, valid until its next call.
     let c_string = |p: *const c_char| unsafe { CStr::from_ptr(p) }.to_str().unwrap();
     let constant = |ok: bool| (if ok { Status::Ok } else { Status::Error }, OK);
+    // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
         match function {
             "fmi2GetTypesPlatform" => constant(c_string(exports::fmi2GetTypesPlatform()) == "default"),
             "fmi2GetVersion" => constant(c_string(exports::fmi2GetVersion()) == "2.0"),
-            "fmi2SetDebugLogging" => (abi::set_debug_logging::<E>(c, FMI2_TRUE, 0, null()), OK),
+            "fmi2SetDebugLogging" => (functions::set_debug_logging::<E>(c, FMI2_TRUE, 0, null()), OK),
             "fmi2SetupExperiment" => (host.setup(0.0, Some(1.0)), OK),
             "fmi2EnterInitializationMode" => (host.enter(), OK),
             "fmi2ExitInitializationMode" => (host.exit(), OK),
-            "fmi2Terminate" => (abi::terminate::<E>(c), OK),
-            "fmi2Reset" => (abi::reset::<E>(c), OK),
-            "fmi2GetReal" => (abi::get_real::<E>(c, reals.as_ptr(), 3, real.as_mut_ptr()), OK),
-            "fmi2GetInteger" => (abi::get_integer::<E>(c, integers.as_ptr(), 2, int.as_mut_ptr()), OK),
-            "fmi2GetBoolean" => (abi::get_boolean::<E>(c, null(), 0, boolean.as_mut_ptr()), OK),
-            "fmi2GetString" => (abi::get_string::<E>(c, impact_log.as_ptr(), 1, string.as_mut_ptr()), OK),
-            "fmi2SetReal" => (abi::set_real::<E>(c, reals.as_ptr(), 1, &100.0), OK),
-            "fmi2SetInteger" => (abi::set_integer::<E>(c, crank_mode.as_ptr(), fixed(&crank_mode), &1), OK),
-            "fmi2SetBoolean" => (abi::set_boolean::<E>(c, null(), 0, null()), OK),
+            "fmi2Terminate" => (functions::terminate::<E>(c), OK),
+            "fmi2Reset" => (functions::reset::<E>(c), OK),
+            "fmi2GetReal" => (functions::get_real::<E>(c, reals.as_ptr(), 3, real.as_mut_ptr()), OK),
+            "fmi2GetInteger" => (functions::get_integer::<E>(c, integers.as_ptr(), 2, int.as_mut_ptr()), OK),
+            "fmi2GetBoolean" => (functions::get_boolean::<E>(c, null(), 0, boolean.as_mut_ptr()), OK),
+            "fmi2GetString" => (functions::get_string::<E>(c, impact_log.as_ptr(), 1, string.as_mut_ptr()), OK),
+            "fmi2SetReal" => (functions::set_real::<E>(c, reals.as_ptr(), 1, &100.0), OK),
+            "fmi2SetInteger" => (functions::set_integer::<E>(c, crank_mode.as_ptr(), fixed(&crank_mode), &1), OK),
+            "fmi2SetBoolean" => (functions::set_boolean::<E>(c, null(), 0, null()), OK),
             "fmi2SetString" => {
                 let empty = [c"".as_ptr()];
-                (abi::set_string::<E>(c, impact_log.as_ptr(), fixed(&impact_log), empty.as_ptr()), OK)
+                (functions::set_string::<E>(c, impact_log.as_ptr(), fixed(&impact_log), empty.as_ptr()), OK)
             }
             "fmi2GetFMUstate" => {
                 let mut state = null_mut();
-                let status = abi::get_fmu_state::<E>(c, &mut state);
+                let status = functions::get_fmu_state::<E>(c, &mut state);
                 assert_eq!(status == Status::Ok, !state.is_null());
                 if !state.is_null() {
                     donor.free_state(state);
@@ -166,7 +195,7 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
             }
             "fmi2FreeFMUstate" => {
                 let mut state = donor.get_state();
-                let status = abi::free_fmu_state::<E>(c, &mut state);
+                let status = functions::free_fmu_state::<E>(c, &mut state);
                 assert_eq!(status == Status::Ok, state.is_null());
                 if !state.is_null() {
                     donor.free_state(state);
@@ -175,14 +204,14 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
             }
             "fmi2SerializedFMUstateSize" => {
                 let (state, mut size) = (donor.get_state(), 0);
-                let status = abi::serialized_fmu_state_size::<E>(c, state, &mut size);
+                let status = functions::serialized_fmu_state_size::<E>(c, state, &mut size);
                 donor.free_state(state);
                 (status, OK)
             }
             "fmi2SerializeFMUstate" => {
                 let state = donor.get_state();
                 let mut bytes = vec![0 as c_char; donor.serialize(state).len()];
-                let status = abi::serialize_fmu_state::<E>(c, state, bytes.as_mut_ptr(), bytes.len());
+                let status = functions::serialize_fmu_state::<E>(c, state, bytes.as_mut_ptr(), bytes.len());
                 donor.free_state(state);
                 (status, OK)
             }
@@ -196,37 +225,22 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
                 }
                 (status, OK)
             }
-            "fmi2GetDirectionalDerivative" => (
-                abi::get_directional_derivative::<E>(c),
-                (Status::Error, Some("providesDirectionalDerivative = false")),
-            ),
-            "fmi2SetRealInputDerivatives" => (
-                abi::set_real_input_derivatives::<E>(c),
-                (Status::Error, Some("canInterpolateInputs = false")),
-            ),
-            "fmi2GetRealOutputDerivatives" => (
-                abi::get_real_output_derivatives::<E>(c),
-                (Status::Error, Some("maxOutputDerivativeOrder = 0")),
-            ),
+            "fmi2GetDirectionalDerivative" => {
+                (functions::get_directional_derivative::<E>(c), (Status::Error, Some("providesDirectionalDerivative = false")))
+            }
+            "fmi2SetRealInputDerivatives" => {
+                (functions::set_real_input_derivatives::<E>(c), (Status::Error, Some("canInterpolateInputs = false")))
+            }
+            "fmi2GetRealOutputDerivatives" => {
+                (functions::get_real_output_derivatives::<E>(c), (Status::Error, Some("maxOutputDerivativeOrder = 0")))
+            }
             "fmi2DoStep" => (host.step(H, H), OK),
-            "fmi2CancelStep" => (abi::cancel_step::<E>(c), OK),
-            "fmi2GetStatus" => (abi::get_status::<E>(c, FMI2_DO_STEP_STATUS, &mut int[0]), no_value),
-            "fmi2GetRealStatus" => (
-                abi::get_real_status::<E>(c, FMI2_LAST_SUCCESSFUL_TIME, &mut real[0]),
-                OK,
-            ),
-            "fmi2GetIntegerStatus" => (
-                abi::get_integer_status::<E>(c, FMI2_DO_STEP_STATUS, &mut int[0]),
-                no_value,
-            ),
-            "fmi2GetBooleanStatus" => (
-                abi::get_boolean_status::<E>(c, FMI2_TERMINATED, &mut boolean[0]),
-                OK,
-            ),
-            "fmi2GetStringStatus" => (
-                abi::get_string_status::<E>(c, FMI2_PENDING_STATUS, &mut string[0]),
-                no_value,
-            ),
+            "fmi2CancelStep" => (functions::cancel_step::<E>(c), OK),
+            "fmi2GetStatus" => (functions::get_status::<E>(c, FMI2_DO_STEP_STATUS, &mut int[0]), no_value),
+            "fmi2GetRealStatus" => (functions::get_real_status::<E>(c, FMI2_LAST_SUCCESSFUL_TIME, &mut real[0]), OK),
+            "fmi2GetIntegerStatus" => (functions::get_integer_status::<E>(c, FMI2_DO_STEP_STATUS, &mut int[0]), no_value),
+            "fmi2GetBooleanStatus" => (functions::get_boolean_status::<E>(c, FMI2_TERMINATED, &mut boolean[0]), OK),
+            "fmi2GetStringStatus" => (functions::get_string_status::<E>(c, FMI2_PENDING_STATUS, &mut string[0]), no_value),
             other => panic!("no call for {other}"),
         }
     }
@@ -268,12 +282,9 @@ fn check_table<E: Model>(subject: &Subject<E>) -> usize {
             } else {
                 assert_eq!(status, Status::Error, "{cell}");
                 // fmi2CancelStep is allowed in no state that can occur: in a live one its refusal says so.
-                let refusal = format!("{function} is not allowed in state {state}");
+                let refusal = format!("{function}: not allowed in state {state}");
                 let why = |m: &str| m.contains(&refusal) || (*function == "fmi2CancelStep" && m.contains("never a step in progress"));
-                assert!(
-                    log.len() == 1 && log[0].0 == Status::Error as c_int && why(&log[0].2),
-                    "{cell}"
-                );
+                assert!(log.len() == 1 && log[0].0 == Status::Error as c_int && why(&log[0].2), "{cell}");
                 assert_eq!(snapshot(&host), before, "{cell}: the state changed");
             }
             cells += 1;
@@ -283,14 +294,17 @@ fn check_table<E: Model>(subject: &Subject<E>) -> usize {
 }
 
 /// fmi2FreeInstance is a void function: it cannot refuse, so it releases the instance in every state,
-/// Fatal included (the standard allows no call after fmi2Fatal; leaking would help no host).
+/// Fatal included (the standard allows no call after fmi2Fatal; leaking would help no host): the
+/// memory it gives back is at least the instance's own, and it logs nothing.
 fn free_in_every_state<E: Model>(subject: &Subject<E>) {
     for state in STATES {
         if state == Mode::Fatal && subject.panic_step.is_none() {
             continue;
         }
         let host = ManuallyDrop::new(reach(subject, state));
-        unsafe { abi::free_instance::<E>(host.c) };
+        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
+        let freed = freed_bytes(|| unsafe { functions::free_instance::<E>(host.c) });
+        assert!(freed >= std::mem::size_of::<Component<E>>(), "{state}: {freed} bytes freed");
         assert!(host.messages().is_empty(), "{state}: {:?}", host.messages());
         // SAFETY: the instance is freed; only the log box is left to drop, once.
         drop(unsafe { std::ptr::read(&host.log) });
@@ -306,7 +320,7 @@ fn shuttle() -> Subject<Shuttle> {
 }
 
 /// The roller variant, which refuses to step at crank_speed 0 (the crank train steps at any speed).
-fn engine() -> Subject<Engine> {
+fn engine() -> Subject<ModelVariant> {
     Subject {
         configure: |host| assert_eq!(host.set_integer("model_variant", 2), Status::Ok),
         break_step: |host| assert_eq!(host.set_real("crank_speed", 0.0), Status::Ok),

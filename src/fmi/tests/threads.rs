@@ -1,6 +1,7 @@
-//! Eight instances of the shipped engine stepped in parallel threads give results bit-identical to the
-//! same runs one by one: every output after every step, and the serialized FMU state at the end.
-//! (No global mutable state: each instance owns everything it computes with.)
+//! Instances in parallel threads are independent: eight of the shipped engine give results
+//! bit-identical to the same runs one by one (every output after every step, and the serialized FMU
+//! state at the end), and instances of the same case agree bit for bit. (No global mutable state:
+//! each instance owns everything it computes with.)
 
 use super::*;
 use std::sync::Barrier;
@@ -26,7 +27,7 @@ const DURATION: f64 = 0.04;
 type Trace = (Vec<Vec<u64>>, Vec<u8>);
 
 fn trace(&(variant, restitution, speed, h): &Run, start: &Barrier) -> Trace {
-    let host = Host::<Engine>::new();
+    let host = Host::<ModelVariant>::new();
     assert_eq!(host.set_integer("model_variant", variant), Status::Ok);
     assert_eq!(host.set_real("restitution", restitution), Status::Ok);
     assert_eq!(host.set_real("crank_speed", speed), Status::Ok);
@@ -58,23 +59,59 @@ fn eight_instances_in_parallel_threads_match_the_runs_one_by_one() {
     let alone: Vec<Trace> = RUNS.iter().map(|run| trace(run, &Barrier::new(1))).collect();
     let start = Barrier::new(RUNS.len());
     let parallel: Vec<Trace> = std::thread::scope(|scope| {
-        let threads: Vec<_> = RUNS
-            .iter()
-            .map(|run| scope.spawn(|| trace(run, &start)))
-            .collect();
+        let threads: Vec<_> = RUNS.iter().map(|run| scope.spawn(|| trace(run, &start))).collect();
         threads.into_iter().map(|t| t.join().unwrap()).collect()
     });
     for (k, (a, p)) in alone.iter().zip(&parallel).enumerate() {
         assert!(a == p, "run {k} {:?} differs in a thread", RUNS[k]);
     }
     // The comparison means something: the runs differ from each other and every one has impacts.
-    let impact_count = VARIABLES
-        .iter()
-        .filter(|v| v.causality == description::Causality::Output)
-        .position(|v| v.name == "impact_count")
-        .unwrap();
+    let impact_count =
+        VARIABLES.iter().filter(|v| v.causality == description::Causality::Output).position(|v| v.name == "impact_count").unwrap();
     for (k, (outputs, _)) in alone.iter().enumerate() {
         assert!(outputs.last().unwrap()[impact_count] > 0, "run {k} has no impact");
         assert!(alone[..k].iter().all(|other| other.1 != alone[k].1), "run {k} repeats another");
     }
+}
+
+#[test]
+fn instances_in_threads_are_independent() {
+    let results: Vec<Vec<u64>> = std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..4)
+            .map(|k| {
+                scope.spawn(move || {
+                    let host = ShuttleHost::initialized();
+                    host.run(0.0, 0.1, [1e-3, 2e-3, 5e-3, 1e-2][k]);
+                    (host.integer("impact_count"), host.real("impact_energy_total").to_bits())
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| {
+                let (n, e) = h.join().unwrap();
+                vec![n as u64, e]
+            })
+            .collect()
+    });
+    assert!(results.iter().all(|r| r[0] == 3), "{results:?}");
+    let energies: Vec<f64> = results.iter().map(|r| f64::from_bits(r[1])).collect();
+    assert!(energies.iter().all(|e| (e - energies[0]).abs() < 1e-18), "{energies:?}");
+}
+
+#[test]
+fn engine_instances_in_threads_agree_bit_for_bit() {
+    let results: Vec<Vec<u64>> = std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..3)
+            .map(|_| {
+                scope.spawn(|| {
+                    let host = Host::<ModelVariant>::initialized();
+                    host.run(0.0, 0.03, 1e-3);
+                    host.output_bits()
+                })
+            })
+            .collect();
+        handles.into_iter().map(|h| h.join().unwrap()).collect()
+    });
+    assert!(results.iter().all(|r| *r == results[0]));
 }

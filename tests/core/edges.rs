@@ -57,7 +57,8 @@ fn more_events_than_the_budget_within_one_nominal_step_are_an_error_and_a_long_s
     // integrates its parabolas exactly at any step, so the nominal step only sets the window.
     let ball = Ball { mass: 1.0, gravity: G, restitution: 1.0, floor: Floor::Fixed };
     let run = |step: f64| {
-        let mut s = Stepper::new(ball.clone(), 0.0, Vector1::new(1.0), Vector1::zeros(), StepperOptions { step, ..Default::default() }).unwrap();
+        let mut s =
+            Stepper::new(ball.clone(), 0.0, Vector1::new(1.0), Vector1::zeros(), StepperOptions { step, ..Default::default() }).unwrap();
         s.set_event_budget(3);
         s.advance(10.0).map(|()| s.events().len())
     };
@@ -81,7 +82,8 @@ fn inadmissible_and_non_finite_states_are_errors() {
     assert!(matches!(s.advance(0.1), Err(DynamicsError::NonFinite { time }) if time == 0.0));
 
     // Finite but overflowing forces: a stage's angles go NaN, and M(q) with them. The message
-    // names that cause (the check stays out of the stages: it cost 1.7 % of the crank train).
+    // names that cause (the check stays out of the RK4 stages, whose evaluation it would keep from
+    // being inlined).
     let pendulum = DoublePendulum { masses: [1.0, 0.5], lengths: [1.0, 0.7], gravity: 1e300, wall: 10.0, restitution: 1.0 };
     let mut s = Stepper::new(pendulum, 0.0, Vector2::new(0.3, 0.2), Vector2::zeros(), StepperOptions::default()).unwrap();
     let err = s.advance(0.1).unwrap_err();

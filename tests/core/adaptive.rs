@@ -44,7 +44,10 @@ fn adaptive_step_beats_the_fixed_step_at_equal_accuracy() {
         .map(|step| swing(StepperOptions { step, ..Default::default() }))
         .find(|&(error, _)| error <= adaptive_error)
         .expect("a fixed step as accurate");
-    assert!(adaptive_cost < fixed_cost, "adaptive {adaptive_cost} evaluations (error {adaptive_error:e}) vs fixed {fixed_cost} ({fixed_error:e})");
+    assert!(
+        adaptive_cost < fixed_cost,
+        "adaptive {adaptive_cost} evaluations (error {adaptive_error:e}) vs fixed {fixed_cost} ({fixed_error:e})"
+    );
 }
 
 /// A ball held on a floor that oscillates (its downward acceleration, 1 m/s², stays below g):

@@ -71,8 +71,14 @@ fn resting_in_the_corner_uses_both_constraints() {
 fn rod_landing_flat_bounces_flat() {
     let (v, e, gap) = (1.5, 0.7, 1e-3);
     let rod = Rod { mass: 2.0, length: 1.0, gravity: 0.0, restitution: e, floor: Floor::Fixed };
-    let mut s = Stepper::new(rod, 0.0, Vector3::new(0.0, gap, 0.0), Vector3::new(0.0, -v, 0.0), StepperOptions { step: 1e-4, ..Default::default() })
-        .unwrap();
+    let mut s = Stepper::new(
+        rod,
+        0.0,
+        Vector3::new(0.0, gap, 0.0),
+        Vector3::new(0.0, -v, 0.0),
+        StepperOptions { step: 1e-4, ..Default::default() },
+    )
+    .unwrap();
     s.advance(2e-3).unwrap();
     let impacts: Vec<_> = s.events().iter().filter(|ev| ev.kind == EventKind::Impact).collect();
     assert_eq!(impacts.len(), 2);
@@ -86,8 +92,14 @@ fn rod_landing_flat_bounces_flat() {
 fn tumbling_rod_comes_to_rest_on_both_ends() {
     let (m, g) = (1.2, 9.81);
     let rod = Rod { mass: m, length: 1.0, gravity: g, restitution: 0.5, floor: Floor::Fixed };
-    let mut s = Stepper::new(rod, 0.0, Vector3::new(0.0, 1.0, 0.3), Vector3::new(0.5, 0.0, 4.0), StepperOptions { step: 1e-4, ..Default::default() })
-        .unwrap();
+    let mut s = Stepper::new(
+        rod,
+        0.0,
+        Vector3::new(0.0, 1.0, 0.3),
+        Vector3::new(0.5, 0.0, 4.0),
+        StepperOptions { step: 1e-4, ..Default::default() },
+    )
+    .unwrap();
     s.advance(3.0).unwrap();
     assert!(s.in_contact(0) && s.in_contact(1), "events: {}", s.events().len());
     assert!((s.multipliers() - Vector2::new(0.5 * m * g, 0.5 * m * g)).norm() < 1e-9, "λ = {}", s.multipliers());
@@ -109,8 +121,9 @@ fn rod_on_a_shaking_floor_leaves_on_both_ends_at_once() {
     let (m, g, a, w) = (0.8, 9.81, 0.01, 50.0);
     let floor = Floor::Oscillating { amplitude: a, angular_frequency: w };
     let rod = Rod { mass: m, length: 1.0, gravity: g, restitution: 0.5, floor };
-    let mut s = Stepper::new(rod, 0.0, Vector3::zeros(), Vector3::new(0.0, a * w, 0.0), StepperOptions { step: 1e-4, ..Default::default() })
-        .unwrap();
+    let mut s =
+        Stepper::new(rod, 0.0, Vector3::zeros(), Vector3::new(0.0, a * w, 0.0), StepperOptions { step: 1e-4, ..Default::default() })
+            .unwrap();
     assert!(s.in_contact(0) && s.in_contact(1));
     s.advance(0.004).unwrap();
     let lambda = 0.5 * m * (g - a * w * w * (w * 0.004).sin());

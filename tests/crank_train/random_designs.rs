@@ -3,13 +3,11 @@
 //! damping, gas or gravity, so their energy balance closes too: T(0) = T(end) + what the impacts
 //! and sliding starts dissipated. `examples/random_designs` runs the same families by the thousand.
 
-mod common;
-
-use common::designs::{engine, run, slider, Design, Random};
+use crate::common::designs::{engine, run, slider, Design, Finished, Random};
 
 const DESIGNS: u64 = 250;
 
-fn failures(make: fn(&mut Random) -> Design, check: impl Fn(&Design, &common::designs::Finished) -> Result<(), String>) -> Vec<String> {
+fn failures(make: fn(&mut Random) -> Design, check: impl Fn(&Design, &Finished) -> Result<(), String>) -> Vec<String> {
     (0..DESIGNS)
         .filter_map(|seed| {
             let design = make(&mut Random::new(seed));

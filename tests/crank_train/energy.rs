@@ -1,9 +1,7 @@
 //! Work and energy of the crank train: conservation in free-crank mode, the drive torque's work in
 //! prescribed mode, the rigid slider-crank limit and the efficiency calibration (A&K eqs 40–54).
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use nalgebra::Vector3;
 use pistonslap::models::crank_kinematics::SliderCrank;
 use pistonslap::models::crank_linkage::{Linkage, Loads};
@@ -108,7 +106,11 @@ fn tiny_clearance_follows_the_rigid_slider_crank() {
         worst_rod = worst_rod.max((out.rod_angle - geometry.at(out.crank_angle).rod_angle).abs());
     }
     let relative = (squared_error / squared).sqrt();
-    eprintln!("D − d = 2 µm: rms torque deviation {:.2e} of rms torque {:.1} N·m; worst rod angle deviation {worst_rod:.2e} rad", relative, (squared / trace.samples.len() as f64).sqrt());
+    eprintln!(
+        "D − d = 2 µm: rms torque deviation {:.2e} of rms torque {:.1} N·m; worst rod angle deviation {worst_rod:.2e} rad",
+        relative,
+        (squared / trace.samples.len() as f64).sqrt()
+    );
     assert!(relative < 0.02, "drive torque departs from the rigid slider crank by {relative}");
     // The pin stays within the clearance: |Δφ2| ≤ (D − d) / (2 l2 cos φ2) plus the tilt's share.
     assert!(worst_rod < 2e-5, "rod angle deviates by {worst_rod} rad");

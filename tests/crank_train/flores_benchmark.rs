@@ -101,7 +101,9 @@ fn initial_kinetic_energy_is_the_closed_form() {
     let params = Parameters { piston_tilt_rate_start: -0.01, ..flores(0.0) };
     let r = run(&params, 1e-2);
     let (w, rod_rate) = (150.0, -0.153 * 150.0 / 0.306);
-    let expected = 0.5 * (7.4e-5 + 0.038 * 0.0765_f64.powi(2)) * w * w + 0.5 * (5.9e-4 + 0.038 * 0.153_f64.powi(2)) * rod_rate * rod_rate + 0.5 * 2.7e-6 * 1e-4;
+    let expected = 0.5 * (7.4e-5 + 0.038 * 0.0765_f64.powi(2)) * w * w
+        + 0.5 * (5.9e-4 + 0.038 * 0.153_f64.powi(2)) * rod_rate * rod_rate
+        + 0.5 * 2.7e-6 * 1e-4;
     assert!((r.initial_energy / expected - 1.0).abs() < 1e-14, "{} J against {expected} J", r.initial_energy);
 }
 

@@ -1,9 +1,7 @@
 //! A&K section 8 through the FMU's model interface: 1200 rpm, 8 MPa peak gauge pressure (built-in
 //! four-stroke curve), prescribed crank speed.
 
-mod common;
-
-use common::*;
+use crate::common::*;
 use pistonslap::models::pressure::FourStrokePressure;
 use pistonslap::models::{Inputs, Parameters};
 
@@ -67,7 +65,8 @@ fn large_clearance_elastic_impacts_stay_bounded_at_the_same_phases() {
     let max = speeds.iter().cloned().fold(0.0, f64::max);
     let landings = impacts_per_landing(&trace.events);
     eprintln!(
-        "e = 0.9, D = 0.08040: {} impacts in 2 cycles, max impact velocity {max:.3} m/s (bound {scale:.3} from side force {side:.0} N), impacts per landing {landings:?}, side changes at {:.1?}",
+        "e = 0.9, D = 0.08040: {} impacts in 2 cycles, max impact velocity {max:.3} m/s (bound {scale:.3} from side force \
+         {side:.0} N), impacts per landing {landings:?}, side changes at {:.1?}",
         speeds.len(),
         side_changes(&trace)
     );

@@ -35,7 +35,8 @@ fn rk4_has_order_four() {
 fn locators_agree_within_tolerance() {
     let run = |locator| {
         let q0 = Vector2::new(0.6, 0.9);
-        let mut s = Stepper::new(pendulum(-0.3, 0.8), 0.0, q0, Vector2::zeros(), StepperOptions { step: 1e-3, ..Default::default() }).unwrap();
+        let mut s =
+            Stepper::new(pendulum(-0.3, 0.8), 0.0, q0, Vector2::zeros(), StepperOptions { step: 1e-3, ..Default::default() }).unwrap();
         s.set_locator(locator);
         s.advance(5.0).unwrap();
         for ev in s.events().iter().filter(|ev| ev.kind == EventKind::Impact) {

@@ -67,7 +67,12 @@ fn a_shift_by_a_period_keeps_the_motion() {
     shifted.shift(-1.5, &Vector1::zeros()).unwrap();
     shifted.advance(3.5).unwrap();
     let impacts = |s: &Stepper<Ball, 1, 1>| s.events().iter().filter(|ev| ev.kind == EventKind::Impact).count();
-    assert!(before > 5 && impacts(&whole) > before + 5, "impacts on both sides of the shift: {} of {} events, {before} before", impacts(&whole), whole.events().len());
+    assert!(
+        before > 5 && impacts(&whole) > before + 5,
+        "impacts on both sides of the shift: {} of {} events, {before} before",
+        impacts(&whole),
+        whole.events().len()
+    );
     assert_eq!(whole.events().len(), shifted.events().len());
     for (k, (a, b)) in whole.events().iter().zip(shifted.events()).enumerate() {
         let offset = if k < before { 0.0 } else { 1.5 };

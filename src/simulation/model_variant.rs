@@ -1,0 +1,37 @@
+//! The model variants behind one type, chosen by `model_variant`: 1 → crank train (Awrejcewicz &
+//! Kudra), 2 → roller slider crank (Farahanchi).
+
+use crate::models::{CrankTrain, EngineEvent, EngineModel, Inputs, ModelError, Outputs, Parameters, Roller};
+use serde::{Deserialize, Serialize};
+
+/// The engine model the FMU runs (one per instance, so the variants' size difference costs nothing).
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[allow(clippy::large_enum_variant)]
+pub enum ModelVariant {
+    CrankTrain(CrankTrain),
+    Roller(Roller),
+}
+
+impl EngineModel for ModelVariant {
+    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
+        match params.model_variant {
+            1 => CrankTrain::new(params, start_time).map(ModelVariant::CrankTrain),
+            2 => Roller::new(params, start_time).map(ModelVariant::Roller),
+            other => Err(ModelError(format!("model_variant = {other} is not one of 1..=2"))),
+        }
+    }
+
+    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        match self {
+            ModelVariant::CrankTrain(m) => m.advance(inputs, t_end, events),
+            ModelVariant::Roller(m) => m.advance(inputs, t_end, events),
+        }
+    }
+
+    fn write_outputs(&self, out: &mut Outputs) {
+        match self {
+            ModelVariant::CrankTrain(m) => m.write_outputs(out),
+            ModelVariant::Roller(m) => m.write_outputs(out),
+        }
+    }
+}

@@ -1,0 +1,8 @@
+//! The crank train (variant 1): its crank angle, its energy balance, Awrejcewicz & Kudra's results,
+//! the Flores benchmark, and seeded random designs.
+
+mod angle;
+mod energy;
+mod flores_benchmark;
+mod paper;
+mod random_designs;
