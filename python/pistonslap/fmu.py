@@ -13,7 +13,7 @@ CYCLE = 4 * np.pi
 
 _REPO = Path(__file__).resolve().parents[2]
 
-#: Rows of the `impact_log` CSV (DESIGN.md §4), in the order of its header.
+#: Rows of the `impact_log` CSV (SI units; the crank angle also in degrees), in the order of its header.
 EVENT_DTYPE = np.dtype([
     ("time", "f8"),
     ("crank_angle", "f8"),
@@ -23,6 +23,7 @@ EVENT_DTYPE = np.dtype([
     ("normal_velocity_after", "f8"),
     ("energy_lost", "f8"),
     ("position", "f8"),
+    ("crank_angle_deg", "f8"),
 ])
 
 

@@ -48,6 +48,7 @@ pub struct Parameters {
     pub damping_crank_pin: f64,
     pub damping_piston_pin: f64,
     pub gravity: f64,
+    pub slap_threshold: f64,
     pub crank_angle_start: f64,
     pub impact_log: String,
 }
@@ -82,6 +83,10 @@ pub struct Outputs {
     pub crank_angle: f64,
     pub rod_angle: f64,
     pub crank_torque: f64,
+    pub engine_torque: f64,
+    pub gas_pressure_acting: f64,
+    pub skirt_top_lateral: f64,
+    pub skirt_bottom_lateral: f64,
     pub contact_state_1: i32,
     pub contact_state_2: i32,
     pub contact_state_3: i32,
@@ -91,6 +96,11 @@ pub struct Outputs {
     pub contact_force_3: f64,
     pub contact_force_4: f64,
     pub side_force: f64,
+    pub cycle_count: i32,
+    pub cycle_slap_events: i32,
+    pub cycle_impact_energy: f64,
+    pub cycle_max_impact_energy_antithrust: f64,
+    pub cycle_max_impact_energy_thrust: f64,
 }
 
 impl Outputs {
@@ -109,11 +119,18 @@ impl Outputs {
             ("crank_angle", self.crank_angle),
             ("rod_angle", self.rod_angle),
             ("crank_torque", self.crank_torque),
+            ("engine_torque", self.engine_torque),
+            ("gas_pressure_acting", self.gas_pressure_acting),
+            ("skirt_top_lateral", self.skirt_top_lateral),
+            ("skirt_bottom_lateral", self.skirt_bottom_lateral),
             ("contact_force_1", self.contact_force_1),
             ("contact_force_2", self.contact_force_2),
             ("contact_force_3", self.contact_force_3),
             ("contact_force_4", self.contact_force_4),
             ("side_force", self.side_force),
+            ("cycle_impact_energy", self.cycle_impact_energy),
+            ("cycle_max_impact_energy_antithrust", self.cycle_max_impact_energy_antithrust),
+            ("cycle_max_impact_energy_thrust", self.cycle_max_impact_energy_thrust),
         ]
         .into_iter()
         .find(|(_, x)| !x.is_finite())
