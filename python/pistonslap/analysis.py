@@ -1,7 +1,9 @@
 """Farahanchi's roller slider crank (model_variant 2) analysed as in the thesis, chapters 2-4.
 
     python -m pistonslap.analysis case --lam 0.05 --rho 0.015 [--e 0.9] [--forcing 1] [--cycles 1500] --out DIR
-    python -m pistonslap.analysis forces --out DIR      constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)
+    python -m pistonslap.analysis forces --forces-tool EXE --out DIR      constraint forces (Figs 2.4-2.9) and sliding
+        regions (Fig 2.10); EXE is the crate's `roller_forces` example (`cargo build --release --example roller_forces`
+        puts it in target/release/examples/)
     python -m pistonslap.analysis thesis --out DIR      chapter 4: the 20 runs, a summary table and figure sheets
     python -m pistonslap.analysis crosscheck [--clearance M ...]   variant 1 in the roller limit vs variant 2
 
@@ -39,9 +41,6 @@ THESIS_RESPONSES = {
     (0.25, 0.010, 0.9): "periodic", (0.25, 0.015, 0.9): "periodic", (0.25, 0.020, 0.9): "periodic",
     (0.050, 0.020, 0.7): "transient chaos", (0.050, 0.020, 0.5): "periodic",
 }
-
-_REPO = Path(__file__).resolve().parents[2]
-
 
 def thesis_start_values(lam, rho, e, forcing=1, start=0.0):
     """FMU start values that make the run the thesis's (lambda, rho, e) with roller_forcing = `forcing`,
@@ -265,19 +264,18 @@ def write_case(run, out, transient=30):
     return response, summary(run, response, transient)
 
 
-def constraint_force_csv(lam, rho, forcing, samples=720):
-    """f_u, f_l of eq 2.29 over one crank cycle, from the crate's `roller_forces` example (cargo)."""
-    return _cargo_example(["cycle", str(lam), str(rho), str(forcing), str(samples)])
+def constraint_force_csv(tool, lam, rho, forcing, samples=720):
+    """f_u, f_l of eq 2.29 over one crank cycle, from the crate's `roller_forces` example at path `tool`."""
+    return _run_tool(tool, ["cycle", str(lam), str(rho), str(forcing), str(samples)])
 
 
-def sliding_regions_csv(forcing, rho_max=0.03, lambda_max=0.4, n=120):
-    """The regions of Fig 2.10 over (rho, lambda), from the crate's `roller_forces` example (cargo)."""
-    return _cargo_example(["regions", str(forcing), str(rho_max), str(lambda_max), str(n)])
+def sliding_regions_csv(tool, forcing, rho_max=0.03, lambda_max=0.4, n=120):
+    """The regions of Fig 2.10 over (rho, lambda), from the crate's `roller_forces` example at path `tool`."""
+    return _run_tool(tool, ["regions", str(forcing), str(rho_max), str(lambda_max), str(n)])
 
 
-def _cargo_example(args):
-    text = subprocess.run(["cargo", "run", "--quiet", "--release", "--example", "roller_forces", "--", *args],
-                          cwd=_REPO, check=True, capture_output=True, text=True).stdout
+def _run_tool(tool, args):
+    text = subprocess.run([str(tool), *args], check=True, capture_output=True, text=True).stdout
     rows = list(csv.reader(text.splitlines()))
     return rows[0], rows[1:]
 
@@ -286,20 +284,21 @@ def _cargo_example(args):
 FORCE_FIGURES = {"2.4": (0.01, 0.01), "2.5": (0.01, 0.1), "2.6": (0.01, 0.25), "2.7": (0.02, 0.267), "2.9": (0.01, 0.35)}
 
 
-def write_forces(out):
-    """Constraint forces of Figs 2.4-2.9 and the region map of Fig 2.10, both forms of f, as CSV and PNG."""
+def write_forces(out, tool):
+    """Constraint forces of Figs 2.4-2.9 and the region map of Fig 2.10, both forms of f, as CSV and PNG;
+    `tool` is the crate's built `roller_forces` example."""
     from . import roller_plots
 
     out.mkdir(parents=True, exist_ok=True)
     curves = {}
     for fig, (rho, lam) in FORCE_FIGURES.items():
         for forcing in (1, 2):
-            header, rows = constraint_force_csv(lam, rho, forcing)
+            header, rows = constraint_force_csv(tool, lam, rho, forcing)
             write_csv(out / f"forces_fig{fig}_f{forcing}.csv", header, rows)
             curves[fig, forcing] = np.array(rows, dtype=float)
     regions = {}
     for forcing in (1, 2):
-        header, rows = sliding_regions_csv(forcing)
+        header, rows = sliding_regions_csv(tool, forcing)
         write_csv(out / f"sliding_regions_f{forcing}.csv", header, rows)
         regions[forcing] = rows
     return roller_plots.forces_sheet(FORCE_FIGURES, curves, regions, out / "constraint_forces.png")
@@ -389,7 +388,9 @@ def main(argv=None):
         p.add_argument("--cycles", type=int, default=1500, help="crank cycles of statistics")
     sub.choices["thesis"].add_argument("--starts", type=float, nargs="+", default=list(STARTS),
                                        help="starting crank angles (rad); statistics and figures from the first")
-    sub.add_parser("forces", help="constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)")
+    forces = sub.add_parser("forces", help="constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)")
+    forces.add_argument("--forces-tool", type=Path, required=True,
+                        help="the built roller_forces example (target/release/examples/roller_forces)")
     cross = sub.add_parser("crosscheck", help="variant 1 in the roller limit against variant 2 (roller_forcing = 2)")
     cross.add_argument("--clearance", type=float, nargs="+", default=[10e-6, 20e-6, 40e-6, 80e-6, 160e-6, 320e-6], help="m")
     for p in sub.choices.values():
@@ -411,7 +412,7 @@ def main(argv=None):
             print(f"clearance {clearance * 1e6:g} um: {len(crank_train)} / {len(roller)} events, same sequence {same}; "
                   f"largest crank-angle difference {angle.max():.1e} rad, relative impact-velocity difference {speed.max():.1e}")
     elif args.command == "forces":
-        print(f"wrote {write_forces(args.out)}")
+        print(f"wrote {write_forces(args.out, args.forces_tool)}")
     else:
         for path in write_thesis(args.out, args.transient, args.cycles, args.forcing, args.starts):
             print(f"wrote {path}")
