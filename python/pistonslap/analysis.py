@@ -234,6 +234,63 @@ def summary(run, response, first_cycle):
     return row
 
 
+#: What each column of the summary table means (thesis units: rates are psi' in rad per rad of crank angle).
+SUMMARY_LEGEND = {
+    "lambda": "damping parameter λ (thesis eq 2.13)",
+    "rho": "clearance ρ, half the diametral clearance over the rod length",
+    "e": "coefficient of restitution",
+    "forcing": "roller_forcing: 1 = f(τ) as printed in the thesis, 2 = corrected",
+    "response": "our classification from the first start (θ = 0): periodic (period in crank cycles, cycle where it "
+                "settled), transient chaos (periodic only after 100 cycles) or chaos (no recurrence)",
+    "impacts_per_cycle_upper": "impacts per crank cycle on the upper wall (ψ = ψ_max)",
+    "mean_impact_rate_upper": "mean |ψ'| just before an upper-wall impact",
+    "impacts_per_cycle_lower": "impacts per crank cycle on the lower wall (ψ = ψ_min)",
+    "mean_impact_rate_lower": "mean |ψ'| just before a lower-wall impact",
+    "slides_per_cycle": "sliding phases begun per crank cycle",
+    "thesis": "the thesis's classification (sections 4.3, 4.4); 'not stated' where it shows the profile only",
+    "agrees": "whether our response (first start) is the thesis's",
+    "starts": "classifications over all starting crank angles (0 to 5 rad)",
+    "periods": "period of each start's response in crank cycles (0 = none)",
+    "reason": "why a run disagrees with the thesis",
+}
+
+
+def disagreement_reason(row, response, kinds, cycles):
+    """Why our classification of a run differs from the thesis's, from what the runs of `cycles` crank cycles
+    from every start show; '' where they agree or the thesis states none."""
+    thesis = THESIS_RESPONSES.get((row["lambda"], row["rho"], row["e"]))
+    if thesis is None or response.kind == thesis:
+        return ""
+    if thesis in kinds:
+        return (f"start-dependent: {kinds.count(thesis)} of {len(kinds)} starting crank angles give the thesis's "
+                f"{thesis}; the thesis does not state its start")
+    if response.kind == "periodic" and thesis == "transient chaos":
+        return (f"every start tried settles on a period (the first by cycle {response.settled}); a chaotic transient "
+                "depends on the start, which the thesis does not state")
+    if response.kind == "transient chaos" and thesis == "periodic":
+        return (f"the period appears only at cycle {response.settled}, after the {CHAOTIC_TRANSIENT} cycles allowed a "
+                "transient; the thesis classified the run from its end")
+    if response.kind == "chaos" and "periodic" in kinds:
+        return (f"coexisting responses: chaos from the first start over {cycles} cycles, a period from "
+                f"{kinds.count('periodic')} of {len(kinds)} starts; the thesis does not state its start")
+    if response.kind == "chaos":
+        return (f"no start tried recurs within {cycles} cycles (tolerance 1e-3); the thesis's {thesis} may need its own, "
+                "unstated start, or a section read by eye looked settled")
+    return (f"period {response.period} from every start tried (tolerance 1e-3); with roller_forcing = 1 the equations "
+            "are the thesis's, so the integration or the thesis's reading of its Poincaré section differs: not "
+            "resolved here")
+
+
+def summary_markdown(header, rows):
+    """The summary table as markdown, followed by its legend."""
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(f"{row[k]:.4g}" if isinstance(row[k], float) else str(row[k]) for k in header) + " |"
+              for row in rows]
+    lines += ["", "Columns (thesis units: ψ' in rad per rad of crank angle):", ""]
+    lines += [f"- `{name}`: {SUMMARY_LEGEND[name]}" for name in header]
+    return "\n".join(lines) + "\n"
+
+
 def write_csv(path, header, rows):
     with open(path, "w", newline="") as f:
         writer = csv.writer(f)
@@ -253,12 +310,13 @@ def write_case(run, out, transient=30):
     out.mkdir(parents=True, exist_ok=True)
     name = _case_name(run)
     response = classify(run)
-    write_csv(out / f"{name}_impacts.csv", ["cycle", "theta", "wall", "psi_rate", "approach_rate", "x"],
+    write_csv(out / f"{name}_impacts.csv", ["cycle [1]", "theta [rad]", "wall [+1 upper, -1 lower]", "psi_rate [rad/rad]",
+                                            "approach_rate [rad/rad]", "x [1]"],
               zip(run.cycle, run.theta, run.wall, run.rate, run.approach, run.location))
     edges, upper, lower = impact_profile(run, transient)
-    write_csv(out / f"{name}_profile.csv", ["x_from", "x_to", "upper", "lower"], zip(edges[:-1], edges[1:], upper, lower))
+    write_csv(out / f"{name}_profile.csv", ["x_from [1]", "x_to [1]", "upper [rad/rad]", "lower [rad/rad]"], zip(edges[:-1], edges[1:], upper, lower))
     sedges, supper, slower = impact_spectra(run, transient)
-    write_csv(out / f"{name}_spectra.csv", ["theta_from", "theta_to", "upper", "lower"], zip(sedges[:-1], sedges[1:], supper, slower))
+    write_csv(out / f"{name}_spectra.csv", ["theta_from [rad]", "theta_to [rad]", "upper [rad/rad]", "lower [rad/rad]"], zip(sedges[:-1], sedges[1:], supper, slower))
     title = f"λ={run.lam:g} ρ={run.rho:g} e={run.e:g}: {response}"
     roller_plots.case_sheet(poincare_points(run, transient), (edges, upper, lower), (sedges, supper, slower), title, out / f"{name}.png")
     return response, summary(run, response, transient)
@@ -328,15 +386,13 @@ def write_thesis(out, transient=30, cycles=1500, forcing=1, starts=STARTS):
         kinds = [response.kind] + [r.kind for r in others]
         row["starts"] = ", ".join(f"{kinds.count(k)}× {k}" for k in ("periodic", "transient chaos", "chaos") if k in kinds)
         row["periods"] = " ".join(str(r.period) for r in [response] + others)
+        row["reason"] = disagreement_reason(row, response, kinds, transient + cycles)
         print(f"lambda={lam} rho={rho} e={e}: {response} (thesis: {row['thesis']}); over {len(kinds)} starts: {row['starts']}")
         runs.append((run, response))
         rows.append(row)
     header = list(rows[0])
     write_csv(out / "summary.csv", header, [[row[k] for k in header] for row in rows])
-    with open(out / "summary.md", "w") as f:
-        f.write("| " + " | ".join(header) + " |\n|" + "---|" * len(header) + "\n")
-        for row in rows:
-            f.write("| " + " | ".join(f"{row[k]:.4g}" if isinstance(row[k], float) else str(row[k]) for k in header) + " |\n")
+    (out / "summary.md").write_text(summary_markdown(header, rows))
     sheet = roller_plots.thesis_sheet([(run, response, impact_profile(run, transient), poincare_points(run, transient))
                                        for run, response in runs], out / "thesis_sheet.png")
     return out / "summary.md", sheet
