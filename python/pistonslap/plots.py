@@ -7,6 +7,8 @@ conventions: +x (corners K3, K4) is the major-thrust wall, the one the piston pr
 -x (K1, K2) the anti-thrust wall.
 """
 
+import textwrap
+
 import matplotlib.pyplot as plt
 import numpy as np
 from matplotlib.animation import FuncAnimation, PillowWriter
@@ -198,7 +200,7 @@ def piston_animation(phase, result, events, geometry, magnification, path, case,
         _draw_piston(ax, frame, geometry, magnification)
         ax.set_title(f"crank angle {frame['deg']:.0f}° (0° = firing TDC)", fontsize="small")
 
-    fig.suptitle(case, fontsize="x-small")
+    fig.suptitle(textwrap.fill(case, 70), fontsize="x-small")
     fig.text(0.5, 0.01, _positions_caption(magnification).replace("; ", "\n"), ha="center", fontsize="x-small")
     fig.subplots_adjust(bottom=0.18)
     FuncAnimation(fig, draw, frames=frames).save(path, writer=PillowWriter(fps=12))
