@@ -255,6 +255,14 @@ SUMMARY_LEGEND = {
 }
 
 
+#: Units of the summary's numeric columns (the others are text).
+SUMMARY_UNITS = {
+    "lambda": "1", "rho": "1", "e": "1", "forcing": "1", "impacts_per_cycle_upper": "1/cycle",
+    "mean_impact_rate_upper": "rad/rad", "impacts_per_cycle_lower": "1/cycle", "mean_impact_rate_lower": "rad/rad",
+    "slides_per_cycle": "1/cycle",
+}
+
+
 def disagreement_reason(row, response, kinds, cycles):
     """Why our classification of a run differs from the thesis's, from what the runs of `cycles` crank cycles
     from every start show; '' where they agree or the thesis states none."""
@@ -391,7 +399,8 @@ def write_thesis(out, transient=30, cycles=1500, forcing=1, starts=STARTS):
         runs.append((run, response))
         rows.append(row)
     header = list(rows[0])
-    write_csv(out / "summary.csv", header, [[row[k] for k in header] for row in rows])
+    units = [f"{k} [{SUMMARY_UNITS[k]}]" if k in SUMMARY_UNITS else k for k in header]
+    write_csv(out / "summary.csv", units, [[row[k] for k in header] for row in rows])
     (out / "summary.md").write_text(summary_markdown(header, rows))
     sheet = roller_plots.thesis_sheet([(run, response, impact_profile(run, transient), poincare_points(run, transient))
                                        for run, response in runs], out / "thesis_sheet.png")
