@@ -284,9 +284,9 @@ def disagreement_reason(row, response, kinds, cycles):
     if response.kind == "chaos":
         return (f"no start tried recurs within {cycles} cycles (tolerance 1e-3); the thesis's {thesis} may need its own, "
                 "unstated start, or a section read by eye looked settled")
-    return (f"period {response.period} from every start tried (tolerance 1e-3); with roller_forcing = 1 the equations "
-            "are the thesis's, so the integration or the thesis's reading of its Poincaré section differs: not "
-            "resolved here")
+    return (f"every start tried ends on a period (periods {row['periods']} crank cycles; tolerance 1e-3); with roller_forcing = 1 the "
+            "equations are the thesis's, so the integration or the thesis's reading of its Poincaré section differs: "
+            "not resolved here")
 
 
 def summary_markdown(header, rows):
