@@ -284,9 +284,9 @@ def disagreement_reason(row, response, kinds, cycles):
     if response.kind == "chaos":
         return (f"no start tried recurs within {cycles} cycles (tolerance 1e-3); the thesis's {thesis} may need its own, "
                 "unstated start, or a section read by eye looked settled")
-    return (f"every start tried ends on a period (periods {row['periods']} crank cycles; tolerance 1e-3); with roller_forcing = 1 the "
-            "equations are the thesis's, so the integration or the thesis's reading of its Poincaré section differs: "
-            "not resolved here")
+    return (f"every start tried ends on a period (periods {row['periods']} crank cycles; tolerance 1e-3); with "
+            "roller_forcing = 1 the equations are the thesis's, so the integration or the thesis's reading of its "
+            "Poincaré section differs: not resolved here")
 
 
 def summary_markdown(header, rows):
@@ -322,9 +322,11 @@ def write_case(run, out, transient=30):
                                             "approach_rate [rad/rad]", "x [1]"],
               zip(run.cycle, run.theta, run.wall, run.rate, run.approach, run.location))
     edges, upper, lower = impact_profile(run, transient)
-    write_csv(out / f"{name}_profile.csv", ["x_from [1]", "x_to [1]", "upper [rad/rad]", "lower [rad/rad]"], zip(edges[:-1], edges[1:], upper, lower))
+    write_csv(out / f"{name}_profile.csv", ["x_from [1]", "x_to [1]", "upper [rad/rad]", "lower [rad/rad]"],
+              zip(edges[:-1], edges[1:], upper, lower))
     sedges, supper, slower = impact_spectra(run, transient)
-    write_csv(out / f"{name}_spectra.csv", ["theta_from [rad]", "theta_to [rad]", "upper [rad/rad]", "lower [rad/rad]"], zip(sedges[:-1], sedges[1:], supper, slower))
+    write_csv(out / f"{name}_spectra.csv", ["theta_from [rad]", "theta_to [rad]", "upper [rad/rad]", "lower [rad/rad]"],
+              zip(sedges[:-1], sedges[1:], supper, slower))
     title = f"λ={run.lam:g} ρ={run.rho:g} e={run.e:g}: {response}"
     roller_plots.case_sheet(poincare_points(run, transient), (edges, upper, lower), (sedges, supper, slower), title, out / f"{name}.png")
     return response, summary(run, response, transient)
