@@ -6,27 +6,32 @@ VENV_PYTHON := $(VENV)/bin/python
 VENV_STAMP := $(VENV)/.installed
 FMU := target/fmu/PistonSlap.fmu
 
-# The Python package is used from the source tree; plots render without a display.
-export PYTHONPATH := $(CURDIR)/python
+PISTONSLAP := $(VENV)/bin/pistonslap
+
+# Plots render without a display.
 export MPLBACKEND := Agg
 
 .PHONY: fmu venv demo test thesis bench soak clean
 
-# cargo decides what to rebuild, so this always asks it.
+# cargo decides what to rebuild, so this always asks it. The Python package carries a copy of the FMU.
 fmu:
 	cargo build --release
 	cargo run --release --bin package_fmu
+	mkdir -p python/pistonslap/fmu
+	cp $(FMU) python/pistonslap/fmu/PistonSlap.fmu
 
-# Created once from PyPI; again only when python/requirements.txt changes.
-$(VENV_STAMP): python/requirements.txt
+# Created once from PyPI with the pinned versions, again only when they or the package's metadata change;
+# the package is installed editable (its code and FMU copy stay in python/), with the `pistonslap` command.
+$(VENV_STAMP): python/requirements.txt python/pyproject.toml
 	$(PYTHON) -m venv $(VENV)
 	$(VENV_PYTHON) -m pip install --quiet --disable-pip-version-check -r python/requirements.txt
+	$(VENV_PYTHON) -m pip install --quiet --disable-pip-version-check --no-deps -e ./python
 	touch $@
 
 venv: $(VENV_STAMP)
 
 demo: fmu venv
-	$(VENV_PYTHON) -m pistonslap.demo --out out
+	$(PISTONSLAP) demo --out out
 
 # The style gate (rustfmt, clippy with warnings as errors), the Rust tests, then the fmpy tests
 # against the packaged FMU; fails if any fails.
@@ -39,8 +44,9 @@ test: fmu venv
 # Farahanchi's chapter 2 figures (constraint forces, sliding regions) and chapter 4 (20 runs of 30 + 1500 crank
 # cycles): summary table and figure sheets in out/thesis.
 thesis: fmu venv
-	$(VENV_PYTHON) -m pistonslap.analysis forces --out out/thesis
-	$(VENV_PYTHON) -m pistonslap.analysis thesis --out out/thesis
+	cargo build --release --example roller_forces
+	$(PISTONSLAP) analysis forces --forces-tool target/release/examples/roller_forces --out out/thesis
+	$(PISTONSLAP) analysis thesis --out out/thesis
 
 bench:
 	cargo bench
@@ -53,5 +59,5 @@ soak:
 
 clean:
 	cargo clean
-	rm -rf out $(VENV) python/.pytest_cache
+	rm -rf out $(VENV) python/.pytest_cache python/pistonslap/fmu python/build python/*.egg-info
 	find python -name __pycache__ -type d -prune -exec rm -rf {} +

@@ -147,6 +147,7 @@ fn main() {
     if std::process::Command::new("valgrind").arg("--version").output().is_ok_and(|o| o.status.success()) {
         println!("cargo:rustc-cfg=valgrind");
     }
+    println!("cargo:rerun-if-env-changed=SOURCE_DATE_EPOCH");
     let source = std::fs::read_to_string(TABLE).expect("read modelDescription/variables.xml");
     let table: Table = quick_xml::de::from_str(&source).expect("parse modelDescription/variables.xml");
     let guid = guid_of(&source);
@@ -207,6 +208,26 @@ fn check(variables: &[Resolved]) {
     }
 }
 
+/// When the XML is generated, as FMI's xs:dateTime in UTC: `SOURCE_DATE_EPOCH` (seconds) when set,
+/// for reproducible builds, else now.
+fn generation_date_and_time() -> String {
+    let seconds = std::env::var("SOURCE_DATE_EPOCH").ok().and_then(|s| s.parse::<u64>().ok()).unwrap_or_else(|| {
+        let now = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH);
+        now.expect("clock after 1970").as_secs()
+    });
+    let (days, time) = (seconds / 86_400, seconds % 86_400);
+    // Days since 1970-01-01 to the proleptic Gregorian date (eras of 400 years, March-based years).
+    let z = days + 719_468;
+    let (era, day_of_era) = (z / 146_097, z % 146_097);
+    let year_of_era = (day_of_era - day_of_era / 1460 + day_of_era / 36_524 - day_of_era / 146_096) / 365;
+    let day_of_year = day_of_era - (365 * year_of_era + year_of_era / 4 - year_of_era / 100);
+    let month_index = (5 * day_of_year + 2) / 153;
+    let day = day_of_year - (153 * month_index + 2) / 5 + 1;
+    let month = if month_index < 10 { month_index + 3 } else { month_index - 9 };
+    let year = year_of_era + era * 400 + u64::from(month <= 2);
+    format!("{year:04}-{month:02}-{day:02}T{:02}:{:02}:{:02}Z", time / 3600, time % 3600 / 60, time % 60)
+}
+
 /// A stable GUID derived from the table, so that any change of the variables changes it.
 fn guid_of(source: &str) -> String {
     let seed = format!("{}\n{}", env!("CARGO_PKG_VERSION"), source);
@@ -239,6 +260,7 @@ fn model_description(table: &Table, variables: &[Resolved], guid: &str) -> io::R
     w.write_event(Event::Decl(BytesDecl::new("1.0", Some("UTF-8"), None)))?;
     let description = "Piston secondary motion (piston slap): crank, connecting rod and piston with clearance, \
                        impacts and sliding of the piston corners on the liner";
+    let generated = generation_date_and_time();
     let root = [
         ("fmiVersion", "2.0"),
         ("modelName", MODEL_NAME),
@@ -247,6 +269,7 @@ fn model_description(table: &Table, variables: &[Resolved], guid: &str) -> io::R
         ("version", env!("CARGO_PKG_VERSION")),
         ("license", "MIT"),
         ("generationTool", "PistonSlap build.rs"),
+        ("generationDateAndTime", &generated),
         ("variableNamingConvention", "flat"),
         ("numberOfEventIndicators", "0"),
     ];

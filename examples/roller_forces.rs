@@ -1,7 +1,8 @@
 //! Constraint forces of Farahanchi's roller slider crank (eq 2.29) for the thesis's mechanism, as CSV on
 //! stdout, for `python -m pistonslap.analysis` (Figs 2.4–2.10):
-//!   roller_forces cycle LAMBDA RHO FORCING [SAMPLES]      crank_angle,f_u,f_l over one crank cycle
-//!   roller_forces regions FORCING RHO_MAX LAMBDA_MAX N    rho,lambda,region on an N×N grid (Fig 2.10)
+//!   roller_forces cycle LAMBDA RHO FORCING [SAMPLES]      crank angle, f_u, f_l over one crank cycle
+//!   roller_forces regions FORCING RHO_MAX LAMBDA_MAX N    rho, lambda, region on an N×N grid (Fig 2.10)
+//! Headers name each column's unit in brackets.
 //! FORCING is the FMU's roller_forcing: 1 = f(τ) as printed, 2 = corrected.
 
 use pistonslap::models::{Forcing, RollerMechanism, SlidingRegion};
@@ -28,7 +29,7 @@ fn run(args: &[String]) -> Result<(), String> {
             let sc = thesis_mechanism(forcing)?;
             let (lambda, rho) = (number(lambda, "LAMBDA")?, number(rho, "RHO")?);
             let samples = rest.first().map(|s| number(s, "SAMPLES")).transpose()?.unwrap_or(720.0) as usize;
-            println!("crank_angle,f_u,f_l");
+            println!("crank_angle [rad],f_u [thesis units],f_l [thesis units]");
             for k in 0..=samples {
                 let theta = 2.0 * PI * k as f64 / samples as f64;
                 let (fu, fl) = sc.constraint_forces(theta, lambda, rho);
@@ -39,7 +40,7 @@ fn run(args: &[String]) -> Result<(), String> {
         [cmd, forcing, rho_max, lambda_max, n] if cmd == "regions" => {
             let sc = thesis_mechanism(forcing)?;
             let (rho_max, lambda_max, n) = (number(rho_max, "RHO_MAX")?, number(lambda_max, "LAMBDA_MAX")?, number(n, "N")? as usize);
-            println!("rho,lambda,region");
+            println!("rho [1],lambda [1],region [none, I, II or III]");
             for i in 0..=n {
                 for j in 0..=n {
                     let (rho, lambda) = (rho_max * i as f64 / n as f64, lambda_max * j as f64 / n as f64);

@@ -60,12 +60,12 @@ impl<E: EngineModel> Simulation<E> {
             model,
             time: start_time,
             outputs: Outputs::default(),
-            statistics: ImpactStatistics::default(),
+            statistics: ImpactStatistics::starting_at(params.crank_angle_start, params.slap_threshold),
             step_events: Vec::new(),
             log: None,
             spare_events: Scratch::default(),
         };
-        Self::write_outputs(&sim.model, &sim.statistics, &mut sim.outputs);
+        Self::write_outputs(&sim.model, &mut sim.statistics, &[], &mut sim.outputs);
         Ok(sim)
     }
 
@@ -129,9 +129,8 @@ impl<E: EngineModel> Simulation<E> {
         let failed = |what: &str, e: &dyn std::fmt::Display| ModelError(format!("step from t = {} s to {t_end} s {what}: {e}", self.time));
         self.model.advance(inputs, t_end, events).map_err(|e| failed("failed", &e))?;
         let mut statistics = self.statistics.clone();
-        statistics.record_step(events);
         let mut outputs = self.outputs.clone();
-        Self::write_outputs(&self.model, &statistics, &mut outputs);
+        Self::write_outputs(&self.model, &mut statistics, events, &mut outputs);
         Self::valid(t_end, &outputs).map_err(|e| failed("refused", &e.0))?;
         if let Some(log) = &mut self.log {
             // Cuts the file back and keeps its cursor when it fails.
@@ -165,9 +164,13 @@ impl<E: EngineModel> Simulation<E> {
         self.log.as_ref().map_or(Ok(()), ImpactLog::rewind)
     }
 
-    /// The outputs of `model` with the impact statistics `statistics`.
-    fn write_outputs(model: &E, statistics: &ImpactStatistics, outputs: &mut Outputs) {
+    /// The outputs of `model` with the impact statistics `statistics` after `events` (none for a
+    /// new simulation), which end at the model's crank angle.
+    fn write_outputs(model: &E, statistics: &mut ImpactStatistics, events: &[EngineEvent], outputs: &mut Outputs) {
         model.write_outputs(outputs);
+        // The engine's sign: what the crank train delivers to the drive or load.
+        outputs.engine_torque = -outputs.crank_torque;
+        statistics.record_step(events, outputs.crank_angle);
         statistics.write(outputs);
     }
 }

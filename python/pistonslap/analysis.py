@@ -1,7 +1,9 @@
 """Farahanchi's roller slider crank (model_variant 2) analysed as in the thesis, chapters 2-4.
 
     python -m pistonslap.analysis case --lam 0.05 --rho 0.015 [--e 0.9] [--forcing 1] [--cycles 1500] --out DIR
-    python -m pistonslap.analysis forces --out DIR      constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)
+    python -m pistonslap.analysis forces --forces-tool EXE --out DIR      constraint forces (Figs 2.4-2.9) and sliding
+        regions (Fig 2.10); EXE is the crate's `roller_forces` example (`cargo build --release --example roller_forces`
+        puts it in target/release/examples/)
     python -m pistonslap.analysis thesis --out DIR      chapter 4: the 20 runs, a summary table and figure sheets
     python -m pistonslap.analysis crosscheck [--clearance M ...]   variant 1 in the roller limit vs variant 2
 
@@ -39,9 +41,6 @@ THESIS_RESPONSES = {
     (0.25, 0.010, 0.9): "periodic", (0.25, 0.015, 0.9): "periodic", (0.25, 0.020, 0.9): "periodic",
     (0.050, 0.020, 0.7): "transient chaos", (0.050, 0.020, 0.5): "periodic",
 }
-
-_REPO = Path(__file__).resolve().parents[2]
-
 
 def thesis_start_values(lam, rho, e, forcing=1, start=0.0):
     """FMU start values that make the run the thesis's (lambda, rho, e) with roller_forcing = `forcing`,
@@ -235,6 +234,71 @@ def summary(run, response, first_cycle):
     return row
 
 
+#: What each column of the summary table means (thesis units: rates are psi' in rad per rad of crank angle).
+SUMMARY_LEGEND = {
+    "lambda": "damping parameter λ (thesis eq 2.13)",
+    "rho": "clearance ρ, half the diametral clearance over the rod length",
+    "e": "coefficient of restitution",
+    "forcing": "roller_forcing: 1 = f(τ) as printed in the thesis, 2 = corrected",
+    "response": "our classification from the first start (θ = 0): periodic (period in crank cycles, cycle where it "
+                "settled), transient chaos (periodic only after 100 cycles) or chaos (no recurrence)",
+    "impacts_per_cycle_upper": "impacts per crank cycle on the upper wall (ψ = ψ_max)",
+    "mean_impact_rate_upper": "mean |ψ'| just before an upper-wall impact",
+    "impacts_per_cycle_lower": "impacts per crank cycle on the lower wall (ψ = ψ_min)",
+    "mean_impact_rate_lower": "mean |ψ'| just before a lower-wall impact",
+    "slides_per_cycle": "sliding phases begun per crank cycle",
+    "thesis": "the thesis's classification (sections 4.3, 4.4); 'not stated' where it shows the profile only",
+    "agrees": "whether our response (first start) is the thesis's",
+    "starts": "classifications over all starting crank angles (0 to 5 rad)",
+    "periods": "period of each start's response in crank cycles (0 = none)",
+    "reason": "why a run disagrees with the thesis",
+}
+
+
+#: Units of the summary's numeric columns (the others are text).
+SUMMARY_UNITS = {
+    "lambda": "1", "rho": "1", "e": "1", "forcing": "1", "impacts_per_cycle_upper": "1/cycle",
+    "mean_impact_rate_upper": "rad/rad", "impacts_per_cycle_lower": "1/cycle", "mean_impact_rate_lower": "rad/rad",
+    "slides_per_cycle": "1/cycle",
+}
+
+
+def disagreement_reason(row, response, kinds, cycles):
+    """Why our classification of a run differs from the thesis's, from what the runs of `cycles` crank cycles
+    from every start show; '' where they agree or the thesis states none."""
+    thesis = THESIS_RESPONSES.get((row["lambda"], row["rho"], row["e"]))
+    if thesis is None or response.kind == thesis:
+        return ""
+    if thesis in kinds:
+        return (f"start-dependent: {kinds.count(thesis)} of {len(kinds)} starting crank angles give the thesis's "
+                f"{thesis}; the thesis does not state its start")
+    if response.kind == "periodic" and thesis == "transient chaos":
+        return (f"every start tried settles on a period (the first by cycle {response.settled}); a chaotic transient "
+                "depends on the start, which the thesis does not state")
+    if response.kind == "transient chaos" and thesis == "periodic":
+        return (f"the period appears only at cycle {response.settled}, after the {CHAOTIC_TRANSIENT} cycles allowed a "
+                "transient; the thesis classified the run from its end")
+    if response.kind == "chaos" and "periodic" in kinds:
+        return (f"coexisting responses: chaos from the first start over {cycles} cycles, a period from "
+                f"{kinds.count('periodic')} of {len(kinds)} starts; the thesis does not state its start")
+    if response.kind == "chaos":
+        return (f"no start tried recurs within {cycles} cycles (tolerance 1e-3); the thesis's {thesis} may need its own, "
+                "unstated start, or a section read by eye looked settled")
+    return (f"every start tried ends on a period (periods {row['periods']} crank cycles; tolerance 1e-3); with "
+            "roller_forcing = 1 the equations are the thesis's, so the integration or the thesis's reading of its "
+            "Poincaré section differs: not resolved here")
+
+
+def summary_markdown(header, rows):
+    """The summary table as markdown, followed by its legend."""
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(f"{row[k]:.4g}" if isinstance(row[k], float) else str(row[k]) for k in header) + " |"
+              for row in rows]
+    lines += ["", "Columns (thesis units: ψ' in rad per rad of crank angle):", ""]
+    lines += [f"- `{name}`: {SUMMARY_LEGEND[name]}" for name in header]
+    return "\n".join(lines) + "\n"
+
+
 def write_csv(path, header, rows):
     with open(path, "w", newline="") as f:
         writer = csv.writer(f)
@@ -254,30 +318,32 @@ def write_case(run, out, transient=30):
     out.mkdir(parents=True, exist_ok=True)
     name = _case_name(run)
     response = classify(run)
-    write_csv(out / f"{name}_impacts.csv", ["cycle", "theta", "wall", "psi_rate", "approach_rate", "x"],
+    write_csv(out / f"{name}_impacts.csv", ["cycle [1]", "theta [rad]", "wall [+1 upper, -1 lower]", "psi_rate [rad/rad]",
+                                            "approach_rate [rad/rad]", "x [1]"],
               zip(run.cycle, run.theta, run.wall, run.rate, run.approach, run.location))
     edges, upper, lower = impact_profile(run, transient)
-    write_csv(out / f"{name}_profile.csv", ["x_from", "x_to", "upper", "lower"], zip(edges[:-1], edges[1:], upper, lower))
+    write_csv(out / f"{name}_profile.csv", ["x_from [1]", "x_to [1]", "upper [rad/rad]", "lower [rad/rad]"],
+              zip(edges[:-1], edges[1:], upper, lower))
     sedges, supper, slower = impact_spectra(run, transient)
-    write_csv(out / f"{name}_spectra.csv", ["theta_from", "theta_to", "upper", "lower"], zip(sedges[:-1], sedges[1:], supper, slower))
+    write_csv(out / f"{name}_spectra.csv", ["theta_from [rad]", "theta_to [rad]", "upper [rad/rad]", "lower [rad/rad]"],
+              zip(sedges[:-1], sedges[1:], supper, slower))
     title = f"λ={run.lam:g} ρ={run.rho:g} e={run.e:g}: {response}"
     roller_plots.case_sheet(poincare_points(run, transient), (edges, upper, lower), (sedges, supper, slower), title, out / f"{name}.png")
     return response, summary(run, response, transient)
 
 
-def constraint_force_csv(lam, rho, forcing, samples=720):
-    """f_u, f_l of eq 2.29 over one crank cycle, from the crate's `roller_forces` example (cargo)."""
-    return _cargo_example(["cycle", str(lam), str(rho), str(forcing), str(samples)])
+def constraint_force_csv(tool, lam, rho, forcing, samples=720):
+    """f_u, f_l of eq 2.29 over one crank cycle, from the crate's `roller_forces` example at path `tool`."""
+    return _run_tool(tool, ["cycle", str(lam), str(rho), str(forcing), str(samples)])
 
 
-def sliding_regions_csv(forcing, rho_max=0.03, lambda_max=0.4, n=120):
-    """The regions of Fig 2.10 over (rho, lambda), from the crate's `roller_forces` example (cargo)."""
-    return _cargo_example(["regions", str(forcing), str(rho_max), str(lambda_max), str(n)])
+def sliding_regions_csv(tool, forcing, rho_max=0.03, lambda_max=0.4, n=120):
+    """The regions of Fig 2.10 over (rho, lambda), from the crate's `roller_forces` example at path `tool`."""
+    return _run_tool(tool, ["regions", str(forcing), str(rho_max), str(lambda_max), str(n)])
 
 
-def _cargo_example(args):
-    text = subprocess.run(["cargo", "run", "--quiet", "--release", "--example", "roller_forces", "--", *args],
-                          cwd=_REPO, check=True, capture_output=True, text=True).stdout
+def _run_tool(tool, args):
+    text = subprocess.run([str(tool), *args], check=True, capture_output=True, text=True).stdout
     rows = list(csv.reader(text.splitlines()))
     return rows[0], rows[1:]
 
@@ -286,20 +352,21 @@ def _cargo_example(args):
 FORCE_FIGURES = {"2.4": (0.01, 0.01), "2.5": (0.01, 0.1), "2.6": (0.01, 0.25), "2.7": (0.02, 0.267), "2.9": (0.01, 0.35)}
 
 
-def write_forces(out):
-    """Constraint forces of Figs 2.4-2.9 and the region map of Fig 2.10, both forms of f, as CSV and PNG."""
+def write_forces(out, tool):
+    """Constraint forces of Figs 2.4-2.9 and the region map of Fig 2.10, both forms of f, as CSV and PNG;
+    `tool` is the crate's built `roller_forces` example."""
     from . import roller_plots
 
     out.mkdir(parents=True, exist_ok=True)
     curves = {}
     for fig, (rho, lam) in FORCE_FIGURES.items():
         for forcing in (1, 2):
-            header, rows = constraint_force_csv(lam, rho, forcing)
+            header, rows = constraint_force_csv(tool, lam, rho, forcing)
             write_csv(out / f"forces_fig{fig}_f{forcing}.csv", header, rows)
             curves[fig, forcing] = np.array(rows, dtype=float)
     regions = {}
     for forcing in (1, 2):
-        header, rows = sliding_regions_csv(forcing)
+        header, rows = sliding_regions_csv(tool, forcing)
         write_csv(out / f"sliding_regions_f{forcing}.csv", header, rows)
         regions[forcing] = rows
     return roller_plots.forces_sheet(FORCE_FIGURES, curves, regions, out / "constraint_forces.png")
@@ -329,15 +396,14 @@ def write_thesis(out, transient=30, cycles=1500, forcing=1, starts=STARTS):
         kinds = [response.kind] + [r.kind for r in others]
         row["starts"] = ", ".join(f"{kinds.count(k)}× {k}" for k in ("periodic", "transient chaos", "chaos") if k in kinds)
         row["periods"] = " ".join(str(r.period) for r in [response] + others)
+        row["reason"] = disagreement_reason(row, response, kinds, transient + cycles)
         print(f"lambda={lam} rho={rho} e={e}: {response} (thesis: {row['thesis']}); over {len(kinds)} starts: {row['starts']}")
         runs.append((run, response))
         rows.append(row)
     header = list(rows[0])
-    write_csv(out / "summary.csv", header, [[row[k] for k in header] for row in rows])
-    with open(out / "summary.md", "w") as f:
-        f.write("| " + " | ".join(header) + " |\n|" + "---|" * len(header) + "\n")
-        for row in rows:
-            f.write("| " + " | ".join(f"{row[k]:.4g}" if isinstance(row[k], float) else str(row[k]) for k in header) + " |\n")
+    units = [f"{k} [{SUMMARY_UNITS[k]}]" if k in SUMMARY_UNITS else k for k in header]
+    write_csv(out / "summary.csv", units, [[row[k] for k in header] for row in rows])
+    (out / "summary.md").write_text(summary_markdown(header, rows))
     sheet = roller_plots.thesis_sheet([(run, response, impact_profile(run, transient), poincare_points(run, transient))
                                        for run, response in runs], out / "thesis_sheet.png")
     return out / "summary.md", sheet
@@ -388,7 +454,9 @@ def main(argv=None):
         p.add_argument("--cycles", type=int, default=1500, help="crank cycles of statistics")
     sub.choices["thesis"].add_argument("--starts", type=float, nargs="+", default=list(STARTS),
                                        help="starting crank angles (rad); statistics and figures from the first")
-    sub.add_parser("forces", help="constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)")
+    forces = sub.add_parser("forces", help="constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)")
+    forces.add_argument("--forces-tool", type=Path, required=True,
+                        help="the built roller_forces example (target/release/examples/roller_forces)")
     cross = sub.add_parser("crosscheck", help="variant 1 in the roller limit against variant 2 (roller_forcing = 2)")
     cross.add_argument("--clearance", type=float, nargs="+", default=[10e-6, 20e-6, 40e-6, 80e-6, 160e-6, 320e-6], help="m")
     for p in sub.choices.values():
@@ -410,7 +478,7 @@ def main(argv=None):
             print(f"clearance {clearance * 1e6:g} um: {len(crank_train)} / {len(roller)} events, same sequence {same}; "
                   f"largest crank-angle difference {angle.max():.1e} rad, relative impact-velocity difference {speed.max():.1e}")
     elif args.command == "forces":
-        print(f"wrote {write_forces(args.out)}")
+        print(f"wrote {write_forces(args.out, args.forces_tool)}")
     else:
         for path in write_thesis(args.out, args.transient, args.cycles, args.forcing, args.starts):
             print(f"wrote {path}")

@@ -1,48 +1,111 @@
-"""Simulates the FMU's default experiment through fmpy and writes a CSV and plots of the last engine cycle.
+"""Simulates one operating point of the FMU through fmpy and writes CSVs and plots of its last engine cycle.
 
-    python -m pistonslap.demo [--out DIR] [--stop-time SECONDS] [--interval SECONDS]
+    pistonslap demo [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM] [--restitution E]
+                    [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S]
+
+Options not given keep the FMU's defaults (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
 """
 
 import argparse
 from pathlib import Path
 
-from fmpy.util import write_csv
+import fmpy
+import numpy as np
 
-from . import plots
-from .fmu import fmu_path, last_cycle, simulate_with_events
+from .fmu import CYCLE, fmu_path, last_cycle, simulate_with_events
+from .tables import cycle_metrics, write_table
 
-#: 1e-4 s is 0.72° of crank angle at the default 1200 rpm: fine enough to draw the impacts.
-DEFAULT_INTERVAL = 1e-4
+#: Crank angle between samples (and communication points), deg: the FMU's default experiment samples every
+#: 5e-5 s, 0.36° at 1200 rpm.
+SAMPLE_DEG = 0.36
+#: Magnification of clearance and tilt in the piston-position pictures.
+MAGNIFICATION = 200
+
+
+def _parser():
+    parser = argparse.ArgumentParser(prog="pistonslap demo", description=__doc__.splitlines()[0])
+    parser.add_argument("--out", type=Path, default=Path("out"), help="output folder (default: out)")
+    parser.add_argument("--rpm", type=float, help="crank speed, rpm (default 1200)")
+    parser.add_argument("--peak-pressure", type=float, help="peak of the built-in gas pressure curve, bar (default 80)")
+    parser.add_argument("--clearance", type=float, help="diametral clearance bore - piston diameter, µm (default 80)")
+    parser.add_argument("--restitution", type=float, help="coefficient of restitution (default 0.5)")
+    parser.add_argument("--pin-offset", type=float, help="pin offset toward the major-thrust side, mm (default 0)")
+    parser.add_argument("--cycles", type=int, default=2, help="engine cycles (720° each) to simulate (default 2)")
+    parser.add_argument("--slap-threshold", type=float, help="impacts faster than this count as slaps, mm/s (default 10)")
+    return parser
+
+
+def start_values(args, defaults):
+    """FMU start values (SI) for the options given; `defaults` are the FMU's start values by name."""
+    values = {}
+    if args.rpm is not None:
+        values["crank_speed"] = args.rpm * np.pi / 30
+    if args.peak_pressure is not None:
+        values["peak_pressure"] = args.peak_pressure * 1e5
+    if args.clearance is not None:
+        values["bore"] = defaults["piston_diameter"] + args.clearance * 1e-6
+    if args.restitution is not None:
+        values["restitution"] = args.restitution
+    if args.pin_offset is not None:
+        values["pin_offset"] = args.pin_offset * 1e-3
+    if args.slap_threshold is not None:
+        values["slap_threshold"] = args.slap_threshold * 1e-3
+    return values
+
+
+def case_title(p):
+    """The operating point in the words of an engine test sheet; `p` holds every parameter by name (SI)."""
+    return (f"{p['crank_speed'] * 30 / np.pi:.0f} rpm, peak pressure {p['peak_pressure'] * 1e-5:g} bar, "
+            f"clearance {(p['bore'] - p['piston_diameter']) * 1e6:g} µm, e = {p['restitution']:g}, "
+            f"pin offset {p['pin_offset'] * 1e3:g} mm, slap threshold {p['slap_threshold'] * 1e3:g} mm/s")
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", type=Path, default=Path("out"), help="output folder (default: out)")
-    parser.add_argument("--stop-time", type=float, default=None, help="s (default: the FMU's default experiment)")
-    parser.add_argument("--interval", type=float, default=DEFAULT_INTERVAL, help="communication step, s")
-    args = parser.parse_args(argv)
+    args = _parser().parse_args(argv)
+    try:
+        from . import plots
+    except ImportError as e:
+        raise SystemExit(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
+    md = fmpy.read_model_description(str(fmu_path()))
+    defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
+    values = start_values(args, defaults)
+    p = dict(defaults, **values)
+    omega = p["crank_speed"]
+    interval = np.radians(SAMPLE_DEG) / omega
+    # one sample past the last cycle's end, so that its figures are out
+    stop_time = args.cycles * CYCLE / omega + interval
 
     args.out.mkdir(parents=True, exist_ok=True)
-    result, events = simulate_with_events(
-        log_path=args.out / "impact_log.csv", stop_time=args.stop_time, output_interval=args.interval
-    )
-    csv = args.out / "demo.csv"
-    write_csv(str(csv), result)
+    result, events = simulate_with_events(log_path=args.out / "impact_log.csv", start_values=values,
+                                          stop_time=stop_time, output_interval=interval)
+    case = case_title(p)
+    units = {v.name: v.unit or (v.declaredType.unit if v.declaredType else None) for v in md.modelVariables}
+    units["time"] = "s"
+    written = [write_table(args.out / "demo.csv", result, units), args.out / "impact_log.csv",
+               write_table(args.out / "cycles.csv", *cycle_metrics(result))]
 
     cycle, phase = last_cycle(result["crank_angle"])
     times = result["time"][cycle]
     # the log's crank angle is already taken mod 4π, i.e. the phase within the cycle
-    in_cycle = (events["time"] >= times[0]) & (events["time"] <= times[-1])
-    written = [
-        csv,
-        args.out / "impact_log.csv",
-        plots.piston_motion(phase[cycle], result[cycle], args.out / "piston_motion.png"),
-        plots.impacts(phase[cycle], result[cycle], events[in_cycle], args.out / "impacts.png"),
-        plots.crank_torque(phase[cycle], result[cycle], args.out / "crank_torque.png"),
+    in_cycle = events[(events["time"] >= times[0]) & (events["time"] <= times[-1])]
+    geometry = (p["bore"], p["piston_diameter"], p["skirt_length"], p["pin_height"])
+    half_clearance = (p["bore"] - p["piston_diameter"]) / 2
+    written += [
+        plots.piston_motion(phase[cycle], result[cycle], half_clearance, args.out / "piston_motion.png", case),
+        plots.slap(in_cycle, p["slap_threshold"], args.out / "slap.png", case),
+        plots.forces(phase[cycle], result[cycle], args.out / "forces.png", case),
+        plots.piston_positions(phase[cycle], result[cycle], in_cycle, geometry, MAGNIFICATION,
+                               args.out / "piston_positions.png", case),
+        plots.piston_animation(phase[cycle], result[cycle], in_cycle, geometry, MAGNIFICATION,
+                               args.out / "piston_positions.gif", case),
     ]
     impacts = int((events["kind"] == "impact").sum())
-    print(f"Simulated {fmu_path()} to t = {result['time'][-1]:g} s: {impacts} impacts, "
-          f"{len(events) - impacts} sliding starts/releases; plotted the last engine cycle.")
+    last = result[-1]
+    print(f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s, {impacts} impacts, "
+          f"{len(events) - impacts} sliding starts/releases. Last cycle: {last['cycle_slap_events']} slaps, "
+          f"{last['cycle_impact_energy'] * 1e3:.3g} mJ dissipated by impacts, largest impact "
+          f"{last['cycle_max_impact_energy_thrust'] * 1e3:.3g} mJ on the major-thrust wall, "
+          f"{last['cycle_max_impact_energy_antithrust'] * 1e3:.3g} mJ on the anti-thrust wall.")
     for path in written:
         print(f"wrote {path}")
 

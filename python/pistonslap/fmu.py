@@ -8,12 +8,13 @@ from pathlib import Path
 import fmpy
 import numpy as np
 
-#: One four-stroke engine cycle in crank angle (rad); firing TDC at 0 mod 4π (DESIGN.md §3).
+#: One four-stroke engine cycle in crank angle (rad); firing TDC at 0 mod 4π.
 CYCLE = 4 * np.pi
 
-_REPO = Path(__file__).resolve().parents[2]
+#: The FMU the package carries: `make fmu` copies the packaged FMU here, and the wheel includes it.
+PACKAGED_FMU = Path(__file__).resolve().parent / "fmu" / "PistonSlap.fmu"
 
-#: Rows of the `impact_log` CSV (DESIGN.md §4), in the order of its header.
+#: Rows of the `impact_log` CSV (SI units; the crank angle also in degrees), in the order of its header.
 EVENT_DTYPE = np.dtype([
     ("time", "f8"),
     ("crank_angle", "f8"),
@@ -23,12 +24,17 @@ EVENT_DTYPE = np.dtype([
     ("normal_velocity_after", "f8"),
     ("energy_lost", "f8"),
     ("position", "f8"),
+    ("crank_angle_deg", "f8"),
 ])
 
 
 def fmu_path() -> Path:
-    """The packaged FMU: `$PISTONSLAP_FMU` if set, else `target/fmu/PistonSlap.fmu` of this checkout."""
-    return Path(os.environ.get("PISTONSLAP_FMU", _REPO / "target" / "fmu" / "PistonSlap.fmu"))
+    """The FMU to run: `$PISTONSLAP_FMU` if set, else the one this package carries (`PACKAGED_FMU`)."""
+    path = Path(os.environ.get("PISTONSLAP_FMU", PACKAGED_FMU))
+    if not path.is_file():
+        raise FileNotFoundError(f"{path} is missing: run `make fmu` in the PistonSlap repository (it copies the FMU "
+                                "there), or set PISTONSLAP_FMU to a PistonSlap.fmu")
+    return path
 
 
 def simulate(stop_time=None, output_interval=None, start_values=None, input=None, output=None, **fmpy_kwargs):

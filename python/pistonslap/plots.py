@@ -1,18 +1,28 @@
-"""Plots of one engine cycle against crank angle, in the style of Awrejcewicz & Kudra (2005) Figs 5-10.
+"""Plots of one engine cycle against crank angle, in the style of Awrejcewicz & Kudra (2005) Figs 5-10, and the
+successive piston positions in the bore of their Fig. 7.
 
-Every function takes the samples of one cycle (`phase` = crank angle within the cycle, rad) and writes a PNG.
+Every function takes the samples of one cycle (`phase` = crank angle within the cycle, rad), a `case` title naming
+the operating point, and writes a PNG (the piston positions also an animated GIF). Sides follow the FMU's
+conventions: +x (corners K3, K4) is the major-thrust wall, the one the piston presses on in the power stroke;
+-x (K1, K2) the anti-thrust wall.
 """
+
+import textwrap
 
 import matplotlib.pyplot as plt
 import numpy as np
+from matplotlib.animation import FuncAnimation, PillowWriter
+from matplotlib.patches import Polygon
 
 CORNERS = (1, 2, 3, 4)
+#: (label, corners, colour) of the two walls.
+SIDES = (("major thrust (+x: K3, K4)", (3, 4), "tab:red"), ("anti-thrust (−x: K1, K2)", (1, 2), "tab:blue"))
 
 
-def _axes(rows, title):
-    fig, axes = plt.subplots(rows, 1, sharex=True, figsize=(9, 2.2 * rows + 0.8), squeeze=False)
+def _axes(rows, title, case):
+    fig, axes = plt.subplots(rows, 1, sharex=True, figsize=(9, 2.2 * rows + 1.0), squeeze=False)
     axes = axes[:, 0]
-    fig.suptitle(title)
+    fig.suptitle(f"{title}\n{case}", fontsize="medium")
     axes[-1].set_xlabel("crank angle [deg]  (0 = firing TDC)")
     axes[-1].set_xlim(0, 720)
     axes[-1].set_xticks(np.arange(0, 721, 90))
@@ -21,8 +31,8 @@ def _axes(rows, title):
     return fig, axes
 
 
-def _legend(ax):
-    ax.legend(loc="lower right", bbox_to_anchor=(1, 1), ncol=4, fontsize="small", frameon=False)
+def _legend(ax, ncol=4):
+    ax.legend(loc="lower right", bbox_to_anchor=(1, 1), ncol=ncol, fontsize="small", frameon=False)
 
 
 def _save(fig, path):
@@ -32,18 +42,27 @@ def _save(fig, path):
     return path
 
 
-def piston_motion(phase, result, path, title="Piston secondary motion over one engine cycle"):
-    """Lateral pin position, tilt, contact states (a bar per corner while in contact) and contact forces."""
+def piston_motion(phase, result, half_clearance, path, case):
+    """Eccentricity of the skirt top and bottom and of the pin, tilt, contact states (a bar per corner while in
+    sliding contact), and contact force per corner."""
     deg = np.degrees(phase)
-    fig, (lateral, tilt, states, forces) = _axes(4, title)
-    lateral.plot(deg, result["piston_lateral"] * 1e6)
-    lateral.set_ylabel("lateral x [µm]")
+    fig, (lateral, tilt, states, forces) = _axes(4, "Piston secondary motion over one engine cycle", case)
+    for name, label, style in (("skirt_top_lateral", "skirt top (K1/K3 level)", "-"),
+                               ("skirt_bottom_lateral", "skirt bottom (K2/K4 level)", "-"),
+                               ("piston_lateral", "pin", ":")):
+        lateral.plot(deg, result[name] * 1e6, style, label=label)
+    for sign, (label, _, colour) in zip((1, -1), SIDES):
+        lateral.axhline(sign * half_clearance * 1e6, color=colour, lw=0.8, ls="--")
+        lateral.annotate(label.split(" (")[0] + " wall", (5, sign * half_clearance * 1e6), color=colour,
+                         fontsize="x-small", va="top" if sign > 0 else "bottom")
+    lateral.set_ylabel("eccentricity x [µm]\n(+ toward major thrust)")
+    _legend(lateral, ncol=3)
     tilt.plot(deg, result["piston_tilt"] * 1e3)
-    tilt.set_ylabel("tilt [mrad]")
+    tilt.set_ylabel("tilt [mrad]\n(+ counterclockwise)")
     for corner in CORNERS:
         in_contact = result[f"contact_state_{corner}"] > 0
         states.fill_between(deg, corner - 0.35, corner + 0.35, where=in_contact, step="post", label=f"K{corner}")
-        forces.plot(deg, result[f"contact_force_{corner}"] * 1e-3, label=f"K{corner}")
+        forces.plot(deg, result[f"contact_force_{corner}"] * 1e-3, ls="-" if corner % 2 else "--", label=f"K{corner}")
     states.set_yticks(CORNERS, [f"K{c}" for c in CORNERS])
     states.set_ylim(0.4, 4.6)
     states.set_ylabel("sliding contact")
@@ -52,30 +71,138 @@ def piston_motion(phase, result, path, title="Piston secondary motion over one e
     return _save(fig, path)
 
 
-def impacts(phase, result, events, path, title="Impacts over one engine cycle"):
-    """Largest impact velocity in each communication step, and every logged impact by corner
-    (the log's crank angle is the phase within the cycle). Log rows of closed corners taking part in a
-    neighbour's impact have a zero approach speed: only impacts faster than 1 µm/s are drawn."""
-    fig, (per_step, per_impact) = _axes(2, title)
+def slap(events, slap_threshold, path, case):
+    """Every impact of one cycle against the crank angle, by wall, on linear scales: the kinetic energy it
+    dissipated, and its normal approach speed with the slap threshold drawn. Impacts below the threshold are
+    drawn hollow. Rows of the impact log only: no quantity here depends on the communication step."""
+    fig, (energy, speed) = _axes(2, "Piston slap: impacts over one engine cycle", case)
+    impacts = events[events["kind"] == "impact"]
+    for label, corners, colour in SIDES:
+        mine = impacts[np.isin(impacts["corner"], corners)]
+        slaps = mine["normal_velocity_before"] > slap_threshold
+        for ax, values in ((energy, mine["energy_lost"] * 1e3), (speed, mine["normal_velocity_before"] * 1e3)):
+            ax.vlines(mine["crank_angle_deg"][slaps], 0, values[slaps], color=colour, lw=1)
+            ax.plot(mine["crank_angle_deg"][slaps], values[slaps], "o", color=colour, ms=4,
+                    label=f"{label}: {slaps.sum()} slaps")
+            ax.plot(mine["crank_angle_deg"][~slaps], values[~slaps], "o", mfc="none", color=colour, ms=3,
+                    label=f"{label}: {(~slaps).sum()} below threshold")
+    speed.axhline(slap_threshold * 1e3, color="k", lw=0.8, ls="--")
+    speed.annotate(f"slap threshold {slap_threshold * 1e3:g} mm/s", (5, slap_threshold * 1e3), fontsize="x-small",
+                   va="bottom")
+    energy.set_ylabel("energy dissipated\nper impact [mJ]")
+    speed.set_ylabel("impact speed [mm/s]")
+    energy.set_ylim(bottom=0)
+    speed.set_ylim(bottom=0)
+    _legend(speed, ncol=2)
+    return _save(fig, path)
+
+
+def forces(phase, result, path, case):
+    """The gas pressure that acted with the net side force of the liner on the piston, and the engine torque."""
     deg = np.degrees(phase)
-    hit = result["impacts_in_step"] > 0
-    per_step.vlines(deg[hit], 0, result["max_impact_velocity_in_step"][hit] * 1e3)
-    per_step.set_ylabel("max impact velocity\nin step [mm/s]")
-    is_impact = (events["kind"] == "impact") & (events["normal_velocity_before"] > 1e-6)
-    for corner in CORNERS:
-        mine = is_impact & (events["corner"] == corner)
-        per_impact.plot(np.degrees(events["crank_angle"][mine]), events["normal_velocity_before"][mine] * 1e3,
-                        "o", ms=3, label=f"K{corner}")
-    per_impact.set_ylabel("impact velocity [mm/s]")
-    if np.any(is_impact):  # bounce sequences span decades
-        per_impact.set_yscale("log")
-    _legend(per_impact)
+    fig, (side, torque) = _axes(2, "Side force, gas pressure and engine torque over one engine cycle", case)
+    side.plot(deg, result["side_force"] * 1e-3, color="tab:purple", label="net side force (liner on piston)")
+    side.set_ylabel("side force [kN]\n(− = from the major-thrust wall)")
+    pressure = side.twinx()
+    pressure.plot(deg, result["gas_pressure_acting"] * 1e-5, color="tab:gray", lw=0.8, label="gas pressure (gauge)")
+    pressure.set_ylabel("gas pressure [bar]")
+    lines = side.get_lines() + pressure.get_lines()
+    side.legend(lines, [line.get_label() for line in lines], loc="lower right", bbox_to_anchor=(1, 1), ncol=2,
+                fontsize="small", frameon=False)
+    torque.plot(deg, result["engine_torque"])
+    torque.set_ylabel("engine torque [N·m]\n(+ along rotation)")
     return _save(fig, path)
 
 
-def crank_torque(phase, result, path, title="Drive torque holding the crank speed"):
-    """The torque the drive applies to hold the prescribed crank speed."""
-    fig, (ax,) = _axes(1, title)
-    ax.plot(np.degrees(phase), result["crank_torque"])
-    ax.set_ylabel("crank torque [N·m]")
-    return _save(fig, path)
+def _outline(top, bottom, pin_height, skirt, diameter, magnification):
+    """Corners K1, K3, K4, K2 of the drawn piston in mm: the axis at the top and bottom corner levels displaced by
+    `magnification` times the skirt's lateral positions (m), heights from the pin."""
+    x_top, x_bottom = magnification * top * 1e3, magnification * bottom * 1e3
+    r, z_top, z_bottom = diameter * 500, pin_height * 1e3, (pin_height - skirt) * 1e3
+    return np.array([(x_top - r, z_top), (x_top + r, z_top), (x_bottom + r, z_bottom), (x_bottom - r, z_bottom)])
+
+
+#: Index in `_outline`'s corners of each corner K1..K4.
+_OUTLINE_INDEX = {1: 0, 3: 1, 4: 2, 2: 3}
+
+
+def _draw_piston(ax, frame, geometry, magnification):
+    """One piston position: liner walls, the piston outline, and the corners in sliding contact (filled) or
+    hitting in this interval (ring)."""
+    bore, diameter, skirt, pin_height = geometry
+    wall = diameter * 500 + magnification * (bore - diameter) * 500
+    corners = _outline(frame["top"], frame["bottom"], pin_height, skirt, diameter, magnification)
+    ax.add_patch(Polygon(corners, closed=True, fc="0.85", ec="k", lw=0.8))
+    for x, colour in ((wall, SIDES[0][2]), (-wall, SIDES[1][2])):
+        ax.axvline(x, color=colour, lw=1.5)
+    for corner in frame["sliding"]:
+        ax.plot(*corners[_OUTLINE_INDEX[corner]], "o", color="k", ms=5)
+    for corner in frame["hit"]:
+        ax.plot(*corners[_OUTLINE_INDEX[corner]], "o", mfc="none", mec="tab:orange", ms=9, mew=1.5)
+    ax.plot(0, 0, "+", color="0.4", ms=4)
+    ax.set_xlim(-1.15 * wall, 1.15 * wall)
+    ax.set_ylim((pin_height - skirt) * 1e3 - 8, pin_height * 1e3 + 8)
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+    ax.set_title(f"{frame['deg']:.0f}°", fontsize="small", pad=2)
+
+
+def position_frames(phase, result, events, every_deg):
+    """The piston at every `every_deg` of crank angle in the cycle: skirt positions, corners in sliding contact,
+    and corners that hit since the previous frame."""
+    deg = np.degrees(phase)
+    impacts = events[events["kind"] == "impact"]
+    frames = []
+    for target in np.arange(0, 720, every_deg):
+        k = int(np.argmin(np.abs(deg - target)))
+        recent = (impacts["crank_angle_deg"] > target - every_deg) & (impacts["crank_angle_deg"] <= target)
+        frames.append({
+            "deg": target, "top": result["skirt_top_lateral"][k], "bottom": result["skirt_bottom_lateral"][k],
+            "sliding": [c for c in CORNERS if result[f"contact_state_{c}"][k] > 0],
+            "hit": sorted(set(impacts["corner"][recent].tolist())),
+        })
+    return frames
+
+
+def _positions_caption(magnification):
+    return (f"clearance and tilt magnified {magnification:g}×; red: major-thrust wall (+x), blue: anti-thrust wall; "
+            "● corner sliding on the liner, ○ corner hit since the previous frame; + piston pin")
+
+
+def piston_positions(phase, result, events, geometry, magnification, path, case, every_deg=30):
+    """Awrejcewicz & Kudra Fig. 7: successive positions of the piston in the bore over one cycle, one small panel
+    every `every_deg` degrees. `geometry` = (bore, piston_diameter, skirt_length, pin_height), m."""
+    frames = position_frames(phase, result, events, every_deg)
+    columns = 8
+    rows = -(-len(frames) // columns)
+    fig, axes = plt.subplots(rows, columns, figsize=(1.5 * columns, 2.1 * rows + 1.0), squeeze=False)
+    for ax, frame in zip(axes.flat, frames):
+        _draw_piston(ax, frame, geometry, magnification)
+    for ax in axes.flat[len(frames):]:
+        ax.set_visible(False)
+    fig.suptitle(f"Successive piston positions in the bore over one engine cycle (0° = firing TDC)\n{case}",
+                 fontsize="medium")
+    fig.text(0.5, 0.01, _positions_caption(magnification), ha="center", fontsize="small")
+    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return path
+
+
+def piston_animation(phase, result, events, geometry, magnification, path, case, every_deg=5):
+    """The positions of `piston_positions` as an animated GIF, one frame every `every_deg` degrees."""
+    frames = position_frames(phase, result, events, every_deg)
+    fig, ax = plt.subplots(figsize=(4, 5))
+
+    def draw(frame):
+        ax.clear()
+        _draw_piston(ax, frame, geometry, magnification)
+        ax.set_title(f"crank angle {frame['deg']:.0f}° (0° = firing TDC)", fontsize="small")
+
+    fig.suptitle(textwrap.fill(case, 70), fontsize="x-small")
+    fig.text(0.5, 0.01, _positions_caption(magnification).replace("; ", "\n"), ha="center", fontsize="x-small")
+    fig.subplots_adjust(bottom=0.18)
+    FuncAnimation(fig, draw, frames=frames).save(path, writer=PillowWriter(fps=12))
+    plt.close(fig)
+    return path

@@ -20,7 +20,7 @@ def _poincare(ax, points, title=None):
     ax.plot(theta, rate, ".k", ms=1.5)
     ax.set_xlim(0, 2 * np.pi)
     ax.set_xlabel("crank angle θ [rad]")
-    ax.set_ylabel("ψ' before impact (upper wall)")
+    ax.set_ylabel("ψ' before an upper-wall impact\n[rad per rad of crank angle]")
     if title:
         ax.set_title(title, fontsize="small")
 
@@ -28,11 +28,12 @@ def _poincare(ax, points, title=None):
 def _profile(ax, profile, title=None):
     edges, upper, lower = profile
     centres, width = (edges[:-1] + edges[1:]) / 2, np.diff(edges)
-    ax.bar(centres, upper, width, color="tab:red", label="upper wall")
-    ax.bar(centres, lower, width, color="tab:blue", label="lower wall")
+    ax.bar(centres, upper, width, color="tab:red", label="upper wall (> 0)")
+    ax.bar(centres, lower, width, color="tab:blue", label="lower wall (< 0)")
     ax.axhline(0, color="k", lw=0.5)
-    ax.set_xlabel("impact location x")
-    ax.set_ylabel("⟨ψ'(Δx)⟩")
+    ax.set_xlabel("impact location x = pin position / rod length [-]")
+    ax.set_ylabel("⟨ψ'(Δx)⟩, eq 3.6 [rad/rad]")
+    ax.legend(fontsize="x-small", loc="upper right")
     if title:
         ax.set_title(title, fontsize="small")
 
@@ -47,7 +48,7 @@ def case_sheet(poincare, profile, spectra, title, path):
     for k, (name, spectrum) in enumerate((("upper", upper), ("lower", lower))):
         ax = fig.add_subplot(2, 2, 3 + k, projection="polar")
         ax.bar(edges[:-1], spectrum, np.diff(edges), align="edge", color="tab:red" if k == 0 else "tab:blue")
-        ax.set_title(f"impact spectrum, {name} wall", fontsize="small")
+        ax.set_title(f"impact spectrum (eq 3.7), {name} wall: Σ|ψ'| / N per crank-angle bin", fontsize="small")
     return _save(fig, path)
 
 
@@ -66,15 +67,16 @@ def forces_sheet(figures, curves, regions, path):
         ax.set_xlim(0, 2 * np.pi)
         ax.set_title(f"Fig {name}: ρ={rho:g}, λ={lam:g}", fontsize="small")
         ax.set_xlabel("crank angle θ [rad]")
-    axes[0].legend(fontsize="x-small")
+        ax.set_ylabel("constraint force (eq 2.29) [thesis units]")
+    axes[0].legend(fontsize="x-small", title="u: upper wall, l: lower wall", title_fontsize="x-small")
     for ax, forcing in zip(axes[n:], (1, 2)):
         rows = np.array([(float(r), float(l), _REGION_CODES[g]) for r, l, g in regions[forcing]])
         size = int(round(np.sqrt(len(rows))))
         grid = rows[:, 2].reshape(size, size)
         image = ax.imshow(grid.T, origin="lower", aspect="auto", cmap="viridis", vmin=0, vmax=3,
                           extent=(0, rows[:, 0].max(), 0, rows[:, 1].max()))
-        ax.set_xlabel("ρ")
-        ax.set_ylabel("λ")
+        ax.set_xlabel("clearance ρ [-]")
+        ax.set_ylabel("damping λ [-]")
         ax.set_title(f"Fig 2.10, forcing {forcing}: regions 0 none, I, II, III", fontsize="small")
         fig.colorbar(image, ax=ax, ticks=[0, 1, 2, 3])
     for ax in axes[n + 2:]:

@@ -69,12 +69,20 @@ impl Engine {
         self.gas_force_at(&self.crank(crank_angle))
     }
 
-    fn gas_force_at(&self, crank: &Crank) -> f64 {
-        let pressure = match &self.pressure {
+    /// Gauge gas pressure on the crown at crank angle φ1, Pa: the held input or the curve.
+    pub fn pressure(&self, crank_angle: f64) -> f64 {
+        self.pressure_at(&self.crank(crank_angle))
+    }
+
+    fn pressure_at(&self, crank: &Crank) -> f64 {
+        match &self.pressure {
             GasPressure::BuiltIn(_) => crank.curve,
             GasPressure::Held(p) => *p,
-        };
-        pressure * self.crown_area
+        }
+    }
+
+    fn gas_force_at(&self, crank: &Crank) -> f64 {
+        self.pressure_at(crank) * self.crown_area
     }
 
     /// Inlined, with the cache's lookup (`PrescribedCrank::crank`, `LastValue::get_or`), into

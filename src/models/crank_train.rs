@@ -3,7 +3,7 @@
 
 use super::crank_drive::{Engine, FreeCrank, PrescribedCrank};
 use super::crank_kinematics::SliderCrank;
-use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
+use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters, CYCLE};
 use crate::dynamics::{DynamicsError, Event, EventKind, StepCounts, Stepper, StepperOptions};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -267,7 +267,8 @@ impl CrankTrain {
             let phi = angle(e);
             events.push(EngineEvent {
                 time: e.time,
-                crank_angle: phi[0].rem_euclid(4.0 * PI),
+                crank_angle: phi[0].rem_euclid(CYCLE),
+                cycle: (self.cycles + (phi[0] / CYCLE).floor()) as i64,
                 kind: match e.kind {
                     EventKind::Impact => EngineEventKind::Impact,
                     EventKind::Slide => EngineEventKind::Slide,
@@ -343,6 +344,12 @@ impl EngineModel for CrankTrain {
         out.piston_lateral_velocity =
             -self.geometry.crank_radius * phi[0].cos() * phid[0] - self.geometry.rod_length * phi[1].cos() * phid[1];
         out.piston_tilt = phi[2];
+        // The piston axis at a corner pair's height is midway between the two corners, whose gaps
+        // from their walls are D/2 + x (K1, K2) and D/2 − x (K3, K4).
+        let gaps = linkage.gaps(&phi);
+        out.skirt_top_lateral = 0.5 * (gaps[0] - gaps[2]);
+        out.skirt_bottom_lateral = 0.5 * (gaps[1] - gaps[3]);
+        out.gas_pressure_acting = self.engine().pressure(phi[0]);
         out.piston_axial = pin.y;
         out.crank_angle = phi[0];
         out.rod_angle = phi[1];
@@ -366,6 +373,58 @@ impl EngineModel for CrankTrain {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Outputs after each of `n` steps of `h` seconds with `inputs` held.
+    fn run(params: &Parameters, inputs: &Inputs, h: f64, n: usize) -> Vec<Outputs> {
+        let mut model = CrankTrain::new(params, 0.0).unwrap();
+        let mut events = Vec::new();
+        (1..=n)
+            .map(|k| {
+                model.advance(inputs, k as f64 * h, &mut events).unwrap();
+                let mut out = Outputs::default();
+                model.write_outputs(&mut out);
+                out
+            })
+            .collect()
+    }
+
+    #[test]
+    fn gas_pressure_acting_is_the_input_or_the_curve() {
+        let held = Parameters { pressure_source: 1, ..Parameters::default() };
+        let inputs = Inputs { gas_pressure: 2.5e6, ..Inputs::default() };
+        assert!(run(&held, &inputs, 1e-3, 20).iter().all(|out| out.gas_pressure_acting == 2.5e6));
+        // The built-in curve over one cycle sampled every 0.36°: its maximum is peak_pressure (reached
+        // near 11° after firing TDC, so the samples come within 0.1 %), and it is zero in the exhaust
+        // and intake strokes, BDC to BDC.
+        let p = Parameters::default();
+        let cycle = run(&p, &Inputs::default(), 5e-5, 2000);
+        let peak = cycle.iter().map(|out| out.gas_pressure_acting).fold(0.0, f64::max);
+        assert!(peak <= p.peak_pressure && peak > 0.999 * p.peak_pressure, "{peak}");
+        let gas_exchange = cycle.iter().filter(|out| (PI + 1e-9..3.0 * PI - 1e-9).contains(&out.crank_angle));
+        assert!(gas_exchange.clone().count() > 900 && gas_exchange.clone().all(|out| out.gas_pressure_acting == 0.0));
+    }
+
+    /// The piston axis at the corners' heights z = h and h − s lies at x_pin − z sin φ3 (pin on the
+    /// axis): the two differ by −s sin φ3 and straddle the pin (h = s/2); a corner in contact puts its
+    /// end of the axis at (D − d cos φ3)/2 from the centre.
+    #[test]
+    fn skirt_positions_follow_the_pin_and_the_tilt() {
+        let p = Parameters::default();
+        let mut contacts = 0;
+        for out in run(&p, &Inputs::default(), 1e-4, 1000) {
+            let (top, bottom, tilt) = (out.skirt_top_lateral, out.skirt_bottom_lateral, out.piston_tilt);
+            assert!((top - bottom + p.skirt_length * tilt.sin()).abs() < 1e-15, "{out:?}");
+            assert!((0.5 * (top + bottom) - out.piston_lateral).abs() < 1e-15, "{out:?}");
+            let wall = 0.5 * (p.bore - p.piston_diameter * tilt.cos());
+            let ends =
+                [(out.contact_state_1, -top), (out.contact_state_2, -bottom), (out.contact_state_3, top), (out.contact_state_4, bottom)];
+            for (state, toward_wall) in ends.into_iter().filter(|(state, _)| *state == 1) {
+                assert!((toward_wall - wall).abs() < 1e-9, "{state}: {out:?}");
+                contacts += 1;
+            }
+        }
+        assert!(contacts > 100, "the default cycle slides on both walls: {contacts}");
+    }
 
     #[test]
     fn refuses_parameters_naming_them() {

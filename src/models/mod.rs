@@ -23,6 +23,9 @@ pub use roller_forcing::{Forcing, Jet, RollerMechanism, SlidingRegion};
 
 use serde::{Deserialize, Serialize};
 
+/// One four-stroke engine cycle of crank angle, rad; firing top dead centre at 0 mod 4π.
+pub const CYCLE: f64 = 4.0 * std::f64::consts::PI;
+
 /// What happened at an event, in the impact log's words (`impact`, `slide`, `release`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum EngineEventKind {
@@ -37,8 +40,10 @@ pub struct EngineEvent {
     pub time: f64,
     /// rad, in [0, 4π).
     pub crank_angle: f64,
+    /// The engine cycle the event lies in: whole cycles (4π) of the accumulated crank angle.
+    pub cycle: i64,
     pub kind: EngineEventKind,
-    /// 1..4 (variant 2: 1 = lower wall, 3 = upper wall).
+    /// 1..4: 1, 2 on the −D/2 (anti-thrust) wall, 3, 4 on the +D/2 (major-thrust) wall.
     pub corner: u8,
     /// m/s, normal approach speed −ḣ⁻ (≥ 0 for an impact).
     pub normal_velocity_before: f64,

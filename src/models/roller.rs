@@ -19,7 +19,7 @@
 
 use super::last_value::LastValue;
 use super::roller_forcing::{AtAngle, Forcing, RollerMechanism};
-use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
+use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters, CYCLE};
 use crate::dynamics::{DynamicsError, Evaluation, Event, EventKind, Stepper, StepperOptions, System};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
@@ -194,7 +194,8 @@ impl Roller {
         EngineEvent {
             time: self.time + (event.time - theta_start) / omega,
             // The turns taken off come in even blocks: the angle within a cycle is unchanged.
-            crank_angle: event.time.rem_euclid(4.0 * PI),
+            crank_angle: event.time.rem_euclid(CYCLE),
+            cycle: ((event.time + 2.0 * PI * self.turns) / CYCLE).floor() as i64,
             kind: match event.kind {
                 EventKind::Impact => EngineEventKind::Impact,
                 EventKind::Slide => EngineEventKind::Slide,
@@ -301,6 +302,10 @@ impl EngineModel for Roller {
         out.piston_lateral = -l * cos_phi.value * psi;
         out.piston_lateral_velocity = -l * omega * (cos_phi.d1 * psi + cos_phi.value * dpsi);
         out.piston_tilt = 0.0;
+        // A point slider without gas: its axis is the pin's at every height.
+        out.skirt_top_lateral = out.piston_lateral;
+        out.skirt_bottom_lateral = out.piston_lateral;
+        out.gas_pressure_acting = 0.0;
         out.piston_axial = self.axial_position(theta, psi);
         out.crank_angle = theta + 2.0 * PI * self.turns;
         out.rod_angle = psi - at.rod_angle().value;

@@ -1,4 +1,5 @@
-//! The `impact_log` CSV (DESIGN.md §4): one row per impact, slide start or release.
+//! The `impact_log` CSV: one row per impact, slide start or release, in SI units, with the crank
+//! angle in degrees as well (the last column, so readers of the older columns are unaffected).
 //!
 //! The file always holds the events of the trajectory the instance is on: the cursor (bytes written so
 //! far) is part of the saved state, and restoring a state cuts the file back to that cursor, so rows
@@ -9,7 +10,7 @@ use serde::{Deserialize, Serialize};
 use std::fs::{File, OpenOptions};
 use std::io::Write;
 
-const HEADER: &str = "time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position\n";
+const HEADER: &str = "time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position,crank_angle_deg\n";
 
 /// An open log: its path and the length of what this trajectory has written.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -81,7 +82,14 @@ fn row(e: &EngineEvent) -> String {
         EngineEventKind::Release => "release",
     };
     format!(
-        "{},{},{kind},{},{},{},{},{}\n",
-        e.time, e.crank_angle, e.corner, e.normal_velocity_before, e.normal_velocity_after, e.energy_lost, e.position
+        "{},{},{kind},{},{},{},{},{},{}\n",
+        e.time,
+        e.crank_angle,
+        e.corner,
+        e.normal_velocity_before,
+        e.normal_velocity_after,
+        e.energy_lost,
+        e.position,
+        e.crank_angle.to_degrees()
     )
 }

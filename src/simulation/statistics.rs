@@ -1,7 +1,8 @@
-//! The impact statistics outputs (DESIGN.md §4), computed from the event rows. Kept apart from the
-//! model's outputs so a model writing its `Outputs` cannot disturb them.
+//! The impact statistics outputs, computed from the event rows: running totals, the last step's
+//! figures and the per-cycle metrics. Kept apart from the model's outputs so a model writing its
+//! `Outputs` cannot disturb them.
 
-use crate::models::{EngineEvent, EngineEventKind, Outputs};
+use crate::models::{EngineEvent, EngineEventKind, Outputs, CYCLE};
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
@@ -14,16 +15,56 @@ pub struct ImpactStatistics {
     impact_energy_total: f64,
     last_impact_corner: i32,
     last_impact_crank_angle: f64,
+    slap_threshold: f64,
+    /// The engine cycle in progress: its index (whole cycles of the crank angle) and its figures.
+    cycle: i64,
+    open: CycleMetrics,
+    /// The figures of the last completed cycle and how many cycles have completed.
+    completed: CycleMetrics,
+    cycle_count: i32,
+}
+
+/// What one engine cycle's impacts amount to.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+struct CycleMetrics {
+    slap_events: i32,
+    impact_energy: f64,
+    max_impact_energy_antithrust: f64,
+    max_impact_energy_thrust: f64,
+}
+
+impl CycleMetrics {
+    fn add(&mut self, e: &EngineEvent, slap_threshold: f64) {
+        self.slap_events += i32::from(e.normal_velocity_before > slap_threshold);
+        self.impact_energy += e.energy_lost;
+        // Corners 1, 2 touch the −D/2 wall (anti-thrust), 3, 4 the +D/2 wall (major thrust).
+        let side = if e.corner <= 2 { &mut self.max_impact_energy_antithrust } else { &mut self.max_impact_energy_thrust };
+        *side = side.max(e.energy_lost);
+    }
+}
+
+/// Whole engine cycles (4π) in an accumulated crank angle: the index of the cycle it lies in.
+pub fn cycle_of(crank_angle: f64) -> i64 {
+    (crank_angle / CYCLE).floor() as i64
 }
 
 impl ImpactStatistics {
-    /// Takes in the events of one step. Only impacts count: slides and releases dissipate nothing
-    /// in the outputs' definition ("energy dissipated by impacts").
-    pub fn record_step(&mut self, events: &[EngineEvent]) {
+    /// No impacts yet; the first cycle is the one `crank_angle` (rad, accumulated) lies in.
+    pub fn starting_at(crank_angle: f64, slap_threshold: f64) -> Self {
+        Self { cycle: cycle_of(crank_angle), slap_threshold, ..Self::default() }
+    }
+
+    /// Takes in the events of one step, after which the crank angle is `crank_angle` (rad,
+    /// accumulated). Only impacts count: slides and releases dissipate nothing in the outputs'
+    /// definition ("energy dissipated by impacts"). A cycle is complete once an event or the step's
+    /// end lies in a later one; cycles without impacts complete with zero figures.
+    pub fn record_step(&mut self, events: &[EngineEvent], crank_angle: f64) {
         self.impacts_in_step = 0;
         self.max_impact_velocity_in_step = 0.0;
         self.impact_energy_in_step = 0.0;
         for e in events.iter().filter(|e| e.kind == EngineEventKind::Impact) {
+            self.advance_to_cycle(e.cycle);
+            self.open.add(e, self.slap_threshold);
             self.impacts_in_step = self.impacts_in_step.saturating_add(1);
             self.max_impact_velocity_in_step = self.max_impact_velocity_in_step.max(e.normal_velocity_before);
             self.impact_energy_in_step += e.energy_lost;
@@ -31,8 +72,22 @@ impl ImpactStatistics {
             self.last_impact_corner = i32::from(e.corner);
             self.last_impact_crank_angle = e.crank_angle;
         }
+        self.advance_to_cycle(cycle_of(crank_angle));
         self.impact_count = self.impact_count.saturating_add(self.impacts_in_step);
         self.impact_energy_total += self.impact_energy_in_step;
+    }
+
+    /// Completes the cycles before `cycle`.
+    fn advance_to_cycle(&mut self, cycle: i64) {
+        if cycle <= self.cycle {
+            return;
+        }
+        let finished = std::mem::take(&mut self.open);
+        // Cycles skipped without an event had no impacts.
+        self.completed = if cycle == self.cycle + 1 { finished } else { CycleMetrics::default() };
+        let passed = i32::try_from(cycle - self.cycle).unwrap_or(i32::MAX);
+        self.cycle_count = self.cycle_count.saturating_add(passed);
+        self.cycle = cycle;
     }
 
     pub fn write(&self, out: &mut Outputs) {
@@ -44,5 +99,10 @@ impl ImpactStatistics {
         out.impact_energy_total = self.impact_energy_total;
         out.last_impact_corner = self.last_impact_corner;
         out.last_impact_crank_angle = self.last_impact_crank_angle;
+        out.cycle_count = self.cycle_count;
+        out.cycle_slap_events = self.completed.slap_events;
+        out.cycle_impact_energy = self.completed.impact_energy;
+        out.cycle_max_impact_energy_antithrust = self.completed.max_impact_energy_antithrust;
+        out.cycle_max_impact_energy_thrust = self.completed.max_impact_energy_thrust;
     }
 }

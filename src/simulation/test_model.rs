@@ -58,6 +58,7 @@ impl EngineModel for Shuttle {
             events.push(EngineEvent {
                 time: self.time,
                 crank_angle: self.crank_angle.rem_euclid(4.0 * PI),
+                cycle: (self.crank_angle / (4.0 * PI)).floor() as i64,
                 kind: EngineEventKind::Impact,
                 corner: if wall > 0.0 { 3 } else { 1 },
                 normal_velocity_before: before.abs(),

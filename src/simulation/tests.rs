@@ -108,11 +108,13 @@ fn the_impact_log_holds_the_rows_of_the_trajectory() {
     run(&mut sim, &Inputs::default(), 0.1, 1e-3);
     let text = std::fs::read_to_string(&path).unwrap();
     let lines: Vec<&str> = text.lines().collect();
-    assert_eq!(lines[0], "time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position");
+    assert_eq!(lines[0], "time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position,crank_angle_deg");
     assert_eq!(lines.len(), 4);
     for (line, t) in lines[1..].iter().zip(impact_times(0.5, 3)) {
         let cols: Vec<&str> = line.split(',').collect();
-        assert_eq!(cols.len(), 8);
+        assert_eq!(cols.len(), 9);
+        let (rad, deg): (f64, f64) = (cols[1].parse().unwrap(), cols[8].parse().unwrap());
+        assert!((deg - rad.to_degrees()).abs() < 1e-12, "{line}");
         assert_eq!(cols[2], "impact");
         assert!((cols[0].parse::<f64>().unwrap() - t).abs() < 1e-12, "{line} vs {t}");
     }
@@ -129,4 +131,55 @@ fn an_unwritable_log_path_is_an_error_at_start() {
     let err = Sim::start(&p, 0.0).unwrap_err();
     assert!(err.0.contains("impact_log"), "{err}");
     assert!(Sim::new(&p, 0.0).is_ok(), "new touches no file");
+}
+
+/// The shuttle's cycle figures in closed form: at the default 125.66 rad/s an engine cycle (4π) lasts
+/// 0.1000029 s, and the impacts at 0.004, 0.020, 0.052 s (speeds v0, e v0, e² v0 on the +x, −x, +x
+/// walls), 0.116 s (e³ v0, −x) and 0.244 s (e⁴ v0, +x) fall into cycles 0, 0, 0, 1, 2; an impact at
+/// speed v dissipates ½ m v² (1 − e²).
+#[test]
+fn cycle_metrics_match_the_closed_form() {
+    let p = Parameters { slap_threshold: 0.004, ..Parameters::default() };
+    let (m, e, v0) = (p.piston_mass, p.restitution, SHUTTLE_SPEED);
+    let energy = |k: i32| 0.5 * m * (e.powi(k) * v0).powi(2) * (1.0 - e * e);
+    let close = |a: f64, b: f64| (a - b).abs() <= 1e-15 * b.abs().max(1e-10);
+    let inputs = Inputs::default();
+
+    let mut sim = Sim::new(&p, 0.0).unwrap();
+    run(&mut sim, &inputs, 0.1, 1e-3);
+    let out = sim.outputs();
+    assert_eq!((out.cycle_count, out.cycle_slap_events, out.cycle_impact_energy), (0, 0, 0.0), "no cycle complete at 0.1 s");
+    run(&mut sim, &inputs, 0.101, 1e-3);
+    let out = sim.outputs().clone();
+    assert_eq!(out.cycle_count, 1);
+    assert_eq!(out.cycle_slap_events, 2, "v0 and e v0 exceed 4 mm/s, e² v0 does not");
+    assert!(close(out.cycle_impact_energy, energy(0) + energy(1) + energy(2)), "{out:?}");
+    assert!(close(out.cycle_max_impact_energy_thrust, energy(0)), "{out:?}");
+    assert!(close(out.cycle_max_impact_energy_antithrust, energy(1)), "{out:?}");
+    run(&mut sim, &inputs, 0.201, 1e-3);
+    let out = sim.outputs();
+    assert_eq!((out.cycle_count, out.cycle_slap_events), (2, 0));
+    assert!(close(out.cycle_impact_energy, energy(3)) && close(out.cycle_max_impact_energy_antithrust, energy(3)));
+    assert_eq!(out.cycle_max_impact_energy_thrust, 0.0);
+
+    // One step across several cycles reports the last complete one: cycle 2 (the impact at 0.244 s),
+    // then cycle 3, which has none.
+    for (t_end, cycles, thrust) in [(0.35, 3, energy(4)), (0.45, 4, 0.0)] {
+        let mut long = Sim::new(&p, 0.0).unwrap();
+        long.step(&inputs, t_end).unwrap();
+        let out = long.outputs();
+        assert_eq!(out.cycle_count, cycles, "{t_end} s");
+        assert!(close(out.cycle_max_impact_energy_thrust, thrust) && close(out.cycle_impact_energy, thrust), "{out:?}");
+        assert_eq!(out.cycle_max_impact_energy_antithrust, 0.0);
+    }
+}
+
+#[test]
+fn engine_torque_is_the_crank_torque_with_the_engine_sign() {
+    let mut sim = crate::simulation::Simulation::<crate::simulation::ModelVariant>::new(&Parameters::default(), 0.0).unwrap();
+    for k in 1..=40 {
+        sim.step(&Inputs::default(), k as f64 * 1e-3).unwrap();
+        let out = sim.outputs();
+        assert_eq!(out.engine_torque, -out.crank_torque);
+    }
 }
