@@ -32,6 +32,10 @@ pub struct Stepper<S, const N: usize, const M: usize> {
     /// Constraints in persistent contact (bitmask).
     pub(super) active: u32,
     pub(super) state: Sample<N, M>,
+    /// The system may have changed since the contact set was last resolved (`system_mut`, `shift`):
+    /// the next `advance` re-examines it first. Saved with the state, so a restored stepper
+    /// continues as the original would.
+    pub(super) changed: bool,
     pub(super) events: Vec<Event<N, M>>,
     /// A cell: the event search that takes the locating steps only reads the stepper.
     #[serde(skip)]
@@ -61,6 +65,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             event_budget: DEFAULT_EVENT_BUDGET,
             active: 0,
             state,
+            changed: true,
             events: Vec::new(),
             counts: Cell::default(),
         };
@@ -68,8 +73,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         Ok(stepper)
     }
 
-    /// Advances to exactly `t_end`, appending to the event record. Re-examines the contact set first,
-    /// since `system_mut` may have changed held inputs (an active constraint now approaching → impact).
+    /// Advances to exactly `t_end`, appending to the event record. Re-examines the contact set first
+    /// if `system_mut` may have changed held inputs (an active constraint now approaching → impact);
+    /// otherwise the last step left it resolved, and a communication point costs nothing here.
     pub fn advance(&mut self, t_end: f64) -> Result<(), DynamicsError> {
         if !t_end.is_finite() || t_end < self.state.t {
             return Err(DynamicsError::InvalidArgument {
@@ -87,7 +93,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         if let Some(reason) = reason {
             return Err(DynamicsError::InvalidArgument { time: self.state.t, reason });
         }
-        self.reexamine()?;
+        if self.changed {
+            self.reexamine()?;
+        }
         // Events are counted per window of one nominal step: an accumulation piles them up in a
         // vanishing time, while a long span of ordinary impacts only needs more windows.
         let (mut handled, mut steps, mut window_start) = (0, 0.0, self.state.t);
@@ -161,7 +169,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     pub fn system(&self) -> &S {
         &self.system
     }
+    /// The system, to change what it holds (inputs); the next `advance` re-examines the contacts.
     pub fn system_mut(&mut self) -> &mut S {
+        self.changed = true;
         &mut self.system
     }
     pub fn options(&self) -> &StepperOptions {
@@ -191,12 +201,14 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             return Err(DynamicsError::InvalidArgument { time: s.t, reason: "the shift must be finite" });
         }
         self.state = sample(&self.system, s.t + dt, s.q + dq, s.v, self.active)?;
+        self.changed = true;
         Ok(())
     }
 
     /// Refreshes the state after possible changes through `system_mut` and resolves every
     /// closed constraint: an active one now approaching gets an impact, a pulling one is released.
     fn reexamine(&mut self) -> Result<(), DynamicsError> {
+        self.changed = false;
         let s = &self.state;
         let ev = self.system.evaluate(s.t, &s.q, &s.v);
         self.state = sample_of(&ev, s.t, s.q, s.v, self.active)?;
@@ -208,7 +220,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             return Err(DynamicsError::Penetration { time: self.state.t, constraint: i, gap: self.state.gap[i] });
         }
         let closed = self.active | select::<M>(|i| self.state.gap[i] <= eps);
-        // In flight there is nothing to resolve (at every communication point: worth skipping).
+        // In flight there is nothing to resolve.
         if closed == 0 {
             return Ok(());
         }

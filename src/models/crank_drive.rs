@@ -57,6 +57,12 @@ impl Engine {
         }
     }
 
+    /// Whether holding `pressure` would change nothing: it is the held input already, or the
+    /// pressure comes from the built-in curve.
+    pub fn holds(&self, pressure: f64) -> bool {
+        !matches!(self.pressure, GasPressure::Held(p) if p != pressure)
+    }
+
     /// Holds the `gas_pressure` input, if the pressure comes from it.
     pub fn hold_pressure(&mut self, pressure: f64) {
         if let GasPressure::Held(p) = &mut self.pressure {

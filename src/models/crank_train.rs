@@ -302,16 +302,24 @@ impl EngineModel for CrankTrain {
         if !self.started {
             self.start(inputs.crank_speed)?;
         }
-        self.engine_mut().hold_pressure(inputs.gas_pressure);
+        // The system is touched only where an input changed: the core re-examines the contacts
+        // after a change, and a communication point with the same inputs then costs nothing.
+        if !self.engine().holds(inputs.gas_pressure) {
+            self.engine_mut().hold_pressure(inputs.gas_pressure);
+        }
         self.keep_angle_within_a_cycle()?;
         match &mut self.drive {
             Drive::Prescribed(s) => {
-                let now = s.time();
-                s.system_mut().hold_speed(now, inputs.crank_speed);
+                if s.system().speed() != inputs.crank_speed {
+                    let now = s.time();
+                    s.system_mut().hold_speed(now, inputs.crank_speed);
+                }
                 s.advance(t_end).map_err(dynamics_error)?;
             }
             Drive::Free(s) => {
-                s.system_mut().load_torque = inputs.load_torque;
+                if s.system().load_torque != inputs.load_torque {
+                    s.system_mut().load_torque = inputs.load_torque;
+                }
                 s.advance(t_end).map_err(dynamics_error)?;
             }
         }
