@@ -1,6 +1,6 @@
 //! `cargo bench --bench fmu`: the FMU through its exported C functions, in process (a Rust host:
 //! the host's own cost stays out of the figures). Real-time factor (simulated s per wall s) of the
-//! default crank-train case at 1 ms and 10 ms communication steps and of the roller variant; the
+//! default crank-train case at 1e-5 to 1e-2 s communication steps and of the roller variant; the
 //! thesis study's wall time; the cost of one RK4 step against its floating-point work (counted
 //! under callgrind, `fmu/flop_count.rs`), and the bound that cost and the default case's count of
 //! steps set on its real-time factor.
@@ -46,6 +46,8 @@ fn real_time_factor(what: &str, integers: &[(&str, i32)], reals: &[(&str, f64)],
 
 /// The argument that makes this executable only take plain steps (the flop count's child run).
 const PLAIN_STEPS: &str = "--plain-steps";
+/// The argument that makes it only take `n` communication steps of `h` (the instruction count's child run).
+const DO_STEPS: &str = "--do-steps";
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -53,12 +55,13 @@ fn main() {
         plain_steps(steps);
         return;
     }
+    if let Some(i) = args.iter().position(|a| a == DO_STEPS) {
+        let (h, n): (f64, usize) = (args[i + 1].parse().expect("a step"), args[i + 2].parse().expect("a count"));
+        run(&Host::new(&[], &[]), n as f64 * h, h);
+        return;
+    }
     let cycle = 4.0 * std::f64::consts::PI / 125.66;
     println!("machine: {}", machine());
-    for h in [1e-3, 1e-2] {
-        let what = format!("crank train, default case (1200 rpm, built-in pressure, e = 0.5), 10 cycles, step {:>2} ms", h * 1e3);
-        real_time_factor(&what, &[], &[], 10.0 * cycle, h);
-    }
     let what = "roller variant, default parameters (1200 rpm), 10 cycles, step  1 ms";
     real_time_factor(what, &[("model_variant", 2)], &[], 10.0 * cycle, 1e-3);
 
@@ -84,7 +87,53 @@ fn main() {
         }
     };
     least_work(cycle, plain, limit);
+    communication_steps(plain);
     thesis_study();
+}
+
+/// The default case, 2 s simulated through the C ABI at the communication steps couplings use
+/// (0.1°–1° of crank angle is 1.4e-5–1.4e-4 s at 1200 rpm) and at longer ones: real-time factor,
+/// instructions per `fmi2DoStep` (callgrind), and the wall time against the RK4-step bound, the
+/// RK4 steps the run took (counted by the core, through the model at the same steps) at the
+/// plain step's cost `plain`.
+fn communication_steps(plain: f64) {
+    let stop = 2.0;
+    let mut walls = Vec::new();
+    for h in [1e-5, 1e-4, 1e-3, 1e-2] {
+        let wall = median((0..RUNS).map(|_| run(&Host::new(&[], &[]), stop, h)).collect());
+        walls.push(wall);
+        let steps = rk4_steps(stop, h);
+        let instructions =
+            do_step_instructions(h).map_or_else(|why| format!("instructions not counted: {why}"), |n| format!("{n:.0} instructions"));
+        println!(
+            "crank train, default case, 2 s in steps of {h:.0e} s: {:6.1}× real time, {:.2} µs and {instructions} per fmi2DoStep, \
+             {steps} RK4 steps: {:.1}× their cost as plain steps",
+            stop / wall,
+            wall / (stop / h) * 1e6,
+            wall / (steps as f64 * plain)
+        );
+    }
+    println!("wall time of 2 s at 1e-5 s steps against 1e-3 s steps: {:.1}×", walls[0] / walls[2]);
+}
+
+/// RK4 steps (accepted, rejected and locating) of `stop` seconds of the default case in steps of `h`.
+fn rk4_steps(stop: f64, h: f64) -> u64 {
+    let mut model = CrankTrain::new(&Parameters::default(), 0.0).expect("default parameters");
+    let (inputs, mut events) = (Inputs::default(), Vec::new());
+    for k in 1..=(stop / h).round() as usize {
+        model.advance(&inputs, k as f64 * h, &mut events).expect("default case");
+        events.clear();
+    }
+    let c = model.step_counts();
+    c.accepted + c.rejected + c.locating
+}
+
+/// Instructions per `fmi2DoStep` of the default case in steps of `h`: the difference between runs
+/// of 200 and 400 steps, each counted under callgrind, so that start-up drops out.
+fn do_step_instructions(h: f64) -> Result<f64, String> {
+    let run = |n: u32| flop_count::count(&[DO_STEPS.to_string(), h.to_string(), n.to_string()]);
+    let ((i1, _), (i2, _)) = (run(200)?, run(400)?);
+    Ok((i2 - i1) as f64 / 200.0)
 }
 
 /// Wall time of `steps` fixed 1e-4 s RK4 steps of the default crank train in a wide bore, where

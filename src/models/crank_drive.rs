@@ -165,6 +165,12 @@ impl PrescribedCrank {
         self.last_crank.get_or(angle, || self.engine.crank(angle))
     }
 
+    /// Gauge gas pressure on the crown at crank angle φ1 within the cycle, Pa: the engine's, from
+    /// the cache when it is the angle last evaluated (the end of the last step).
+    pub fn pressure(&self, angle: f64) -> f64 {
+        self.engine.pressure_at(&self.crank(angle))
+    }
+
     /// Full coordinates and velocities at `(t, q, q̇)`.
     pub fn full_state(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Vector3<f64>, Vector3<f64>) {
         (Vector3::new(self.crank_angle(t), q[0], q[1]), Vector3::new(self.speed, qd[0], qd[1]))

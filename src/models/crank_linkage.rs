@@ -160,6 +160,14 @@ impl Linkage {
         self.bodies.links[0] * along(phi[0]) + self.bodies.links[1] * along(phi[1])
     }
 
+    /// The pin O3 and the corner gaps from the angles' sines and cosines (the outputs' kinematics).
+    pub fn pin_and_gaps(&self, trig: &Trig) -> (Vector2<f64>, Vector4<f64>) {
+        let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
+        let [l1, l2] = self.bodies.links;
+        let pin = Vector2::new(-l1 * s1 - l2 * s2, l1 * c1 + l2 * c2);
+        (pin, self.corner_gaps(pin.x, s3, c3))
+    }
+
     /// Lengths that turn errors of (φ1, φ2, φ3) into displacements: the crank, the rod, and the
     /// farthest corner from the pin, m.
     pub fn lengths(&self) -> Vector3<f64> {
@@ -242,10 +250,15 @@ impl Linkage {
 
     /// Kinetic and gravitational potential energy (zero at the crank axis level), J.
     pub fn energy(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) -> (f64, f64) {
-        let mass = self.evaluate(phi, phid, Loads { gas_force: 0.0, load_torque: 0.0 }).mass;
-        let kinetic = 0.5 * phid.dot(&(mass * phid));
+        let kinetic = self.kinetic_energy(&Trig::new(phi), phid);
         let potential = (0..3).map(|k| self.bodies.masses[k] * self.bodies.gravity * self.centre_of_mass(phi, k).y).sum();
         (kinetic, potential)
+    }
+
+    /// Kinetic energy ½ φ̇ᵀ M φ̇ from the angles' sines and cosines, J.
+    pub fn kinetic_energy(&self, trig: &Trig, phid: &Vector3<f64>) -> f64 {
+        let (mass, _) = self.inertia_and_force_with(trig, phid, Loads { gas_force: 0.0, load_torque: 0.0 });
+        0.5 * phid.dot(&(mass * phid))
     }
 
     fn centre_of_mass(&self, phi: &Vector3<f64>, k: usize) -> Vector2<f64> {

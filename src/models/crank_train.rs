@@ -3,6 +3,7 @@
 
 use super::crank_drive::{Engine, FreeCrank, PrescribedCrank};
 use super::crank_kinematics::SliderCrank;
+use super::crank_linkage::Trig;
 use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters, CYCLE};
 use crate::dynamics::{DynamicsError, Event, EventKind, StepCounts, Stepper, StepperOptions};
 use nalgebra::{Vector2, Vector3, Vector4};
@@ -188,12 +189,17 @@ impl CrankTrain {
 
     /// Full coordinates φ = (φ1, φ2, φ3) and rates now.
     pub fn state(&self) -> (Vector3<f64>, Vector3<f64>) {
-        let (mut phi, phid) = match &self.drive {
-            Drive::Prescribed(s) => s.system().full_state(s.time(), s.position(), s.velocity()),
-            Drive::Free(s) => (*s.position(), *s.velocity()),
-        };
+        let (mut phi, phid) = self.state_within_cycle();
         phi[0] += 4.0 * PI * self.cycles;
         (phi, phid)
+    }
+
+    /// [`Self::state`] with the crank angle less the whole cycles taken off it.
+    fn state_within_cycle(&self) -> (Vector3<f64>, Vector3<f64>) {
+        match &self.drive {
+            Drive::Prescribed(s) => s.system().full_state(s.time(), s.position(), s.velocity()),
+            Drive::Free(s) => (*s.position(), *s.velocity()),
+        }
     }
 
     /// Keeps the crank angle within its first cycle, the whole cycles counted apart: left to
@@ -343,23 +349,27 @@ impl EngineModel for CrankTrain {
     }
 
     fn write_outputs(&self, out: &mut Outputs) {
-        let (phi, phid) = self.state();
+        // The sines and cosines once, of the angle within the cycle (what the stepper holds).
+        let (phi, phid) = self.state_within_cycle();
+        let trig = Trig::new(&phi);
         let linkage = &self.engine().linkage;
-        let pin = linkage.pin(&phi);
+        let (pin, gaps) = linkage.pin_and_gaps(&trig);
         let (forces, in_contact) = self.contacts();
         out.piston_lateral = pin.x;
         // ẋ_O3 = −l1 cos φ1 φ̇1 − l2 cos φ2 φ̇2.
         out.piston_lateral_velocity =
-            -self.geometry.crank_radius * phi[0].cos() * phid[0] - self.geometry.rod_length * phi[1].cos() * phid[1];
+            -self.geometry.crank_radius * trig.cos[0] * phid[0] - self.geometry.rod_length * trig.cos[1] * phid[1];
         out.piston_tilt = phi[2];
         // The piston axis at a corner pair's height is midway between the two corners, whose gaps
         // from their walls are D/2 + x (K1, K2) and D/2 − x (K3, K4).
-        let gaps = linkage.gaps(&phi);
         out.skirt_top_lateral = 0.5 * (gaps[0] - gaps[2]);
         out.skirt_bottom_lateral = 0.5 * (gaps[1] - gaps[3]);
-        out.gas_pressure_acting = self.engine().pressure(phi[0]);
+        out.gas_pressure_acting = match &self.drive {
+            Drive::Prescribed(s) => s.system().pressure(phi[0]),
+            Drive::Free(s) => s.system().engine.pressure(phi[0]),
+        };
         out.piston_axial = pin.y;
-        out.crank_angle = phi[0];
+        out.crank_angle = phi[0] + 4.0 * PI * self.cycles;
         out.rod_angle = phi[1];
         out.crank_torque = match &self.drive {
             Drive::Prescribed(s) => s.system().drive_torque(s.time(), s.position(), s.velocity(), &s.acceleration(), &forces),
@@ -374,7 +384,7 @@ impl EngineModel for CrankTrain {
             Drive::Prescribed(s) => s.system().speed(),
             Drive::Free(_) => phid[0],
         };
-        out.kinetic_energy = linkage.energy(&phi, &phid).0;
+        out.kinetic_energy = linkage.kinetic_energy(&trig, &phid);
     }
 }
 
