@@ -77,22 +77,37 @@ class Run:
         return self.cycle >= first_cycle
 
 
-def impacts_from_log(events, rho, start=0.0):
-    """Thesis quantities of the impact-log rows of a run in thesis units (l = 1, Omega = 1, crank angle
-    `start` at time 0)."""
+def impacts_from_log(events, rho, start=0.0, xi=XI, length=1.0, speed=1.0):
+    """Thesis quantities of the impact-log rows of a run (crank angle `start` at time 0, prescribed crank speed
+    `speed` in rad/s, rod `length` in m, clearance `rho` and crank ratio `xi` relative to it); thesis units
+    (l = 1, Omega = 1) by default."""
     impacts = events[events["kind"] == "impact"]
-    theta = start + impacts["time"]  # crank angle, accumulated
-    big = np.sqrt(1 - XI**2 * np.sin(theta) ** 2)
+    theta = start + speed * impacts["time"]  # crank angle, accumulated
+    big = np.sqrt(1 - xi**2 * np.sin(theta) ** 2)
     wall = np.where(impacts["corner"] == 1, 1, -1)  # the upper wall is corner 1's (x = -D/2)
-    approach = impacts["normal_velocity_before"] / big
+    approach = impacts["normal_velocity_before"] / (length * big * speed)
     # psi_max' = rho xi^2 sin cos / Lambda^3; psi_min' = -psi_max'; approach is toward the wall
-    wall_rate = rho * XI**2 * np.sin(theta) * np.cos(theta) / big**3
+    wall_rate = rho * xi**2 * np.sin(theta) * np.cos(theta) / big**3
     rate = wall * (wall_rate + approach)
     slides = events[events["kind"] == "slide"]
     return dict(
         cycle=np.floor(theta / CRANK_CYCLE).astype(int), theta=np.mod(theta, CRANK_CYCLE), wall=wall,
-        rate=rate, approach=approach, location=impacts["position"], slide_cycle=np.floor((start + slides["time"]) / CRANK_CYCLE).astype(int),
+        rate=rate, approach=approach, location=impacts["position"] / length,
+        slide_cycle=np.floor((start + speed * slides["time"]) / CRANK_CYCLE).astype(int),
     )
+
+
+def roller_run(events, values, cycles):
+    """The `Run` of a variant-2 run of `cycles` crank cycles at any scale, from its FMU start values `values`
+    (every parameter the roller reads, by name) and its impact log: the thesis's quantities, l and Omega
+    divided out."""
+    length = values["rod_length"]
+    rho = (values["bore"] - values["piston_diameter"]) / (2 * length)
+    quantities = impacts_from_log(events, rho, values["crank_angle_start"], values["crank_radius"] / length, length,
+                                  values["crank_speed"])
+    lam = values["damping_crank_pin"] / (values["piston_mass"] * length**2 * values["crank_speed"])
+    return Run(lam=lam, rho=rho, e=values["restitution"], forcing=values["roller_forcing"],
+               cycles=cycles, **quantities)
 
 
 def _progress_printer(label, stop_time):
@@ -150,9 +165,15 @@ def _cycle_patterns(run):
 #: about 5 % of those (75 cycles) leaves none. The start (psi = psi' = 0 at theta = 0) is ours, not the
 #: thesis's, and transients of 20-140 cycles come and go with the starting crank angle.
 CHAOTIC_TRANSIENT = 100
+#: Longest period looked for (crank cycles), and the periods a recurrence must last to count.
+MAX_PERIOD, MIN_REPEATS = 16, 10
+#: Crank cycles a run needs for `classify` to tell all three responses apart at every period up to MAX_PERIOD:
+#: the transient allowed, then MIN_REPEATS + 1 periods.
+CLASSIFIABLE_CYCLES = CHAOTIC_TRANSIENT + MAX_PERIOD * (MIN_REPEATS + 1)
 
 
-def classify(run, settle_limit=CHAOTIC_TRANSIENT, max_period=16, tolerance=1e-3, coarse=0.05, min_repeats=10):
+def classify(run, settle_limit=CHAOTIC_TRANSIENT, max_period=MAX_PERIOD, tolerance=1e-3, coarse=0.05,
+             min_repeats=MIN_REPEATS):
     """Classifies the response by the recurrence of each crank cycle's impacts (the points of the Poincare
     section and their lower-wall counterparts): cycle k recurs with period p when cycle k + p has the same
     walls in the same order, at crank angles (rad) and rates (in units of rho) within a tolerance.
