@@ -4,7 +4,8 @@
     python -m pistonslap.analysis forces --forces-tool EXE --out DIR      constraint forces (Figs 2.4-2.9) and sliding
         regions (Fig 2.10); EXE is the crate's `roller_forces` example (`cargo build --release --example roller_forces`
         puts it in target/release/examples/)
-    python -m pistonslap.analysis thesis --out DIR      chapter 4: the 20 runs, a summary table and figure sheets
+    python -m pistonslap.analysis thesis [--workers N | --scheduler ADDRESS] --out DIR      chapter 4: the 20 runs
+        from each starting crank angle (the other starts swept on Dask into DIR/sweeps), summary table, figure sheets
     python -m pistonslap.analysis crosscheck [--clearance M ...]   variant 1 in the roller limit vs variant 2
 
 The FMU runs in the thesis's units: rod_length = 1 m, piston_mass = 1 kg and crank_speed = 1 rad/s make its
@@ -15,14 +16,18 @@ rate |psi' - psi_wall'| times l*Lambda*Omega, from which psi' at impact is recov
 
 import argparse
 import csv
+import itertools
+import os
 import subprocess
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import fmpy
 import numpy as np
+import pyarrow.parquet as pq
 
-from .fmu import simulate_with_events
+from .fmu import fmu_path, simulate_with_events
 
 #: xi = r/l, alpha = m/M, beta = J_r/(M l^2) of the thesis's Ford engine (section 4.1).
 XI, ALPHA, BETA = 0.3030, 1.9, 0.4719
@@ -393,30 +398,57 @@ def write_forces(out, tool):
     return roller_plots.forces_sheet(FORCE_FIGURES, curves, regions, out / "constraint_forces.png")
 
 
-#: Chapter 4's runs: both 3x3 (lambda, rho) grids at e = 0.9, then e = 0.7, 0.5 at (0.05, 0.02).
-THESIS_RUNS = [(lam, rho, 0.9) for lam in (0.025, 0.05, 0.075, 0.15, 0.20, 0.25) for rho in (0.010, 0.015, 0.020)] + [
-    (0.05, 0.02, 0.7), (0.05, 0.02, 0.5)]
+#: Chapter 4's runs as full-factorial (lambdas, rhos, restitutions) grids: both 3x3 (lambda, rho) grids at e = 0.9,
+#: then e = 0.7, 0.5 at (0.05, 0.02).
+THESIS_GRIDS = (((0.025, 0.05, 0.075, 0.15, 0.20, 0.25), (0.010, 0.015, 0.020), (0.9,)), ((0.05,), (0.02,), (0.7, 0.5)))
+THESIS_RUNS = [run for grid in THESIS_GRIDS for run in itertools.product(*grid)]
 
 
 #: Starting crank angles of the runs that test how the classification depends on the start (rad).
 STARTS = (0.0, 1.0, 2.0, 3.0, 4.0, 5.0)
 
 
-def write_thesis(out, transient=30, cycles=1500, forcing=1, starts=STARTS):
-    """Chapter 4: every run of THESIS_RUNS with `transient` + `cycles` crank cycles; a summary table (CSV and
-    markdown) and figure sheets of the impact profiles and Poincare sections."""
+def thesis_sweeps(cycles, forcing, starts, model_description):
+    """THESIS_GRIDS from the starting crank angles `starts` as sweep specs of `cycles` crank cycles, and the (lambda,
+    rho) of each bore they sweep."""
+    from .sweep_spec import parse
+
+    swept = ("damping_crank_pin", "bore", "restitution", "crank_angle_start")
+    fixed = {k: v for k, v in thesis_start_values(0.0, 0.0, 0.0, forcing).items() if k not in swept}
+    specs, rhos = [], {}
+    for i, (lams, grid_rhos, es) in enumerate(THESIS_GRIDS):
+        bores = [thesis_start_values(0.0, rho, 0.0)["bore"] for rho in grid_rhos]
+        rhos.update(zip(bores, grid_rhos))
+        raw = dict(name=f"thesis{i + 1}_f{forcing}_{cycles}cycles", cycles=cycles, skip_cycles=0, start=fixed,
+                   grid=dict(zip(swept, (list(lams), bores, list(es), list(starts)))))
+        specs.append(parse(raw, model_description))
+    return specs, rhos
+
+
+def write_thesis(out, client, transient=30, cycles=1500, forcing=1, starts=STARTS):
+    """Chapter 4: every run of THESIS_RUNS with `transient` + `cycles` crank cycles from each of `starts`, swept on
+    the Dask `client`'s workers (into out/sweeps, resumable); a summary table (CSV and markdown) and figure sheets
+    of the impact profiles and Poincare sections of the runs from the first start, run here."""
     from . import roller_plots
+    from .sweep import run as run_sweep
 
     out.mkdir(parents=True, exist_ok=True)
+    # the same cases from the other starting crank angles (transients, coexisting attractors), on the cluster
+    specs, rhos = thesis_sweeps(transient + cycles, forcing, starts[1:], fmpy.read_model_description(str(fmu_path())))
+    others = {}
+    for spec in specs if len(starts) > 1 else ():
+        path, _ = run_sweep(spec, out / "sweeps", client)
+        for row in pq.read_table(path).to_pylist():
+            key = (row["damping_crank_pin"], rhos[row["bore"]], row["restitution"])
+            others.setdefault(key, {})[row["crank_angle_start"]] = Response(row["response"], row["period"], row["settled"])
     runs, rows = [], []
     for lam, rho, e in THESIS_RUNS:
         run = simulate_case(lam, rho, e, forcing, transient + cycles)
         response, row = write_case(run, out / "cases", transient)
-        # the same case from other starting crank angles: transients and coexisting attractors
-        others = [classify(simulate_case(lam, rho, e, forcing, transient + cycles, start=s)) for s in starts[1:]]
-        kinds = [response.kind] + [r.kind for r in others]
+        responses = [response] + [others[lam, rho, e][s] for s in starts[1:]]
+        kinds = [r.kind for r in responses]
         row["starts"] = ", ".join(f"{kinds.count(k)}× {k}" for k in ("periodic", "transient chaos", "chaos") if k in kinds)
-        row["periods"] = " ".join(str(r.period) for r in [response] + others)
+        row["periods"] = " ".join(str(r.period) for r in responses)
         row["reason"] = disagreement_reason(row, response, kinds, transient + cycles)
         print(f"lambda={lam} rho={rho} e={e}: {response} (thesis: {row['thesis']}); over {len(kinds)} starts: {row['starts']}")
         runs.append((run, response))
@@ -473,8 +505,13 @@ def main(argv=None):
         p.add_argument("--forcing", type=int, default=1, choices=(1, 2), help="roller_forcing (1 = as printed)")
         p.add_argument("--transient", type=int, default=30, help="crank cycles before the statistics")
         p.add_argument("--cycles", type=int, default=1500, help="crank cycles of statistics")
-    sub.choices["thesis"].add_argument("--starts", type=float, nargs="+", default=list(STARTS),
-                                       help="starting crank angles (rad); statistics and figures from the first")
+    thesis = sub.choices["thesis"]
+    thesis.add_argument("--starts", type=float, nargs="+", default=list(STARTS),
+                        help="starting crank angles (rad); statistics and figures from the first")
+    where = thesis.add_mutually_exclusive_group()
+    where.add_argument("--workers", type=int, default=os.cpu_count(),
+                       help="Dask worker processes for the runs from the other starts (default: all cores)")
+    where.add_argument("--scheduler", help="address of a running Dask scheduler to use instead")
     forces = sub.add_parser("forces", help="constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)")
     forces.add_argument("--forces-tool", type=Path, required=True,
                         help="the built roller_forces example (target/release/examples/roller_forces)")
@@ -501,8 +538,11 @@ def main(argv=None):
     elif args.command == "forces":
         print(f"wrote {write_forces(args.out, args.forces_tool)}")
     else:
-        for path in write_thesis(args.out, args.transient, args.cycles, args.forcing, args.starts):
-            print(f"wrote {path}")
+        from .sweep import connect
+
+        with connect(args.workers, args.scheduler) as client:
+            for path in write_thesis(args.out, client, args.transient, args.cycles, args.forcing, args.starts):
+                print(f"wrote {path}")
 
 
 if __name__ == "__main__":

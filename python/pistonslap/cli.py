@@ -30,10 +30,17 @@ def _sweep(argv):
     sweep.main(argv)
 
 
+def _map(argv):
+    from . import heat_map
+
+    heat_map.main(argv)
+
+
 COMMANDS = {
     "demo": (_demo, "simulate an operating point, write CSVs and plots (pistonslap demo --help)"),
     "analysis": (_analysis, "model variant 2 analysed as in Farahanchi's thesis (pistonslap analysis --help)"),
     "sweep": (_sweep, "run a TOML sweep spec on Dask, resumable, into parquet (pistonslap sweep --help)"),
+    "map": (_map, "heat map PNG of a sweep's metric or response class (pistonslap map --help)"),
     "fmu-path": (_fmu_path, "print the path of the FMU this package runs"),
 }
 
