@@ -42,7 +42,8 @@ test: fmu venv
 	$(VENV_PYTHON) -m pytest python/tests
 
 # Farahanchi's chapter 2 figures (constraint forces, sliding regions) and chapter 4 (20 runs of 30 + 1500 crank
-# cycles): summary table and figure sheets in out/thesis.
+# cycles from 6 starting crank angles, the 100 from the other starts a resumable sweep on a local Dask cluster):
+# summary table and figure sheets in out/thesis.
 thesis: fmu venv
 	cargo build --release --example roller_forces
 	$(PISTONSLAP) analysis forces --forces-tool target/release/examples/roller_forces --out out/thesis

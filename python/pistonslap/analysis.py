@@ -4,7 +4,8 @@
     python -m pistonslap.analysis forces --forces-tool EXE --out DIR      constraint forces (Figs 2.4-2.9) and sliding
         regions (Fig 2.10); EXE is the crate's `roller_forces` example (`cargo build --release --example roller_forces`
         puts it in target/release/examples/)
-    python -m pistonslap.analysis thesis --out DIR      chapter 4: the 20 runs, a summary table and figure sheets
+    python -m pistonslap.analysis thesis [--workers N | --scheduler ADDRESS] --out DIR      chapter 4: the 20 runs
+        from each starting crank angle (the other starts swept on Dask into DIR/sweeps), summary table, figure sheets
     python -m pistonslap.analysis crosscheck [--clearance M ...]   variant 1 in the roller limit vs variant 2
 
 The FMU runs in the thesis's units: rod_length = 1 m, piston_mass = 1 kg and crank_speed = 1 rad/s make its
@@ -15,14 +16,18 @@ rate |psi' - psi_wall'| times l*Lambda*Omega, from which psi' at impact is recov
 
 import argparse
 import csv
+import itertools
+import os
 import subprocess
 import sys
 from dataclasses import dataclass, field
 from pathlib import Path
 
+import fmpy
 import numpy as np
+import pyarrow.parquet as pq
 
-from .fmu import simulate_with_events
+from .fmu import fmu_path, simulate_with_events
 
 #: xi = r/l, alpha = m/M, beta = J_r/(M l^2) of the thesis's Ford engine (section 4.1).
 XI, ALPHA, BETA = 0.3030, 1.9, 0.4719
@@ -77,22 +82,37 @@ class Run:
         return self.cycle >= first_cycle
 
 
-def impacts_from_log(events, rho, start=0.0):
-    """Thesis quantities of the impact-log rows of a run in thesis units (l = 1, Omega = 1, crank angle
-    `start` at time 0)."""
+def impacts_from_log(events, rho, start=0.0, xi=XI, length=1.0, speed=1.0):
+    """Thesis quantities of the impact-log rows of a run (crank angle `start` at time 0, prescribed crank speed
+    `speed` in rad/s, rod `length` in m, clearance `rho` and crank ratio `xi` relative to it); thesis units
+    (l = 1, Omega = 1) by default."""
     impacts = events[events["kind"] == "impact"]
-    theta = start + impacts["time"]  # crank angle, accumulated
-    big = np.sqrt(1 - XI**2 * np.sin(theta) ** 2)
+    theta = start + speed * impacts["time"]  # crank angle, accumulated
+    big = np.sqrt(1 - xi**2 * np.sin(theta) ** 2)
     wall = np.where(impacts["corner"] == 1, 1, -1)  # the upper wall is corner 1's (x = -D/2)
-    approach = impacts["normal_velocity_before"] / big
+    approach = impacts["normal_velocity_before"] / (length * big * speed)
     # psi_max' = rho xi^2 sin cos / Lambda^3; psi_min' = -psi_max'; approach is toward the wall
-    wall_rate = rho * XI**2 * np.sin(theta) * np.cos(theta) / big**3
+    wall_rate = rho * xi**2 * np.sin(theta) * np.cos(theta) / big**3
     rate = wall * (wall_rate + approach)
     slides = events[events["kind"] == "slide"]
     return dict(
         cycle=np.floor(theta / CRANK_CYCLE).astype(int), theta=np.mod(theta, CRANK_CYCLE), wall=wall,
-        rate=rate, approach=approach, location=impacts["position"], slide_cycle=np.floor((start + slides["time"]) / CRANK_CYCLE).astype(int),
+        rate=rate, approach=approach, location=impacts["position"] / length,
+        slide_cycle=np.floor((start + speed * slides["time"]) / CRANK_CYCLE).astype(int),
     )
+
+
+def roller_run(events, values, cycles):
+    """The `Run` of a variant-2 run of `cycles` crank cycles at any scale, from its FMU start values `values`
+    (every parameter the roller reads, by name) and its impact log: the thesis's quantities, l and Omega
+    divided out."""
+    length = values["rod_length"]
+    rho = (values["bore"] - values["piston_diameter"]) / (2 * length)
+    quantities = impacts_from_log(events, rho, values["crank_angle_start"], values["crank_radius"] / length, length,
+                                  values["crank_speed"])
+    lam = values["damping_crank_pin"] / (values["piston_mass"] * length**2 * values["crank_speed"])
+    return Run(lam=lam, rho=rho, e=values["restitution"], forcing=values["roller_forcing"],
+               cycles=cycles, **quantities)
 
 
 def _progress_printer(label, stop_time):
@@ -150,9 +170,15 @@ def _cycle_patterns(run):
 #: about 5 % of those (75 cycles) leaves none. The start (psi = psi' = 0 at theta = 0) is ours, not the
 #: thesis's, and transients of 20-140 cycles come and go with the starting crank angle.
 CHAOTIC_TRANSIENT = 100
+#: Longest period looked for (crank cycles), and the periods a recurrence must last to count.
+MAX_PERIOD, MIN_REPEATS = 16, 10
+#: Crank cycles a run needs for `classify` to tell all three responses apart at every period up to MAX_PERIOD:
+#: the transient allowed, then MIN_REPEATS + 1 periods.
+CLASSIFIABLE_CYCLES = CHAOTIC_TRANSIENT + MAX_PERIOD * (MIN_REPEATS + 1)
 
 
-def classify(run, settle_limit=CHAOTIC_TRANSIENT, max_period=16, tolerance=1e-3, coarse=0.05, min_repeats=10):
+def classify(run, settle_limit=CHAOTIC_TRANSIENT, max_period=MAX_PERIOD, tolerance=1e-3, coarse=0.05,
+             min_repeats=MIN_REPEATS):
     """Classifies the response by the recurrence of each crank cycle's impacts (the points of the Poincare
     section and their lower-wall counterparts): cycle k recurs with period p when cycle k + p has the same
     walls in the same order, at crank angles (rad) and rates (in units of rho) within a tolerance.
@@ -372,30 +398,57 @@ def write_forces(out, tool):
     return roller_plots.forces_sheet(FORCE_FIGURES, curves, regions, out / "constraint_forces.png")
 
 
-#: Chapter 4's runs: both 3x3 (lambda, rho) grids at e = 0.9, then e = 0.7, 0.5 at (0.05, 0.02).
-THESIS_RUNS = [(lam, rho, 0.9) for lam in (0.025, 0.05, 0.075, 0.15, 0.20, 0.25) for rho in (0.010, 0.015, 0.020)] + [
-    (0.05, 0.02, 0.7), (0.05, 0.02, 0.5)]
+#: Chapter 4's runs as full-factorial (lambdas, rhos, restitutions) grids: both 3x3 (lambda, rho) grids at e = 0.9,
+#: then e = 0.7, 0.5 at (0.05, 0.02).
+THESIS_GRIDS = (((0.025, 0.05, 0.075, 0.15, 0.20, 0.25), (0.010, 0.015, 0.020), (0.9,)), ((0.05,), (0.02,), (0.7, 0.5)))
+THESIS_RUNS = [run for grid in THESIS_GRIDS for run in itertools.product(*grid)]
 
 
 #: Starting crank angles of the runs that test how the classification depends on the start (rad).
 STARTS = (0.0, 1.0, 2.0, 3.0, 4.0, 5.0)
 
 
-def write_thesis(out, transient=30, cycles=1500, forcing=1, starts=STARTS):
-    """Chapter 4: every run of THESIS_RUNS with `transient` + `cycles` crank cycles; a summary table (CSV and
-    markdown) and figure sheets of the impact profiles and Poincare sections."""
+def thesis_sweeps(cycles, forcing, starts, model_description):
+    """THESIS_GRIDS from the starting crank angles `starts` as sweep specs of `cycles` crank cycles, and the (lambda,
+    rho) of each bore they sweep."""
+    from .sweep_spec import parse
+
+    swept = ("damping_crank_pin", "bore", "restitution", "crank_angle_start")
+    fixed = {k: v for k, v in thesis_start_values(0.0, 0.0, 0.0, forcing).items() if k not in swept}
+    specs, rhos = [], {}
+    for i, (lams, grid_rhos, es) in enumerate(THESIS_GRIDS):
+        bores = [thesis_start_values(0.0, rho, 0.0)["bore"] for rho in grid_rhos]
+        rhos.update(zip(bores, grid_rhos))
+        raw = dict(name=f"thesis{i + 1}_f{forcing}_{cycles}cycles", cycles=cycles, skip_cycles=0, start=fixed,
+                   grid=dict(zip(swept, (list(lams), bores, list(es), list(starts)))))
+        specs.append(parse(raw, model_description))
+    return specs, rhos
+
+
+def write_thesis(out, client, transient=30, cycles=1500, forcing=1, starts=STARTS):
+    """Chapter 4: every run of THESIS_RUNS with `transient` + `cycles` crank cycles from each of `starts`, swept on
+    the Dask `client`'s workers (into out/sweeps, resumable); a summary table (CSV and markdown) and figure sheets
+    of the impact profiles and Poincare sections of the runs from the first start, run here."""
     from . import roller_plots
+    from .sweep import run as run_sweep
 
     out.mkdir(parents=True, exist_ok=True)
+    # the same cases from the other starting crank angles (transients, coexisting attractors), on the cluster
+    specs, rhos = thesis_sweeps(transient + cycles, forcing, starts[1:], fmpy.read_model_description(str(fmu_path())))
+    others = {}
+    for spec in specs if len(starts) > 1 else ():
+        path, _ = run_sweep(spec, out / "sweeps", client)
+        for row in pq.read_table(path).to_pylist():
+            key = (row["damping_crank_pin"], rhos[row["bore"]], row["restitution"])
+            others.setdefault(key, {})[row["crank_angle_start"]] = Response(row["response"], row["period"], row["settled"])
     runs, rows = [], []
     for lam, rho, e in THESIS_RUNS:
         run = simulate_case(lam, rho, e, forcing, transient + cycles)
         response, row = write_case(run, out / "cases", transient)
-        # the same case from other starting crank angles: transients and coexisting attractors
-        others = [classify(simulate_case(lam, rho, e, forcing, transient + cycles, start=s)) for s in starts[1:]]
-        kinds = [response.kind] + [r.kind for r in others]
+        responses = [response] + [others[lam, rho, e][s] for s in starts[1:]]
+        kinds = [r.kind for r in responses]
         row["starts"] = ", ".join(f"{kinds.count(k)}× {k}" for k in ("periodic", "transient chaos", "chaos") if k in kinds)
-        row["periods"] = " ".join(str(r.period) for r in [response] + others)
+        row["periods"] = " ".join(str(r.period) for r in responses)
         row["reason"] = disagreement_reason(row, response, kinds, transient + cycles)
         print(f"lambda={lam} rho={rho} e={e}: {response} (thesis: {row['thesis']}); over {len(kinds)} starts: {row['starts']}")
         runs.append((run, response))
@@ -452,8 +505,13 @@ def main(argv=None):
         p.add_argument("--forcing", type=int, default=1, choices=(1, 2), help="roller_forcing (1 = as printed)")
         p.add_argument("--transient", type=int, default=30, help="crank cycles before the statistics")
         p.add_argument("--cycles", type=int, default=1500, help="crank cycles of statistics")
-    sub.choices["thesis"].add_argument("--starts", type=float, nargs="+", default=list(STARTS),
-                                       help="starting crank angles (rad); statistics and figures from the first")
+    thesis = sub.choices["thesis"]
+    thesis.add_argument("--starts", type=float, nargs="+", default=list(STARTS),
+                        help="starting crank angles (rad); statistics and figures from the first")
+    where = thesis.add_mutually_exclusive_group()
+    where.add_argument("--workers", type=int, default=os.cpu_count(),
+                       help="Dask worker processes for the runs from the other starts (default: all cores)")
+    where.add_argument("--scheduler", help="address of a running Dask scheduler to use instead")
     forces = sub.add_parser("forces", help="constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)")
     forces.add_argument("--forces-tool", type=Path, required=True,
                         help="the built roller_forces example (target/release/examples/roller_forces)")
@@ -480,8 +538,11 @@ def main(argv=None):
     elif args.command == "forces":
         print(f"wrote {write_forces(args.out, args.forces_tool)}")
     else:
-        for path in write_thesis(args.out, args.transient, args.cycles, args.forcing, args.starts):
-            print(f"wrote {path}")
+        from .sweep import connect
+
+        with connect(args.workers, args.scheduler) as client:
+            for path in write_thesis(args.out, client, args.transient, args.cycles, args.forcing, args.starts):
+                print(f"wrote {path}")
 
 
 if __name__ == "__main__":

@@ -1,4 +1,5 @@
-"""The `pistonslap` command: `pistonslap demo ...`, `pistonslap analysis ...`, `pistonslap fmu-path`."""
+"""The `pistonslap` command: `pistonslap demo ...`, `pistonslap analysis ...`, `pistonslap sweep ...`,
+`pistonslap map ...`, `pistonslap fmu-path`."""
 
 import sys
 
@@ -23,9 +24,23 @@ def _analysis(argv):
     analysis.main(argv)
 
 
+def _sweep(argv):
+    from . import sweep
+
+    sweep.main(argv)
+
+
+def _map(argv):
+    from . import heat_map
+
+    heat_map.main(argv)
+
+
 COMMANDS = {
     "demo": (_demo, "simulate an operating point, write CSVs and plots (pistonslap demo --help)"),
     "analysis": (_analysis, "model variant 2 analysed as in Farahanchi's thesis (pistonslap analysis --help)"),
+    "sweep": (_sweep, "run a TOML sweep spec on Dask, resumable, into parquet (pistonslap sweep --help)"),
+    "map": (_map, "heat map PNG of a sweep's metric or response class (pistonslap map --help)"),
     "fmu-path": (_fmu_path, "print the path of the FMU this package runs"),
 }
 

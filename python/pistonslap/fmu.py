@@ -37,14 +37,16 @@ def fmu_path() -> Path:
     return path
 
 
-def simulate(stop_time=None, output_interval=None, start_values=None, input=None, output=None, **fmpy_kwargs):
+def simulate(stop_time=None, output_interval=None, start_values=None, input=None, output=None, fmu=None,
+             **fmpy_kwargs):
     """Runs the FMU through `fmpy.simulate_fmu` and returns its structured array (`time` + recorded variables).
 
     `stop_time=None` runs the FMU's default experiment; `output=None` records every output;
     `output_interval` is also the communication step (fmpy steps from one output point to the next).
+    `fmu` is the FMU file or a folder it was extracted to (default `fmu_path()`).
     """
     return fmpy.simulate_fmu(
-        str(fmu_path()),
+        str(fmu or fmu_path()),
         stop_time=stop_time,
         output_interval=output_interval,
         start_values=dict(start_values or {}),

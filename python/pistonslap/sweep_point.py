@@ -1,0 +1,73 @@
+"""One point of a sweep: a run of the FMU and its row of the results (slap metrics, response class, status)."""
+
+import numpy as np
+from fmpy.fmi1 import FMICallException
+
+from .analysis import CLASSIFIABLE_CYCLES, classify, roller_run
+from .fmu import CYCLE, simulate_with_events
+
+#: The results' columns after the swept values, and their units.
+METRICS = {
+    "impacts_per_cycle": "1/cycle", "max_impact_velocity": "m/s", "impact_energy_per_cycle": "J/cycle",
+    "side_changes_per_cycle": "1/cycle",
+}
+#: Then the response (variant 2, runs of at least CLASSIFIABLE_CYCLES crank cycles; else empty), its period and the
+#: cycle it settled at (0 where none), and `ok` or the FMI error message.
+RESPONSE_COLUMNS = ("response", "period", "settled", "status")
+
+#: Crank angle of one cycle: an engine cycle (firing TDC to firing TDC) for the crank train, a crank turn for the
+#: roller, whose forcing repeats every turn.
+CYCLE_ANGLE = {1: CYCLE, 2: 2 * np.pi}
+_FMI_ERROR = 3
+
+
+def defaults(model_description):
+    """The FMU's start values by name (numbers as numbers)."""
+    kinds = {"Real": float, "Integer": int, "Enumeration": int, "Boolean": lambda s: s == "true", "String": str}
+    return {v.name: kinds[v.type](v.start) for v in model_description.modelVariables if v.start is not None}
+
+
+def run_point(fmu, model_description, values, cycles, skip_cycles):
+    """Runs `cycles` cycles with the start values `values` from `fmu` (a file or extracted folder) and returns the
+    row of metrics over the cycles after the first `skip_cycles`; an FMI error is the row's status."""
+    every = dict(defaults(model_description), **values)
+    speed, angle = every["crank_speed"], CYCLE_ANGLE[every["model_variant"]]
+    errors = []
+
+    def logger(_component, _instance, status, _category, message):
+        if status >= _FMI_ERROR:
+            errors.append(message.decode(errors="replace"))
+
+    try:
+        _, events = simulate_with_events(
+            fmu=fmu, model_description=model_description, start_values=values, stop_time=cycles * angle / speed,
+            output_interval=angle / speed, output=["impact_count"], logger=logger)
+    except FMICallException as e:
+        return dict(dict.fromkeys(METRICS, np.nan), response=None, period=0, settled=0,
+                    status=errors[-1] if errors else str(e))
+    row = metrics(events, speed * events["time"] // angle, cycles, skip_cycles)
+    kind, period, settled = None, 0, 0
+    if every["model_variant"] == 2 and cycles >= CLASSIFIABLE_CYCLES:
+        response = classify(roller_run(events, every, cycles))
+        kind, period, settled = response.kind, response.period, response.settled
+    return dict(row, response=kind, period=period, settled=settled, status="ok")
+
+
+def metrics(events, cycle, cycles, skip_cycles):
+    """`METRICS` of the impact log `events` whose rows fall in the cycles `cycle` (0 = the run's first), counted
+    over cycles skip_cycles to cycles - 1. A side change is a landing (impact or slide) on the other wall than the
+    landing before it: corners 1, 2 are the wall at -D/2, 3, 4 the one at +D/2."""
+    counted = cycles - skip_cycles
+    window = (cycle >= skip_cycles) & (cycle < cycles)
+    impacts = window & (events["kind"] == "impact")
+    landing = events["kind"] != "release"
+    wall = np.where(events["corner"][landing] <= 2, -1, 1)
+    change = np.zeros(len(events), dtype=bool)
+    change[np.flatnonzero(landing)[1:]] = wall[1:] != wall[:-1]
+    velocities = events["normal_velocity_before"][impacts]
+    return {
+        "impacts_per_cycle": impacts.sum() / counted,
+        "max_impact_velocity": float(velocities.max()) if velocities.size else 0.0,
+        "impact_energy_per_cycle": events["energy_lost"][impacts].sum() / counted,
+        "side_changes_per_cycle": (change & window).sum() / counted,
+    }
