@@ -139,6 +139,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     ///
     /// `known`: the system's evaluation at the current state, if the caller has it.
     pub(super) fn settle(&mut self, closed: Set, known: Option<Evaluation<N, M>>) -> Result<(), DynamicsError> {
+        self.event_ahead = None;
         let Sample { t, q, mut v, .. } = self.state;
         let was_active = self.active;
         let opts = self.options.clone();

@@ -5,13 +5,21 @@
 use super::contact::{bit, contains, select};
 use super::events::EventLocator;
 use super::options::{MAX_STEPS_PER_ADVANCE, TOO_MANY_STEPS};
-use super::sample::{local_error, rk4_step, sample, sample_of, Sample};
+use super::rk4::Hermite5;
+use super::sample::{local_error, rk4_step, rk4_to, sample, sample_of, Sample};
 use super::search::StepEnd;
 use super::settle::PENETRATION_FACTOR;
 use super::{DynamicsError, Evaluation, Event, StepCounts, StepperOptions, System, DEFAULT_EVENT_BUDGET};
 use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
+
+/// A step taken past the end of the last `advance`: its end, and the sample at that end time.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub(super) struct Ahead<const N: usize, const M: usize> {
+    end: Sample<N, M>,
+    now: Sample<N, M>,
+}
 
 /// The adaptive step's smallest size, as a fraction of the largest: a step this short is
 /// accepted whatever its error estimate (it is then far below the nominal step's error).
@@ -32,6 +40,12 @@ pub struct Stepper<S, const N: usize, const M: usize> {
     /// Constraints in persistent contact (bitmask).
     pub(super) active: u32,
     pub(super) state: Sample<N, M>,
+    /// An accepted, event-free step beyond the last `advance`'s end, kept while the system does not
+    /// change: the next communication points inside it are served from its dense output.
+    pub(super) ahead: Option<Ahead<N, M>>,
+    /// An event found past the end of an `advance` by a step that was then taken again, cut short:
+    /// no step runs past an end across it while the system does not change.
+    pub(super) event_ahead: Option<f64>,
     /// The system may have changed since the contact set was last resolved (`system_mut`, `shift`):
     /// the next `advance` re-examines it first. Saved with the state, so a restored stepper
     /// continues as the original would.
@@ -65,6 +79,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             event_budget: DEFAULT_EVENT_BUDGET,
             active: 0,
             state,
+            ahead: None,
+            event_ahead: None,
             changed: true,
             events: Vec::new(),
             counts: Cell::default(),
@@ -76,10 +92,15 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// Advances to exactly `t_end`, appending to the event record. Re-examines the contact set first
     /// if `system_mut` may have changed held inputs (an active constraint now approaching → impact);
     /// otherwise the last step left it resolved, and a communication point costs nothing here.
+    ///
+    /// Where nothing changed since the last `advance`, its last step may run past `t_end`: the
+    /// state at `t_end` is then read from the step's quintic extension (the accessors show it), and
+    /// the step goes on at the next call; a change through `system_mut` first puts the state at
+    /// `t_end` on the RK4 map, as if the step had stopped there.
     pub fn advance(&mut self, t_end: f64) -> Result<(), DynamicsError> {
-        if !t_end.is_finite() || t_end < self.state.t {
+        if !t_end.is_finite() || t_end < self.time() {
             return Err(DynamicsError::InvalidArgument {
-                time: self.state.t,
+                time: self.time(),
                 reason: "the end time is before the current time or not finite",
             });
         }
@@ -91,21 +112,34 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             .or_else(|| (self.active >> M != 0).then_some("the contact set names constraints that do not exist"))
             .or_else(|| ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some(TOO_MANY_STEPS));
         if let Some(reason) = reason {
-            return Err(DynamicsError::InvalidArgument { time: self.state.t, reason });
+            return Err(DynamicsError::InvalidArgument { time: self.time(), reason });
         }
+        // Inputs that changed here are likely to change at the next point too: no step past it then.
+        let beyond = !self.changed;
         if self.changed {
             self.reexamine()?;
         }
         // Events are counted per window of one nominal step: an accumulation piles them up in a
         // vanishing time, while a long span of ordinary impacts only needs more windows.
         let (mut handled, mut steps, mut window_start) = (0, 0.0, self.state.t);
-        while self.state.t < t_end {
+        loop {
+            if let Some(ahead) = self.ahead.take() {
+                if t_end < ahead.end.t {
+                    let now = self.between(&ahead.end, t_end)?;
+                    self.ahead = Some(Ahead { end: ahead.end, now });
+                    return Ok(());
+                }
+                self.state = ahead.end;
+            }
+            if self.state.t >= t_end {
+                return Ok(());
+            }
             // The adaptive step may be far below the nominal one: its work is bounded here.
             steps += 1.0;
             if steps > MAX_STEPS_PER_ADVANCE {
                 return Err(DynamicsError::InvalidArgument { time: self.state.t, reason: TOO_MANY_STEPS });
             }
-            if self.step(t_end)? {
+            if self.step(t_end, beyond)? {
                 if self.state.t - window_start >= self.options.step {
                     (handled, window_start) = (0, self.state.t);
                 }
@@ -115,21 +149,48 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 }
             }
         }
+    }
+
+    /// The sample at `t` inside the step from `state` to `end`: `(q, q̇)` from the step's quintic
+    /// extension, forces and gap rates evaluated there.
+    fn between(&self, end: &Sample<N, M>, t: f64) -> Result<Sample<N, M>, DynamicsError> {
+        let s0 = &self.state;
+        let dense = Hermite5 { t0: s0.t, dt: end.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: end.q, v1: end.v, a1: end.acc };
+        let (q, v) = dense.at(t);
+        sample(&self.system, t, q, v, self.active)
+    }
+
+    /// Puts the state at the current time on the RK4 map (the step ahead cut there), so that the
+    /// system may change from it.
+    fn settle_ahead(&mut self) -> Result<(), DynamicsError> {
+        if let Some(ahead) = self.ahead.take() {
+            let (s, ev) = rk4_to(&self.system, &self.state, ahead.now.t, self.active)?;
+            self.count(|c| c.accepted += 1);
+            self.state = s;
+            if self.active != 0 {
+                self.stabilize(Some(ev))?;
+            }
+        }
         Ok(())
     }
 
+    /// The state the accessors show: at the end of the last `advance`.
+    fn current(&self) -> &Sample<N, M> {
+        self.ahead.as_ref().map_or(&self.state, |a| &a.now)
+    }
+
     pub fn time(&self) -> f64 {
-        self.state.t
+        self.current().t
     }
     pub fn position(&self) -> &SVector<f64, N> {
-        &self.state.q
+        &self.current().q
     }
     pub fn velocity(&self) -> &SVector<f64, N> {
-        &self.state.v
+        &self.current().v
     }
     /// q̈ at the current state with the current contact set (as of `new` or the last `advance`).
     pub fn acceleration(&self) -> SVector<f64, N> {
-        self.state.acc
+        self.current().acc
     }
     /// Whether constraint `i` is in persistent (sliding) contact.
     pub fn in_contact(&self, i: usize) -> bool {
@@ -137,19 +198,19 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
     /// λ at the current state (0 for open constraints).
     pub fn multipliers(&self) -> SVector<f64, M> {
-        self.state.lambda
+        self.current().lambda
     }
     /// `h(q, t)` at the current state.
     pub fn gaps(&self) -> SVector<f64, M> {
-        self.state.gap
+        self.current().gap
     }
     /// `ḣ = J q̇ + ∂h/∂t` at the current state.
     pub fn gap_rates(&self) -> SVector<f64, M> {
-        self.state.hd
+        self.current().hd
     }
     /// `T = ½ q̇ᵀ M q̇` at the current state.
     pub fn kinetic_energy(&self) -> f64 {
-        let s = &self.state;
+        let s = self.current();
         0.5 * s.v.dot(&(self.system.evaluate(s.t, &s.q, &s.v).mass * s.v))
     }
     pub fn events(&self) -> &[Event<N, M>] {
@@ -170,9 +231,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         &self.system
     }
     /// The system, to change what it holds (inputs); the next `advance` re-examines the contacts.
-    pub fn system_mut(&mut self) -> &mut S {
+    /// A step that ran past the current time is cut there first, with the system as it was.
+    pub fn system_mut(&mut self) -> Result<&mut S, DynamicsError> {
+        self.settle_ahead()?;
+        self.event_ahead = None;
         self.changed = true;
-        &mut self.system
+        Ok(&mut self.system)
     }
     pub fn options(&self) -> &StepperOptions {
         &self.options
@@ -196,6 +260,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// motion and the contact set are the same; what changes is the round-off that a growing `t`
     /// or `q` carries into the gaps, near the event tolerance after long runs.
     pub fn shift(&mut self, dt: f64, dq: &SVector<f64, N>) -> Result<(), DynamicsError> {
+        self.settle_ahead()?;
+        self.event_ahead = None;
         let s = &self.state;
         if !(dt.is_finite() && dq.iter().all(|x| x.is_finite())) {
             return Err(DynamicsError::InvalidArgument { time: s.t, reason: "the shift must be finite" });
@@ -230,13 +296,15 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// The RK4 step from the current state towards `t_end`: of the nominal size, or (adaptive) of
     /// the controller's size, shrunk until its local error is within `local_error`; the next
     /// size follows from this step's error (the usual `(tol/err)^¼` rule, bounded growth).
-    fn trial_step(&mut self, t_end: f64) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
+    /// `beyond`: the step may end past `t_end` (it is then not cut short there).
+    fn trial_step(&mut self, t_end: f64, beyond: bool) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
         let (t0, max, tol) = (self.state.t, self.options.step, self.options.local_error);
         let min = max * MIN_STEP_FRACTION;
         loop {
             // Also repairs a size restored from bytes.
             let size = if self.step_size >= min { self.step_size.min(max) } else { max };
-            let t1 = if t_end - t0 <= size { t_end } else { t0 + size };
+            let across_event = self.event_ahead.is_some_and(|te| te > t0 && t0 + size >= te);
+            let t1 = if (!beyond || across_event) && t_end - t0 <= size { t_end } else { t0 + size };
             if t1 <= t0 {
                 return Err(DynamicsError::InvalidArgument { time: t0, reason: "the step is below the time resolution at this time" });
             }
@@ -260,17 +328,33 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
 
     /// One RK4 step towards `t_end`, stopping at the first event. Returns whether an event was handled.
-    fn step(&mut self, t_end: f64) -> Result<bool, DynamicsError> {
-        let (s1, ev1) = self.trial_step(t_end)?;
+    /// `beyond`: an event-free step may end past `t_end`, kept as the step ahead; one with an event
+    /// past `t_end` is taken again, cut short there.
+    fn step(&mut self, t_end: f64, beyond: bool) -> Result<bool, DynamicsError> {
+        let (s1, ev1) = self.trial_step(t_end, beyond)?;
         self.count(|c| c.accepted += 1);
         let active = self.active;
         match self.first_event((s1, Some(ev1)))? {
+            StepEnd::Clear((s1, ev)) if s1.t > t_end => {
+                let start = std::mem::replace(&mut self.state, s1);
+                if active != 0 {
+                    self.stabilize(ev)?;
+                }
+                let end = std::mem::replace(&mut self.state, start);
+                let now = self.between(&end, t_end)?;
+                self.ahead = Some(Ahead { end, now });
+                Ok(false)
+            }
             StepEnd::Clear((s1, ev)) => {
                 self.state = s1;
                 if active != 0 {
                     self.stabilize(ev)?;
                 }
                 Ok(false)
+            }
+            StepEnd::Event { at: (s, _), .. } if s.t > t_end => {
+                self.event_ahead = Some(s.t);
+                self.step(t_end, false)
             }
             StepEnd::Event { at: (s, mut ev), constraint: i } => {
                 self.state = s;

@@ -217,7 +217,8 @@ impl CrankTrain {
         match &mut self.drive {
             Drive::Prescribed(s) => {
                 let (sys, now) = (s.system(), s.time());
-                *s.system_mut() = PrescribedCrank::new(sys.engine.clone(), angle - 4.0 * PI * cycles, now, sys.speed());
+                let restarted = PrescribedCrank::new(sys.engine.clone(), angle - 4.0 * PI * cycles, now, sys.speed());
+                *s.system_mut().map_err(dynamics_error)? = restarted;
             }
             Drive::Free(s) => s.shift(0.0, &Vector3::new(-4.0 * PI * cycles, 0.0, 0.0)).map_err(dynamics_error)?,
         }
@@ -260,11 +261,11 @@ impl CrankTrain {
         }
     }
 
-    fn engine_mut(&mut self) -> &mut Engine {
-        match &mut self.drive {
-            Drive::Prescribed(s) => &mut s.system_mut().engine,
-            Drive::Free(s) => &mut s.system_mut().engine,
-        }
+    fn engine_mut(&mut self) -> Result<&mut Engine, ModelError> {
+        Ok(match &mut self.drive {
+            Drive::Prescribed(s) => &mut s.system_mut().map_err(dynamics_error)?.engine,
+            Drive::Free(s) => &mut s.system_mut().map_err(dynamics_error)?.engine,
+        })
     }
 
     /// Core events as impact-log rows; `angle` gives φ1 at an event.
@@ -311,20 +312,20 @@ impl EngineModel for CrankTrain {
         // The system is touched only where an input changed: the core re-examines the contacts
         // after a change, and a communication point with the same inputs then costs nothing.
         if !self.engine().holds(inputs.gas_pressure) {
-            self.engine_mut().hold_pressure(inputs.gas_pressure);
+            self.engine_mut()?.hold_pressure(inputs.gas_pressure);
         }
         self.keep_angle_within_a_cycle()?;
         match &mut self.drive {
             Drive::Prescribed(s) => {
                 if s.system().speed() != inputs.crank_speed {
                     let now = s.time();
-                    s.system_mut().hold_speed(now, inputs.crank_speed);
+                    s.system_mut().map_err(dynamics_error)?.hold_speed(now, inputs.crank_speed);
                 }
                 s.advance(t_end).map_err(dynamics_error)?;
             }
             Drive::Free(s) => {
                 if s.system().load_torque != inputs.load_torque {
-                    s.system_mut().load_torque = inputs.load_torque;
+                    s.system_mut().map_err(dynamics_error)?.load_torque = inputs.load_torque;
                 }
                 s.advance(t_end).map_err(dynamics_error)?;
             }

@@ -18,7 +18,7 @@ fn resting(floor: Floor) -> Stepper<Ball, 1, 1> {
 #[test]
 fn changed_input_makes_an_active_contact_impact() {
     let mut s = resting(Floor::Moving { velocity: 0.0 });
-    s.system_mut().floor = Floor::Moving { velocity: 0.4 };
+    s.system_mut().unwrap().floor = Floor::Moving { velocity: 0.4 };
     s.advance(1e-3).unwrap();
     let ev = s.events().iter().find(|ev| ev.kind == EventKind::Impact).expect("impact");
     assert_eq!(ev.time, 0.0);
@@ -34,7 +34,7 @@ fn changed_input_makes_an_active_contact_impact() {
 fn changed_input_releases_a_pulling_contact() {
     let mut s = resting(Floor::Fixed);
     s.advance(0.05).unwrap();
-    s.system_mut().gravity = -G;
+    s.system_mut().unwrap().gravity = -G;
     s.advance(0.15).unwrap();
     let ev = s.events().iter().find(|ev| ev.kind == EventKind::Release).expect("release");
     assert_eq!(ev.time, 0.05);
@@ -78,7 +78,7 @@ fn inadmissible_and_non_finite_states_are_errors() {
     assert!(err.to_string().contains("t = 0.5 s") && err.to_string().contains("constraint 0"));
 
     let mut s = Stepper::new(ball, 0.0, Vector1::new(1.0), Vector1::zeros(), StepperOptions::default()).unwrap();
-    s.system_mut().gravity = f64::NAN;
+    s.system_mut().unwrap().gravity = f64::NAN;
     assert!(matches!(s.advance(0.1), Err(DynamicsError::NonFinite { time }) if time == 0.0));
 
     // Finite but overflowing forces: a stage's angles go NaN, and M(q) with them. The message

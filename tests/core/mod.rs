@@ -2,6 +2,7 @@
 
 mod adaptive;
 mod ball;
+mod communication_points;
 mod contact_transitions;
 mod corner;
 mod coupled;
