@@ -14,6 +14,7 @@ use super::types::Status;
 use crate::models::{EngineModel, Inputs, ModelError, Parameters};
 use crate::simulation::Simulation;
 use serde::{de::DeserializeOwned, Deserialize, Serialize};
+use std::path::PathBuf;
 
 /// What the FMU layer needs of an engine model: run it, and save it in an FMU state.
 pub trait Model: EngineModel + Serialize + DeserializeOwned {}
@@ -113,14 +114,22 @@ pub struct Instance<E> {
     /// Set by a model failure (Error) or a caught panic (Fatal); overrides the phase.
     failure: Option<Mode>,
     core: Core<E>,
+    /// The FMU's `resources/` directory, where bare file names of parameters are looked up.
+    resources: Option<PathBuf>,
 }
 
 /// Relative tolerance on the communication point: hosts accumulate t += h in floating point.
 const TIME_TOLERANCE: f64 = 1e-9;
 
 impl<E: Model> Instance<E> {
-    pub fn new(logger: Logger) -> Self {
-        Self { logger, failure: None, core: Core::default() }
+    pub fn new(logger: Logger, resources: Option<PathBuf>) -> Self {
+        Self { logger, failure: None, core: Core::default(), resources }
+    }
+
+    /// The parameters with a bare `pressure_trace` file name turned into its path in the resources.
+    fn resolved_parameters(&self) -> Parameters {
+        let trace = super::resources::resolve(&self.core.parameters.pressure_trace, self.resources.as_deref());
+        Parameters { pressure_trace: trace, ..self.core.parameters.clone() }
     }
 
     pub fn mode(&self) -> Mode {
@@ -156,7 +165,7 @@ impl<E: Model> Instance<E> {
 
     /// Builds the simulation from the parameters: bad parameters are a failure naming the parameter.
     pub fn exit_initialization_mode(&mut self) -> Outcome {
-        let sim = Simulation::start(&self.core.parameters, self.core.start_time).map_err(|e| self.fail(e))?;
+        let sim = Simulation::start(&self.resolved_parameters(), self.core.start_time).map_err(|e| self.fail(e))?;
         self.core.phase = Phase::StepComplete(sim);
         Ok(())
     }
@@ -227,7 +236,7 @@ impl<E: Model> Instance<E> {
         let outputs = match &self.core.phase {
             Phase::StepComplete(sim) | Phase::Terminated(sim) => sim.outputs(),
             _ if vrs.iter().any(|&vr| is_output(vr)) => {
-                preview = Simulation::<E>::new(&self.core.parameters, self.core.start_time)
+                preview = Simulation::<E>::new(&self.resolved_parameters(), self.core.start_time)
                     .map_err(|e| Refusal::error(format!("cannot compute the initial outputs: {e}")))?;
                 preview.outputs()
             }

@@ -8,7 +8,8 @@
 use super::crank_linkage::{Linkage, Loads, Trig};
 use super::last_value::LastValue;
 use super::pressure::FourStrokePressure;
-use super::{Inputs, Parameters};
+use super::pressure_trace::PressureTrace;
+use super::{Inputs, ModelError, Parameters};
 use crate::dynamics::{Evaluation, System};
 use nalgebra::{Matrix2, Matrix3, Matrix4x2, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -18,6 +19,8 @@ use serde::{Deserialize, Serialize};
 pub enum GasPressure {
     /// The built-in four-stroke curve of crank angle.
     BuiltIn(FourStrokePressure),
+    /// A measured trace of crank angle.
+    Trace(PressureTrace),
     /// The host's `gas_pressure` input, Pa, held over a step.
     Held(f64),
 }
@@ -38,23 +41,25 @@ pub struct Engine {
 struct Crank {
     sin: f64,
     cos: f64,
-    /// The built-in curve's gauge pressure; 0 with a held pressure.
+    /// The gauge pressure of the curve or trace at this angle; 0 with a held pressure.
     curve: f64,
 }
 
 impl Engine {
-    /// The engine of validated parameters; a held pressure starts at the input's default.
-    pub fn new(params: &Parameters) -> Self {
+    /// The engine of validated parameters; a held pressure starts at the input's default. Reads the
+    /// pressure trace (`pressure_source = 3`), refusing a bad file.
+    pub fn new(params: &Parameters) -> Result<Self, ModelError> {
         let pressure = match params.pressure_source {
             1 => GasPressure::Held(Inputs::default().gas_pressure),
+            3 => GasPressure::Trace(PressureTrace::read(&params.pressure_trace, params.crankcase_pressure)?),
             _ => GasPressure::BuiltIn(FourStrokePressure::new(params.peak_pressure, params.rod_length / params.crank_radius)),
         };
-        Self {
+        Ok(Self {
             linkage: Linkage::new(params),
             pressure,
             crown_area: 0.25 * std::f64::consts::PI * params.piston_diameter * params.piston_diameter,
             restitution: params.restitution,
-        }
+        })
     }
 
     /// Holds the `gas_pressure` input, if the pressure comes from it.
@@ -69,14 +74,14 @@ impl Engine {
         self.gas_force_at(&self.crank(crank_angle))
     }
 
-    /// Gauge gas pressure on the crown at crank angle φ1, Pa: the held input or the curve.
+    /// Gauge gas pressure on the crown at crank angle φ1, Pa: the held input, the curve or the trace.
     pub fn pressure(&self, crank_angle: f64) -> f64 {
         self.pressure_at(&self.crank(crank_angle))
     }
 
     fn pressure_at(&self, crank: &Crank) -> f64 {
         match &self.pressure {
-            GasPressure::BuiltIn(_) => crank.curve,
+            GasPressure::BuiltIn(_) | GasPressure::Trace(_) => crank.curve,
             GasPressure::Held(p) => *p,
         }
     }
@@ -92,6 +97,7 @@ impl Engine {
         let (sin, cos) = super::trig::sin_cos(angle);
         let curve = match &self.pressure {
             GasPressure::BuiltIn(curve) => curve.gauge_at(angle, sin, cos),
+            GasPressure::Trace(trace) => trace.gauge(angle),
             GasPressure::Held(_) => 0.0,
         };
         Crank { sin, cos, curve }
@@ -247,7 +253,7 @@ mod tests {
     use crate::models::Parameters;
 
     fn prescribed() -> PrescribedCrank {
-        PrescribedCrank::new(Engine::new(&Parameters::default()), 0.4, 0.01, 125.66)
+        PrescribedCrank::new(Engine::new(&Parameters::default()).unwrap(), 0.4, 0.01, 125.66)
     }
 
     #[test]
@@ -278,7 +284,7 @@ mod tests {
         // new speed: every evaluation is that of a system that never evaluated before.
         for pressure_source in [1, 2] {
             let p = Parameters { pressure_source, ..Parameters::default() };
-            let mut sys = PrescribedCrank::new(Engine::new(&p), 0.1, 0.0, 125.66);
+            let mut sys = PrescribedCrank::new(Engine::new(&p).unwrap(), 0.1, 0.0, 125.66);
             let (q, qd) = (Vector2::new(0.05, 0.001), Vector2::new(-30.0, 2.0));
             for (t, held, speed) in [
                 (0.001, 2e6, 125.66),

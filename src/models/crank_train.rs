@@ -116,7 +116,7 @@ impl CrankTrain {
     pub fn with_options(params: &Parameters, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
         validate(params)?;
         check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
-        let engine = Engine::new(params);
+        let engine = Engine::new(params)?;
         let geometry = SliderCrank { crank_radius: params.crank_radius, rod_length: params.rod_length, pin_offset: params.pin_offset };
         let start = StartOffset::of(params);
         let angle = params.crank_angle_start;
@@ -402,6 +402,28 @@ mod tests {
         assert!(peak <= p.peak_pressure && peak > 0.999 * p.peak_pressure, "{peak}");
         let gas_exchange = cycle.iter().filter(|out| (PI + 1e-9..3.0 * PI - 1e-9).contains(&out.crank_angle));
         assert!(gas_exchange.clone().count() > 900 && gas_exchange.clone().all(|out| out.gas_pressure_acting == 0.0));
+    }
+
+    #[test]
+    fn the_shipped_full_load_trace_is_the_built_in_curve_plus_one_bar() {
+        // resources/full_load.csv samples the built-in curve (default geometry, 8 MPa) every 0.5° in
+        // absolute bar; less the default crankcase pressure it is the curve again, up to the
+        // interpolation error between samples (measured 265 Pa at most, near the peak).
+        let trace = Parameters { pressure_source: 3, pressure_trace: "resources/full_load.csv".into(), ..Parameters::default() };
+        let (from_trace, from_curve) =
+            (run(&trace, &Inputs::default(), 5e-5, 2000), run(&Parameters::default(), &Inputs::default(), 5e-5, 2000));
+        for (a, b) in from_trace.iter().zip(&from_curve) {
+            assert_eq!(a.crank_angle, b.crank_angle);
+            assert!(
+                (a.gas_pressure_acting - b.gas_pressure_acting).abs() < 1e-4 * 8e6,
+                "{} {}",
+                a.gas_pressure_acting,
+                b.gas_pressure_acting
+            );
+        }
+        let missing = Parameters { pressure_trace: "resources/none.csv".into(), ..trace };
+        let message = CrankTrain::new(&missing, 0.0).unwrap_err().0;
+        assert!(message.starts_with("pressure_trace \"resources/none.csv\": cannot be read"), "{message}");
     }
 
     /// The piston axis at the corners' heights z = h and h − s lies at x_pin − z sin φ3 (pin on the

@@ -10,6 +10,7 @@ mod energy_balance;
 mod last_value;
 mod parameters;
 pub mod pressure;
+pub mod pressure_trace;
 mod roller;
 mod roller_forcing;
 mod trig;

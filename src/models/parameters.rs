@@ -27,6 +27,7 @@ pub struct Parameters {
     pub pressure_source: i32,
     pub roller_forcing: i32,
     pub peak_pressure: f64,
+    pub crankcase_pressure: f64,
     pub crank_radius: f64,
     pub rod_length: f64,
     pub crank_com: f64,
@@ -55,6 +56,7 @@ pub struct Parameters {
     pub piston_tilt_start: f64,
     pub piston_tilt_rate_start: f64,
     pub impact_log: String,
+    pub pressure_trace: String,
 }
 
 /// Continuous inputs, held constant over a communication step.

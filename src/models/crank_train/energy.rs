@@ -70,7 +70,7 @@ mod tests {
     #[test]
     fn impulse_work_is_the_crank_row_reaction_and_closes_the_energy_of_an_impact() {
         let p = Parameters::default();
-        let mut engine = Engine::new(&Parameters { pressure_source: 1, ..p.clone() });
+        let mut engine = Engine::new(&Parameters { pressure_source: 1, ..p.clone() }).unwrap();
         engine.hold_pressure(0.0);
         let sys = PrescribedCrank::new(engine, 0.7, 0.0, 125.66);
         let (t, q, qd) = (0.003, Vector2::new(-0.12, 4e-4), Vector2::new(-25.0, 3.0));
