@@ -8,7 +8,7 @@ use nalgebra::{SVector, Vector2, Vector3};
 use pistonslap::dynamics::System;
 use pistonslap::models::crank_drive::{Engine, FreeCrank, PrescribedCrank};
 use pistonslap::models::crank_kinematics::SliderCrank;
-use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters};
+use pistonslap::models::{CrankTrain, EngineModel, InputPolynomial, Inputs, Parameters};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -70,7 +70,7 @@ fn main() {
     let reduced = |x: &SVector<f64, 3>| Vector2::new(x[1], x[2]);
     let evaluate = ns_per_call(&states, |(t, q, qd)| prescribed.evaluate(*t, &reduced(q), &reduced(qd)).gap_bias[0]);
     println!("prescribed crank: evaluate {:6.1} ns (min {:6.1})", evaluate.0, evaluate.1);
-    let free = FreeCrank { engine: Engine::new(&p).expect("default engine"), load_torque: 20.0 };
+    let free = FreeCrank { engine: Engine::new(&p).expect("default engine"), load_torque: InputPolynomial::held(20.0) };
     let evaluate = ns_per_call(&states, |(_, q, qd)| free.evaluate(0.0, q, qd).gap_bias[0]);
     println!("free crank:       evaluate {:6.1} ns (min {:6.1})", evaluate.0, evaluate.1);
 

@@ -477,10 +477,21 @@ pub unsafe fn get_directional_derivative<E: Model>(c: fmi2Component) -> Status {
 }
 
 /// # Safety
-/// As [`call`].
-pub unsafe fn set_real_input_derivatives<E: Model>(c: fmi2Component) -> Status {
+/// As [`call`]; `vr`, `order` and `value` are NULL or point to `n` elements.
+pub unsafe fn set_real_input_derivatives<E: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    order: *const fmi2Integer,
+    value: *const fmi2Real,
+) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { unsupported::<E>(c, fmi2SetRealInputDerivatives, "inputs are held over a step (canInterpolateInputs = false)") }
+    unsafe {
+        run::<E>(c, fmi2SetRealInputDerivatives, |comp| {
+            let (vrs, orders, values) = (slice(vr, n, "vr")?, slice(order, n, "order")?, slice(value, n, "value")?);
+            comp.instance.set_input_derivatives(vrs, orders, values)
+        })
+    }
 }
 
 /// # Safety

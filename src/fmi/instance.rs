@@ -11,7 +11,7 @@ use super::logger::Logger;
 use super::state_bytes;
 use super::state_machine::Mode::{self, *};
 use super::types::Status;
-use crate::models::{EngineModel, Inputs, ModelError, Parameters};
+use crate::models::{EngineModel, InputDerivatives, Inputs, ModelError, Parameters};
 use crate::simulation::Simulation;
 use serde::{de::DeserializeOwned, Deserialize, Serialize};
 use std::path::PathBuf;
@@ -55,11 +55,20 @@ pub struct Core<E> {
     stop_time: Option<f64>,
     parameters: Parameters,
     inputs: Inputs,
+    /// Set by fmi2SetRealInputDerivatives, each input's reset by its next fmi2SetReal.
+    derivatives: InputDerivatives,
 }
 
 impl<E> Default for Core<E> {
     fn default() -> Self {
-        Self { phase: Phase::Instantiated, start_time: 0.0, stop_time: None, parameters: Parameters::default(), inputs: Inputs::default() }
+        Self {
+            phase: Phase::Instantiated,
+            start_time: 0.0,
+            stop_time: None,
+            parameters: Parameters::default(),
+            inputs: Inputs::default(),
+            derivatives: InputDerivatives::default(),
+        }
     }
 }
 
@@ -117,6 +126,10 @@ pub struct Instance<E> {
     /// The FMU's `resources/` directory, where bare file names of parameters are looked up.
     resources: Option<PathBuf>,
 }
+
+/// The highest input derivative order fmi2SetRealInputDerivatives takes (the inputs follow polynomials
+/// of this degree over a step).
+const MAX_INPUT_DERIVATIVE_ORDER: i32 = 2;
 
 /// Relative tolerance on the communication point: hosts accumulate t += h in floating point.
 const TIME_TOLERANCE: f64 = 1e-9;
@@ -192,11 +205,42 @@ impl<E: Model> Instance<E> {
         let (p, i) = (&mut self.core.parameters, &mut self.core.inputs);
         for (vr, value) in values {
             let missing = || Refusal::error(format!("value reference {vr} has no field")); // excluded above
+                                                                                           // A new value of an input ends the polynomial its derivatives described (FMI 2.0 §4.2.1).
+            if let Some(d) = description::variable(*vr).and_then(|v| self.core.derivatives.of_mut(v.name)) {
+                *d = [0.0; 2];
+            }
             match value {
                 Value::Real(x) => *description::real_mut(*vr, p, i).ok_or_else(missing)? = *x,
                 Value::Integer(x) => *description::integer_mut(*vr, p, i).ok_or_else(missing)? = *x,
                 Value::String(s) => *description::string_mut(*vr, p, i).ok_or_else(missing)? = (*s).to_string(),
             }
+        }
+        Ok(())
+    }
+
+    /// fmi2SetRealInputDerivatives: the `order`-th time derivative (1 or 2) of each Real input `vr`,
+    /// checked all before any is set. The inputs follow these polynomials over the next steps until
+    /// their next fmi2SetReal.
+    pub fn set_input_derivatives(&mut self, vrs: &[u32], orders: &[i32], values: &[f64]) -> Outcome {
+        for ((&vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
+            let v = typed_variable(vr, Kind::Real)?;
+            if v.causality != Causality::Input {
+                return Err(Refusal::error(format!("{} (value reference {vr}) is not an input: it has no input derivatives", v.name)));
+            }
+            if !(1..=MAX_INPUT_DERIVATIVE_ORDER).contains(&order) {
+                return Err(Refusal::error(format!(
+                    "derivative order {order} of {} refused: orders 1..={MAX_INPUT_DERIVATIVE_ORDER} are supported",
+                    v.name
+                )));
+            }
+            if !value.is_finite() {
+                return Err(Refusal::error(format!("derivative {order} of {} = {value} refused: values must be finite", v.name)));
+            }
+        }
+        for ((&vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
+            let name = description::variable(vr).map_or("", |v| v.name);
+            let d = self.core.derivatives.of_mut(name).ok_or_else(|| Refusal::error(format!("{name} has no input derivatives")))?;
+            d[order as usize - 1] = value;
         }
         Ok(())
     }
@@ -282,7 +326,7 @@ impl<E: Model> Instance<E> {
         if let Some(stop) = self.core.stop_time.filter(|s| t_end > s + TIME_TOLERANCE * s.abs().max(1.0)) {
             return Err(Refusal::error(format!("step to {t_end} s goes beyond stopTime = {stop} s")));
         }
-        match sim.step(&self.core.inputs, t_end) {
+        match sim.step_interpolated(&self.core.inputs, &self.core.derivatives, t_end) {
             Ok(()) => {
                 for e in sim.step_events() {
                     self.logger.debug("logEvents", || {

@@ -3,7 +3,7 @@
 
 use super::crank_drive::{Engine, FreeCrank, PrescribedCrank};
 use super::crank_kinematics::SliderCrank;
-use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters, CYCLE};
+use super::{EngineEvent, EngineEventKind, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, CYCLE};
 use crate::dynamics::{DynamicsError, Event, EventKind, StepCounts, Stepper, StepperOptions};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -135,7 +135,7 @@ impl CrankTrain {
         let drive = if params.crank_mode == 1 {
             Drive::Prescribed(Self::prescribed(engine, &geometry, &start, angle, start_time, speed, &options)?)
         } else {
-            let system = FreeCrank { engine, load_torque: Inputs::default().load_torque };
+            let system = FreeCrank { engine, load_torque: InputPolynomial::held(Inputs::default().load_torque) };
             Drive::Free(Self::free(system, &geometry, &start, angle, start_time, speed, &options)?)
         };
         Ok(Self { drive, geometry, start, started: false, options, impulse_work: 0.0, cycles: 0.0 })
@@ -210,8 +210,8 @@ impl CrankTrain {
         }
         match &mut self.drive {
             Drive::Prescribed(s) => {
-                let (sys, now) = (s.system(), s.time());
-                *s.system_mut() = PrescribedCrank::new(sys.engine.clone(), angle - 4.0 * PI * cycles, now, sys.speed());
+                let now = s.time();
+                *s.system_mut() = s.system().rebased(now, angle - 4.0 * PI * cycles);
             }
             Drive::Free(s) => s.shift(0.0, &Vector3::new(-4.0 * PI * cycles, 0.0, 0.0)).map_err(dynamics_error)?,
         }
@@ -293,25 +293,31 @@ impl EngineModel for CrankTrain {
         )
     }
 
-    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
-        for (name, value) in
-            [("crank_speed", inputs.crank_speed), ("gas_pressure", inputs.gas_pressure), ("load_torque", inputs.load_torque)]
-        {
-            check(value.is_finite(), || format!("input {name} ({value}) must be finite"))?;
+    fn advance_interpolated(
+        &mut self,
+        inputs: &Inputs,
+        derivatives: &InputDerivatives,
+        t_end: f64,
+        events: &mut Vec<EngineEvent>,
+    ) -> Result<(), ModelError> {
+        let now = self.time();
+        let [speed, pressure, load] = derivatives.polynomials(inputs, now);
+        for (name, u) in [("crank_speed", speed), ("gas_pressure", pressure), ("load_torque", load)] {
+            let finite = [u.value, u.slope, u.curvature].iter().all(|x| x.is_finite());
+            check(finite, || format!("input {name} ({}, derivatives {}, {}) must be finite", u.value, u.slope, u.curvature))?;
         }
         if !self.started {
             self.start(inputs.crank_speed)?;
         }
-        self.engine_mut().hold_pressure(inputs.gas_pressure);
+        self.engine_mut().hold_pressure(pressure);
         self.keep_angle_within_a_cycle()?;
         match &mut self.drive {
             Drive::Prescribed(s) => {
-                let now = s.time();
-                s.system_mut().hold_speed(now, inputs.crank_speed);
+                s.system_mut().hold_speed(speed);
                 s.advance(t_end).map_err(dynamics_error)?;
             }
             Drive::Free(s) => {
-                s.system_mut().load_torque = inputs.load_torque;
+                s.system_mut().load_torque = load;
                 s.advance(t_end).map_err(dynamics_error)?;
             }
         }
@@ -349,21 +355,21 @@ impl EngineModel for CrankTrain {
         let gaps = linkage.gaps(&phi);
         out.skirt_top_lateral = 0.5 * (gaps[0] - gaps[2]);
         out.skirt_bottom_lateral = 0.5 * (gaps[1] - gaps[3]);
-        out.gas_pressure_acting = self.engine().pressure(phi[0]);
+        out.gas_pressure_acting = self.engine().pressure(self.time(), phi[0]);
         out.piston_axial = pin.y;
         out.crank_angle = phi[0];
         out.rod_angle = phi[1];
         out.crank_torque = match &self.drive {
             Drive::Prescribed(s) => s.system().drive_torque(s.time(), s.position(), s.velocity(), &s.acceleration(), &forces),
             // The external torque on the crank: the load, opposing rotation.
-            Drive::Free(s) => -s.system().load_torque,
+            Drive::Free(s) => -s.system().load_torque.at(s.time()),
         };
         [out.contact_state_1, out.contact_state_2, out.contact_state_3, out.contact_state_4] = in_contact.map(i32::from);
         [out.contact_force_1, out.contact_force_2, out.contact_force_3, out.contact_force_4] = [forces[0], forces[1], forces[2], forces[3]];
         // K1, K2 touch the −D/2 wall (push toward +x), K3, K4 the +D/2 wall.
         out.side_force = forces[0] + forces[1] - forces[2] - forces[3];
         out.crank_speed_actual = match &self.drive {
-            Drive::Prescribed(s) => s.system().speed(),
+            Drive::Prescribed(s) => s.system().speed(s.time()),
             Drive::Free(_) => phid[0],
         };
         out.kinetic_energy = linkage.energy(&phi, &phid).0;
