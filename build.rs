@@ -280,7 +280,7 @@ fn model_description(table: &Table, variables: &[Resolved], guid: &str) -> io::R
             ("modelIdentifier", MODEL_NAME),
             ("needsExecutionTool", "false"),
             ("canHandleVariableCommunicationStepSize", "true"),
-            ("canInterpolateInputs", "false"),
+            ("canInterpolateInputs", "true"),
             ("maxOutputDerivativeOrder", "0"),
             ("canRunAsynchronuously", "false"),
             ("canBeInstantiatedOnlyOncePerProcess", "false"),

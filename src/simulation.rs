@@ -9,7 +9,7 @@ mod statistics;
 pub use impact_log::ImpactLog;
 pub use model_variant::ModelVariant;
 
-use crate::models::{EngineEvent, EngineModel, Inputs, ModelError, Outputs, Parameters};
+use crate::models::{EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters};
 use serde::{Deserialize, Serialize};
 use statistics::ImpactStatistics;
 
@@ -94,6 +94,12 @@ impl<E: EngineModel> Simulation<E> {
 
     /// Advances to exactly `t_end` with `inputs` held. All or nothing: on error `self` is unchanged.
     pub fn step(&mut self, inputs: &Inputs, t_end: f64) -> Result<(), ModelError> {
+        self.step_interpolated(inputs, &InputDerivatives::default(), t_end)
+    }
+
+    /// As [`Self::step`], the inputs following their values and `derivatives` (at the current time)
+    /// as polynomials in time.
+    pub fn step_interpolated(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Result<(), ModelError> {
         let held = [("crank_speed", inputs.crank_speed), ("gas_pressure", inputs.gas_pressure), ("load_torque", inputs.load_torque)];
         if let Some((name, value)) = held.iter().find(|(_, v)| !v.is_finite()) {
             return Err(ModelError(format!("input {name} = {value} is not finite")));
@@ -108,7 +114,7 @@ impl<E: EngineModel> Simulation<E> {
         let before = self.model.clone();
         let mut events = std::mem::take(&mut self.spare_events.0);
         events.clear();
-        match self.try_step(inputs, t_end, &mut events) {
+        match self.try_step(inputs, derivatives, t_end, &mut events) {
             Ok((outputs, statistics)) => {
                 (self.time, self.outputs, self.statistics) = (t_end, outputs, statistics);
                 self.spare_events.0 = std::mem::replace(&mut self.step_events, events);
@@ -125,9 +131,15 @@ impl<E: EngineModel> Simulation<E> {
     /// The fallible part of [`Self::step`]: advances the model into `events` and returns the
     /// outputs and statistics after it. Changes nothing else of `self` (the impact log only once
     /// nothing can fail any more).
-    fn try_step(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(Outputs, ImpactStatistics), ModelError> {
+    fn try_step(
+        &mut self,
+        inputs: &Inputs,
+        derivatives: &InputDerivatives,
+        t_end: f64,
+        events: &mut Vec<EngineEvent>,
+    ) -> Result<(Outputs, ImpactStatistics), ModelError> {
         let failed = |what: &str, e: &dyn std::fmt::Display| ModelError(format!("step from t = {} s to {t_end} s {what}: {e}", self.time));
-        self.model.advance(inputs, t_end, events).map_err(|e| failed("failed", &e))?;
+        self.model.advance_interpolated(inputs, derivatives, t_end, events).map_err(|e| failed("failed", &e))?;
         let mut statistics = self.statistics.clone();
         let mut outputs = self.outputs.clone();
         Self::write_outputs(&self.model, &mut statistics, events, &mut outputs);

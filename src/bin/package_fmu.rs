@@ -42,12 +42,14 @@ fn write_fmu(out: &Path, binary: &[u8]) -> zip::result::ZipResult<()> {
     let text = SimpleFileOptions::default().compression_method(CompressionMethod::Deflated);
     let executable = text.unix_permissions(0o755);
     let documentation = documentation();
-    let files: [(&str, &[u8], SimpleFileOptions); 5] = [
+    let files: [(&str, &[u8], SimpleFileOptions); 7] = [
         ("modelDescription.xml", MODEL_DESCRIPTION_XML.as_bytes(), text),
         ("binaries/linux64/PistonSlap.so", binary, executable),
         ("documentation/index.html", documentation.as_bytes(), text),
         ("documentation/geometry.svg", GEOMETRY_SVG.as_bytes(), text),
         ("resources/README.txt", RESOURCES_README.as_bytes(), text),
+        ("resources/full_load.csv", FULL_LOAD_TRACE.as_bytes(), text),
+        ("resources/motored.csv", MOTORED_TRACE.as_bytes(), text),
     ];
     for (name, bytes, options) in files {
         zip.start_file(name, options)?;
@@ -57,11 +59,10 @@ fn write_fmu(out: &Path, binary: &[u8]) -> zip::result::ZipResult<()> {
     Ok(())
 }
 
-const RESOURCES_README: &str = "\
-PistonSlap needs no resource files: the built-in four-stroke pressure curve (pressure_source = 2) is
-computed in the binary. documentation/index.html describes it (section \"Gas pressure\"), with the
-model's conventions and variables.
-";
+/// The example pressure traces (`pressure_source = 3`, `pressure_trace = "full_load.csv"`) and what they are.
+const RESOURCES_README: &str = include_str!("../../resources/README.txt");
+const FULL_LOAD_TRACE: &str = include_str!("../../resources/full_load.csv");
+const MOTORED_TRACE: &str = include_str!("../../resources/motored.csv");
 
 fn escape(s: &str) -> String {
     s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")

@@ -186,13 +186,13 @@ pub unsafe extern "C" fn fmi2GetDirectionalDerivative(
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetRealInputDerivatives(
     c: fmi2Component,
-    _vr: *const fmi2ValueReference,
-    _n: usize,
-    _order: *const fmi2Integer,
-    _value: *const fmi2Real,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    order: *const fmi2Integer,
+    value: *const fmi2Real,
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_real_input_derivatives::<ModelVariant>(c) }
+    unsafe { functions::set_real_input_derivatives::<ModelVariant>(c, vr, n, order, value) }
 }
 
 #[no_mangle]

@@ -160,7 +160,7 @@ pub unsafe fn instantiate<E: Model>(
         // SAFETY: NULL or a NUL-terminated string (the contract).
         let shown = if name.is_null() { "(null)".into() } else { unsafe { CStr::from_ptr(name) }.to_string_lossy() };
         let logger = Logger::new(callback, functions.component_environment, &shown, boolean(logging_on));
-        let check = || -> Outcome {
+        let check = || -> Outcome<Option<std::path::PathBuf>> {
             // SAFETY: the strings are NULL or NUL-terminated (the contract).
             let (name, guid, resources) =
                 unsafe { (string(name, "instanceName")?, string(guid, "fmuGUID")?, string(resource_location, "fmuResourceLocation")?) };
@@ -178,11 +178,12 @@ pub unsafe fn instantiate<E: Model>(
             if !resources.starts_with("file:") {
                 return Err(Refusal::error(format!("fmuResourceLocation {resources:?} is not a file URI")));
             }
-            Ok(())
+            // A host may unpack the FMU where no local path reaches it: bare file names then stay as given.
+            Ok(super::resources::directory(resources))
         };
         match check() {
-            Ok(()) => {
-                let component = Component { tag: INSTANCE_TAG, instance: Instance::<E>::new(logger), strings: Vec::new() };
+            Ok(resources) => {
+                let component = Component { tag: INSTANCE_TAG, instance: Instance::<E>::new(logger, resources), strings: Vec::new() };
                 Box::into_raw(Box::new(component)) as fmi2Component
             }
             Err(refusal) => {
@@ -476,10 +477,21 @@ pub unsafe fn get_directional_derivative<E: Model>(c: fmi2Component) -> Status {
 }
 
 /// # Safety
-/// As [`call`].
-pub unsafe fn set_real_input_derivatives<E: Model>(c: fmi2Component) -> Status {
+/// As [`call`]; `vr`, `order` and `value` are NULL or point to `n` elements.
+pub unsafe fn set_real_input_derivatives<E: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    order: *const fmi2Integer,
+    value: *const fmi2Real,
+) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { unsupported::<E>(c, fmi2SetRealInputDerivatives, "inputs are held over a step (canInterpolateInputs = false)") }
+    unsafe {
+        run::<E>(c, fmi2SetRealInputDerivatives, |comp| {
+            let (vrs, orders, values) = (slice(vr, n, "vr")?, slice(order, n, "order")?, slice(value, n, "value")?);
+            comp.instance.set_input_derivatives(vrs, orders, values)
+        })
+    }
 }
 
 /// # Safety

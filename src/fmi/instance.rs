@@ -11,9 +11,10 @@ use super::logger::Logger;
 use super::state_bytes;
 use super::state_machine::Mode::{self, *};
 use super::types::Status;
-use crate::models::{EngineModel, Inputs, ModelError, Parameters};
+use crate::models::{EngineModel, InputDerivatives, Inputs, ModelError, Parameters};
 use crate::simulation::Simulation;
 use serde::{de::DeserializeOwned, Deserialize, Serialize};
+use std::path::PathBuf;
 
 /// What the FMU layer needs of an engine model: run it, and save it in an FMU state.
 pub trait Model: EngineModel + Serialize + DeserializeOwned {}
@@ -54,11 +55,20 @@ pub struct Core<E> {
     stop_time: Option<f64>,
     parameters: Parameters,
     inputs: Inputs,
+    /// Set by fmi2SetRealInputDerivatives, each input's reset by its next fmi2SetReal.
+    derivatives: InputDerivatives,
 }
 
 impl<E> Default for Core<E> {
     fn default() -> Self {
-        Self { phase: Phase::Instantiated, start_time: 0.0, stop_time: None, parameters: Parameters::default(), inputs: Inputs::default() }
+        Self {
+            phase: Phase::Instantiated,
+            start_time: 0.0,
+            stop_time: None,
+            parameters: Parameters::default(),
+            inputs: Inputs::default(),
+            derivatives: InputDerivatives::default(),
+        }
     }
 }
 
@@ -113,14 +123,26 @@ pub struct Instance<E> {
     /// Set by a model failure (Error) or a caught panic (Fatal); overrides the phase.
     failure: Option<Mode>,
     core: Core<E>,
+    /// The FMU's `resources/` directory, where bare file names of parameters are looked up.
+    resources: Option<PathBuf>,
 }
+
+/// The highest input derivative order fmi2SetRealInputDerivatives takes (the inputs follow polynomials
+/// of this degree over a step).
+const MAX_INPUT_DERIVATIVE_ORDER: i32 = 2;
 
 /// Relative tolerance on the communication point: hosts accumulate t += h in floating point.
 const TIME_TOLERANCE: f64 = 1e-9;
 
 impl<E: Model> Instance<E> {
-    pub fn new(logger: Logger) -> Self {
-        Self { logger, failure: None, core: Core::default() }
+    pub fn new(logger: Logger, resources: Option<PathBuf>) -> Self {
+        Self { logger, failure: None, core: Core::default(), resources }
+    }
+
+    /// The parameters with a bare `pressure_trace` file name turned into its path in the resources.
+    fn resolved_parameters(&self) -> Parameters {
+        let trace = super::resources::resolve(&self.core.parameters.pressure_trace, self.resources.as_deref());
+        Parameters { pressure_trace: trace, ..self.core.parameters.clone() }
     }
 
     pub fn mode(&self) -> Mode {
@@ -156,7 +178,7 @@ impl<E: Model> Instance<E> {
 
     /// Builds the simulation from the parameters: bad parameters are a failure naming the parameter.
     pub fn exit_initialization_mode(&mut self) -> Outcome {
-        let sim = Simulation::start(&self.core.parameters, self.core.start_time).map_err(|e| self.fail(e))?;
+        let sim = Simulation::start(&self.resolved_parameters(), self.core.start_time).map_err(|e| self.fail(e))?;
         self.core.phase = Phase::StepComplete(sim);
         Ok(())
     }
@@ -183,11 +205,42 @@ impl<E: Model> Instance<E> {
         let (p, i) = (&mut self.core.parameters, &mut self.core.inputs);
         for (vr, value) in values {
             let missing = || Refusal::error(format!("value reference {vr} has no field")); // excluded above
+                                                                                           // A new value of an input ends the polynomial its derivatives described (FMI 2.0 §4.2.1).
+            if let Some(d) = description::variable(*vr).and_then(|v| self.core.derivatives.of_mut(v.name)) {
+                *d = [0.0; 2];
+            }
             match value {
                 Value::Real(x) => *description::real_mut(*vr, p, i).ok_or_else(missing)? = *x,
                 Value::Integer(x) => *description::integer_mut(*vr, p, i).ok_or_else(missing)? = *x,
                 Value::String(s) => *description::string_mut(*vr, p, i).ok_or_else(missing)? = (*s).to_string(),
             }
+        }
+        Ok(())
+    }
+
+    /// fmi2SetRealInputDerivatives: the `order`-th time derivative (1 or 2) of each Real input `vr`,
+    /// checked all before any is set. The inputs follow these polynomials over the next steps until
+    /// their next fmi2SetReal.
+    pub fn set_input_derivatives(&mut self, vrs: &[u32], orders: &[i32], values: &[f64]) -> Outcome {
+        for ((&vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
+            let v = typed_variable(vr, Kind::Real)?;
+            if v.causality != Causality::Input {
+                return Err(Refusal::error(format!("{} (value reference {vr}) is not an input: it has no input derivatives", v.name)));
+            }
+            if !(1..=MAX_INPUT_DERIVATIVE_ORDER).contains(&order) {
+                return Err(Refusal::error(format!(
+                    "derivative order {order} of {} refused: orders 1..={MAX_INPUT_DERIVATIVE_ORDER} are supported",
+                    v.name
+                )));
+            }
+            if !value.is_finite() {
+                return Err(Refusal::error(format!("derivative {order} of {} = {value} refused: values must be finite", v.name)));
+            }
+        }
+        for ((&vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
+            let name = description::variable(vr).map_or("", |v| v.name);
+            let d = self.core.derivatives.of_mut(name).ok_or_else(|| Refusal::error(format!("{name} has no input derivatives")))?;
+            d[order as usize - 1] = value;
         }
         Ok(())
     }
@@ -227,7 +280,7 @@ impl<E: Model> Instance<E> {
         let outputs = match &self.core.phase {
             Phase::StepComplete(sim) | Phase::Terminated(sim) => sim.outputs(),
             _ if vrs.iter().any(|&vr| is_output(vr)) => {
-                preview = Simulation::<E>::new(&self.core.parameters, self.core.start_time)
+                preview = Simulation::<E>::new(&self.resolved_parameters(), self.core.start_time)
                     .map_err(|e| Refusal::error(format!("cannot compute the initial outputs: {e}")))?;
                 preview.outputs()
             }
@@ -273,7 +326,7 @@ impl<E: Model> Instance<E> {
         if let Some(stop) = self.core.stop_time.filter(|s| t_end > s + TIME_TOLERANCE * s.abs().max(1.0)) {
             return Err(Refusal::error(format!("step to {t_end} s goes beyond stopTime = {stop} s")));
         }
-        match sim.step(&self.core.inputs, t_end) {
+        match sim.step_interpolated(&self.core.inputs, &self.core.derivatives, t_end) {
             Ok(()) => {
                 for e in sim.step_events() {
                     self.logger.debug("logEvents", || {

@@ -6,6 +6,7 @@
 //! - `state_machine`: the states and the one table of the states each function is allowed in;
 //! - `reentry`: refuses a call into an instance from inside its own call (its logger calling back);
 //! - `instance`: what each function does, in safe code;
+//! - `resources`: the FMU's resources directory and the lookup of bare file names in it;
 //! - `description`: the variable table generated from `modelDescription/`;
 //! - `state_bytes`: the serialized FMU state.
 
@@ -16,6 +17,7 @@ mod instance;
 mod logger;
 mod pointers;
 mod reentry;
+mod resources;
 mod state_bytes;
 mod state_machine;
 pub mod types;

@@ -1,14 +1,17 @@
 //! The crank train as a `System` for the core, in its two crank modes.
 //!
-//! - [`PrescribedCrank`]: φ1(t) = φ1_ref + ω (t − t_ref) is given, q = (φ2, φ3). Rows 2–3 of the linkage
-//!   equations with φ̇1 = ω, φ̈1 = 0; the gaps become rheonomic: `∂h/∂t = (∂h/∂φ1) ω` and d keeps the ω²
-//!   term. The crank row then yields the drive torque.
+//! - [`PrescribedCrank`]: φ1(t) = φ1_ref + ∫ω is given, q = (φ2, φ3), with ω(t) the `crank_speed` input
+//!   (held, or a polynomial in t when the host gives its derivatives). Rows 2–3 of the linkage equations
+//!   with φ̇1 = ω and φ̈1 = ω̇ (the crank's inertia coupling moved to the right-hand side); the gaps become
+//!   rheonomic: `∂h/∂t = (∂h/∂φ1) ω` and d gains `(∂h/∂φ1) ω̇` beside the ω² terms. The crank row then
+//!   yields the drive torque.
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
 use super::crank_linkage::{Linkage, Loads, Trig};
 use super::last_value::LastValue;
 use super::pressure::FourStrokePressure;
-use super::{Inputs, Parameters};
+use super::pressure_trace::PressureTrace;
+use super::{InputPolynomial, Inputs, ModelError, Parameters};
 use crate::dynamics::{Evaluation, System};
 use nalgebra::{Matrix2, Matrix3, Matrix4x2, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -18,8 +21,10 @@ use serde::{Deserialize, Serialize};
 pub enum GasPressure {
     /// The built-in four-stroke curve of crank angle.
     BuiltIn(FourStrokePressure),
-    /// The host's `gas_pressure` input, Pa, held over a step.
-    Held(f64),
+    /// A measured trace of crank angle.
+    Trace(PressureTrace),
+    /// The host's `gas_pressure` input, Pa, over a step.
+    Held(InputPolynomial),
 }
 
 /// What drives the links apart from the crank motion: linkage, pressure, restitution.
@@ -38,57 +43,61 @@ pub struct Engine {
 struct Crank {
     sin: f64,
     cos: f64,
-    /// The built-in curve's gauge pressure; 0 with a held pressure.
+    /// The gauge pressure of the curve or trace at this angle; 0 with a held pressure.
     curve: f64,
 }
 
 impl Engine {
-    /// The engine of validated parameters; a held pressure starts at the input's default.
-    pub fn new(params: &Parameters) -> Self {
+    /// The engine of validated parameters; a held pressure starts at the input's default. Reads the
+    /// pressure trace (`pressure_source = 3`), refusing a bad file.
+    pub fn new(params: &Parameters) -> Result<Self, ModelError> {
         let pressure = match params.pressure_source {
-            1 => GasPressure::Held(Inputs::default().gas_pressure),
+            1 => GasPressure::Held(InputPolynomial::held(Inputs::default().gas_pressure)),
+            3 => GasPressure::Trace(PressureTrace::read(&params.pressure_trace, params.crankcase_pressure)?),
             _ => GasPressure::BuiltIn(FourStrokePressure::new(params.peak_pressure, params.rod_length / params.crank_radius)),
         };
-        Self {
+        Ok(Self {
             linkage: Linkage::new(params),
             pressure,
             crown_area: 0.25 * std::f64::consts::PI * params.piston_diameter * params.piston_diameter,
             restitution: params.restitution,
-        }
+        })
     }
 
-    /// Whether holding `pressure` would change nothing: it is the held input already, or the
-    /// pressure comes from the built-in curve.
-    pub fn holds(&self, pressure: f64) -> bool {
-        !matches!(self.pressure, GasPressure::Held(p) if p != pressure)
+    /// Whether taking `pressure` would change nothing: it is the held input already, or the
+    /// pressure comes from the built-in curve or a trace.
+    pub fn holds(&self, pressure: &InputPolynomial) -> bool {
+        !matches!(&self.pressure, GasPressure::Held(p) if !p.same_as(pressure))
     }
 
-    /// Holds the `gas_pressure` input, if the pressure comes from it.
-    pub fn hold_pressure(&mut self, pressure: f64) {
+    /// Takes the `gas_pressure` input over the next step, if the pressure comes from it.
+    pub fn hold_pressure(&mut self, pressure: InputPolynomial) {
         if let GasPressure::Held(p) = &mut self.pressure {
             *p = pressure;
         }
     }
 
-    /// Gas force toward the crank at crank angle φ1, N.
-    pub fn gas_force(&self, crank_angle: f64) -> f64 {
-        self.gas_force_at(&self.crank(crank_angle))
+    /// Gas force toward the crank at time t and crank angle φ1, N.
+    pub fn gas_force(&self, t: f64, crank_angle: f64) -> f64 {
+        self.gas_force_at(t, &self.crank(crank_angle))
     }
 
-    /// Gauge gas pressure on the crown at crank angle φ1, Pa: the held input or the curve.
-    pub fn pressure(&self, crank_angle: f64) -> f64 {
-        self.pressure_at(&self.crank(crank_angle))
+    /// Gauge gas pressure on the crown at time t and crank angle φ1, Pa: the input, the curve or the trace.
+    pub fn pressure(&self, t: f64, crank_angle: f64) -> f64 {
+        self.pressure_at(t, &self.crank(crank_angle))
     }
 
-    fn pressure_at(&self, crank: &Crank) -> f64 {
+    #[inline(always)]
+    fn pressure_at(&self, t: f64, crank: &Crank) -> f64 {
         match &self.pressure {
-            GasPressure::BuiltIn(_) => crank.curve,
-            GasPressure::Held(p) => *p,
+            GasPressure::BuiltIn(_) | GasPressure::Trace(_) => crank.curve,
+            GasPressure::Held(p) => p.at(t),
         }
     }
 
-    fn gas_force_at(&self, crank: &Crank) -> f64 {
-        self.pressure_at(crank) * self.crown_area
+    #[inline(always)]
+    fn gas_force_at(&self, t: f64, crank: &Crank) -> f64 {
+        self.pressure_at(t, crank) * self.crown_area
     }
 
     /// Inlined, with the cache's lookup (`PrescribedCrank::crank`, `LastValue::get_or`), into
@@ -98,64 +107,93 @@ impl Engine {
         let (sin, cos) = super::trig::sin_cos(angle);
         let curve = match &self.pressure {
             GasPressure::BuiltIn(curve) => curve.gauge_at(angle, sin, cos),
+            GasPressure::Trace(trace) => trace.gauge(angle),
             GasPressure::Held(_) => 0.0,
         };
         Crank { sin, cos, curve }
     }
 
-    /// The linkage's evaluation at (φ, φ̇) with the gas force at the crank angle of `crank` and
-    /// the load torque `load_torque`.
+    /// The linkage's evaluation at (t, φ, φ̇) with the gas force at t and the crank angle of `crank`
+    /// and the load torque `load_torque`.
     #[inline(always)]
-    fn evaluate(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> Evaluation<3, 4> {
-        let (trig, loads) = self.trig_and_loads(phi, load_torque, &crank);
+    fn evaluate(&self, t: f64, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> Evaluation<3, 4> {
+        let (trig, loads) = self.trig_and_loads(t, phi, load_torque, &crank);
         self.linkage.evaluate_with(&trig, phid, loads)
     }
 
     /// M and f of [`Self::evaluate`] alone.
     #[inline(always)]
-    fn inertia_and_force(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> (Matrix3<f64>, Vector3<f64>) {
-        let (trig, loads) = self.trig_and_loads(phi, load_torque, &crank);
+    fn inertia_and_force(
+        &self,
+        t: f64,
+        phi: &Vector3<f64>,
+        phid: &Vector3<f64>,
+        load_torque: f64,
+        crank: Crank,
+    ) -> (Matrix3<f64>, Vector3<f64>) {
+        let (trig, loads) = self.trig_and_loads(t, phi, load_torque, &crank);
         self.linkage.inertia_and_force_with(&trig, phid, loads)
     }
 
     #[inline(always)]
-    fn trig_and_loads(&self, phi: &Vector3<f64>, load_torque: f64, crank: &Crank) -> (Trig, Loads) {
-        (Trig::with_crank((crank.sin, crank.cos), phi), Loads { gas_force: self.gas_force_at(crank), load_torque })
+    fn trig_and_loads(&self, t: f64, phi: &Vector3<f64>, load_torque: f64, crank: &Crank) -> (Trig, Loads) {
+        (Trig::with_crank((crank.sin, crank.cos), phi), Loads { gas_force: self.gas_force_at(t, crank), load_torque })
     }
 }
 
-/// Rod and piston with the crank turning at a held speed.
+/// Rod and piston with the crank turning at the speed of the `crank_speed` input.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PrescribedCrank {
     pub engine: Engine,
+    /// φ1 at the speed's reference time.
     angle_ref: f64,
-    time_ref: f64,
-    speed: f64,
+    speed: InputPolynomial,
     /// The crank's terms at the last crank angle evaluated (RK4's paired stages share it).
     #[serde(skip)]
     last_crank: LastValue<Crank>,
 }
 
 impl PrescribedCrank {
+    /// The crank at `crank_angle` at `time`, turning at `speed` held.
     pub fn new(engine: Engine, crank_angle: f64, time: f64, speed: f64) -> Self {
-        Self { engine, angle_ref: crank_angle, time_ref: time, speed, last_crank: LastValue::default() }
+        let speed = InputPolynomial { time, ..InputPolynomial::held(speed) };
+        Self { engine, angle_ref: crank_angle, speed, last_crank: LastValue::default() }
     }
 
+    /// φ1(t): the speed integrated exactly.
     pub fn crank_angle(&self, t: f64) -> f64 {
-        self.angle_ref + self.speed * (t - self.time_ref)
+        self.angle_ref + self.speed.integral(t)
     }
 
-    pub fn speed(&self) -> f64 {
-        self.speed
+    /// ω(t).
+    pub fn speed(&self, t: f64) -> f64 {
+        self.speed.at(t)
     }
 
-    /// Holds a new crank speed from time `t` on, keeping the crank angle continuous.
-    pub fn hold_speed(&mut self, t: f64, speed: f64) {
-        if speed != self.speed {
-            self.angle_ref = self.crank_angle(t);
-            self.time_ref = t;
+    /// ω̇(t).
+    pub fn acceleration(&self, t: f64) -> f64 {
+        self.speed.rate(t)
+    }
+
+    /// Follows `speed` (about its own time) from then on, keeping the crank angle continuous. A held
+    /// speed equal to the one held keeps the reference point, so results do not depend on how often
+    /// a host repeats an unchanged input.
+    pub fn hold_speed(&mut self, speed: InputPolynomial) {
+        if !self.holds_speed(&speed) {
+            self.angle_ref = self.crank_angle(speed.time);
             self.speed = speed;
         }
+    }
+
+    /// Whether taking `speed` would change nothing.
+    pub fn holds_speed(&self, speed: &InputPolynomial) -> bool {
+        speed.same_as(&self.speed)
+    }
+
+    /// The same crank with the crank angle `angle` at time `t` (a whole number of cycles away from
+    /// its own), the speed's reference moved to `t`.
+    pub fn rebased(&self, t: f64, angle: f64) -> Self {
+        Self { engine: self.engine.clone(), angle_ref: angle, speed: self.speed.from(t), last_crank: LastValue::default() }
     }
 
     /// The crank terms at `angle`, from the cache when it is the last angle evaluated (inlined:
@@ -165,15 +203,15 @@ impl PrescribedCrank {
         self.last_crank.get_or(angle, || self.engine.crank(angle))
     }
 
-    /// Gauge gas pressure on the crown at crank angle φ1 within the cycle, Pa: the engine's, from
-    /// the cache when it is the angle last evaluated (the end of the last step).
-    pub fn pressure(&self, angle: f64) -> f64 {
-        self.engine.pressure_at(&self.crank(angle))
+    /// Gauge gas pressure on the crown at time t and crank angle φ1 within the cycle, Pa: the
+    /// engine's, from the cache when it is the angle last evaluated (the end of the last step).
+    pub fn pressure(&self, t: f64, angle: f64) -> f64 {
+        self.engine.pressure_at(t, &self.crank(angle))
     }
 
     /// Full coordinates and velocities at `(t, q, q̇)`.
     pub fn full_state(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Vector3<f64>, Vector3<f64>) {
-        (Vector3::new(self.crank_angle(t), q[0], q[1]), Vector3::new(self.speed, qd[0], qd[1]))
+        (Vector3::new(self.crank_angle(t), q[0], q[1]), Vector3::new(self.speed.at(t), qd[0], qd[1]))
     }
 
     /// Linkage evaluation in full coordinates. Inlined, with what it calls, into the reduced
@@ -181,34 +219,48 @@ impl PrescribedCrank {
     #[inline(always)]
     pub fn evaluate_full(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<3, 4> {
         let (phi, phid) = self.full_state(t, q, qd);
-        self.engine.evaluate(&phi, &phid, 0.0, self.crank(phi[0]))
+        self.engine.evaluate(t, &phi, &phid, 0.0, self.crank(phi[0]))
     }
 
-    /// Torque the drive applies to the crank: the crank row `M_1· φ̈ − f_1 − (Jᵀλ)_1` with φ̈1 = 0.
+    /// Torque the drive applies to the crank: the crank row `M_1· φ̈ − f_1 − (Jᵀλ)_1` with φ̈1 = ω̇.
     pub fn drive_torque(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>, qdd: &Vector2<f64>, forces: &Vector4<f64>) -> f64 {
         let full = self.evaluate_full(t, q, qd);
-        full.mass[(0, 1)] * qdd[0] + full.mass[(0, 2)] * qdd[1] - full.force[0] - full.gap_jacobian.column(0).dot(forces)
+        let crank = if self.speed.is_held() { 0.0 } else { full.mass[(0, 0)] * self.acceleration(t) };
+        crank + full.mass[(0, 1)] * qdd[0] + full.mass[(0, 2)] * qdd[1] - full.force[0] - full.gap_jacobian.column(0).dot(forces)
+    }
+
+    /// The rod and piston rows of the full M and f at t, the crank's angular acceleration ω̇ moved
+    /// into the force: `f_r − M_r1 ω̇` (nothing to move while the speed is held).
+    #[inline(always)]
+    fn reduced(&self, t: f64, mass: &Matrix3<f64>, force: &Vector3<f64>) -> (Matrix2<f64>, Vector2<f64>) {
+        let (m, mut f) = rod_and_piston_rows(mass, force);
+        if !self.speed.is_held() {
+            f -= mass.fixed_view::<2, 1>(1, 0) * self.acceleration(t);
+        }
+        (m, f)
     }
 }
 
 impl System<2, 4> for PrescribedCrank {
     fn evaluate(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
         let full = self.evaluate_full(t, q, qd);
-        let (mass, force) = rod_and_piston_rows(&full.mass, &full.force);
+        let (mass, force) = self.reduced(t, &full.mass, &full.force);
+        let crank_column = full.gap_jacobian.column(0);
+        let gap_bias = if self.speed.is_held() { full.gap_bias } else { full.gap_bias + crank_column * self.acceleration(t) };
         Evaluation {
             mass,
             force,
             gap: full.gap,
             gap_jacobian: Matrix4x2::from_columns(&[full.gap_jacobian.column(1), full.gap_jacobian.column(2)]),
-            gap_time_rate: full.gap_jacobian.column(0) * self.speed,
-            gap_bias: full.gap_bias,
+            gap_time_rate: crank_column * self.speed.at(t),
+            gap_bias,
         }
     }
 
     fn inertia_and_force(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Matrix2<f64>, Vector2<f64>) {
         let (phi, phid) = self.full_state(t, q, qd);
-        let (mass, force) = self.engine.inertia_and_force(&phi, &phid, 0.0, self.crank(phi[0]));
-        rod_and_piston_rows(&mass, &force)
+        let (mass, force) = self.engine.inertia_and_force(t, &phi, &phid, 0.0, self.crank(phi[0]));
+        self.reduced(t, &mass, &force)
     }
 
     fn coordinate_lengths(&self) -> Vector2<f64> {
@@ -227,21 +279,21 @@ fn rod_and_piston_rows(mass: &Matrix3<f64>, force: &Vector3<f64>) -> (Matrix2<f6
     (mass.fixed_view::<2, 2>(1, 1).into_owned(), force.fixed_rows::<2>(1).into_owned())
 }
 
-/// Crank, rod and piston, the crank loaded by a held torque.
+/// Crank, rod and piston, the crank loaded by the `load_torque` input.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct FreeCrank {
     pub engine: Engine,
     /// N·m, opposing rotation.
-    pub load_torque: f64,
+    pub load_torque: InputPolynomial,
 }
 
 impl System<3, 4> for FreeCrank {
-    fn evaluate(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> Evaluation<3, 4> {
-        self.engine.evaluate(q, qd, self.load_torque, self.engine.crank(q[0]))
+    fn evaluate(&self, t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> Evaluation<3, 4> {
+        self.engine.evaluate(t, q, qd, self.load_torque.at(t), self.engine.crank(q[0]))
     }
 
-    fn inertia_and_force(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> (Matrix3<f64>, Vector3<f64>) {
-        self.engine.inertia_and_force(q, qd, self.load_torque, self.engine.crank(q[0]))
+    fn inertia_and_force(&self, t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> (Matrix3<f64>, Vector3<f64>) {
+        self.engine.inertia_and_force(t, q, qd, self.load_torque.at(t), self.engine.crank(q[0]))
     }
 
     fn coordinate_lengths(&self) -> Vector3<f64> {
@@ -259,12 +311,26 @@ mod tests {
     use crate::models::Parameters;
 
     fn prescribed() -> PrescribedCrank {
-        PrescribedCrank::new(Engine::new(&Parameters::default()), 0.4, 0.01, 125.66)
+        PrescribedCrank::new(Engine::new(&Parameters::default()).unwrap(), 0.4, 0.01, 125.66)
+    }
+
+    /// The crank speeding up and the pressure rising along polynomials in time, as input derivatives give them.
+    fn ramping() -> PrescribedCrank {
+        let mut sys =
+            PrescribedCrank::new(Engine::new(&Parameters { pressure_source: 1, ..Parameters::default() }).unwrap(), 0.4, 0.01, 1.0);
+        sys.hold_speed(InputPolynomial { time: 0.01, value: 125.66, slope: 3000.0, curvature: -2e5 });
+        sys.engine.hold_pressure(InputPolynomial { time: 0.01, value: 2e6, slope: 4e8, curvature: 1e10 });
+        sys
     }
 
     #[test]
     fn rheonomic_gap_rates_match_finite_differences_in_time() {
-        let sys = prescribed();
+        for sys in [prescribed(), ramping()] {
+            rheonomic_gap_rates_of(&sys);
+        }
+    }
+
+    fn rheonomic_gap_rates_of(sys: &PrescribedCrank) {
         let (t, q, qd) = (0.013, Vector2::new(-0.05, 0.0007), Vector2::new(-28.0, 3.0));
         let ev = sys.evaluate(t, &q, &qd);
         // ḣ = J q̇ + ∂h/∂t and d = d²/dτ² h(q + q̇τ, t + τ) along a path with q̈ = 0.
@@ -290,7 +356,7 @@ mod tests {
         // new speed: every evaluation is that of a system that never evaluated before.
         for pressure_source in [1, 2] {
             let p = Parameters { pressure_source, ..Parameters::default() };
-            let mut sys = PrescribedCrank::new(Engine::new(&p), 0.1, 0.0, 125.66);
+            let mut sys = PrescribedCrank::new(Engine::new(&p).unwrap(), 0.1, 0.0, 125.66);
             let (q, qd) = (Vector2::new(0.05, 0.001), Vector2::new(-30.0, 2.0));
             for (t, held, speed) in [
                 (0.001, 2e6, 125.66),
@@ -300,8 +366,8 @@ mod tests {
                 (0.001, 1e6, 80.0),
                 (0.003, 1e6, 80.0),
             ] {
-                sys.engine.hold_pressure(held);
-                sys.hold_speed(0.0, speed);
+                sys.engine.hold_pressure(InputPolynomial::held(held));
+                sys.hold_speed(InputPolynomial { time: 0.0, ..InputPolynomial::held(speed) });
                 let fresh = PrescribedCrank::new(sys.engine.clone(), 0.1, 0.0, speed);
                 assert_eq!(sys.evaluate(t, &q, &qd), fresh.evaluate(t, &q, &qd), "t {t}, held {held}, speed {speed}");
             }
@@ -310,8 +376,9 @@ mod tests {
 
     #[test]
     fn inertia_and_force_are_those_of_the_full_evaluation() {
-        let sys = prescribed();
-        let free = FreeCrank { engine: sys.engine.clone(), load_torque: 12.0 };
+        let sys = ramping();
+        let free =
+            FreeCrank { engine: sys.engine.clone(), load_torque: InputPolynomial { time: 0.0, value: 12.0, slope: 100.0, curvature: 0.0 } };
         for (t, q, qd) in
             [(0.013, Vector2::new(-0.05, 0.0007), Vector2::new(-28.0, 3.0)), (0.071, Vector2::new(0.2, -0.01), Vector2::new(5.0, -40.0))]
         {
@@ -327,22 +394,33 @@ mod tests {
     fn speed_change_keeps_the_crank_angle_continuous() {
         let mut sys = prescribed();
         let before = sys.crank_angle(0.02);
-        sys.hold_speed(0.02, 50.0);
+        sys.hold_speed(InputPolynomial { time: 0.02, ..InputPolynomial::held(50.0) });
         assert_eq!(sys.crank_angle(0.02), before);
         assert!((sys.crank_angle(0.03) - (before + 0.5)).abs() < 1e-14);
+        // A ramp ω = 50 + 1000 (t − 0.03) from 0.03 s: φ1 gains 50 τ + 500 τ², and a later held speed continues from there.
+        sys.hold_speed(InputPolynomial { time: 0.03, value: 50.0, slope: 1000.0, curvature: 0.0 });
+        assert!((sys.crank_angle(0.04) - (before + 0.5 + 0.5 + 0.05)).abs() < 1e-13);
+        assert_eq!((sys.speed(0.04), sys.acceleration(0.04)), (60.0, 1000.0));
+        sys.hold_speed(InputPolynomial { time: 0.04, ..InputPolynomial::held(60.0) });
+        assert!((sys.crank_angle(0.05) - (before + 1.05 + 0.6)).abs() < 1e-13);
     }
 
     #[test]
     fn drive_torque_balances_the_crank_row_of_the_free_equations() {
-        // With φ̈ = (0, q̈) and the drive torque added to the load, the free system's crank row holds.
-        let sys = prescribed();
-        let (t, q, qd, qdd) = (0.02, Vector2::new(0.1, -0.001), Vector2::new(20.0, 1.0), Vector2::new(-3000.0, 50.0));
-        let forces = Vector4::new(120.0, 0.0, 0.0, 35.0);
-        let torque = sys.drive_torque(t, &q, &qd, &qdd, &forces);
-        let (phi, phid) = sys.full_state(t, &q, &qd);
-        let free = FreeCrank { engine: sys.engine.clone(), load_torque: -torque }.evaluate(0.0, &phi, &phid);
-        let phidd = Vector3::new(0.0, qdd[0], qdd[1]);
-        let residual = free.mass * phidd - free.force - free.gap_jacobian.transpose() * forces;
-        assert!(residual[0].abs() < 1e-9 * torque.abs().max(1.0), "residual {residual}");
+        // With φ̈ = (ω̇, q̈) and the drive torque added to the load, the free system's crank row holds; the
+        // rod and piston rows hold with q̈ from the reduced system.
+        for sys in [prescribed(), ramping()] {
+            let (t, q, qd, qdd) = (0.02, Vector2::new(0.1, -0.001), Vector2::new(20.0, 1.0), Vector2::new(-3000.0, 50.0));
+            let forces = Vector4::new(120.0, 0.0, 0.0, 35.0);
+            let torque = sys.drive_torque(t, &q, &qd, &qdd, &forces);
+            let (phi, phid) = sys.full_state(t, &q, &qd);
+            let free = FreeCrank { engine: sys.engine.clone(), load_torque: InputPolynomial::held(-torque) }.evaluate(t, &phi, &phid);
+            let phidd = Vector3::new(sys.acceleration(t), qdd[0], qdd[1]);
+            let residual = free.mass * phidd - free.force - free.gap_jacobian.transpose() * forces;
+            assert!(residual[0].abs() < 1e-9 * torque.abs().max(1.0), "residual {residual}");
+            let reduced = sys.evaluate(t, &q, &qd);
+            let rows = reduced.mass * qdd - reduced.force - reduced.gap_jacobian.transpose() * forces;
+            assert!((rows - residual.fixed_rows::<2>(1)).norm() < 1e-9 * free.force.norm(), "{rows} vs {residual}");
+        }
     }
 }

@@ -4,7 +4,7 @@
 use super::crank_drive::{Engine, FreeCrank, PrescribedCrank};
 use super::crank_kinematics::SliderCrank;
 use super::crank_linkage::Trig;
-use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters, CYCLE};
+use super::{EngineEvent, EngineEventKind, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, CYCLE};
 use crate::dynamics::{DynamicsError, Event, EventKind, StepCounts, Stepper, StepperOptions};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -117,7 +117,7 @@ impl CrankTrain {
     pub fn with_options(params: &Parameters, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
         validate(params)?;
         check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
-        let engine = Engine::new(params);
+        let engine = Engine::new(params)?;
         let geometry = SliderCrank { crank_radius: params.crank_radius, rod_length: params.rod_length, pin_offset: params.pin_offset };
         let start = StartOffset::of(params);
         let angle = params.crank_angle_start;
@@ -136,7 +136,7 @@ impl CrankTrain {
         let drive = if params.crank_mode == 1 {
             Drive::Prescribed(Self::prescribed(engine, &geometry, &start, angle, start_time, speed, &options)?)
         } else {
-            let system = FreeCrank { engine, load_torque: Inputs::default().load_torque };
+            let system = FreeCrank { engine, load_torque: InputPolynomial::held(Inputs::default().load_torque) };
             Drive::Free(Self::free(system, &geometry, &start, angle, start_time, speed, &options)?)
         };
         Ok(Self { drive, geometry, start, started: false, options, impulse_work: 0.0, cycles: 0.0 })
@@ -216,9 +216,8 @@ impl CrankTrain {
         }
         match &mut self.drive {
             Drive::Prescribed(s) => {
-                let (sys, now) = (s.system(), s.time());
-                let restarted = PrescribedCrank::new(sys.engine.clone(), angle - 4.0 * PI * cycles, now, sys.speed());
-                *s.system_mut().map_err(dynamics_error)? = restarted;
+                let rebased = s.system().rebased(s.time(), angle - 4.0 * PI * cycles);
+                *s.system_mut().map_err(dynamics_error)? = rebased;
             }
             Drive::Free(s) => s.shift(0.0, &Vector3::new(-4.0 * PI * cycles, 0.0, 0.0)).map_err(dynamics_error)?,
         }
@@ -300,32 +299,38 @@ impl EngineModel for CrankTrain {
         )
     }
 
-    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
-        for (name, value) in
-            [("crank_speed", inputs.crank_speed), ("gas_pressure", inputs.gas_pressure), ("load_torque", inputs.load_torque)]
-        {
-            check(value.is_finite(), || format!("input {name} ({value}) must be finite"))?;
+    fn advance_interpolated(
+        &mut self,
+        inputs: &Inputs,
+        derivatives: &InputDerivatives,
+        t_end: f64,
+        events: &mut Vec<EngineEvent>,
+    ) -> Result<(), ModelError> {
+        let now = self.time();
+        let [speed, pressure, load] = derivatives.polynomials(inputs, now);
+        for (name, u) in [("crank_speed", speed), ("gas_pressure", pressure), ("load_torque", load)] {
+            let finite = [u.value, u.slope, u.curvature].iter().all(|x| x.is_finite());
+            check(finite, || format!("input {name} ({}, derivatives {}, {}) must be finite", u.value, u.slope, u.curvature))?;
         }
         if !self.started {
             self.start(inputs.crank_speed)?;
         }
         // The system is touched only where an input changed: the core re-examines the contacts
         // after a change, and a communication point with the same inputs then costs nothing.
-        if !self.engine().holds(inputs.gas_pressure) {
-            self.engine_mut()?.hold_pressure(inputs.gas_pressure);
+        if !self.engine().holds(&pressure) {
+            self.engine_mut()?.hold_pressure(pressure);
         }
         self.keep_angle_within_a_cycle()?;
         match &mut self.drive {
             Drive::Prescribed(s) => {
-                if s.system().speed() != inputs.crank_speed {
-                    let now = s.time();
-                    s.system_mut().map_err(dynamics_error)?.hold_speed(now, inputs.crank_speed);
+                if !s.system().holds_speed(&speed) {
+                    s.system_mut().map_err(dynamics_error)?.hold_speed(speed);
                 }
                 s.advance(t_end).map_err(dynamics_error)?;
             }
             Drive::Free(s) => {
-                if s.system().load_torque != inputs.load_torque {
-                    s.system_mut().map_err(dynamics_error)?.load_torque = inputs.load_torque;
+                if !s.system().load_torque.same_as(&load) {
+                    s.system_mut().map_err(dynamics_error)?.load_torque = load;
                 }
                 s.advance(t_end).map_err(dynamics_error)?;
             }
@@ -366,8 +371,8 @@ impl EngineModel for CrankTrain {
         out.skirt_top_lateral = 0.5 * (gaps[0] - gaps[2]);
         out.skirt_bottom_lateral = 0.5 * (gaps[1] - gaps[3]);
         out.gas_pressure_acting = match &self.drive {
-            Drive::Prescribed(s) => s.system().pressure(phi[0]),
-            Drive::Free(s) => s.system().engine.pressure(phi[0]),
+            Drive::Prescribed(s) => s.system().pressure(s.time(), phi[0]),
+            Drive::Free(s) => s.system().engine.pressure(s.time(), phi[0]),
         };
         out.piston_axial = pin.y;
         out.crank_angle = phi[0] + 4.0 * PI * self.cycles;
@@ -375,14 +380,14 @@ impl EngineModel for CrankTrain {
         out.crank_torque = match &self.drive {
             Drive::Prescribed(s) => s.system().drive_torque(s.time(), s.position(), s.velocity(), &s.acceleration(), &forces),
             // The external torque on the crank: the load, opposing rotation.
-            Drive::Free(s) => -s.system().load_torque,
+            Drive::Free(s) => -s.system().load_torque.at(s.time()),
         };
         [out.contact_state_1, out.contact_state_2, out.contact_state_3, out.contact_state_4] = in_contact.map(i32::from);
         [out.contact_force_1, out.contact_force_2, out.contact_force_3, out.contact_force_4] = [forces[0], forces[1], forces[2], forces[3]];
         // K1, K2 touch the −D/2 wall (push toward +x), K3, K4 the +D/2 wall.
         out.side_force = forces[0] + forces[1] - forces[2] - forces[3];
         out.crank_speed_actual = match &self.drive {
-            Drive::Prescribed(s) => s.system().speed(),
+            Drive::Prescribed(s) => s.system().speed(s.time()),
             Drive::Free(_) => phid[0],
         };
         out.kinetic_energy = linkage.kinetic_energy(&trig, &phid);
@@ -421,6 +426,28 @@ mod tests {
         assert!(peak <= p.peak_pressure && peak > 0.999 * p.peak_pressure, "{peak}");
         let gas_exchange = cycle.iter().filter(|out| (PI + 1e-9..3.0 * PI - 1e-9).contains(&out.crank_angle));
         assert!(gas_exchange.clone().count() > 900 && gas_exchange.clone().all(|out| out.gas_pressure_acting == 0.0));
+    }
+
+    #[test]
+    fn the_shipped_full_load_trace_is_the_built_in_curve_plus_one_bar() {
+        // resources/full_load.csv samples the built-in curve (default geometry, 8 MPa) every 0.5° in
+        // absolute bar; less the default crankcase pressure it is the curve again, up to the
+        // interpolation error between samples (measured 265 Pa at most, near the peak).
+        let trace = Parameters { pressure_source: 3, pressure_trace: "resources/full_load.csv".into(), ..Parameters::default() };
+        let (from_trace, from_curve) =
+            (run(&trace, &Inputs::default(), 5e-5, 2000), run(&Parameters::default(), &Inputs::default(), 5e-5, 2000));
+        for (a, b) in from_trace.iter().zip(&from_curve) {
+            assert_eq!(a.crank_angle, b.crank_angle);
+            assert!(
+                (a.gas_pressure_acting - b.gas_pressure_acting).abs() < 1e-4 * 8e6,
+                "{} {}",
+                a.gas_pressure_acting,
+                b.gas_pressure_acting
+            );
+        }
+        let missing = Parameters { pressure_trace: "resources/none.csv".into(), ..trace };
+        let message = CrankTrain::new(&missing, 0.0).unwrap_err().0;
+        assert!(message.starts_with("pressure_trace \"resources/none.csv\": cannot be read"), "{message}");
     }
 
     /// The piston axis at the corners' heights z = h and h − s lies at x_pin − z sin φ3 (pin on the

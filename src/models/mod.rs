@@ -7,9 +7,11 @@ pub mod crank_kinematics;
 pub mod crank_linkage;
 pub mod crank_train;
 mod energy_balance;
+mod input_polynomial;
 mod last_value;
 mod parameters;
 pub mod pressure;
+pub mod pressure_trace;
 mod roller;
 mod roller_forcing;
 mod trig;
@@ -17,7 +19,8 @@ mod trig;
 pub use crank_efficiency::{EfficiencyCalibration, EfficiencyTarget};
 pub use crank_train::CrankTrain;
 pub use energy_balance::{EnergyBalance, PowerFlows};
-pub use parameters::{Inputs, ModelError, Outputs, Parameters};
+pub use input_polynomial::InputPolynomial;
+pub use parameters::{InputDerivatives, Inputs, ModelError, Outputs, Parameters};
 pub use roller::{Roller, RollerSystem};
 pub use roller_forcing::{Forcing, Jet, RollerMechanism, SlidingRegion};
 
@@ -63,7 +66,19 @@ pub trait EngineModel: Sized + Clone {
 
     /// Advances to exactly `t_end` with `inputs` held, appending every event to `events`.
     /// On error the model may be left anywhere: the caller restores its own copy.
-    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError>;
+    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        self.advance_interpolated(inputs, &InputDerivatives::default(), t_end, events)
+    }
+
+    /// As [`Self::advance`], the inputs following the polynomials of their values and `derivatives`
+    /// at the current time; a model that cannot follow a derivative refuses it.
+    fn advance_interpolated(
+        &mut self,
+        inputs: &Inputs,
+        derivatives: &InputDerivatives,
+        t_end: f64,
+        events: &mut Vec<EngineEvent>,
+    ) -> Result<(), ModelError>;
 
     /// Writes the kinematic and force outputs (everything but the impact statistics).
     fn write_outputs(&self, out: &mut Outputs);

@@ -2,6 +2,7 @@
 //! Field names are the FMI variable names: the value-reference dispatch generated from
 //! `modelDescription/` addresses these fields by name.
 
+use super::InputPolynomial;
 use serde::{Deserialize, Serialize};
 use std::fmt;
 
@@ -27,6 +28,7 @@ pub struct Parameters {
     pub pressure_source: i32,
     pub roller_forcing: i32,
     pub peak_pressure: f64,
+    pub crankcase_pressure: f64,
     pub crank_radius: f64,
     pub rod_length: f64,
     pub crank_com: f64,
@@ -55,6 +57,7 @@ pub struct Parameters {
     pub piston_tilt_start: f64,
     pub piston_tilt_rate_start: f64,
     pub impact_log: String,
+    pub pressure_trace: String,
 }
 
 /// Continuous inputs, held constant over a communication step.
@@ -66,6 +69,40 @@ pub struct Inputs {
     pub gas_pressure: f64,
     /// N·m, opposing rotation, used when `crank_mode = 2`.
     pub load_torque: f64,
+}
+
+/// Time derivatives of the continuous inputs at the start of a step, `[first, second]` per input
+/// (fmi2SetRealInputDerivatives); zero means held.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct InputDerivatives {
+    /// rad/s², rad/s³.
+    pub crank_speed: [f64; 2],
+    /// Pa/s, Pa/s².
+    pub gas_pressure: [f64; 2],
+    /// N·m/s, N·m/s².
+    pub load_torque: [f64; 2],
+}
+
+impl InputDerivatives {
+    /// The derivatives of the input called `name`, if it is one.
+    pub fn of_mut(&mut self, name: &str) -> Option<&mut [f64; 2]> {
+        match name {
+            "crank_speed" => Some(&mut self.crank_speed),
+            "gas_pressure" => Some(&mut self.gas_pressure),
+            "load_torque" => Some(&mut self.load_torque),
+            _ => None,
+        }
+    }
+
+    /// The inputs over a step starting at `t`: `inputs` there, with these derivatives.
+    pub fn polynomials(&self, inputs: &Inputs, t: f64) -> [InputPolynomial; 3] {
+        let polynomial = |value: f64, [slope, curvature]: [f64; 2]| InputPolynomial { time: t, value, slope, curvature };
+        [
+            polynomial(inputs.crank_speed, self.crank_speed),
+            polynomial(inputs.gas_pressure, self.gas_pressure),
+            polynomial(inputs.load_torque, self.load_torque),
+        ]
+    }
 }
 
 /// Outputs (DESIGN.md §4). Impact statistics are filled by the caller from the event record;

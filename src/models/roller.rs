@@ -19,7 +19,7 @@
 
 use super::last_value::LastValue;
 use super::roller_forcing::{AtAngle, Forcing, RollerMechanism};
-use super::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters, CYCLE};
+use super::{EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, CYCLE};
 use crate::dynamics::{DynamicsError, Evaluation, Event, EventKind, Stepper, StepperOptions, System};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
@@ -264,7 +264,22 @@ impl EngineModel for Roller {
         })
     }
 
-    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+    /// The thesis's equations are in crank-angle time at a constant Ω: a crank speed derivative is
+    /// refused; the gas pressure and load torque do not act on this model.
+    fn advance_interpolated(
+        &mut self,
+        inputs: &Inputs,
+        derivatives: &InputDerivatives,
+        t_end: f64,
+        events: &mut Vec<EngineEvent>,
+    ) -> Result<(), ModelError> {
+        if derivatives.crank_speed != [0.0; 2] {
+            return Err(ModelError(format!(
+                "model_variant 2 holds crank_speed over a step (its equations are in crank angle at constant speed): \
+                 derivatives {:?} refused",
+                derivatives.crank_speed
+            )));
+        }
         let omega = inputs.crank_speed;
         if !(omega.is_finite() && omega > 0.0) {
             return Err(ModelError(format!("model_variant 2: crank_speed must be finite and > 0, got {omega}")));

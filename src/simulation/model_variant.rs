@@ -1,7 +1,7 @@
 //! The model variants behind one type, chosen by `model_variant`: 1 → crank train (Awrejcewicz &
 //! Kudra), 2 → roller slider crank (Farahanchi).
 
-use crate::models::{CrankTrain, EngineEvent, EngineModel, Inputs, ModelError, Outputs, Parameters, Roller};
+use crate::models::{CrankTrain, EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, Roller};
 use serde::{Deserialize, Serialize};
 
 /// The engine model the FMU runs (one per instance, so the variants' size difference costs nothing).
@@ -21,10 +21,16 @@ impl EngineModel for ModelVariant {
         }
     }
 
-    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+    fn advance_interpolated(
+        &mut self,
+        inputs: &Inputs,
+        derivatives: &InputDerivatives,
+        t_end: f64,
+        events: &mut Vec<EngineEvent>,
+    ) -> Result<(), ModelError> {
         match self {
-            ModelVariant::CrankTrain(m) => m.advance(inputs, t_end, events),
-            ModelVariant::Roller(m) => m.advance(inputs, t_end, events),
+            ModelVariant::CrankTrain(m) => m.advance_interpolated(inputs, derivatives, t_end, events),
+            ModelVariant::Roller(m) => m.advance_interpolated(inputs, derivatives, t_end, events),
         }
     }
 

@@ -3,9 +3,9 @@
 //! x = ±c, c = (bore − piston_diameter)/2, with Newton restitution `restitution` at each wall.
 //! It starts at x = 0 with ẋ = `SHUTTLE_SPEED`; crank angle = crank_angle_start + ∫ crank_speed dt.
 //! A negative `gas_pressure` makes `advance` fail, `load_torque` = 42 makes it panic (to test error
-//! handling). Never shipped.
+//! handling). Input derivatives are ignored (the inputs are held). Never shipped.
 
-use crate::models::{EngineEvent, EngineEventKind, EngineModel, Inputs, ModelError, Outputs, Parameters};
+use crate::models::{EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -35,7 +35,13 @@ impl EngineModel for Shuttle {
         })
     }
 
-    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+    fn advance_interpolated(
+        &mut self,
+        inputs: &Inputs,
+        _: &InputDerivatives,
+        t_end: f64,
+        events: &mut Vec<EngineEvent>,
+    ) -> Result<(), ModelError> {
         assert!(inputs.load_torque != 42.0, "shuttle: load_torque = 42 panics (to test panic containment)");
         if inputs.gas_pressure < 0.0 {
             // Move first so that a caller that does not restore its copy would be caught.

@@ -228,9 +228,7 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
             "fmi2GetDirectionalDerivative" => {
                 (functions::get_directional_derivative::<E>(c), (Status::Error, Some("providesDirectionalDerivative = false")))
             }
-            "fmi2SetRealInputDerivatives" => {
-                (functions::set_real_input_derivatives::<E>(c), (Status::Error, Some("canInterpolateInputs = false")))
-            }
+            "fmi2SetRealInputDerivatives" => (functions::set_real_input_derivatives::<E>(c, reals.as_ptr(), 1, &1, &50.0), OK),
             "fmi2GetRealOutputDerivatives" => {
                 (functions::get_real_output_derivatives::<E>(c), (Status::Error, Some("maxOutputDerivativeOrder = 0")))
             }

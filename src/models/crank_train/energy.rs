@@ -20,7 +20,7 @@ impl PrescribedCrank {
         let rows = full.mass.fixed_view::<2, 2>(1, 1).into_owned();
         let jump = rows.cholesky()?.solve(&(full.gap_jacobian.fixed_columns::<2>(1).transpose() * impulses));
         let drive_impulse = (full.mass.fixed_view::<1, 2>(0, 1) * jump)[0] - full.gap_jacobian.column(0).dot(impulses);
-        Some(drive_impulse * self.speed())
+        Some(drive_impulse * self.speed(t))
     }
 }
 
@@ -47,9 +47,9 @@ impl EnergyBalance for CrankTrain {
                 let (forces, _) = self.contacts();
                 s.system().drive_torque(s.time(), s.position(), s.velocity(), &s.acceleration(), &forces) * phid[0]
             }
-            Drive::Free(s) => -s.system().load_torque * phid[0],
+            Drive::Free(s) => -s.system().load_torque.at(s.time()) * phid[0],
         };
-        PowerFlows { drive, gas: -engine.gas_force(phi[0]) * height_rate, damping: -0.5 * odd.dot(&phid) }
+        PowerFlows { drive, gas: -engine.gas_force(self.time(), phi[0]) * height_rate, damping: -0.5 * odd.dot(&phid) }
     }
 
     fn impulse_work(&self) -> f64 {
@@ -70,8 +70,8 @@ mod tests {
     #[test]
     fn impulse_work_is_the_crank_row_reaction_and_closes_the_energy_of_an_impact() {
         let p = Parameters::default();
-        let mut engine = Engine::new(&Parameters { pressure_source: 1, ..p.clone() });
-        engine.hold_pressure(0.0);
+        let mut engine = Engine::new(&Parameters { pressure_source: 1, ..p.clone() }).unwrap();
+        engine.hold_pressure(crate::models::InputPolynomial::held(0.0));
         let sys = PrescribedCrank::new(engine, 0.7, 0.0, 125.66);
         let (t, q, qd) = (0.003, Vector2::new(-0.12, 4e-4), Vector2::new(-25.0, 3.0));
         let impulses = Vector4::new(0.02, 0.0, 0.0, 0.013);
