@@ -123,7 +123,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         // vanishing time, while a long span of ordinary impacts only needs more windows.
         let (mut handled, mut steps, mut window_start) = (0, 0.0, self.state.t);
         loop {
-            if let Some(ahead) = self.ahead.take() {
+            // (Checked before `take`, which copies the whole option even when empty.)
+            if let Some(ahead) = self.ahead.is_some().then(|| self.ahead.take()).flatten() {
                 if t_end < ahead.end.t {
                     let now = self.between(&ahead.end, t_end)?;
                     self.ahead = Some(Ahead { end: ahead.end, now });

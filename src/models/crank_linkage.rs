@@ -80,6 +80,8 @@ struct Terms {
     q23: f64,
     weight: [f64; 3],
     weight_offset: f64,
+    /// The crank, the rod and the farthest corner from the pin (`Linkage::lengths`).
+    lengths: Vector3<f64>,
 }
 
 impl Terms {
@@ -95,6 +97,7 @@ impl Terms {
             q23: m3 * l2 * a,
             weight: [g * (m1 * b1 + (m2 + m3) * l1), g * (m2 * b2 + m3 * l2), g * m3 * b3],
             weight_offset: g * m3 * a,
+            lengths: Vector3::new(l1, l2, bodies.corners.iter().fold(0.0_f64, |r, &(z, w, _)| r.max(z.hypot(w)))),
         }
     }
 }
@@ -171,9 +174,7 @@ impl Linkage {
     /// Lengths that turn errors of (φ1, φ2, φ3) into displacements: the crank, the rod, and the
     /// farthest corner from the pin, m.
     pub fn lengths(&self) -> Vector3<f64> {
-        let b = &self.bodies;
-        let corner = b.corners.iter().fold(0.0_f64, |r, &(z, w, _)| r.max(z.hypot(w)));
-        Vector3::new(b.links[0], b.links[1], corner)
+        self.terms.lengths
     }
 
     /// Corner gaps h(φ), m.
