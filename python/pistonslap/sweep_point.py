@@ -3,7 +3,7 @@
 import numpy as np
 from fmpy.fmi1 import FMICallException
 
-from .analysis import CLASSIFIABLE_CYCLES, classify, roller_run
+from .response import CLASSIFIABLE_CYCLES, classify, roller_run
 from .fmu import CYCLE, simulate_with_events
 
 #: The results' columns after the swept values, and their units.

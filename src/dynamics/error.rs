@@ -1,6 +1,6 @@
 //! What the core cannot resolve, as a value.
 
-use super::settle::PENETRATION_FACTOR;
+use super::options::PENETRATION_FACTOR;
 use std::fmt;
 
 /// What the core cannot resolve, as a value. Constraint sets are bitmasks (bit i = constraint i).

@@ -51,3 +51,7 @@ impl Default for StepperOptions {
         Self { step: 1e-5, gap_tolerance: 1e-12, velocity_tolerance: 1e-8, multiplier_tolerance: 1e-12, local_error: None }
     }
 }
+
+/// A free gap below `−PENETRATION_FACTOR · ε_h` at a communication point is a penetration (an
+/// error); one above it is a closed constraint, resolved and projected like any other.
+pub(super) const PENETRATION_FACTOR: f64 = 100.0;

@@ -5,16 +5,9 @@ use super::contact::contains;
 use super::events::{self, Bracket, EventLocator, Located, Start};
 use super::rk4::Hermite5;
 use super::sample::{acceleration, rk4_to, Evaluated, Sample, Watch};
+use super::stepper::StepEnd;
 use super::{DynamicsError, Evaluation, Stepper, System};
 use std::cell::OnceCell;
-
-/// How a step ends: clear of events, or at the first one.
-pub(super) enum StepEnd<const N: usize, const M: usize> {
-    /// No event: the step's end, with its evaluation.
-    Clear(Evaluated<N, M>),
-    /// The state where `constraint` crossed, on the RK4 map within tolerance.
-    Event { at: Evaluated<N, M>, constraint: usize },
-}
 
 impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     fn tolerance(&self, watch: Watch) -> f64 {

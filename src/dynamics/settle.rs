@@ -19,10 +19,6 @@ pub const ZENO_APEX_FACTOR: f64 = 1e3;
 /// tolerates before it projects the state back onto the contact manifold.
 const DRIFT_FRACTION: f64 = 0.1;
 
-/// A free gap below `−PENETRATION_FACTOR · ε_h` at a communication point is a penetration (an
-/// error); one above it is a closed constraint, resolved and projected like any other.
-pub(super) const PENETRATION_FACTOR: f64 = 100.0;
-
 /// Newton steps `onto_contacts` takes at most (quadratic convergence: two or three reach round-off).
 const MAX_PROJECTIONS: usize = 4;
 

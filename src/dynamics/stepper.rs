@@ -4,15 +4,21 @@
 
 use super::contact::{bit, contains, select};
 use super::events::EventLocator;
-use super::options::{MAX_STEPS_PER_ADVANCE, TOO_MANY_STEPS};
+use super::options::{MAX_STEPS_PER_ADVANCE, PENETRATION_FACTOR, TOO_MANY_STEPS};
 use super::rk4::Hermite5;
-use super::sample::{local_error, rk4_step, rk4_to, sample, sample_of, Sample};
-use super::search::StepEnd;
-use super::settle::PENETRATION_FACTOR;
+use super::sample::{local_error, rk4_step, rk4_to, sample, sample_of, Evaluated, Sample};
 use super::{DynamicsError, Evaluation, Event, StepCounts, StepperOptions, System, DEFAULT_EVENT_BUDGET};
 use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
+
+/// How a step ends: clear of events, or at the first one.
+pub(super) enum StepEnd<const N: usize, const M: usize> {
+    /// No event: the step's end, with its evaluation.
+    Clear(Evaluated<N, M>),
+    /// The state where `constraint` crossed, on the RK4 map within tolerance.
+    Event { at: Evaluated<N, M>, constraint: usize },
+}
 
 /// A step taken past the end of the last `advance`: its end, and the sample at that end time.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
