@@ -6,6 +6,36 @@
 use pistonslap::models::{CrankTrain, EngineEvent, EngineModel, Inputs, Outputs, Parameters};
 use std::f64::consts::PI;
 
+/// The published parameters mapped onto the crank train (the benchmark file's table), frictionless
+/// and without gravity; the slider's centre of mass `com` off the pin.
+pub fn flores(com: f64) -> Parameters {
+    Parameters {
+        crank_mode: 2,
+        pressure_source: 1,
+        crank_radius: 0.153,
+        rod_length: 0.306,
+        crank_com: 0.0765,
+        rod_com: 0.153,
+        piston_com: com,
+        crank_mass: 0.038,
+        rod_mass: 0.038,
+        piston_mass: 0.076,
+        crank_inertia: 7.4e-5,
+        rod_inertia: 5.9e-4,
+        piston_inertia: 2.7e-6,
+        piston_diameter: 0.05,
+        skirt_length: 0.1,
+        pin_height: 0.05,
+        bore: 0.052,
+        restitution: 0.4,
+        damping_main: 0.0,
+        damping_crank_pin: 0.0,
+        damping_piston_pin: 0.0,
+        gravity: 0.0,
+        ..Parameters::default()
+    }
+}
+
 /// SplitMix64: a seeded, portable stream of uniform numbers in [0, 1).
 pub struct Random(u64);
 
@@ -71,31 +101,8 @@ pub fn engine(r: &mut Random) -> Design {
 /// 50–300 rad/s, no gas, no damping, the slider's centre of mass anywhere from −0.02 to 0.02 m off
 /// the pin, 0.1–2 mm clearance each side; 0.1 s.
 pub fn slider(r: &mut Random) -> Design {
-    let params = Parameters {
-        crank_mode: 2,
-        pressure_source: 1,
-        crank_radius: 0.153,
-        rod_length: 0.306,
-        crank_com: 0.0765,
-        rod_com: 0.153,
-        piston_com: r.between(-0.02, 0.02),
-        crank_mass: 0.038,
-        rod_mass: 0.038,
-        piston_mass: 0.076,
-        crank_inertia: 7.4e-5,
-        rod_inertia: 5.9e-4,
-        piston_inertia: 2.7e-6,
-        piston_diameter: 0.05,
-        skirt_length: 0.1,
-        pin_height: 0.05,
-        bore: 0.05 + 2.0 * r.between(1e-4, 2e-3),
-        restitution: r.next(),
-        damping_main: 0.0,
-        damping_crank_pin: 0.0,
-        damping_piston_pin: 0.0,
-        gravity: 0.0,
-        ..Parameters::default()
-    };
+    let com = r.between(-0.02, 0.02);
+    let params = Parameters { bore: 0.05 + 2.0 * r.between(1e-4, 2e-3), restitution: r.next(), ..flores(com) };
     let inputs = Inputs { crank_speed: r.between(50.0, 300.0), gas_pressure: 0.0, load_torque: 0.0 };
     Design { params, inputs, duration: 0.1, step: [1e-3, 1e-4][(r.next() * 2.0) as usize] }
 }

@@ -2,38 +2,9 @@
 //! flores-slider-crank.md`, Siconos' `SliderCrank` example) on the crank train: the flat slider
 //! against Siconos' published figures, the tilting slider at three communication steps.
 
+use crate::common::designs::flores;
 use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
 use std::f64::consts::PI;
-
-/// The published parameters mapped onto the crank train (the benchmark file's table), frictionless
-/// and without gravity; the slider's centre of mass `com` off the pin.
-fn flores(com: f64) -> Parameters {
-    Parameters {
-        crank_mode: 2,
-        pressure_source: 1,
-        crank_radius: 0.153,
-        rod_length: 0.306,
-        crank_com: 0.0765,
-        rod_com: 0.153,
-        piston_com: com,
-        crank_mass: 0.038,
-        rod_mass: 0.038,
-        piston_mass: 0.076,
-        crank_inertia: 7.4e-5,
-        rod_inertia: 5.9e-4,
-        piston_inertia: 2.7e-6,
-        piston_diameter: 0.05,
-        skirt_length: 0.1,
-        pin_height: 0.05,
-        bore: 0.052,
-        restitution: 0.4,
-        damping_main: 0.0,
-        damping_crank_pin: 0.0,
-        damping_piston_pin: 0.0,
-        gravity: 0.0,
-        ..Parameters::default()
-    }
-}
 
 /// The crank starts at 150 rad/s, unloaded, no gas.
 const INPUTS: Inputs = Inputs { crank_speed: 150.0, gas_pressure: 0.0, load_torque: 0.0 };
