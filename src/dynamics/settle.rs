@@ -133,8 +133,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     ///    the impact of 1. after all;
     /// 3. projection of `q` and `q̇` onto the new active set, which becomes the held set.
     ///
+    /// Constraints in `hold` at rest (`ḣ < ε_ḣ`) stay in contact whatever the sliding law says.
     /// `known`: the system's evaluation at the current state, if the caller has it.
-    pub(super) fn settle(&mut self, closed: Set, known: Option<Evaluation<N, M>>) -> Result<(), DynamicsError> {
+    pub(super) fn settle(&mut self, closed: Set, hold: Set, known: Option<Evaluation<N, M>>) -> Result<(), DynamicsError> {
         self.event_ahead = None;
         let Sample { t, q, mut v, .. } = self.state;
         let was_active = self.active;
@@ -167,6 +168,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             let mut candidates = closed & select::<M>(|i| hd[i] < opts.velocity_tolerance);
             let support = loop {
                 let (lambda, support) = self.sliding_law((t, &q, &v), &ev, &frame, candidates)?;
+                let support = support | (hold & candidates);
                 let hdd = Frame::gap_acceleration(&ev, &(frame.free_acc + frame.minv_jt * lambda));
                 let zeno = closed & !candidates & select::<M>(|i| hd[i] > 0.0 && hdd[i] < 0.0 && hd[i] * hd[i] < -2.0 * zeno_apex * hdd[i]);
                 if zeno == 0 {

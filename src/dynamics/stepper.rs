@@ -297,7 +297,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         if closed == 0 {
             return Ok(());
         }
-        self.settle(closed, Some(ev))
+        self.settle(closed, 0, Some(ev))
     }
 
     /// The RK4 step from the current state towards `t_end`: of the nominal size, or (adaptive) of
@@ -364,6 +364,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 self.step(t_end, false)
             }
             StepEnd::Event { at: (s, mut ev), constraint: i } => {
+                // A free constraint crossing at the very start of the step: the last decision left it
+                // open at rest, and the motion closes it again before it lifts beyond ε_h (a flight
+                // below the event resolution, at an order the sliding law does not see): it is held.
+                let hold = if s.t == self.state.t && !contains(active, i) { bit(i) } else { 0 };
                 self.state = s;
                 // The event state lies inside a step, off the manifold of the held set by the
                 // step's drift; the impact and sliding laws see the held constraints at rest.
@@ -371,7 +375,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     ev = self.stabilize(ev)?;
                 }
                 let closed = self.active | bit(i) | select::<M>(|j| self.state.gap[j] <= self.options.gap_tolerance);
-                self.settle(closed, ev)?;
+                self.settle(closed, hold, ev)?;
                 Ok(true)
             }
         }

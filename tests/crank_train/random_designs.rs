@@ -7,8 +7,13 @@ use crate::common::designs::{engine, run, slider, Design, Finished, Random};
 
 const DESIGNS: u64 = 250;
 
+/// Designs beyond the first `DESIGNS` that a larger sweep found failing once, kept here: slider 5223,
+/// a corner at rest that the motion closes again before it lifts beyond ε_h.
+const FOUND_BY_LARGER_SWEEPS: [u64; 1] = [5223];
+
 fn failures(make: fn(&mut Random) -> Design, check: impl Fn(&Design, &Finished) -> Result<(), String>) -> Vec<String> {
     (0..DESIGNS)
+        .chain(FOUND_BY_LARGER_SWEEPS)
         .filter_map(|seed| {
             let design = make(&mut Random::new(seed));
             run(&design).and_then(|finished| check(&design, &finished)).err().map(|e| format!("seed {seed}: {e}\n  {design:?}"))
