@@ -12,9 +12,13 @@
 //!   ([`EventLocator`]; the paper's step halving is kept for comparison);
 //! - at an event, the closed set (gaps within `ε_h`) is resolved together: the generalized Newton
 //!   impact as a complementarity problem (DESIGN §6.4; exactly eq 11 for one constraint), then
-//!   persistent contact for the constraints at rest whose multipliers the sliding complementarity
-//!   problem keeps non-negative; the Zeno guard ([`ZENO_APEX_FACTOR`]) turns an accumulation of
-//!   impacts into sliding, and an event budget per `advance` turns anything else into an error.
+//!   persistent contact for the constraints at rest as the sliding complementarity problem over
+//!   all of them decides, a tie (zero force and zero gap acceleration) by the same problem a moment
+//!   later along the motion (`settle.rs`); the Zeno guard ([`ZENO_APEX_FACTOR`]) turns an
+//!   accumulation of impacts into sliding, and an event budget per nominal step turns anything
+//!   else into an error;
+//! - where the system did not change since the last `advance`, its last step may run past the
+//!   end: the end's state comes from the step's quintic extension, and the step goes on next time.
 //!
 //! Constraint sets are bitmasks, all matrices are fixed-size: no heap use but the event record.
 
