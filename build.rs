@@ -183,7 +183,7 @@ fn main() {
         let out = Path::new(&out_dir);
         let write = |name: &str, text: &[u8]| std::fs::write(out.join(format!("{prefix}{name}")), text).expect("write OUT_DIR");
         write("modelDescription.xml", &model_description(&table, &variables, &guid, path).expect("write modelDescription.xml"));
-        write("variables.rs", variables_rs(&variables, &guid).as_bytes());
+        write("variables.rs", variables_rs(&variables, &guid, &table.model_name, prefix).as_bytes());
         write("parameter_defaults.rs", defaults_rs(&variables).as_bytes());
     }
 }
@@ -410,10 +410,10 @@ fn write_structure(w: &mut Xml, variables: &[Resolved]) -> io::Result<()> {
     })
 }
 
-/// The table as Rust source: the GUID, the log categories, `VARIABLES`, and per kind the lists of
+/// The table as Rust source: the GUID, the log categories, `VARIABLES`, per kind the lists of
 /// (value reference => field) per owner, from which `dispatch!` (src/fmi/description.rs) writes the
-/// match arms of the getters and setters.
-fn variables_rs(variables: &[Resolved], guid: &str) -> String {
+/// match arms of the getters and setters, and `DESCRIPTION`, all of it as one value.
+fn variables_rs(variables: &[Resolved], guid: &str, model_name: &str, prefix: &str) -> String {
     let names: Vec<&str> = LOG_CATEGORIES.iter().map(|(n, _)| *n).collect();
     let mut s = format!("/// Fingerprint of the variable table, also in modelDescription.xml.\npub const GUID: &str = {guid:?};\n");
     s += &format!("/// Log categories accepted by fmi2SetDebugLogging.\npub const LOG_CATEGORIES: [&str; {}] = {names:?};\n", names.len());
@@ -436,7 +436,14 @@ fn variables_rs(variables: &[Resolved], guid: &str) -> String {
         let (p, i, o) = (fields("parameters"), fields("inputs"), fields("outputs"));
         s += &format!("    {functions}: parameters [{p}] inputs [{i}] outputs [{o}];\n");
     }
-    s + "}\n"
+    s += "}\n";
+    s += &format!(
+        "/// The table with its dispatch.\npub const DESCRIPTION: Description<Parameters, Inputs, Outputs> = Description {{\n    \
+         model_name: {model_name:?},\n    guid: GUID,\n    \
+         model_description_xml: include_str!(concat!(env!(\"OUT_DIR\"), \"/{prefix}modelDescription.xml\")),\n    \
+         variables: &VARIABLES,\n    get_real,\n    get_integer,\n    get_string,\n    real_mut,\n    integer_mut,\n    string_mut,\n}};\n"
+    );
+    s
 }
 
 /// `Default` for `Parameters` and `Inputs` from the start values, and the range checks of `Parameters`.
