@@ -12,7 +12,7 @@ PISTONSLAP := $(VENV)/bin/pistonslap
 # Plots render without a display.
 export MPLBACKEND := Agg
 
-.PHONY: fmu venv demo test thesis bench soak clean
+.PHONY: fmu venv demo coupled test thesis bench soak clean
 
 # cargo decides what to rebuild, so this always asks it. One binary, packed as PistonSlap.fmu and as its
 # partner EngineCycle.fmu; the Python package carries a copy of both.
@@ -35,6 +35,11 @@ venv: $(VENV_STAMP)
 
 demo: fmu venv
 	$(PISTONSLAP) demo --out out
+
+# PistonSlap driven by the EngineCycle FMU through the Python master (fmpy), the engine's output derivatives
+# passed on as input derivatives: CSV and plots in out/coupled.
+coupled: fmu venv
+	$(PISTONSLAP) coupled --out out/coupled
 
 # The style gate (rustfmt, clippy with warnings as errors), the Rust tests, then the fmpy tests
 # against the packaged FMU; fails if any fails.
