@@ -5,20 +5,23 @@ VENV := .venv
 VENV_PYTHON := $(VENV)/bin/python
 VENV_STAMP := $(VENV)/.installed
 FMU := target/fmu/PistonSlap.fmu
+ENGINE_FMU := target/fmu/EngineCycle.fmu
 
 PISTONSLAP := $(VENV)/bin/pistonslap
 
 # Plots render without a display.
 export MPLBACKEND := Agg
 
-.PHONY: fmu venv demo test thesis bench soak clean
+.PHONY: fmu venv demo coupled test thesis bench soak clean
 
-# cargo decides what to rebuild, so this always asks it. The Python package carries a copy of the FMU.
+# cargo decides what to rebuild, so this always asks it. One binary, packed as PistonSlap.fmu and as its
+# partner EngineCycle.fmu; the Python package carries a copy of both.
 fmu:
 	cargo build --release
 	cargo run --release --bin package_fmu
 	mkdir -p python/pistonslap/fmu
 	cp $(FMU) python/pistonslap/fmu/PistonSlap.fmu
+	cp $(ENGINE_FMU) python/pistonslap/fmu/EngineCycle.fmu
 
 # Created once from PyPI with the pinned versions, again only when they or the package's metadata change;
 # the package is installed editable (its code and FMU copy stay in python/), with the `pistonslap` command.
@@ -32,6 +35,11 @@ venv: $(VENV_STAMP)
 
 demo: fmu venv
 	$(PISTONSLAP) demo --out out
+
+# PistonSlap driven by the EngineCycle FMU through the Python master (fmpy), the engine's output derivatives
+# passed on as input derivatives: CSV and plots in out/coupled.
+coupled: fmu venv
+	$(PISTONSLAP) coupled --out out/coupled
 
 # The style gate (rustfmt, clippy with warnings as errors), the Rust tests, then the fmpy tests
 # against the packaged FMU; fails if any fails.

@@ -1,9 +1,10 @@
-//! Turns the variable table `modelDescription/variables.xml` (the one source of truth) into, in OUT_DIR:
+//! Turns each variable table of `modelDescription/` (the one source of truth of its FMU) into, in OUT_DIR,
+//! with the table's file prefix (none for PistonSlap's `variables.xml`, `engine_cycle_` for EngineCycle's):
 //! - `modelDescription.xml`: the FMI 2.0 model description shipped in the FMU;
 //! - `variables.rs`: the GUID, the variable table and the value-reference dispatch onto the fields of
 //!   `Parameters`, `Inputs` and `Outputs` (included by `src/fmi/description.rs`);
 //! - `parameter_defaults.rs`: the defaults and range checks of `Parameters` and `Inputs`
-//!   (included by `src/models/parameters.rs`).
+//!   (included by `src/models/parameters.rs` and `src/models/engine_cycle.rs`).
 //!
 //! Value references are the positions in the table (0, 1, …); ModelStructure indices are those plus one.
 
@@ -13,11 +14,19 @@ use serde::Deserialize;
 use std::io;
 use std::path::Path;
 
-const TABLE: &str = "modelDescription/variables.xml";
-const MODEL_NAME: &str = "PistonSlap";
+/// (table, prefix of the generated files).
+const TABLES: [(&str, &str); 2] = [("modelDescription/variables.xml", ""), ("modelDescription/engine_cycle.xml", "engine_cycle_")];
 
 #[derive(Deserialize)]
 struct Table {
+    #[serde(rename = "@modelName", default = "piston_slap")]
+    model_name: String,
+    #[serde(rename = "@description", default = "piston_slap_description")]
+    description: String,
+    #[serde(rename = "@canInterpolateInputs", default = "yes")]
+    can_interpolate_inputs: String,
+    #[serde(rename = "@maxOutputDerivativeOrder", default = "zero")]
+    max_output_derivative_order: String,
     #[serde(rename = "DefaultExperiment")]
     experiment: Experiment,
     #[serde(rename = "Units")]
@@ -26,6 +35,21 @@ struct Table {
     types: List<TypeDef>,
     #[serde(rename = "Variables")]
     variables: List<Variable>,
+}
+
+fn piston_slap() -> String {
+    "PistonSlap".into()
+}
+fn piston_slap_description() -> String {
+    "Piston secondary motion (piston slap): crank, connecting rod and piston with clearance, \
+     impacts and sliding of the piston corners on the liner"
+        .into()
+}
+fn yes() -> String {
+    "true".into()
+}
+fn zero() -> String {
+    "0".into()
 }
 
 /// An element's children, all of one type.
@@ -139,7 +163,6 @@ impl Resolved<'_> {
 }
 
 fn main() {
-    println!("cargo:rerun-if-changed={TABLE}");
     println!("cargo:rerun-if-changed=build.rs");
     // The memcheck test (tests/c_abi.rs) runs where valgrind is installed and is reported ignored elsewhere.
     println!("cargo::rustc-check-cfg=cfg(valgrind)");
@@ -148,18 +171,21 @@ fn main() {
         println!("cargo:rustc-cfg=valgrind");
     }
     println!("cargo:rerun-if-env-changed=SOURCE_DATE_EPOCH");
-    let source = std::fs::read_to_string(TABLE).expect("read modelDescription/variables.xml");
-    let table: Table = quick_xml::de::from_str(&source).expect("parse modelDescription/variables.xml");
-    let guid = guid_of(&source);
-    let variables = resolve(&table);
-    check(&variables);
-
     let out_dir = std::env::var("OUT_DIR").expect("OUT_DIR");
-    let out = Path::new(&out_dir);
-    let xml = model_description(&table, &variables, &guid).expect("write modelDescription.xml");
-    std::fs::write(out.join("modelDescription.xml"), xml).expect("write modelDescription.xml");
-    std::fs::write(out.join("variables.rs"), variables_rs(&variables, &guid)).expect("write variables.rs");
-    std::fs::write(out.join("parameter_defaults.rs"), defaults_rs(&variables)).expect("write parameter_defaults.rs");
+    for (path, prefix) in TABLES {
+        println!("cargo:rerun-if-changed={path}");
+        let source = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("read {path}: {e}"));
+        let table: Table = quick_xml::de::from_str(&source).unwrap_or_else(|e| panic!("parse {path}: {e}"));
+        let guid = guid_of(&source);
+        let variables = resolve(&table);
+        check(&variables);
+
+        let out = Path::new(&out_dir);
+        let write = |name: &str, text: &[u8]| std::fs::write(out.join(format!("{prefix}{name}")), text).expect("write OUT_DIR");
+        write("modelDescription.xml", &model_description(&table, &variables, &guid, path).expect("write modelDescription.xml"));
+        write("variables.rs", variables_rs(&variables, &guid, &table.model_name, prefix).as_bytes());
+        write("parameter_defaults.rs", defaults_rs(&variables).as_bytes());
+    }
 }
 
 fn resolve(table: &Table) -> Vec<Resolved<'_>> {
@@ -255,17 +281,15 @@ fn parent<'a>(
     Ok(())
 }
 
-fn model_description(table: &Table, variables: &[Resolved], guid: &str) -> io::Result<Vec<u8>> {
+fn model_description(table: &Table, variables: &[Resolved], guid: &str, path: &str) -> io::Result<Vec<u8>> {
     let mut w = Writer::new_with_indent(Vec::new(), b' ', 2);
     w.write_event(Event::Decl(BytesDecl::new("1.0", Some("UTF-8"), None)))?;
-    let description = "Piston secondary motion (piston slap): crank, connecting rod and piston with clearance, \
-                       impacts and sliding of the piston corners on the liner";
     let generated = generation_date_and_time();
     let root = [
         ("fmiVersion", "2.0"),
-        ("modelName", MODEL_NAME),
+        ("modelName", table.model_name.as_str()),
         ("guid", guid),
-        ("description", description),
+        ("description", table.description.as_str()),
         ("version", env!("CARGO_PKG_VERSION")),
         ("license", "MIT"),
         ("generationTool", "PistonSlap build.rs"),
@@ -274,14 +298,14 @@ fn model_description(table: &Table, variables: &[Resolved], guid: &str) -> io::R
         ("numberOfEventIndicators", "0"),
     ];
     parent(&mut w, "fmiModelDescription", root, |w| {
-        let comment = format!(" generated from modelDescription/variables.xml: {} variables ", variables.len());
+        let comment = format!(" generated from {path}: {} variables ", variables.len());
         w.write_event(Event::Comment(BytesText::new(&comment)))?;
         let capabilities = [
-            ("modelIdentifier", MODEL_NAME),
+            ("modelIdentifier", table.model_name.as_str()),
             ("needsExecutionTool", "false"),
             ("canHandleVariableCommunicationStepSize", "true"),
-            ("canInterpolateInputs", "true"),
-            ("maxOutputDerivativeOrder", "0"),
+            ("canInterpolateInputs", table.can_interpolate_inputs.as_str()),
+            ("maxOutputDerivativeOrder", table.max_output_derivative_order.as_str()),
             ("canRunAsynchronuously", "false"),
             ("canBeInstantiatedOnlyOncePerProcess", "false"),
             ("canNotUseMemoryManagementFunctions", "true"),
@@ -308,7 +332,7 @@ fn model_description(table: &Table, variables: &[Resolved], guid: &str) -> io::R
 const LOG_CATEGORIES: [(&str, &str); 3] = [
     ("logStatusError", "Errors: refused calls, bad parameters, failed steps"),
     ("logStatusFatal", "Fatal errors: a caught panic; the instance must be freed"),
-    ("logEvents", "Debug: impacts and sliding starts/releases during doStep"),
+    ("logEvents", "Debug: events during doStep (PistonSlap: impacts and sliding starts/releases)"),
 ];
 
 fn write_units_and_types(w: &mut Xml, table: &Table) -> io::Result<()> {
@@ -386,10 +410,10 @@ fn write_structure(w: &mut Xml, variables: &[Resolved]) -> io::Result<()> {
     })
 }
 
-/// The table as Rust source: the GUID, the log categories, `VARIABLES`, and per kind the lists of
+/// The table as Rust source: the GUID, the log categories, `VARIABLES`, per kind the lists of
 /// (value reference => field) per owner, from which `dispatch!` (src/fmi/description.rs) writes the
-/// match arms of the getters and setters.
-fn variables_rs(variables: &[Resolved], guid: &str) -> String {
+/// match arms of the getters and setters, and `DESCRIPTION`, all of it as one value.
+fn variables_rs(variables: &[Resolved], guid: &str, model_name: &str, prefix: &str) -> String {
     let names: Vec<&str> = LOG_CATEGORIES.iter().map(|(n, _)| *n).collect();
     let mut s = format!("/// Fingerprint of the variable table, also in modelDescription.xml.\npub const GUID: &str = {guid:?};\n");
     s += &format!("/// Log categories accepted by fmi2SetDebugLogging.\npub const LOG_CATEGORIES: [&str; {}] = {names:?};\n", names.len());
@@ -412,7 +436,14 @@ fn variables_rs(variables: &[Resolved], guid: &str) -> String {
         let (p, i, o) = (fields("parameters"), fields("inputs"), fields("outputs"));
         s += &format!("    {functions}: parameters [{p}] inputs [{i}] outputs [{o}];\n");
     }
-    s + "}\n"
+    s += "}\n";
+    s += &format!(
+        "/// The table with its dispatch.\npub const DESCRIPTION: Description<Parameters, Inputs, Outputs> = Description {{\n    \
+         model_name: {model_name:?},\n    guid: GUID,\n    \
+         model_description_xml: include_str!(concat!(env!(\"OUT_DIR\"), \"/{prefix}modelDescription.xml\")),\n    \
+         variables: &VARIABLES,\n    get_real,\n    get_integer,\n    get_string,\n    real_mut,\n    integer_mut,\n    string_mut,\n}};\n"
+    );
+    s
 }
 
 /// `Default` for `Parameters` and `Inputs` from the start values, and the range checks of `Parameters`.
@@ -424,6 +455,10 @@ fn defaults_rs(variables: &[Resolved]) -> String {
     };
     let mut s = String::new();
     for (owner, ty) in [("parameters", "Parameters"), ("inputs", "Inputs")] {
+        // A struct without fields derives its Default.
+        if !variables.iter().any(|v| v.owner() == owner) {
+            continue;
+        }
         s += &format!("impl Default for {ty} {{\n    fn default() -> Self {{\n        Self {{\n");
         for v in variables.iter().filter(|v| v.owner() == owner) {
             s += &format!("            {}: {},\n", v.a.name, literal(v.kind, v.a.start.as_deref().unwrap_or_default()));

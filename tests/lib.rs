@@ -7,5 +7,6 @@ mod c_abi;
 mod common;
 mod core;
 mod crank_train;
+mod engine_cycle_fmu;
 mod fmu_host;
 mod roller;

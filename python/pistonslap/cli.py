@@ -1,5 +1,5 @@
 """The `pistonslap` command: `pistonslap demo ...`, `pistonslap analysis ...`, `pistonslap sweep ...`,
-`pistonslap map ...`, `pistonslap fmu-path`."""
+`pistonslap map ...`, `pistonslap coupled ...`, `pistonslap fmu-path`."""
 
 import sys
 
@@ -36,11 +36,18 @@ def _map(argv):
     heat_map.main(argv)
 
 
+def _coupled(argv):
+    from . import coupled
+
+    coupled.main(argv)
+
+
 COMMANDS = {
     "demo": (_demo, "simulate an operating point, write CSVs and plots (pistonslap demo --help)"),
     "analysis": (_analysis, "model variant 2 analysed as in Farahanchi's thesis (pistonslap analysis --help)"),
     "sweep": (_sweep, "run a TOML sweep spec on Dask, resumable, into parquet (pistonslap sweep --help)"),
     "map": (_map, "heat map PNG of a sweep's metric or response class (pistonslap map --help)"),
+    "coupled": (_coupled, "PistonSlap driven by the EngineCycle FMU, CSV and plots (pistonslap coupled --help)"),
     "fmu-path": (_fmu_path, "print the path of the FMU this package runs"),
 }
 

@@ -1,11 +1,13 @@
-//! Packs the FMU: `cargo run --release --bin package_fmu [-- <libpistonslap.so> [<out.fmu>]]`.
+//! Packs the FMUs: `cargo run --release --bin package_fmu [-- <libpistonslap.so> [<out directory>]]`.
 //!
-//! Defaults: the cdylib next to this executable (the same cargo profile directory) and
-//! `<target>/fmu/PistonSlap.fmu`. The archive holds `modelDescription.xml` and the documentation's
-//! variable table, both generated from `modelDescription/variables.xml`, the binary as
-//! `binaries/linux64/PistonSlap.so`, and `resources/`.
+//! Defaults: the cdylib next to this executable (the same cargo profile directory) and `<target>/fmu/`.
+//! The one binary serves both FMUs (it makes an instance of the model whose GUID it gets):
+//! - `PistonSlap.fmu`: `modelDescription.xml` and the documentation's variable table, both generated from
+//!   `modelDescription/variables.xml`, the binary as `binaries/linux64/PistonSlap.so`, and `resources/`;
+//! - `EngineCycle.fmu`: its `modelDescription.xml` (from `modelDescription/engine_cycle.xml`) and the binary
+//!   as `binaries/linux64/EngineCycle.so`.
 
-use pistonslap::fmi::description::{Causality, Kind, MODEL_DESCRIPTION_XML, VARIABLES};
+use pistonslap::fmi::description::{engine_cycle, Causality, Kind, MODEL_DESCRIPTION_XML, VARIABLES};
 use std::fs::File;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -25,34 +27,40 @@ fn run() -> Result<(), String> {
     let mut args = std::env::args_os().skip(1);
     let library = args.next().map_or_else(|| profile_dir.join("libpistonslap.so"), PathBuf::from);
     let target_dir = profile_dir.parent().unwrap_or(&profile_dir);
-    let default_out = target_dir.join("fmu").join("PistonSlap.fmu");
-    let out = args.next().map_or(default_out, PathBuf::from);
+    let out_dir = args.next().map_or_else(|| target_dir.join("fmu"), PathBuf::from);
     let binary =
         std::fs::read(&library).map_err(|e| format!("cannot read {} ({e}); run `cargo build --release` first", library.display()))?;
-    if let Some(dir) = out.parent() {
-        std::fs::create_dir_all(dir).map_err(|e| format!("cannot create {}: {e}", dir.display()))?;
+    std::fs::create_dir_all(&out_dir).map_err(|e| format!("cannot create {}: {e}", out_dir.display()))?;
+    let documentation = documentation();
+    let piston_slap: [(&str, &[u8], bool); 7] = [
+        ("modelDescription.xml", MODEL_DESCRIPTION_XML.as_bytes(), false),
+        ("binaries/linux64/PistonSlap.so", &binary, true),
+        ("documentation/index.html", documentation.as_bytes(), false),
+        ("documentation/geometry.svg", GEOMETRY_SVG.as_bytes(), false),
+        ("resources/README.txt", RESOURCES_README.as_bytes(), false),
+        ("resources/full_load.csv", FULL_LOAD_TRACE.as_bytes(), false),
+        ("resources/motored.csv", MOTORED_TRACE.as_bytes(), false),
+    ];
+    let engine_cycle: [(&str, &[u8], bool); 2] = [
+        ("modelDescription.xml", engine_cycle::MODEL_DESCRIPTION_XML.as_bytes(), false),
+        ("binaries/linux64/EngineCycle.so", &binary, true),
+    ];
+    for (name, files, variables) in
+        [("PistonSlap.fmu", &piston_slap[..], VARIABLES.len()), ("EngineCycle.fmu", &engine_cycle[..], engine_cycle::VARIABLES.len())]
+    {
+        let out = out_dir.join(name);
+        write_fmu(&out, files).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
+        println!("wrote {} ({variables} variables, binary {})", out.display(), library.display());
     }
-    write_fmu(&out, &binary).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
-    println!("wrote {} ({} variables, binary {})", out.display(), VARIABLES.len(), library.display());
     Ok(())
 }
 
-fn write_fmu(out: &Path, binary: &[u8]) -> zip::result::ZipResult<()> {
+/// The archive of `files`: (name in the archive, bytes, executable).
+fn write_fmu(out: &Path, files: &[(&str, &[u8], bool)]) -> zip::result::ZipResult<()> {
     let mut zip = zip::ZipWriter::new(File::create(out)?);
     let text = SimpleFileOptions::default().compression_method(CompressionMethod::Deflated);
-    let executable = text.unix_permissions(0o755);
-    let documentation = documentation();
-    let files: [(&str, &[u8], SimpleFileOptions); 7] = [
-        ("modelDescription.xml", MODEL_DESCRIPTION_XML.as_bytes(), text),
-        ("binaries/linux64/PistonSlap.so", binary, executable),
-        ("documentation/index.html", documentation.as_bytes(), text),
-        ("documentation/geometry.svg", GEOMETRY_SVG.as_bytes(), text),
-        ("resources/README.txt", RESOURCES_README.as_bytes(), text),
-        ("resources/full_load.csv", FULL_LOAD_TRACE.as_bytes(), text),
-        ("resources/motored.csv", MOTORED_TRACE.as_bytes(), text),
-    ];
-    for (name, bytes, options) in files {
-        zip.start_file(name, options)?;
+    for &(name, bytes, executable) in files {
+        zip.start_file(name, if executable { text.unix_permissions(0o755) } else { text })?;
         zip.write_all(bytes)?;
     }
     zip.finish()?;

@@ -1,11 +1,27 @@
 //! The exported C symbols of `fmi_headers/fmi2Functions.h`: the common and Co-Simulation functions,
-//! each a call of its generic body in `functions.rs` with the shipped [`ModelVariant`].
+//! each a call of its generic body in `functions.rs`. One binary serves both FMUs of the crate: an
+//! instance is made for the model whose GUID fmi2Instantiate gets (EngineCycle's, else PistonSlap's
+//! [`ModelVariant`], which refuses a wrong GUID), and every later call goes to the model whose tag the
+//! instance carries (PistonSlap's when none matches: its body then refuses the pointer).
 #![allow(unsafe_code, non_snake_case, clippy::missing_safety_doc)]
 
 use super::functions;
+use super::instance::Model;
 use super::types::*;
+use crate::models::EngineCycle;
 use crate::simulation::ModelVariant;
 use std::ffi::{c_char, c_int};
+
+/// `functions::$f::<M>($args)` for the model M that made instance `$c`; expands inside the caller's
+/// `unsafe` block.
+macro_rules! by_model {
+    ($c:expr, $f:ident($($arg:expr),*)) => {
+        match functions::instance_tag($c) {
+            Some(tag) if tag == <EngineCycle as Model>::INSTANCE_TAG => functions::$f::<EngineCycle>($($arg),*),
+            _ => functions::$f::<ModelVariant>($($arg),*),
+        }
+    };
+}
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetTypesPlatform() -> *const c_char {
@@ -20,7 +36,7 @@ pub unsafe extern "C" fn fmi2GetVersion() -> *const c_char {
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetDebugLogging(c: fmi2Component, on: fmi2Boolean, n: usize, categories: *const fmi2String) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_debug_logging::<ModelVariant>(c, on, n, categories) }
+    unsafe { by_model!(c, set_debug_logging(c, on, n, categories)) }
 }
 
 #[no_mangle]
@@ -34,13 +50,19 @@ pub unsafe extern "C" fn fmi2Instantiate(
     logging_on: fmi2Boolean,
 ) -> fmi2Component {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::instantiate::<ModelVariant>(name, fmu_type, guid, resource_location, functions, logging_on) }
+    unsafe {
+        if functions::has_guid::<EngineCycle>(guid) {
+            functions::instantiate::<EngineCycle>(name, fmu_type, guid, resource_location, functions, logging_on)
+        } else {
+            functions::instantiate::<ModelVariant>(name, fmu_type, guid, resource_location, functions, logging_on)
+        }
+    }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2FreeInstance(c: fmi2Component) {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::free_instance::<ModelVariant>(c) }
+    unsafe { by_model!(c, free_instance(c)) }
 }
 
 #[no_mangle]
@@ -53,109 +75,109 @@ pub unsafe extern "C" fn fmi2SetupExperiment(
     stop: fmi2Real,
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::setup_experiment::<ModelVariant>(c, start, stop_defined, stop) }
+    unsafe { by_model!(c, setup_experiment(c, start, stop_defined, stop)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2EnterInitializationMode(c: fmi2Component) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::enter_initialization_mode::<ModelVariant>(c) }
+    unsafe { by_model!(c, enter_initialization_mode(c)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2ExitInitializationMode(c: fmi2Component) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::exit_initialization_mode::<ModelVariant>(c) }
+    unsafe { by_model!(c, exit_initialization_mode(c)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2Terminate(c: fmi2Component) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::terminate::<ModelVariant>(c) }
+    unsafe { by_model!(c, terminate(c)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2Reset(c: fmi2Component) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::reset::<ModelVariant>(c) }
+    unsafe { by_model!(c, reset(c)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetReal(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2Real) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_real::<ModelVariant>(c, vr, n, value) }
+    unsafe { by_model!(c, get_real(c, vr, n, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetInteger(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2Integer) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_integer::<ModelVariant>(c, vr, n, value) }
+    unsafe { by_model!(c, get_integer(c, vr, n, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetBoolean(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2Boolean) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_boolean::<ModelVariant>(c, vr, n, value) }
+    unsafe { by_model!(c, get_boolean(c, vr, n, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetString(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2String) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_string::<ModelVariant>(c, vr, n, value) }
+    unsafe { by_model!(c, get_string(c, vr, n, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetReal(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2Real) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_real::<ModelVariant>(c, vr, n, value) }
+    unsafe { by_model!(c, set_real(c, vr, n, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetInteger(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2Integer) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_integer::<ModelVariant>(c, vr, n, value) }
+    unsafe { by_model!(c, set_integer(c, vr, n, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetBoolean(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2Boolean) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_boolean::<ModelVariant>(c, vr, n, value) }
+    unsafe { by_model!(c, set_boolean(c, vr, n, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetString(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2String) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_string::<ModelVariant>(c, vr, n, value) }
+    unsafe { by_model!(c, set_string(c, vr, n, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetFMUstate(c: fmi2Component, state: *mut fmi2FMUstate) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_fmu_state::<ModelVariant>(c, state) }
+    unsafe { by_model!(c, get_fmu_state(c, state)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SetFMUstate(c: fmi2Component, state: fmi2FMUstate) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_fmu_state::<ModelVariant>(c, state) }
+    unsafe { by_model!(c, set_fmu_state(c, state)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2FreeFMUstate(c: fmi2Component, state: *mut fmi2FMUstate) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::free_fmu_state::<ModelVariant>(c, state) }
+    unsafe { by_model!(c, free_fmu_state(c, state)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SerializedFMUstateSize(c: fmi2Component, state: fmi2FMUstate, size: *mut usize) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::serialized_fmu_state_size::<ModelVariant>(c, state, size) }
+    unsafe { by_model!(c, serialized_fmu_state_size(c, state, size)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2SerializeFMUstate(c: fmi2Component, state: fmi2FMUstate, buffer: *mut fmi2Byte, size: usize) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::serialize_fmu_state::<ModelVariant>(c, state, buffer, size) }
+    unsafe { by_model!(c, serialize_fmu_state(c, state, buffer, size)) }
 }
 
 #[no_mangle]
@@ -166,7 +188,7 @@ pub unsafe extern "C" fn fmi2DeSerializeFMUstate(
     state: *mut fmi2FMUstate,
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::deserialize_fmu_state::<ModelVariant>(c, buffer, size, state) }
+    unsafe { by_model!(c, deserialize_fmu_state(c, buffer, size, state)) }
 }
 
 #[no_mangle]
@@ -180,7 +202,7 @@ pub unsafe extern "C" fn fmi2GetDirectionalDerivative(
     _dv_unknown: *mut fmi2Real,
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_directional_derivative::<ModelVariant>(c) }
+    unsafe { by_model!(c, get_directional_derivative(c)) }
 }
 
 #[no_mangle]
@@ -192,59 +214,59 @@ pub unsafe extern "C" fn fmi2SetRealInputDerivatives(
     value: *const fmi2Real,
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::set_real_input_derivatives::<ModelVariant>(c, vr, n, order, value) }
+    unsafe { by_model!(c, set_real_input_derivatives(c, vr, n, order, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetRealOutputDerivatives(
     c: fmi2Component,
-    _vr: *const fmi2ValueReference,
-    _n: usize,
-    _order: *const fmi2Integer,
-    _value: *mut fmi2Real,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    order: *const fmi2Integer,
+    value: *mut fmi2Real,
 ) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_real_output_derivatives::<ModelVariant>(c) }
+    unsafe { by_model!(c, get_real_output_derivatives(c, vr, n, order, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2DoStep(c: fmi2Component, t: fmi2Real, h: fmi2Real, _no_set_prior: fmi2Boolean) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::do_step::<ModelVariant>(c, t, h) }
+    unsafe { by_model!(c, do_step(c, t, h)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2CancelStep(c: fmi2Component) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::cancel_step::<ModelVariant>(c) }
+    unsafe { by_model!(c, cancel_step(c)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetStatus(c: fmi2Component, kind: c_int, value: *mut c_int) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_status::<ModelVariant>(c, kind, value) }
+    unsafe { by_model!(c, get_status(c, kind, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetRealStatus(c: fmi2Component, kind: c_int, value: *mut fmi2Real) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_real_status::<ModelVariant>(c, kind, value) }
+    unsafe { by_model!(c, get_real_status(c, kind, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetIntegerStatus(c: fmi2Component, kind: c_int, value: *mut fmi2Integer) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_integer_status::<ModelVariant>(c, kind, value) }
+    unsafe { by_model!(c, get_integer_status(c, kind, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetBooleanStatus(c: fmi2Component, kind: c_int, value: *mut fmi2Boolean) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_boolean_status::<ModelVariant>(c, kind, value) }
+    unsafe { by_model!(c, get_boolean_status(c, kind, value)) }
 }
 
 #[no_mangle]
 pub unsafe extern "C" fn fmi2GetStringStatus(c: fmi2Component, kind: c_int, value: *mut fmi2String) -> Status {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
-    unsafe { functions::get_string_status::<ModelVariant>(c, kind, value) }
+    unsafe { by_model!(c, get_string_status(c, kind, value)) }
 }

@@ -1,38 +1,36 @@
-//! The fmi2 functions, generic over the engine model so that tests drive the same pointer handling
-//! with a test model; `exports.rs` gives them their C names with the shipped engine.
+//! The fmi2 functions, generic over the model so that one body serves PistonSlap, EngineCycle and the
+//! test models; `exports.rs` gives them their C names, choosing the model by the instance's tag.
 //!
 //! Each function turns the host's pointers into Rust values (`pointers.rs`) and hands them to the
 //! instance inside [`call`], which consults the state machine's table, runs the instance's safe logic
 //! inside `catch_unwind` (a panic is logged and returns fmi2Fatal), and logs every refusal.
 #![allow(unsafe_code)]
 
-use super::description::{self, Kind, GUID};
+use super::description::Kind;
 use super::instance::{Core, Instance, Model, Outcome, Refusal, Value};
 use super::logger::Logger;
 use super::pointers::{out, slice, slice_mut, string};
 use super::reentry::Entered;
 use super::state_machine::Function::{self, *};
 use super::types::*;
-use crate::models::{Inputs, Outputs, Parameters};
 use std::any::Any;
 use std::ffi::{c_int, CStr, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 
-/// Marks live instances and FMU states: a pointer that is not one of ours (or already freed, as far as
-/// its memory still says so) is refused instead of used.
-const INSTANCE_TAG: u64 = u64::from_le_bytes(*b"PSLAPINS");
-const STATE_TAG: u64 = u64::from_le_bytes(*b"PSLAPSTA");
-
-/// What an `fmi2Component` points to.
-pub struct Component<E> {
+/// What an `fmi2Component` points to. The tag ([`Model::INSTANCE_TAG`], first in a C layout, so
+/// [`instance_tag`] reads it whatever the model) marks a live instance of that model: a pointer that is
+/// not one of ours (or already freed, as far as its memory still says so) is refused instead of used.
+#[repr(C)]
+pub struct Component<E: Model> {
     tag: u64,
     pub instance: Instance<E>,
     /// Strings returned by fmi2GetString: valid until the next call on this instance.
     strings: Vec<CString>,
 }
 
-/// What an `fmi2FMUstate` points to.
-struct Snapshot<E> {
+/// What an `fmi2FMUstate` points to, tagged with [`Model::STATE_TAG`] likewise.
+#[repr(C)]
+struct Snapshot<E: Model> {
     tag: u64,
     core: Core<E>,
     /// The serialized form, encoded once for fmi2SerializedFMUstateSize and fmi2SerializeFMUstate.
@@ -41,7 +39,7 @@ struct Snapshot<E> {
 
 impl<E: Model> Snapshot<E> {
     fn new(core: Core<E>) -> Self {
-        Self { tag: STATE_TAG, core, bytes: None }
+        Self { tag: E::STATE_TAG, core, bytes: None }
     }
 
     fn bytes(&mut self) -> Outcome<&[u8]> {
@@ -97,10 +95,31 @@ unsafe fn run<E: Model>(c: fmi2Component, function: Function, f: impl FnOnce(&mu
 
 /// # Safety
 /// As [`call`].
-unsafe fn component<'a, E>(c: fmi2Component) -> Option<&'a mut Component<E>> {
-    // SAFETY: NULL is checked by `as_mut`; anything else is ours or readable memory (the contract).
-    let component = unsafe { (c as *mut Component<E>).as_mut()? };
-    (component.tag == INSTANCE_TAG).then_some(component)
+unsafe fn component<'a, E: Model>(c: fmi2Component) -> Option<&'a mut Component<E>> {
+    // SAFETY: NULL is checked by `instance_tag`; anything else is ours or readable memory (the contract).
+    if unsafe { instance_tag(c) } != Some(E::INSTANCE_TAG) {
+        return None;
+    }
+    // SAFETY: tagged as a live instance of this model.
+    Some(unsafe { &mut *(c as *mut Component<E>) })
+}
+
+/// The tag of the instance behind `c` (which model made it), None for NULL.
+///
+/// # Safety
+/// As [`call`], for any model: every `Component` starts with its `u64` tag.
+pub unsafe fn instance_tag(c: fmi2Component) -> Option<u64> {
+    // SAFETY: NULL is checked by `as_ref`; `Component` is `repr(C)` with the tag first.
+    unsafe { (c as *const u64).as_ref().copied() }
+}
+
+/// Whether fmi2Instantiate's `guid` is the GUID of model `E` (false for NULL).
+///
+/// # Safety
+/// `guid` is NULL or a NUL-terminated string.
+pub unsafe fn has_guid<E: Model>(guid: fmi2String) -> bool {
+    // SAFETY: the caller's contract.
+    !guid.is_null() && unsafe { CStr::from_ptr(guid) }.to_bytes() == E::DESCRIPTION.guid.as_bytes()
 }
 
 fn panic_text(panic: &(dyn Any + Send)) -> &str {
@@ -109,12 +128,14 @@ fn panic_text(panic: &(dyn Any + Send)) -> &str {
 
 /// # Safety
 /// `state` is NULL, an FMU state made by this model's functions, or memory readable as one.
-unsafe fn snapshot<'a, E>(state: fmi2FMUstate) -> Outcome<&'a mut Snapshot<E>> {
-    // SAFETY: NULL is checked by `as_mut`; the tag tells ours from freed or foreign memory.
-    match unsafe { (state as *mut Snapshot<E>).as_mut() } {
+unsafe fn snapshot<'a, E: Model>(state: fmi2FMUstate) -> Outcome<&'a mut Snapshot<E>> {
+    // SAFETY: NULL is checked by `as_ref`; `Snapshot` is `repr(C)` with the tag first, which tells ours
+    // from freed, foreign or another model's memory before the rest is read.
+    match unsafe { (state as *const u64).as_ref() } {
         None => Err(Refusal::error("FMUstate is NULL")),
-        Some(s) if s.tag != STATE_TAG => Err(Refusal::error("FMUstate was not made by this FMU (or is freed)")),
-        Some(s) => Ok(s),
+        Some(&tag) if tag != E::STATE_TAG => Err(Refusal::error("FMUstate was not made by this FMU (or is freed)")),
+        // SAFETY: tagged as this model's snapshot.
+        Some(_) => Ok(unsafe { &mut *(state as *mut Snapshot<E>) }),
     }
 }
 
@@ -169,11 +190,12 @@ pub unsafe fn instantiate<E: Model>(
             }
             if fmu_type != FMI2_CO_SIMULATION {
                 return Err(Refusal::error(format!(
-                    "fmuType = {fmu_type} refused: PistonSlap is a Co-Simulation FMU (fmi2CoSimulation = {FMI2_CO_SIMULATION})"
+                    "fmuType = {fmu_type} refused: {} is a Co-Simulation FMU (fmi2CoSimulation = {FMI2_CO_SIMULATION})",
+                    E::NAME
                 )));
             }
-            if guid != GUID {
-                return Err(Refusal::error(format!("fmuGUID {guid} does not match this binary's {GUID}")));
+            if guid != E::DESCRIPTION.guid {
+                return Err(Refusal::error(format!("fmuGUID {guid} does not match this binary's {}", E::DESCRIPTION.guid)));
             }
             if !resources.starts_with("file:") {
                 return Err(Refusal::error(format!("fmuResourceLocation {resources:?} is not a file URI")));
@@ -183,7 +205,7 @@ pub unsafe fn instantiate<E: Model>(
         };
         match check() {
             Ok(resources) => {
-                let component = Component { tag: INSTANCE_TAG, instance: Instance::<E>::new(logger, resources), strings: Vec::new() };
+                let component = Component { tag: E::INSTANCE_TAG, instance: Instance::<E>::new(logger, resources), strings: Vec::new() };
                 Box::into_raw(Box::new(component)) as fmi2Component
             }
             Err(refusal) => {
@@ -263,8 +285,8 @@ pub unsafe fn reset<E: Model>(c: fmi2Component) -> Status {
     unsafe { run::<E>(c, fmi2Reset, |comp| comp.instance.reset()) }
 }
 
-/// The generated reader of one variable kind (`description::get_real`, …).
-type Reader<T> = for<'a> fn(u32, &'a Parameters, &'a Inputs, &'a Outputs) -> Option<T>;
+/// The generated reader of one variable kind (`Description::get_real`, …).
+type Reader<E, T> = for<'a> fn(u32, &'a <E as Model>::Parameters, &'a <E as Model>::Inputs, &'a <E as Model>::Outputs) -> Option<T>;
 
 /// The shared body of fmi2GetReal and fmi2GetInteger.
 ///
@@ -274,7 +296,7 @@ unsafe fn get<E: Model, T: Copy>(
     c: fmi2Component,
     function: Function,
     kind: Kind,
-    read: Reader<T>,
+    read: Reader<E, T>,
     vr: *const fmi2ValueReference,
     n: usize,
     value: *mut T,
@@ -287,14 +309,14 @@ unsafe fn get<E: Model, T: Copy>(
 /// As [`get`].
 pub unsafe fn get_real<E: Model>(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2Real) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { get::<E, _>(c, fmi2GetReal, Kind::Real, description::get_real, vr, n, value) }
+    unsafe { get::<E, _>(c, fmi2GetReal, Kind::Real, E::DESCRIPTION.get_real, vr, n, value) }
 }
 
 /// # Safety
 /// As [`get`].
 pub unsafe fn get_integer<E: Model>(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2Integer) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { get::<E, _>(c, fmi2GetInteger, Kind::Integer, description::get_integer, vr, n, value) }
+    unsafe { get::<E, _>(c, fmi2GetInteger, Kind::Integer, E::DESCRIPTION.get_integer, vr, n, value) }
 }
 
 /// # Safety
@@ -305,7 +327,7 @@ pub unsafe fn get_string<E: Model>(c: fmi2Component, vr: *const fmi2ValueReferen
         run::<E>(c, fmi2GetString, |comp| {
             let (vrs, out) = (slice(vr, n, "vr")?, slice_mut(value, n, "value")?);
             let mut strings = vec![CString::default(); n];
-            comp.instance.get(vrs, Kind::String, c_string_of, &mut strings)?;
+            comp.instance.get(vrs, Kind::String, c_string_of::<E>, &mut strings)?;
             comp.strings = strings;
             for (o, s) in out.iter_mut().zip(&comp.strings) {
                 *o = s.as_ptr();
@@ -316,8 +338,8 @@ pub unsafe fn get_string<E: Model>(c: fmi2Component, vr: *const fmi2ValueReferen
 }
 
 /// A String variable as C string (strings set from C have no interior NUL).
-fn c_string_of(vr: u32, p: &Parameters, i: &Inputs, o: &Outputs) -> Option<CString> {
-    description::get_string(vr, p, i, o).map(|s| CString::new(s).unwrap_or_default())
+fn c_string_of<E: Model>(vr: u32, p: &E::Parameters, i: &E::Inputs, o: &E::Outputs) -> Option<CString> {
+    (E::DESCRIPTION.get_string)(vr, p, i, o).map(|s| CString::new(s).unwrap_or_default())
 }
 
 /// # Safety
@@ -495,10 +517,21 @@ pub unsafe fn set_real_input_derivatives<E: Model>(
 }
 
 /// # Safety
-/// As [`call`].
-pub unsafe fn get_real_output_derivatives<E: Model>(c: fmi2Component) -> Status {
+/// As [`call`]; `vr`, `order` and `value` are NULL or point to `n` elements.
+pub unsafe fn get_real_output_derivatives<E: Model>(
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    order: *const fmi2Integer,
+    value: *mut fmi2Real,
+) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { unsupported::<E>(c, fmi2GetRealOutputDerivatives, "not provided (maxOutputDerivativeOrder = 0)") }
+    unsafe {
+        run::<E>(c, fmi2GetRealOutputDerivatives, |comp| {
+            let (vrs, orders, out) = (slice(vr, n, "vr")?, slice(order, n, "order")?, slice_mut(value, n, "value")?);
+            comp.instance.output_derivatives(vrs, orders, out)
+        })
+    }
 }
 
 /// # Safety

@@ -6,19 +6,15 @@
 //! computed) puts the instance in the error state, as the standard says; its state is still the one
 //! before the call, so fmi2SetFMUstate or fmi2Reset continue from there.
 
-use super::description::{self, Causality, Kind, GUID};
+use super::description::{Causality, Kind, Variable};
 use super::logger::Logger;
+pub use super::model::Model;
 use super::state_bytes;
 use super::state_machine::Mode::{self, *};
 use super::types::Status;
-use crate::models::{EngineModel, InputDerivatives, Inputs, ModelError, Parameters};
-use crate::simulation::Simulation;
-use serde::{de::DeserializeOwned, Deserialize, Serialize};
+use crate::models::ModelError;
+use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
-
-/// What the FMU layer needs of an engine model: run it, and save it in an FMU state.
-pub trait Model: EngineModel + Serialize + DeserializeOwned {}
-impl<E: EngineModel + Serialize + DeserializeOwned> Model for E {}
 
 /// A refused or failed call: the status to return and the message to log.
 #[derive(Debug, Clone, PartialEq)]
@@ -40,34 +36,36 @@ pub type Outcome<T = ()> = Result<T, Refusal>;
 
 /// Where the instance is in its life, with the data each phase has.
 #[derive(Clone, Debug, Serialize, Deserialize)]
-enum Phase<E> {
+#[serde(bound = "")]
+enum Phase<E: Model> {
     Instantiated,
     InitializationMode,
-    StepComplete(Simulation<E>),
-    Terminated(Simulation<E>),
+    StepComplete(E::Simulation),
+    Terminated(E::Simulation),
 }
 
 /// Everything an FMU state saves: phase, experiment, variables, simulation.
 #[derive(Clone, Debug, Serialize, Deserialize)]
-pub struct Core<E> {
+#[serde(bound = "")]
+pub struct Core<E: Model> {
     phase: Phase<E>,
     start_time: f64,
     stop_time: Option<f64>,
-    parameters: Parameters,
-    inputs: Inputs,
+    parameters: E::Parameters,
+    inputs: E::Inputs,
     /// Set by fmi2SetRealInputDerivatives, each input's reset by its next fmi2SetReal.
-    derivatives: InputDerivatives,
+    derivatives: E::InputDerivatives,
 }
 
-impl<E> Default for Core<E> {
+impl<E: Model> Default for Core<E> {
     fn default() -> Self {
         Self {
             phase: Phase::Instantiated,
             start_time: 0.0,
             stop_time: None,
-            parameters: Parameters::default(),
-            inputs: Inputs::default(),
-            derivatives: InputDerivatives::default(),
+            parameters: E::Parameters::default(),
+            inputs: E::Inputs::default(),
+            derivatives: E::InputDerivatives::default(),
         }
     }
 }
@@ -75,7 +73,7 @@ impl<E> Default for Core<E> {
 impl<E: Model> Core<E> {
     /// The serialized FMU state.
     pub fn serialize(&self) -> Outcome<Vec<u8>> {
-        state_bytes::encode(self, GUID).map_err(Refusal::error)
+        state_bytes::encode(self, E::DESCRIPTION.guid).map_err(Refusal::error)
     }
 
     /// What every state this FMU makes satisfies, so what a restored one must: finite times and
@@ -85,17 +83,19 @@ impl<E: Model> Core<E> {
         if !self.start_time.is_finite() || self.stop_time.is_some_and(|s| !(s >= self.start_time && s.is_finite())) {
             return Err(format!("start time {} s or stop time {:?} s is invalid", self.start_time, self.stop_time));
         }
-        let no_outputs = crate::models::Outputs::default();
-        for (vr, v) in description::VARIABLES.iter().enumerate() {
+        let no_outputs = E::Outputs::default();
+        for (vr, v) in E::DESCRIPTION.variables.iter().enumerate() {
             if v.kind == Kind::Real && v.causality != Causality::Output {
-                let x = description::get_real(vr as u32, &self.parameters, &self.inputs, &no_outputs);
+                let x = (E::DESCRIPTION.get_real)(vr as u32, &self.parameters, &self.inputs, &no_outputs);
                 if x.is_some_and(|x| !x.is_finite()) {
                     return Err(format!("{} = {x:?} is not finite", v.name));
                 }
             }
         }
         match &self.phase {
-            Phase::StepComplete(sim) | Phase::Terminated(sim) => self.parameters.validate().and_then(|()| sim.check()).map_err(|e| e.0),
+            Phase::StepComplete(sim) | Phase::Terminated(sim) => {
+                E::validate(&self.parameters).and_then(|()| E::check(sim)).map_err(|e| e.0)
+            }
             Phase::Instantiated | Phase::InitializationMode => Ok(()),
         }
     }
@@ -118,7 +118,7 @@ impl Value<'_> {
     }
 }
 
-pub struct Instance<E> {
+pub struct Instance<E: Model> {
     pub logger: Logger,
     /// Set by a model failure (Error) or a caught panic (Fatal); overrides the phase.
     failure: Option<Mode>,
@@ -126,10 +126,6 @@ pub struct Instance<E> {
     /// The FMU's `resources/` directory, where bare file names of parameters are looked up.
     resources: Option<PathBuf>,
 }
-
-/// The highest input derivative order fmi2SetRealInputDerivatives takes (the inputs follow polynomials
-/// of this degree over a step).
-const MAX_INPUT_DERIVATIVE_ORDER: i32 = 2;
 
 /// Relative tolerance on the communication point: hosts accumulate t += h in floating point.
 const TIME_TOLERANCE: f64 = 1e-9;
@@ -139,10 +135,9 @@ impl<E: Model> Instance<E> {
         Self { logger, failure: None, core: Core::default(), resources }
     }
 
-    /// The parameters with a bare `pressure_trace` file name turned into its path in the resources.
-    fn resolved_parameters(&self) -> Parameters {
-        let trace = super::resources::resolve(&self.core.parameters.pressure_trace, self.resources.as_deref());
-        Parameters { pressure_trace: trace, ..self.core.parameters.clone() }
+    /// The parameters with bare file names turned into their paths in the resources.
+    fn resolved_parameters(&self) -> E::Parameters {
+        E::resolve(&self.core.parameters, self.resources.as_deref())
     }
 
     pub fn mode(&self) -> Mode {
@@ -178,7 +173,7 @@ impl<E: Model> Instance<E> {
 
     /// Builds the simulation from the parameters: bad parameters are a failure naming the parameter.
     pub fn exit_initialization_mode(&mut self) -> Outcome {
-        let sim = Simulation::start(&self.resolved_parameters(), self.core.start_time).map_err(|e| self.fail(e))?;
+        let sim = E::start(&self.resolved_parameters(), self.core.start_time).map_err(|e| self.fail(e))?;
         self.core.phase = Phase::StepComplete(sim);
         Ok(())
     }
@@ -206,13 +201,14 @@ impl<E: Model> Instance<E> {
         for (vr, value) in values {
             let missing = || Refusal::error(format!("value reference {vr} has no field")); // excluded above
                                                                                            // A new value of an input ends the polynomial its derivatives described (FMI 2.0 §4.2.1).
-            if let Some(d) = description::variable(*vr).and_then(|v| self.core.derivatives.of_mut(v.name)) {
+            if let Some(d) = E::DESCRIPTION.variable(*vr).and_then(|v| E::input_derivatives(&mut self.core.derivatives, v.name)) {
                 *d = [0.0; 2];
             }
+            let d = &E::DESCRIPTION;
             match value {
-                Value::Real(x) => *description::real_mut(*vr, p, i).ok_or_else(missing)? = *x,
-                Value::Integer(x) => *description::integer_mut(*vr, p, i).ok_or_else(missing)? = *x,
-                Value::String(s) => *description::string_mut(*vr, p, i).ok_or_else(missing)? = (*s).to_string(),
+                Value::Real(x) => *(d.real_mut)(*vr, p, i).ok_or_else(missing)? = *x,
+                Value::Integer(x) => *(d.integer_mut)(*vr, p, i).ok_or_else(missing)? = *x,
+                Value::String(s) => *(d.string_mut)(*vr, p, i).ok_or_else(missing)? = (*s).to_string(),
             }
         }
         Ok(())
@@ -223,14 +219,15 @@ impl<E: Model> Instance<E> {
     /// their next fmi2SetReal.
     pub fn set_input_derivatives(&mut self, vrs: &[u32], orders: &[i32], values: &[f64]) -> Outcome {
         for ((&vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
-            let v = typed_variable(vr, Kind::Real)?;
+            let v = typed_variable::<E>(vr, Kind::Real)?;
             if v.causality != Causality::Input {
                 return Err(Refusal::error(format!("{} (value reference {vr}) is not an input: it has no input derivatives", v.name)));
             }
-            if !(1..=MAX_INPUT_DERIVATIVE_ORDER).contains(&order) {
+            if !(1..=E::MAX_INPUT_DERIVATIVE_ORDER).contains(&order) {
                 return Err(Refusal::error(format!(
-                    "derivative order {order} of {} refused: orders 1..={MAX_INPUT_DERIVATIVE_ORDER} are supported",
-                    v.name
+                    "derivative order {order} of {} refused: orders 1..={} are supported",
+                    v.name,
+                    E::MAX_INPUT_DERIVATIVE_ORDER
                 )));
             }
             if !value.is_finite() {
@@ -238,15 +235,16 @@ impl<E: Model> Instance<E> {
             }
         }
         for ((&vr, &order), &value) in vrs.iter().zip(orders).zip(values) {
-            let name = description::variable(vr).map_or("", |v| v.name);
-            let d = self.core.derivatives.of_mut(name).ok_or_else(|| Refusal::error(format!("{name} has no input derivatives")))?;
+            let name = E::DESCRIPTION.variable(vr).map_or("", |v| v.name);
+            let d = E::input_derivatives(&mut self.core.derivatives, name)
+                .ok_or_else(|| Refusal::error(format!("{name} has no input derivatives")))?;
             d[order as usize - 1] = value;
         }
         Ok(())
     }
 
     fn check_settable(&self, vr: u32, value: &Value) -> Outcome {
-        let v = typed_variable(vr, value.kind())?;
+        let v = typed_variable::<E>(vr, value.kind())?;
         match v.causality {
             Causality::Output => return Err(Refusal::error(format!("{} (value reference {vr}) is an output: it cannot be set", v.name))),
             Causality::Parameter if !matches!(self.mode(), Instantiated | InitializationMode) => {
@@ -270,21 +268,25 @@ impl<E: Model> Instance<E> {
         &self,
         vrs: &[u32],
         kind: Kind,
-        read: impl for<'a> Fn(u32, &'a Parameters, &'a Inputs, &'a crate::models::Outputs) -> Option<T>,
+        read: impl for<'a> Fn(u32, &'a E::Parameters, &'a E::Inputs, &'a E::Outputs) -> Option<T>,
         out: &mut [T],
     ) -> Outcome {
         for &vr in vrs {
-            typed_variable(vr, kind)?;
+            typed_variable::<E>(vr, kind)?;
         }
         let preview;
+        let no_outputs;
         let outputs = match &self.core.phase {
-            Phase::StepComplete(sim) | Phase::Terminated(sim) => sim.outputs(),
-            _ if vrs.iter().any(|&vr| is_output(vr)) => {
-                preview = Simulation::<E>::new(&self.resolved_parameters(), self.core.start_time)
+            Phase::StepComplete(sim) | Phase::Terminated(sim) => E::outputs(sim),
+            _ if vrs.iter().any(|&vr| is_output::<E>(vr)) => {
+                preview = E::preview(&self.resolved_parameters(), self.core.start_time)
                     .map_err(|e| Refusal::error(format!("cannot compute the initial outputs: {e}")))?;
-                preview.outputs()
+                E::outputs(&preview)
             }
-            _ => &crate::models::Outputs::default(),
+            _ => {
+                no_outputs = E::Outputs::default();
+                &no_outputs
+            }
         };
         let (p, i) = (&self.core.parameters, &self.core.inputs);
         // Into the host's array directly: a host reads outputs every step, and collecting a list
@@ -295,12 +297,38 @@ impl<E: Model> Instance<E> {
         Ok(())
     }
 
-    /// fmi2GetBoolean / fmi2SetBoolean: PistonSlap has no Boolean variable, so any value reference is
+    /// fmi2GetRealOutputDerivatives: the `order`-th time derivative of each Real output now, up to the
+    /// model's MAX_OUTPUT_DERIVATIVE_ORDER.
+    pub fn output_derivatives(&self, vrs: &[u32], orders: &[i32], out: &mut [f64]) -> Outcome {
+        for (&vr, &order) in vrs.iter().zip(orders) {
+            let v = typed_variable::<E>(vr, Kind::Real)?;
+            if v.causality != Causality::Output {
+                return Err(Refusal::error(format!("{} (value reference {vr}) is not an output: it has no output derivatives", v.name)));
+            }
+            if !(1..=E::MAX_OUTPUT_DERIVATIVE_ORDER).contains(&order) {
+                return Err(Refusal::error(format!(
+                    "derivative order {order} of {} refused: maxOutputDerivativeOrder = {}",
+                    v.name,
+                    E::MAX_OUTPUT_DERIVATIVE_ORDER
+                )));
+            }
+        }
+        let (Phase::StepComplete(sim) | Phase::Terminated(sim)) = &self.core.phase else {
+            return Err(Refusal::error("no simulation: output derivatives exist after fmi2ExitInitializationMode"));
+        };
+        for ((&vr, &order), value) in vrs.iter().zip(orders).zip(out) {
+            *value = E::output_derivative(sim, vr, order)
+                .ok_or_else(|| Refusal::error(format!("value reference {vr} has no derivative {order}")))?;
+        }
+        Ok(())
+    }
+
+    /// fmi2GetBoolean / fmi2SetBoolean: the models have no Boolean variable, so any value reference is
     /// refused (an empty list is fine).
     pub fn booleans(&self, vrs: &[u32]) -> Outcome {
         match vrs.first() {
             None => Ok(()),
-            Some(&vr) => Err(match description::variable(vr) {
+            Some(&vr) => Err(match E::DESCRIPTION.variable(vr) {
                 Some(v) => Refusal::error(format!("{} (value reference {vr}) is a {:?} variable, not Boolean", v.name, v.kind)),
                 None => Refusal::error(format!("unknown value reference {vr}")),
             }),
@@ -312,7 +340,7 @@ impl<E: Model> Instance<E> {
         let Phase::StepComplete(sim) = &mut self.core.phase else {
             return Err(Refusal::error("no simulation to step"));
         };
-        let now = sim.time();
+        let now = E::time(sim);
         if !(h.is_finite() && h > 0.0) {
             return Err(Refusal::error(format!("communicationStepSize = {h} must be finite and > 0")));
         }
@@ -326,16 +354,9 @@ impl<E: Model> Instance<E> {
         if let Some(stop) = self.core.stop_time.filter(|s| t_end > s + TIME_TOLERANCE * s.abs().max(1.0)) {
             return Err(Refusal::error(format!("step to {t_end} s goes beyond stopTime = {stop} s")));
         }
-        match sim.step_interpolated(&self.core.inputs, &self.core.derivatives, t_end) {
+        match E::step(sim, &self.core.inputs, &self.core.derivatives, t_end) {
             Ok(()) => {
-                for e in sim.step_events() {
-                    self.logger.debug("logEvents", || {
-                        format!(
-                            "{:?} of corner {} at t = {} s, crank angle {} rad: normal velocity {} → {} m/s, {} J lost",
-                            e.kind, e.corner, e.time, e.crank_angle, e.normal_velocity_before, e.normal_velocity_after, e.energy_lost
-                        )
-                    });
-                }
+                E::log_step(sim, &self.logger);
                 Ok(())
             }
             Err(e) => Err(self.fail(e)),
@@ -345,7 +366,7 @@ impl<E: Model> Instance<E> {
     /// The time of the simulation (start time before initialization).
     pub fn time(&self) -> f64 {
         match &self.core.phase {
-            Phase::StepComplete(sim) | Phase::Terminated(sim) => sim.time(),
+            Phase::StepComplete(sim) | Phase::Terminated(sim) => E::time(sim),
             _ => self.core.start_time,
         }
     }
@@ -359,13 +380,13 @@ impl<E: Model> Instance<E> {
         if let Phase::StepComplete(sim) | Phase::Terminated(sim) = &core.phase {
             // Restoring cuts the state's log file: only this instance's own log may be cut, so
             // foreign or crafted state bytes cannot truncate an arbitrary file.
-            let own = &self.core.parameters.impact_log;
-            if let Some(path) = sim.log_path().filter(|p| p != own) {
+            let own = E::own_log(&self.core.parameters);
+            if let Some(path) = E::log_path(sim).filter(|p| *p != own) {
                 return Err(Refusal::error(format!(
                     "the state writes impact_log {path:?}, not this instance's impact_log {own:?}: refused"
                 )));
             }
-            sim.rewind_log().map_err(|e| Refusal::error(format!("cannot restore the impact log: {e}")))?;
+            E::rewind_log(sim).map_err(|e| Refusal::error(format!("cannot restore the impact log: {e}")))?;
         }
         self.core = core.clone();
         self.failure = None;
@@ -373,7 +394,8 @@ impl<E: Model> Instance<E> {
     }
 
     pub fn deserialize(&self, bytes: &[u8]) -> Outcome<Core<E>> {
-        let core: Core<E> = state_bytes::decode(bytes, GUID).map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
+        let core: Core<E> =
+            state_bytes::decode(bytes, E::DESCRIPTION.guid).map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
         core.check().map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
         Ok(core)
     }
@@ -384,13 +406,13 @@ impl<E: Model> Instance<E> {
     }
 }
 
-fn is_output(vr: u32) -> bool {
-    description::variable(vr).is_some_and(|v| v.causality == Causality::Output)
+fn is_output<E: Model>(vr: u32) -> bool {
+    E::DESCRIPTION.variable(vr).is_some_and(|v| v.causality == Causality::Output)
 }
 
 /// The variable `vr`, refused when unknown or not of `kind`.
-fn typed_variable(vr: u32, kind: Kind) -> Outcome<&'static description::Variable> {
-    let v = description::variable(vr).ok_or_else(|| Refusal::error(format!("unknown value reference {vr}")))?;
+fn typed_variable<E: Model>(vr: u32, kind: Kind) -> Outcome<&'static Variable> {
+    let v = E::DESCRIPTION.variable(vr).ok_or_else(|| Refusal::error(format!("unknown value reference {vr}")))?;
     if v.kind != kind {
         return Err(Refusal::error(format!("{} (value reference {vr}) is a {:?} variable, not {kind:?}", v.name, v.kind)));
     }

@@ -5,6 +5,7 @@
 //!   machine's check, `catch_unwind`, logging out;
 //! - `state_machine`: the states and the one table of the states each function is allowed in;
 //! - `reentry`: refuses a call into an instance from inside its own call (its logger calling back);
+//! - `model`: what the layer needs of a model, and its two FMUs: PistonSlap and EngineCycle;
 //! - `instance`: what each function does, in safe code;
 //! - `resources`: the FMU's resources directory and the lookup of bare file names in it;
 //! - `description`: the variable table generated from `modelDescription/`;
@@ -15,6 +16,7 @@ pub mod exports;
 mod functions;
 mod instance;
 mod logger;
+mod model;
 mod pointers;
 mod reentry;
 mod resources;

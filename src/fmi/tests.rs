@@ -442,7 +442,8 @@ fn strings_status_queries_and_debug_logging() {
         assert_eq!(functions::get_boolean_status::<Shuttle>(host.c, FMI2_TERMINATED, &mut terminated), Status::Ok);
         assert_eq!(terminated, FMI2_FALSE);
         assert_eq!(functions::get_directional_derivative::<Shuttle>(host.c), Status::Error);
-        assert_eq!(functions::get_real_output_derivatives::<Shuttle>(host.c), Status::Error);
+        let mut rate = 0.0;
+        assert_eq!(functions::get_real_output_derivatives::<Shuttle>(host.c, &vr("crank_angle"), 1, &1, &mut rate), Status::Error);
     }
     std::fs::remove_file(&path).unwrap();
 }

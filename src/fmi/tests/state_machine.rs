@@ -229,9 +229,10 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
                 (functions::get_directional_derivative::<E>(c), (Status::Error, Some("providesDirectionalDerivative = false")))
             }
             "fmi2SetRealInputDerivatives" => (functions::set_real_input_derivatives::<E>(c, reals.as_ptr(), 1, &1, &50.0), OK),
-            "fmi2GetRealOutputDerivatives" => {
-                (functions::get_real_output_derivatives::<E>(c), (Status::Error, Some("maxOutputDerivativeOrder = 0")))
-            }
+            "fmi2GetRealOutputDerivatives" => (
+                functions::get_real_output_derivatives::<E>(c, &reals[2], 1, &1, real.as_mut_ptr()),
+                (Status::Error, Some("maxOutputDerivativeOrder = 0")),
+            ),
             "fmi2DoStep" => (host.step(H, H), OK),
             "fmi2CancelStep" => (functions::cancel_step::<E>(c), OK),
             "fmi2GetStatus" => (functions::get_status::<E>(c, FMI2_DO_STEP_STATUS, &mut int[0]), no_value),

@@ -1,0 +1,199 @@
+"""A co-simulation master for PistonSlap driven by its partner EngineCycle FMU, on fmpy's `FMU2Slave`.
+
+At each communication point t_k = t_0 + k h the master reads EngineCycle's `crank_speed` and `gas_pressure`,
+sets them as PistonSlap's inputs (with `pressure_source = 1`) and, with `derivatives=True`, passes their
+first time derivatives (`fmi2GetRealOutputDerivatives`) on as input derivatives
+(`fmi2SetRealInputDerivatives`), so that PistonSlap's inputs follow the engine's slope over the step instead of
+being held. Then both FMUs step to t_{k+1}. EngineCycle has no inputs, so the order of the two steps does not
+matter. `make coupled` (`pistonslap coupled`) writes `out/coupled/`.
+
+The same system runs in Open Simulation Platform's libcosim from the OSP system structure file `OSP_SYSTEM`
+(`run_libcosim`, inputs held): both masters give the same impacts at the same steps.
+"""
+
+import argparse
+import csv
+import shutil
+from pathlib import Path
+
+import fmpy
+import numpy as np
+from fmpy.fmi2 import FMU2Slave
+
+from .fmu import CYCLE, fmu_path
+
+#: The partner FMU the package carries next to PistonSlap.fmu (`make fmu` copies both).
+ENGINE_FMU = Path(__file__).resolve().parent / "fmu" / "EngineCycle.fmu"
+
+#: The coupled system for libcosim: both FMUs, the two connections, pressure_source = 1, 1 ms fixed steps.
+OSP_SYSTEM = Path(__file__).resolve().parent / "osp" / "OspSystemStructure.xml"
+
+#: (EngineCycle output, PistonSlap input).
+WIRES = (("crank_speed", "crank_speed"), ("gas_pressure", "gas_pressure"))
+
+#: Columns of a coupled run, one row per communication point.
+COLUMNS = ("time", "engine_crank_angle", "engine_crank_speed", "gas_pressure", "crank_angle", "gas_pressure_acting",
+           "piston_lateral", "impact_count", "impacts_in_step", "max_impact_velocity_in_step", "impact_energy_total")
+
+
+class Slave:
+    """One FMU instance stepped by the master: fmpy's FMU2Slave with value references by name."""
+
+    def __init__(self, path, name, start_values, start_time):
+        description = fmpy.read_model_description(str(path))
+        self.variables = {v.name: v for v in description.modelVariables}
+        self.unzipdir = fmpy.extract(str(path))
+        self.fmu = FMU2Slave(guid=description.guid, unzipDirectory=self.unzipdir,
+                             modelIdentifier=description.coSimulation.modelIdentifier, instanceName=name)
+        self.fmu.instantiate()
+        self.fmu.setupExperiment(startTime=start_time)
+        self.fmu.enterInitializationMode()
+        for name_, value in start_values.items():
+            self.set(name_, value)
+
+    def vrs(self, names):
+        return [self.variables[n].valueReference for n in names]
+
+    def set(self, name, value):
+        v = self.variables[name]
+        {"Real": self.fmu.setReal, "Integer": self.fmu.setInteger, "String": self.fmu.setString}[v.type]([v.valueReference],
+                                                                                                      [value])
+
+    def free(self):
+        self.fmu.terminate()
+        self.fmu.freeInstance()
+        shutil.rmtree(self.unzipdir, ignore_errors=True)
+
+
+def run(stop_time, step, engine_values=None, slap_values=None, derivatives=True, start_time=0.0):
+    """Runs the coupled system from `start_time` to `stop_time` with communication step `step` (s).
+
+    `engine_values` and `slap_values` are start values by name; PistonSlap always gets `pressure_source = 1`.
+    With `derivatives`, the engine's output derivatives are passed on as PistonSlap's input derivatives.
+    Returns a structured array with `COLUMNS`, one row per communication point including the start.
+    """
+    steps = int(round((stop_time - start_time) / step))
+    if steps < 1 or abs(start_time + steps * step - stop_time) > 1e-9 * max(1.0, abs(stop_time)):
+        raise ValueError(f"stop_time - start_time = {stop_time - start_time} s is not a whole number of {step} s steps")
+    engine = Slave(ENGINE_FMU, "engine", engine_values or {}, start_time)
+    slap = Slave(fmu_path(), "slap", {**(slap_values or {}), "pressure_source": 1}, start_time)
+    try:
+        engine.fmu.exitInitializationMode()
+        outputs = engine.vrs([w[0] for w in WIRES])
+        inputs = slap.vrs([w[1] for w in WIRES])
+        slap.fmu.setReal(inputs, engine.fmu.getReal(outputs))
+        slap.fmu.exitInitializationMode()
+
+        engine_read = engine.vrs(["crank_angle", "crank_speed", "gas_pressure"])
+        slap_real = slap.vrs(["crank_angle", "gas_pressure_acting", "piston_lateral", "max_impact_velocity_in_step",
+                              "impact_energy_total"])
+        slap_int = slap.vrs(["impact_count", "impacts_in_step"])
+        rows = np.zeros(steps + 1, dtype=[(c, "f8") for c in COLUMNS])
+
+        def record(k, t):
+            a, w, p = engine.fmu.getReal(engine_read)
+            angle, acting, lateral, vmax, energy = slap.fmu.getReal(slap_real)
+            count, in_step = slap.fmu.getInteger(slap_int)
+            rows[k] = (t, a, w, p, angle, acting, lateral, count, in_step, vmax, energy)
+
+        record(0, start_time)
+        orders = [1] * len(WIRES)
+        for k in range(steps):
+            t = start_time + k * step
+            slap.fmu.setReal(inputs, engine.fmu.getReal(outputs))
+            if derivatives:
+                slap.fmu.setRealInputDerivatives(inputs, orders, engine.fmu.getRealOutputDerivatives(outputs, orders))
+            engine.fmu.doStep(t, step)
+            slap.fmu.doStep(t, step)
+            record(k + 1, start_time + (k + 1) * step)
+        return rows
+    finally:
+        engine.free()
+        slap.free()
+
+
+def run_libcosim(steps, osp_system=OSP_SYSTEM):
+    """Runs the OSP system structure `osp_system` in libcosim (libcosimpy) for `steps` of its base step.
+
+    Returns a structured array with PistonSlap's `impacts_in_step`, `impact_count` and `impact_energy_total` and
+    EngineCycle's `crank_angle` after each step.
+    """
+    from libcosimpy.CosimExecution import CosimExecution
+    from libcosimpy.CosimLogging import CosimLogLevel, log_output_level
+    from libcosimpy.CosimObserver import CosimObserver
+
+    log_output_level(CosimLogLevel.ERROR)
+    execution = CosimExecution.from_osp_config_file(str(osp_system))
+    observer = CosimObserver.create_last_value()
+    execution.add_observer(observer)
+    slap, engine = execution.slave_index_from_instance_name("slap"), execution.slave_index_from_instance_name("engine")
+    vr = {v.name: v.valueReference for v in fmpy.read_model_description(str(fmu_path())).modelVariables}
+    engine_angle = next(v.valueReference for v in fmpy.read_model_description(str(ENGINE_FMU)).modelVariables
+                        if v.name == "crank_angle")
+    rows = np.zeros(steps, dtype=[("impacts_in_step", "i8"), ("impact_count", "i8"), ("impact_energy_total", "f8"),
+                                  ("engine_crank_angle", "f8")])
+    for k in range(steps):
+        if not execution.step():
+            raise RuntimeError(f"libcosim failed at step {k}")
+        in_step, count = observer.last_integer_values(slap, [vr["impacts_in_step"], vr["impact_count"]])
+        (energy,) = observer.last_real_values(slap, [vr["impact_energy_total"]])
+        (angle,) = observer.last_real_values(engine, [engine_angle])
+        rows[k] = (in_step, count, energy, angle)
+    return rows
+
+
+def energy_per_cycle(rows, first_cycle, last_cycle):
+    """J: impact energy dissipated per engine cycle between the starts of two cycles (by PistonSlap's crank
+    angle, at the communication points)."""
+    cycle = np.floor(rows["crank_angle"] / CYCLE)
+    start, end = np.argmax(cycle >= first_cycle), np.argmax(cycle >= last_cycle)
+    return (rows["impact_energy_total"][end] - rows["impact_energy_total"][start]) / (last_cycle - first_cycle)
+
+
+def write(rows, out):
+    """`out/coupled.csv` and the plots: pressure and impacts against crank angle, both FMUs' crank angles."""
+    import matplotlib.pyplot as plt
+
+    out = Path(out)
+    out.mkdir(parents=True, exist_ok=True)
+    with open(out / "coupled.csv", "w", newline="") as f:
+        writer = csv.writer(f)
+        writer.writerow(COLUMNS)
+        writer.writerows(rows.tolist())
+    degrees = np.degrees(np.mod(rows["crank_angle"] + CYCLE / 2, CYCLE) - CYCLE / 2)
+    fig, (ax_p, ax_i) = plt.subplots(2, 1, sharex=True, figsize=(9, 6))
+    ax_p.plot(degrees, rows["gas_pressure"] / 1e5, ",", label="EngineCycle gas_pressure")
+    ax_p.set_ylabel("gas pressure [bar]")
+    hit = rows["impacts_in_step"] > 0
+    ax_i.plot(degrees[hit], rows["max_impact_velocity_in_step"][hit], ".", ms=3)
+    ax_i.set_ylabel("largest impact velocity in step [m/s]")
+    ax_i.set_xlabel("crank angle from firing TDC [deg]")
+    fig.tight_layout()
+    fig.savefig(out / "pressure_and_impacts.png", dpi=120)
+    plt.close(fig)
+    fig, (ax_a, ax_d) = plt.subplots(2, 1, sharex=True, figsize=(9, 6))
+    ax_a.plot(rows["time"], rows["engine_crank_angle"], label="EngineCycle")
+    ax_a.plot(rows["time"], rows["crank_angle"], "--", label="PistonSlap")
+    ax_a.set_ylabel("crank angle [rad]")
+    ax_a.legend()
+    ax_d.plot(rows["time"], rows["crank_angle"] - rows["engine_crank_angle"])
+    ax_d.set_ylabel("PistonSlap − EngineCycle [rad]")
+    ax_d.set_xlabel("time [s]")
+    fig.tight_layout()
+    fig.savefig(out / "crank_angles.png", dpi=120)
+    plt.close(fig)
+
+
+def main(argv=None):
+    parser = argparse.ArgumentParser(prog="pistonslap coupled", description=__doc__.split("\n\n")[0])
+    parser.add_argument("--out", default="out/coupled")
+    parser.add_argument("--cycles", type=int, default=20, help="engine cycles at the constant default speed")
+    parser.add_argument("--step", type=float, default=1e-3, help="communication step, s")
+    parser.add_argument("--held", action="store_true", help="hold the inputs over each step (no derivatives)")
+    args = parser.parse_args(argv)
+    period = CYCLE / 125.66
+    stop = round(args.cycles * period / args.step) * args.step
+    rows = run(stop, args.step, derivatives=not args.held)
+    write(rows, args.out)
+    print(f"{args.out}: {len(rows) - 1} steps, {int(rows['impact_count'][-1])} impacts, "
+          f"{energy_per_cycle(rows, 2, args.cycles - 1):.4g} J per cycle after two cycles")
