@@ -37,7 +37,7 @@ def test_held_speed_lags_by_half_alpha_h_squared_per_step(ramp_runs):
 def energies():
     """Impact energy per cycle over cycles 2..5 at 1200 rpm, fired default engine."""
     return {(h, d): energy_per_cycle(run(0.6, h, derivatives=d), 2, 5) for h, d in
-            [(2e-5, False), (1e-3, False), (1e-3, True)]}
+            [(2e-5, False), (1e-3, False), (1e-3, True), (2.5e-4, False), (2.5e-4, True)]}
 
 
 def test_first_derivatives_at_1ms_give_the_fine_step_impact_energy(energies):
@@ -61,3 +61,10 @@ def test_libcosim_and_the_python_master_give_the_same_impacts_at_the_same_steps(
     # libcosim places the communication points at whole nanoseconds, the Python master at k h: round-off apart.
     np.testing.assert_allclose(cosim["impact_energy_total"], ours["impact_energy_total"], rtol=1e-9, atol=1e-15)
     np.testing.assert_allclose(cosim["engine_crank_angle"], ours["engine_crank_angle"], rtol=1e-12)
+
+
+def test_the_coupled_system_converges_with_the_step_held_or_interpolated(energies):
+    reference = energies[(2e-5, False)]
+    for derivatives in (False, True):
+        coarse, fine = (abs(energies[(h, derivatives)] / reference - 1) for h in (1e-3, 2.5e-4))
+        assert fine < 0.5 * coarse, f"derivatives={derivatives}: {coarse:.2e} at 1 ms, {fine:.2e} at 0.25 ms"
