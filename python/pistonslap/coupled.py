@@ -162,10 +162,14 @@ def write(rows, out):
         writer.writerows(rows.tolist())
     degrees = np.degrees(np.mod(rows["crank_angle"] + CYCLE / 2, CYCLE) - CYCLE / 2)
     fig, (ax_p, ax_i) = plt.subplots(2, 1, sharex=True, figsize=(9, 6))
-    ax_p.plot(degrees, rows["gas_pressure"] / 1e5, ",", label="EngineCycle gas_pressure")
-    ax_p.set_ylabel("gas pressure [bar]")
+    fig.suptitle(f"PistonSlap driven by EngineCycle: {len(rows) - 1} steps of {rows['time'][1] - rows['time'][0]:g} s, "
+                 "every cycle overlaid")
+    # One line per engine cycle: broken where the angle wraps from +360° to -360°.
+    wraps = np.flatnonzero(np.diff(degrees) < 0) + 1
+    ax_p.plot(np.insert(degrees, wraps, np.nan), np.insert(rows["gas_pressure"] / 1e5, wraps, np.nan), lw=1)
+    ax_p.set_ylabel("gas pressure (EngineCycle) [bar]")
     hit = rows["impacts_in_step"] > 0
-    ax_i.plot(degrees[hit], rows["max_impact_velocity_in_step"][hit], ".", ms=3)
+    ax_i.plot(degrees[hit], rows["max_impact_velocity_in_step"][hit], ".", ms=4)
     ax_i.set_ylabel("largest impact velocity in step [m/s]")
     ax_i.set_xlabel("crank angle from firing TDC [deg]")
     fig.tight_layout()
