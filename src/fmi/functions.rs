@@ -7,10 +7,11 @@
 #![allow(unsafe_code)]
 
 use super::description::Kind;
-use super::instance::{Core, Instance, Model, Outcome, Refusal, Value};
+use super::instance::{Instance, Model, Outcome, Refusal, Value};
 use super::logger::Logger;
 use super::pointers::{out, slice, slice_mut, string};
 use super::reentry::Entered;
+use super::snapshot::{snapshot, store, Snapshot};
 use super::state_machine::Function::{self, *};
 use super::types::*;
 use std::any::Any;
@@ -26,28 +27,6 @@ pub struct Component<E: Model> {
     pub instance: Instance<E>,
     /// Strings returned by fmi2GetString: valid until the next call on this instance.
     strings: Vec<CString>,
-}
-
-/// What an `fmi2FMUstate` points to, tagged with [`Model::STATE_TAG`] likewise.
-#[repr(C)]
-struct Snapshot<E: Model> {
-    tag: u64,
-    core: Core<E>,
-    /// The serialized form, encoded once for fmi2SerializedFMUstateSize and fmi2SerializeFMUstate.
-    bytes: Option<Vec<u8>>,
-}
-
-impl<E: Model> Snapshot<E> {
-    fn new(core: Core<E>) -> Self {
-        Self { tag: E::STATE_TAG, core, bytes: None }
-    }
-
-    fn bytes(&mut self) -> Outcome<&[u8]> {
-        match &mut self.bytes {
-            Some(bytes) => Ok(bytes),
-            slot @ None => Ok(slot.insert(self.core.serialize()?)),
-        }
-    }
 }
 
 /// Runs `f` on the instance behind `c` if the state machine allows `function` in its state: refusals
@@ -124,35 +103,6 @@ pub unsafe fn has_guid<E: Model>(guid: fmi2String) -> bool {
 
 fn panic_text(panic: &(dyn Any + Send)) -> &str {
     panic.downcast_ref::<&str>().copied().or_else(|| panic.downcast_ref::<String>().map(String::as_str)).unwrap_or("?")
-}
-
-/// # Safety
-/// `state` is NULL, an FMU state made by this model's functions, or memory readable as one.
-unsafe fn snapshot<'a, E: Model>(state: fmi2FMUstate) -> Outcome<&'a mut Snapshot<E>> {
-    // SAFETY: NULL is checked by `as_ref`; `Snapshot` is `repr(C)` with the tag first, which tells ours
-    // from freed, foreign or another model's memory before the rest is read.
-    match unsafe { (state as *const u64).as_ref() } {
-        None => Err(Refusal::error("FMUstate is NULL")),
-        Some(&tag) if tag != E::STATE_TAG => Err(Refusal::error("FMUstate was not made by this FMU (or is freed)")),
-        // SAFETY: tagged as this model's snapshot.
-        Some(_) => Ok(unsafe { &mut *(state as *mut Snapshot<E>) }),
-    }
-}
-
-/// Stores `core` in `*state`: into the FMU state already there, or a new one when it is NULL.
-///
-/// # Safety
-/// `state` is NULL or points to an `fmi2FMUstate` as [`snapshot`] takes it.
-unsafe fn store<E: Model>(state: *mut fmi2FMUstate, core: Core<E>) -> Outcome {
-    // SAFETY: the caller's contract.
-    let state = unsafe { out(state, "FMUstate pointer")? };
-    if state.is_null() {
-        *state = Box::into_raw(Box::new(Snapshot::new(core))) as fmi2FMUstate;
-    } else {
-        // SAFETY: the caller's contract.
-        *unsafe { snapshot::<E>(*state)? } = Snapshot::new(core);
-    }
-    Ok(())
 }
 
 fn boolean(b: fmi2Boolean) -> bool {

@@ -9,7 +9,7 @@
 //! - `instance`: what each function does, in safe code;
 //! - `resources`: the FMU's resources directory and the lookup of bare file names in it;
 //! - `description`: the variable table generated from `modelDescription/`;
-//! - `state_bytes`: the serialized FMU state.
+//! - `snapshot`: what an FMU state points to; `state_bytes`: the serialized FMU state.
 
 pub mod description;
 pub mod exports;
@@ -20,6 +20,7 @@ mod model;
 mod pointers;
 mod reentry;
 mod resources;
+mod snapshot;
 mod state_bytes;
 mod state_machine;
 pub mod types;
