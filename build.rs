@@ -19,7 +19,8 @@ use std::io;
 use std::path::Path;
 
 /// (table, prefix of the generated files).
-const TABLES: [(&str, &str); 2] = [("modelDescription/variables.xml", ""), ("modelDescription/engine_cycle.xml", "engine_cycle_")];
+const TABLES: [(&str, &str); 2] =
+    [("modelDescription/variables.xml", ""), ("modelDescription/variables_engine_cycle.xml", "engine_cycle_")];
 
 #[derive(Deserialize)]
 struct Table {

@@ -4,7 +4,7 @@
 //! The one binary serves both FMUs (it makes an instance of the model whose GUID it gets):
 //! - `PistonSlap.fmu`: `modelDescription.xml` and the documentation's variable table, both generated from
 //!   `modelDescription/variables.xml`, the binary as `binaries/linux64/PistonSlap.so`, and `resources/`;
-//! - `EngineCycle.fmu`: its `modelDescription.xml` (from `modelDescription/engine_cycle.xml`) and the binary
+//! - `EngineCycle.fmu`: its `modelDescription.xml` (from `modelDescription/variables_engine_cycle.xml`) and the binary
 //!   as `binaries/linux64/EngineCycle.so`.
 
 use pistonslap::fmi::description::{engine_cycle, Causality, Kind, MODEL_DESCRIPTION_XML, VARIABLES};

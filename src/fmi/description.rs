@@ -131,7 +131,7 @@ macro_rules! dispatch {
 // GUID, LOG_CATEGORIES, VARIABLES, the dispatch lists and DESCRIPTION.
 include!(concat!(env!("OUT_DIR"), "/variables.rs"));
 
-/// EngineCycle's table (`modelDescription/engine_cycle.xml`), onto its parameter and output structs.
+/// EngineCycle's table (`modelDescription/variables_engine_cycle.xml`), onto its parameter and output structs.
 pub mod engine_cycle {
     use super::{Causality, Description, FieldValue, Kind, Variable};
     use crate::models::{EngineCycleInputs as Inputs, EngineCycleOutputs as Outputs, EngineCycleParameters as Parameters};

@@ -74,12 +74,12 @@ pub struct EngineCycleParameters {
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct EngineCycleInputs {}
 
-// The name the generated defaults and range checks (from modelDescription/engine_cycle.xml) address.
+// The name the generated defaults and range checks (from modelDescription/variables_engine_cycle.xml) address.
 type Parameters = EngineCycleParameters;
 include!(concat!(env!("OUT_DIR"), "/engine_cycle_parameter_defaults.rs"));
 
 impl EngineCycleParameters {
-    /// Every value finite and within its table range (modelDescription/engine_cycle.xml), and a rod longer
+    /// Every value finite and within its table range (modelDescription/variables_engine_cycle.xml), and a rod longer
     /// than the crank radius; the message names the parameter.
     pub fn validate(&self) -> Result<(), ModelError> {
         self.check_ranges()?;
