@@ -129,14 +129,18 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         // vanishing time, while a long span of ordinary impacts only needs more windows.
         let (mut handled, mut steps, mut window_start) = (0, 0.0, self.state.t);
         loop {
-            // (Checked before `take`, which copies the whole option even when empty.)
-            if let Some(ahead) = self.ahead.is_some().then(|| self.ahead.take()).flatten() {
+            if let Some(ahead) = &self.ahead {
                 if t_end < ahead.end.t {
+                    // In place and all or nothing: a point that fails here leaves the stepper as it was.
                     let now = self.between(&ahead.end, t_end)?;
-                    self.ahead = Some(Ahead { end: ahead.end, now });
+                    if let Some(ahead) = &mut self.ahead {
+                        ahead.now = now;
+                    }
                     return Ok(());
                 }
-                self.state = ahead.end;
+                if let Some(ahead) = self.ahead.take() {
+                    self.state = ahead.end;
+                }
             }
             if self.state.t >= t_end {
                 return Ok(());
@@ -146,7 +150,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             if steps > MAX_STEPS_PER_ADVANCE {
                 return Err(DynamicsError::InvalidArgument { time: self.state.t, reason: TOO_MANY_STEPS });
             }
-            if self.step(t_end, beyond)? {
+            let event = self.step(t_end, beyond)?;
+            // A step that ran past `t_end` has the state there already.
+            if self.ahead.is_some() {
+                return Ok(());
+            }
+            if event {
                 if self.state.t - window_start >= self.options.step {
                     (handled, window_start) = (0, self.state.t);
                 }
@@ -165,6 +174,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let dense = Hermite5 { t0: s0.t, dt: end.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: end.q, v1: end.v, a1: end.acc };
         let (q, v) = dense.at(t);
         sample(&self.system, t, q, v, self.active)
+    }
+
+    /// Whether `advance(t_end)` would only read the state at `t_end` from the step ahead: then it
+    /// changes nothing but that state, and nothing at all when it fails.
+    pub fn serves(&self, t_end: f64) -> bool {
+        !self.changed && self.ahead.as_ref().is_some_and(|a| self.time() <= t_end && t_end < a.end.t)
     }
 
     /// Puts the state at the current time on the RK4 map (the step ahead cut there), so that the
