@@ -109,9 +109,11 @@ impl<E: EngineModel> Simulation<E> {
         }
         // The model advances in place, so that the event list inside it keeps its capacity from
         // step to step, and the step's events go into the list of the step before last: no
-        // allocation. The copy taken first (allocation-free: between steps the model holds no
-        // events) puts the model back if the step fails.
-        let before = self.model.clone();
+        // allocation. A copy taken first (allocation-free: between steps the model holds no
+        // events) puts the model back if the step fails; a point the model serves from a step
+        // already taken needs none: the model reads the point before it again.
+        let served = self.model.serves(inputs, derivatives, t_end);
+        let before = (!served).then(|| self.model.clone());
         let mut events = std::mem::take(&mut self.spare_events.0);
         events.clear();
         match self.try_step(inputs, derivatives, t_end, &mut events) {
@@ -121,8 +123,11 @@ impl<E: EngineModel> Simulation<E> {
                 Ok(())
             }
             Err(e) => {
-                self.model = before;
                 self.spare_events.0 = events;
+                match before {
+                    Some(before) => self.model = before,
+                    None => self.model.serve_again(self.time).map_err(|u| ModelError(format!("{e}; undoing the step failed: {u}")))?,
+                }
                 Err(e)
             }
         }

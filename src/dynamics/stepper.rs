@@ -131,12 +131,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         loop {
             if let Some(ahead) = &self.ahead {
                 if t_end < ahead.end.t {
-                    // In place and all or nothing: a point that fails here leaves the stepper as it was.
-                    let now = self.between(&ahead.end, t_end)?;
-                    if let Some(ahead) = &mut self.ahead {
-                        ahead.now = now;
-                    }
-                    return Ok(());
+                    return self.serve(t_end);
                 }
                 if let Some(ahead) = self.ahead.take() {
                     self.state = ahead.end;
@@ -176,10 +171,27 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         sample(&self.system, t, q, v, self.active)
     }
 
-    /// Whether `advance(t_end)` would only read the state at `t_end` from the step ahead: then it
-    /// changes nothing but that state, and nothing at all when it fails.
+    /// Whether `advance(t_end)` would only read the state at `t_end` from the step ahead (`serve`).
     pub fn serves(&self, t_end: f64) -> bool {
         !self.changed && self.ahead.as_ref().is_some_and(|a| self.time() <= t_end && t_end < a.end.t)
+    }
+
+    /// Reads the state at `t` from the step ahead, in place and all or nothing (a failure changes
+    /// nothing). `t` may lie before the current time: reading the point before a served one again
+    /// puts the stepper back exactly as it was there, the point being a function of the step.
+    pub fn serve(&mut self, t: f64) -> Result<(), DynamicsError> {
+        let reason = match &self.ahead {
+            Some(ahead) if self.state.t <= t && t < ahead.end.t => {
+                let now = self.between(&ahead.end, t)?;
+                if let Some(ahead) = &mut self.ahead {
+                    ahead.now = now;
+                }
+                return Ok(());
+            }
+            Some(_) => "the time is outside the step ahead",
+            None => "no step ahead to read the state from",
+        };
+        Err(DynamicsError::InvalidArgument { time: self.time(), reason })
     }
 
     /// Puts the state at the current time on the RK4 map (the step ahead cut there), so that the

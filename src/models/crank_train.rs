@@ -209,8 +209,7 @@ impl CrankTrain {
     /// The prescribed crank's angle is a function of time (restarted), the free crank's a
     /// coordinate (shifted: the model has period 4π in it).
     fn keep_angle_within_a_cycle(&mut self) -> Result<(), ModelError> {
-        let angle = self.state().0[0] - 4.0 * PI * self.cycles;
-        let cycles = (angle / (4.0 * PI)).floor();
+        let (angle, cycles) = self.angle_past_cycles();
         if cycles == 0.0 {
             return Ok(());
         }
@@ -223,6 +222,12 @@ impl CrankTrain {
         }
         self.cycles += cycles;
         Ok(())
+    }
+
+    /// The crank angle less the whole cycles taken off it, and the whole cycles it is past its first.
+    fn angle_past_cycles(&self) -> (f64, f64) {
+        let angle = self.state().0[0] - 4.0 * PI * self.cycles;
+        (angle, (angle / (4.0 * PI)).floor())
     }
 
     /// Corner gaps h_i, m.
@@ -352,6 +357,25 @@ impl EngineModel for CrankTrain {
             Drive::Free(s) => s.clear_events(),
         }
         Ok(())
+    }
+
+    /// With the inputs held as they are, no cycle to take off the crank angle and the step ahead
+    /// past `t_end`, `advance_interpolated` changes only the stepper's point, all or nothing.
+    fn serves(&self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> bool {
+        let [speed, pressure, load] = derivatives.polynomials(inputs, self.time());
+        let held = self.started && self.engine().holds(&pressure) && self.angle_past_cycles().1 == 0.0;
+        held && match &self.drive {
+            Drive::Prescribed(s) => s.system().holds_speed(&speed) && s.serves(t_end),
+            Drive::Free(s) => s.system().load_torque.same_as(&load) && s.serves(t_end),
+        }
+    }
+
+    fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {
+        match &mut self.drive {
+            Drive::Prescribed(s) => s.serve(t),
+            Drive::Free(s) => s.serve(t),
+        }
+        .map_err(dynamics_error)
     }
 
     fn write_outputs(&self, out: &mut Outputs) {

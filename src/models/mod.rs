@@ -84,4 +84,17 @@ pub trait EngineModel: Sized + Clone {
 
     /// Writes the kinematic and force outputs (everything but the impact statistics).
     fn write_outputs(&self, out: &mut Outputs);
+
+    /// Whether advancing to `t_end` with these inputs only reads the state there from a step
+    /// already taken: an advance that fails then changes nothing, and one the caller refuses
+    /// afterwards is undone by [`Self::serve_again`] at the time before it, with no copy.
+    fn serves(&self, _inputs: &Inputs, _derivatives: &InputDerivatives, _t_end: f64) -> bool {
+        false
+    }
+
+    /// Reads the state at `t` again from the step already taken, after a point that
+    /// [`Self::serves`] gave beyond `t`: the model is then exactly as it was at `t`.
+    fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {
+        Err(ModelError(format!("no step taken past t = {t} s to read the state from")))
+    }
 }

@@ -183,3 +183,25 @@ fn engine_torque_is_the_crank_torque_with_the_engine_sign() {
         assert_eq!(out.engine_torque, -out.crank_torque);
     }
 }
+
+/// The crank train serves points of the default case from the step ahead: the step there copies
+/// nothing to undo it, and reading the point before again puts the model back to the bit (as an
+/// FMU state saves it: the caches of the crank's terms are not state).
+#[test]
+fn a_served_point_is_undone_by_reading_the_point_before_again() {
+    let mut model = ModelVariant::new(&Parameters::default(), 0.0).unwrap();
+    let (inputs, derivatives, mut events) = (Inputs::default(), InputDerivatives::default(), Vec::new());
+    let mut served = 0;
+    for k in 1..=2000 {
+        let (t0, t1) = ((k - 1) as f64 * 1e-5, k as f64 * 1e-5);
+        if model.serves(&inputs, &derivatives, t1) {
+            let before = postcard::to_allocvec(&model).unwrap();
+            model.advance(&inputs, t1, &mut events).unwrap();
+            model.serve_again(t0).unwrap();
+            assert_eq!(postcard::to_allocvec(&model).unwrap(), before, "at {t1} s");
+            served += 1;
+        }
+        model.advance(&inputs, t1, &mut events).unwrap();
+    }
+    assert!(served > 1500, "{served} of 2000 points served");
+}
