@@ -90,6 +90,22 @@ fn a_failed_step_leaves_the_simulation_as_it_was() {
     }
 }
 
+/// A step refused after the model advanced and the outputs were written (its impact cannot be
+/// logged: the file is gone) puts the model and the outputs back.
+#[test]
+fn a_step_refused_after_the_model_advanced_leaves_the_simulation_as_it_was() {
+    let path = temp_path("gone");
+    let p = Parameters { impact_log: path.to_str().unwrap().into(), ..Parameters::default() };
+    let mut sim = Sim::start(&p, 0.0).unwrap();
+    run(&mut sim, &Inputs::default(), 0.003, 1e-3);
+    let before = sim.clone();
+    std::fs::remove_file(&path).unwrap();
+    let err = sim.step(&Inputs::default(), 0.005).unwrap_err();
+    assert!(err.0.contains("cannot open"), "the impact at 0.004 s: {err}");
+    assert_eq!(sim, before);
+    assert_eq!(sim.outputs(), before.outputs());
+}
+
 #[test]
 fn bad_parameters_are_refused_by_name() {
     let p = Parameters { piston_mass: -1.0, ..Parameters::default() };
