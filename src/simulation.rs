@@ -112,11 +112,11 @@ impl<E: EngineModel> Simulation<E> {
         // allocation. A copy taken first (allocation-free: between steps the model holds no
         // events) puts the model back if the step fails; a point the model serves from a step
         // already taken needs none: the model reads the point before it again.
-        let served = self.model.serves(inputs, derivatives, t_end);
-        let before = (!served).then(|| self.model.clone());
+        let served = self.model.serve(inputs, derivatives, t_end);
+        let before = served.is_none().then(|| self.model.clone());
         let mut events = std::mem::take(&mut self.spare_events.0);
         events.clear();
-        match self.try_step(inputs, derivatives, t_end, &mut events) {
+        match self.try_step(served, inputs, derivatives, t_end, &mut events) {
             Ok(statistics) => {
                 (self.time, self.statistics) = (t_end, statistics);
                 self.spare_events.0 = std::mem::replace(&mut self.step_events, events);
@@ -135,18 +135,20 @@ impl<E: EngineModel> Simulation<E> {
         }
     }
 
-    /// The fallible part of [`Self::step`]: advances the model into `events`, writes the outputs
-    /// after it and returns the statistics after it. Changes nothing else of `self` (the impact log
-    /// only once nothing can fail any more).
+    /// The fallible part of [`Self::step`]: advances the model into `events` (unless it `served`
+    /// the point already), writes the outputs after it and returns the statistics after it.
+    /// Changes nothing else of `self` (the impact log only once nothing can fail any more).
     fn try_step(
         &mut self,
+        served: Option<Result<(), ModelError>>,
         inputs: &Inputs,
         derivatives: &InputDerivatives,
         t_end: f64,
         events: &mut Vec<EngineEvent>,
     ) -> Result<ImpactStatistics, ModelError> {
         let failed = |what: &str, e: &dyn std::fmt::Display| ModelError(format!("step from t = {} s to {t_end} s {what}: {e}", self.time));
-        self.model.advance_interpolated(inputs, derivatives, t_end, events).map_err(|e| failed("failed", &e))?;
+        let advanced = served.unwrap_or_else(|| self.model.advance_interpolated(inputs, derivatives, t_end, events));
+        advanced.map_err(|e| failed("failed", &e))?;
         let mut statistics = self.statistics.clone();
         Self::write_outputs(&self.model, &mut statistics, Some(events), &mut self.outputs);
         Self::valid(t_end, &self.outputs).map_err(|e| failed("refused", &e.0))?;

@@ -110,14 +110,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 reason: "the end time is before the current time or not finite",
             });
         }
-        // A stepper restored from bytes is trusted no more than its caller: valid options, and a
-        // bounded amount of work below.
-        let reason = self
-            .options
-            .invalid()
-            .or_else(|| (self.active >> M != 0).then_some("the contact set names constraints that do not exist"))
-            .or_else(|| ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some(TOO_MANY_STEPS));
-        if let Some(reason) = reason {
+        if let Some(reason) = self.invalid(t_end) {
             return Err(DynamicsError::InvalidArgument { time: self.time(), reason });
         }
         // Inputs that changed here are likely to change at the next point too: no step past it then.
@@ -171,9 +164,19 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         sample(&self.system, t, q, v, self.active)
     }
 
-    /// Whether `advance(t_end)` would only read the state at `t_end` from the step ahead (`serve`).
+    /// Why `advance(t_end)` is refused after its time checks, if it is. A stepper restored from
+    /// bytes is trusted no more than its caller: valid options, and a bounded amount of work.
+    fn invalid(&self, t_end: f64) -> Option<&'static str> {
+        self.options
+            .invalid()
+            .or_else(|| (self.active >> M != 0).then_some("the contact set names constraints that do not exist"))
+            .or_else(|| ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some(TOO_MANY_STEPS))
+    }
+
+    /// Whether `advance(t_end)` would only read the state at `t_end` from the step ahead: it is then
+    /// `serve(t_end)`.
     pub fn serves(&self, t_end: f64) -> bool {
-        !self.changed && self.ahead.as_ref().is_some_and(|a| self.time() <= t_end && t_end < a.end.t)
+        !self.changed && self.ahead.as_ref().is_some_and(|a| self.time() <= t_end && t_end < a.end.t) && self.invalid(t_end).is_none()
     }
 
     /// Reads the state at `t` from the step ahead, in place and all or nothing (a failure changes

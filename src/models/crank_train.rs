@@ -224,6 +224,17 @@ impl CrankTrain {
         Ok(())
     }
 
+    /// The inputs over a step from now, refused unless finite.
+    fn inputs_over_step(&self, inputs: &Inputs, derivatives: &InputDerivatives) -> Result<[InputPolynomial; 3], ModelError> {
+        let polynomials = derivatives.polynomials(inputs, self.time());
+        let [speed, pressure, load] = polynomials;
+        for (name, u) in [("crank_speed", speed), ("gas_pressure", pressure), ("load_torque", load)] {
+            let finite = [u.value, u.slope, u.curvature].iter().all(|x| x.is_finite());
+            check(finite, || format!("input {name} ({}, derivatives {}, {}) must be finite", u.value, u.slope, u.curvature))?;
+        }
+        Ok(polynomials)
+    }
+
     /// The crank angle less the whole cycles taken off it, and the whole cycles it is past its first.
     fn angle_past_cycles(&self) -> (f64, f64) {
         let angle = self.state().0[0] - 4.0 * PI * self.cycles;
@@ -311,12 +322,7 @@ impl EngineModel for CrankTrain {
         t_end: f64,
         events: &mut Vec<EngineEvent>,
     ) -> Result<(), ModelError> {
-        let now = self.time();
-        let [speed, pressure, load] = derivatives.polynomials(inputs, now);
-        for (name, u) in [("crank_speed", speed), ("gas_pressure", pressure), ("load_torque", load)] {
-            let finite = [u.value, u.slope, u.curvature].iter().all(|x| x.is_finite());
-            check(finite, || format!("input {name} ({}, derivatives {}, {}) must be finite", u.value, u.slope, u.curvature))?;
-        }
+        let [speed, pressure, load] = self.inputs_over_step(inputs, derivatives)?;
         if !self.started {
             self.start(inputs.crank_speed)?;
         }
@@ -360,14 +366,21 @@ impl EngineModel for CrankTrain {
     }
 
     /// With the inputs held as they are, no cycle to take off the crank angle and the step ahead
-    /// past `t_end`, `advance_interpolated` changes only the stepper's point, all or nothing.
-    fn serves(&self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> bool {
-        let [speed, pressure, load] = derivatives.polynomials(inputs, self.time());
-        let held = self.started && self.engine().holds(&pressure) && self.angle_past_cycles().1 == 0.0;
-        held && match &self.drive {
-            Drive::Prescribed(s) => s.system().holds_speed(&speed) && s.serves(t_end),
-            Drive::Free(s) => s.system().load_torque.same_as(&load) && s.serves(t_end),
+    /// past `t_end`, `advance_interpolated` would only have the stepper serve the point.
+    fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
+        let [speed, pressure, load] = match self.inputs_over_step(inputs, derivatives) {
+            Ok(polynomials) => polynomials,
+            Err(e) => return Some(Err(e)),
+        };
+        if !(self.started && self.engine().holds(&pressure) && self.angle_past_cycles().1 == 0.0) {
+            return None;
         }
+        let served = match &mut self.drive {
+            Drive::Prescribed(s) if s.system().holds_speed(&speed) && s.serves(t_end) => s.serve(t_end),
+            Drive::Free(s) if s.system().load_torque.same_as(&load) && s.serves(t_end) => s.serve(t_end),
+            _ => return None,
+        };
+        Some(served.map_err(dynamics_error))
     }
 
     fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {

@@ -41,10 +41,10 @@ impl EngineModel for ModelVariant {
         }
     }
 
-    fn serves(&self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> bool {
+    fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
         match self {
-            ModelVariant::CrankTrain(m) => m.serves(inputs, derivatives, t_end),
-            ModelVariant::Roller(m) => m.serves(inputs, derivatives, t_end),
+            ModelVariant::CrankTrain(m) => m.serve(inputs, derivatives, t_end),
+            ModelVariant::Roller(m) => m.serve(inputs, derivatives, t_end),
         }
     }
 
