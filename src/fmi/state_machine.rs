@@ -100,13 +100,20 @@ table! {
 }
 
 impl Function {
-    /// Whether the call is allowed in `mode`; `Err` says why not.
+    /// Whether the call is allowed in `mode`; `Err` says why not. Inlined, the message apart:
+    /// every call of a host asks.
+    #[inline]
     pub fn check(self, mode: Mode) -> Result<(), String> {
-        let allowed = self.allowed();
-        if allowed.contains(&mode) {
-            return Ok(());
+        if self.allowed().contains(&mode) {
+            Ok(())
+        } else {
+            Err(self.refusal(mode))
         }
-        let names: Vec<String> = allowed.iter().map(Mode::to_string).collect();
-        Err(format!("not allowed in state {mode} (allowed in: {})", names.join(", ")))
+    }
+
+    #[cold]
+    fn refusal(self, mode: Mode) -> String {
+        let names: Vec<String> = self.allowed().iter().map(Mode::to_string).collect();
+        format!("not allowed in state {mode} (allowed in: {})", names.join(", "))
     }
 }
