@@ -227,6 +227,10 @@ impl CrankTrain {
     /// The inputs over a step from now, refused unless finite.
     fn inputs_over_step(&self, inputs: &Inputs, derivatives: &InputDerivatives) -> Result<[InputPolynomial; 3], ModelError> {
         let polynomials = derivatives.polynomials(inputs, self.time());
+        // One sum clears all nine numbers (x · 0 is NaN exactly for an infinite or NaN x).
+        if polynomials.iter().map(|u| u.value * 0.0 + u.slope * 0.0 + u.curvature * 0.0).sum::<f64>() == 0.0 {
+            return Ok(polynomials);
+        }
         let [speed, pressure, load] = polynomials;
         for (name, u) in [("crank_speed", speed), ("gas_pressure", pressure), ("load_torque", load)] {
             let finite = [u.value, u.slope, u.curvature].iter().all(|x| x.is_finite());
