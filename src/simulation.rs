@@ -111,19 +111,22 @@ impl<E: EngineModel> Simulation<E> {
         // step to step, and the step's events go into the list of the step before last: no
         // allocation. A copy taken first (allocation-free: between steps the model holds no
         // events) puts the model back if the step fails; a point the model serves from a step
-        // already taken needs none: the model reads the point before it again.
+        // already taken needs none: the model reads the point before it again. The statistics are
+        // a few numbers, copied; the outputs are written again from the model and statistics.
         let served = self.model.serve(inputs, derivatives, t_end);
         let before = served.is_none().then(|| self.model.clone());
         let mut events = std::mem::take(&mut self.spare_events.0);
         events.clear();
+        let statistics = self.statistics;
         match self.try_step(served, inputs, derivatives, t_end, &mut events) {
-            Ok(statistics) => {
-                (self.time, self.statistics) = (t_end, statistics);
+            Ok(()) => {
+                self.time = t_end;
                 self.spare_events.0 = std::mem::replace(&mut self.step_events, events);
                 Ok(())
             }
             Err(e) => {
                 self.spare_events.0 = events;
+                self.statistics = statistics;
                 match before {
                     Some(before) => self.model = before,
                     None => self.model.serve_again(self.time).map_err(|u| ModelError(format!("{e}; undoing the step failed: {u}")))?,
@@ -136,8 +139,8 @@ impl<E: EngineModel> Simulation<E> {
     }
 
     /// The fallible part of [`Self::step`]: advances the model into `events` (unless it `served`
-    /// the point already), writes the outputs after it and returns the statistics after it.
-    /// Changes nothing else of `self` (the impact log only once nothing can fail any more).
+    /// the point already), takes them into the statistics, writes the outputs, and appends them
+    /// to the impact log once nothing else can fail. On error `step` puts the rest back.
     fn try_step(
         &mut self,
         served: Option<Result<(), ModelError>>,
@@ -145,18 +148,17 @@ impl<E: EngineModel> Simulation<E> {
         derivatives: &InputDerivatives,
         t_end: f64,
         events: &mut Vec<EngineEvent>,
-    ) -> Result<ImpactStatistics, ModelError> {
+    ) -> Result<(), ModelError> {
         let failed = |what: &str, e: &dyn std::fmt::Display| ModelError(format!("step from t = {} s to {t_end} s {what}: {e}", self.time));
         let advanced = served.unwrap_or_else(|| self.model.advance_interpolated(inputs, derivatives, t_end, events));
         advanced.map_err(|e| failed("failed", &e))?;
-        let mut statistics = self.statistics.clone();
-        Self::write_outputs(&self.model, &mut statistics, Some(events), &mut self.outputs);
+        Self::write_outputs(&self.model, &mut self.statistics, Some(events), &mut self.outputs);
         Self::valid(t_end, &self.outputs).map_err(|e| failed("refused", &e.0))?;
         if let Some(log) = &mut self.log {
             // Cuts the file back and keeps its cursor when it fails.
             log.append(events)?;
         }
-        Ok(statistics)
+        Ok(())
     }
 
     /// What every state must satisfy (a restored one included): a finite time and finite outputs.

@@ -5,7 +5,7 @@
 use crate::models::{EngineEvent, EngineEventKind, Outputs, CYCLE};
 use serde::{Deserialize, Serialize};
 
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct ImpactStatistics {
     impact_velocity: f64,
     impact_count: i32,
@@ -25,7 +25,7 @@ pub struct ImpactStatistics {
 }
 
 /// What one engine cycle's impacts amount to.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 struct CycleMetrics {
     slap_events: i32,
     impact_energy: f64,
