@@ -60,6 +60,10 @@ pub struct Stepper<S, const N: usize, const M: usize> {
     /// A cell: the event search that takes the locating steps only reads the stepper.
     #[serde(skip)]
     pub(super) counts: Cell<StepCounts>,
+    /// The options and contact set passed `invalid` (in `new` or an `advance`); not saved, so a
+    /// stepper restored from bytes is checked again before it serves a point.
+    #[serde(skip)]
+    checked: bool,
 }
 
 impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
@@ -90,6 +94,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             changed: true,
             events: Vec::new(),
             counts: Cell::default(),
+            checked: true,
         };
         stepper.reexamine()?;
         Ok(stepper)
@@ -113,6 +118,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         if let Some(reason) = self.invalid(t_end) {
             return Err(DynamicsError::InvalidArgument { time: self.time(), reason });
         }
+        self.checked = true;
         // Inputs that changed here are likely to change at the next point too: no step past it then.
         let beyond = !self.changed;
         if self.changed {
@@ -174,9 +180,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
 
     /// Whether `advance(t_end)` would only read the state at `t_end` from the step ahead: it is then
-    /// `serve(t_end)`.
+    /// `serve(t_end)`. Once checked, options and contact set stay valid (only the stepper's own
+    /// logic changes them), and a point inside a step is within a step's work.
     pub fn serves(&self, t_end: f64) -> bool {
-        !self.changed && self.ahead.as_ref().is_some_and(|a| self.time() <= t_end && t_end < a.end.t) && self.invalid(t_end).is_none()
+        !self.changed
+            && self.ahead.as_ref().is_some_and(|a| self.time() <= t_end && t_end < a.end.t)
+            && (self.checked || self.invalid(t_end).is_none())
     }
 
     /// Reads the state at `t` from the step ahead, in place and all or nothing (a failure changes

@@ -84,3 +84,23 @@ fn a_point_read_again_puts_the_stepper_back_to_the_bit() {
     assert!(s.serve(5.0).is_err() && s.serve(0.0).is_err());
     assert_eq!(format!("{s:?}"), before);
 }
+
+/// A stepper restored from bytes is checked before it serves a point: with options that cannot be
+/// used, the point inside its step ahead is refused as a step would be.
+#[test]
+fn a_restored_stepper_with_bad_options_serves_no_point() {
+    let mut s = ball();
+    s.advance(0.1234).unwrap();
+    assert!(s.serves(0.1235));
+    let bytes = postcard::to_allocvec(&s).unwrap();
+    let step = 1e-2_f64.to_le_bytes();
+    let at = bytes.windows(8).position(|w| w == step).expect("the nominal step in the bytes");
+    let mut bad = bytes.clone();
+    bad[at..at + 8].copy_from_slice(&f64::NAN.to_le_bytes());
+    let mut restored: Stepper<Ball, 1, 1> = postcard::from_bytes(&bad).unwrap();
+    assert!(restored.options().step.is_nan(), "the patched field is the step");
+    assert!(!restored.serves(0.1235));
+    assert!(restored.advance(0.1235).is_err());
+    let mut good: Stepper<Ball, 1, 1> = postcard::from_bytes(&bytes).unwrap();
+    assert!(good.serves(0.1235) && good.advance(0.1235).is_ok());
+}
