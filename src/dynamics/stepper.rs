@@ -161,15 +161,6 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         }
     }
 
-    /// The sample at `t` inside the step from `state` to `end`: `(q, q̇)` from the step's quintic
-    /// extension, forces and gap rates evaluated there.
-    fn between(&self, end: &Sample<N, M>, t: f64) -> Result<Sample<N, M>, DynamicsError> {
-        let s0 = &self.state;
-        let dense = Hermite5 { t0: s0.t, dt: end.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: end.q, v1: end.v, a1: end.acc };
-        let (q, v) = dense.at(t);
-        sample(&self.system, t, q, v, self.active)
-    }
-
     /// Why `advance(t_end)` is refused after its time checks, if it is. A stepper restored from
     /// bytes is trusted no more than its caller: valid options, and a bounded amount of work.
     fn invalid(&self, t_end: f64) -> Option<&'static str> {
@@ -192,12 +183,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// nothing). `t` may lie before the current time: reading the point before a served one again
     /// puts the stepper back exactly as it was there, the point being a function of the step.
     pub fn serve(&mut self, t: f64) -> Result<(), DynamicsError> {
-        let reason = match &self.ahead {
-            Some(ahead) if self.state.t <= t && t < ahead.end.t => {
-                let now = self.between(&ahead.end, t)?;
-                if let Some(ahead) = &mut self.ahead {
-                    ahead.now = now;
-                }
+        let Self { system, state, ahead, active, .. } = self;
+        let reason = match ahead {
+            Some(ahead) if state.t <= t && t < ahead.end.t => {
+                // Written once the sample is complete and finite: a failure changes nothing.
+                ahead.now = between(system, state, &ahead.end, t, *active)?;
                 return Ok(());
             }
             Some(_) => "the time is outside the step ahead",
@@ -387,7 +377,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     self.stabilize(ev)?;
                 }
                 let end = std::mem::replace(&mut self.state, start);
-                let now = self.between(&end, t_end)?;
+                let now = between(&self.system, &self.state, &end, t_end, self.active)?;
                 self.ahead = Some(Ahead { end, now });
                 Ok(false)
             }
@@ -419,4 +409,18 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             }
         }
     }
+}
+
+/// The sample at `t` inside the step from `s0` to `end`: `(q, q̇)` from the step's quintic
+/// extension, forces and gap rates evaluated there with the contact set `active`.
+fn between<S: System<N, M>, const N: usize, const M: usize>(
+    system: &S,
+    s0: &Sample<N, M>,
+    end: &Sample<N, M>,
+    t: f64,
+    active: u32,
+) -> Result<Sample<N, M>, DynamicsError> {
+    let dense = Hermite5 { t0: s0.t, dt: end.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: end.q, v1: end.v, a1: end.acc };
+    let (q, v) = dense.at(t);
+    sample(system, t, q, v, active)
 }
