@@ -238,3 +238,79 @@ fn gauss<const N: usize>(mut a: SMatrix<f64, N, N>, mut rhs: SVector<f64, N>, r:
     }
     Some(x)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::super::test_random::{positive_definite, uniform};
+    use super::*;
+    use nalgebra::{SMatrix, SVector};
+
+    /// Newton–Coulomb impacts on random systems (3 degrees of freedom, one or two contacts
+    /// approaching together, coupled inertia and directions) at μ up to 3 and every ε: a solution
+    /// exists, satisfies the law, and the kinetic energy never grows; the work of the impulses
+    /// `Λᵀ(γ⁻ + γ⁺)/2` is the change of `½ q̇ᵀ M q̇`.
+    #[test]
+    fn newton_coulomb_impacts_never_create_energy() {
+        let mut random = uniform(2026);
+        let mut solved = 0;
+        for case in 0..2000 {
+            let mass: SMatrix<f64, 3, 3> = positive_definite(&mut random);
+            let ev = Evaluation::<3, 2> {
+                mass,
+                force: SVector::zeros(),
+                gap: SVector::zeros(),
+                gap_jacobian: SMatrix::from_fn(|_, _| random()),
+                gap_time_rate: SVector::zeros(),
+                gap_bias: SVector::zeros(),
+            };
+            let tangents = Tangents { jacobian: SMatrix::from_fn(|_, _| random()), time_rate: SVector::zeros(), bias: SVector::zeros() };
+            let (mu, eps) = (3.0 * (random() + 0.5), random() + 0.5);
+            let inertia = Inertia::new(&mass).unwrap();
+            let frame = Tangential::new(&ev, &tangents, &inertia, SVector::from_element(mu));
+            let v = SVector::<f64, 3>::from_fn(|_, _| random());
+            let (hd, slip) = (ev.gap_jacobian * v, tangents.slip(&v));
+            let both = case % 2 == 0;
+            if hd[0] >= 0.0 || (both && hd[1] >= 0.0) {
+                continue;
+            }
+            let choices = [Choice::AtRest, if both { Choice::AtRest } else { Choice::Open }];
+            let b = (hd * (1.0 + eps), slip * (1.0 + eps));
+            let scale = hd.amax().max(slip.amax());
+            let (modes, jump) = frame.enumerate(&choices, (&b.0, &b.1), scale).unwrap_or_else(|| panic!("case {case}: no solution"));
+            let v_plus = frame.motion(&v, &jump);
+            let kinetic = |v: &SVector<f64, 3>| 0.5 * v.dot(&(mass * v));
+            let gain = kinetic(&v_plus) - kinetic(&v);
+            let work = 0.5 * (jump.normal.dot(&(hd + ev.gap_jacobian * v_plus)) + jump.tangent.dot(&(slip + tangents.slip(&v_plus))));
+            assert!(gain <= 1e-12 * kinetic(&v), "case {case}: μ {mu}, ε {eps}, {modes:?}: the impact gains {gain:e} J");
+            assert!((gain - work).abs() <= 1e-12 * kinetic(&v), "case {case}: ΔT {gain:e} against the impulses' work {work:e}");
+            for i in (0..2).filter(|&i| modes[i] != Mode::Open) {
+                assert!(jump.normal[i] >= 0.0 && jump.tangent[i].abs() <= mu * jump.normal[i] * (1.0 + 1e-12), "case {case}: {jump:?}");
+            }
+            solved += 1;
+        }
+        assert!(solved > 500, "{solved} impacts");
+    }
+
+    /// A slipping contact's friction enters its own normal row: for one contact the normal force is
+    /// `−b_N / (W_NN − μ s W_NT)` and `λ_T = −μ s λ_N`.
+    #[test]
+    fn one_slipping_contact_in_closed_form() {
+        let ev = Evaluation::<2, 1> {
+            mass: SMatrix::from_row_slice(&[2.0, 0.3, 0.3, 1.0]),
+            force: SVector::zeros(),
+            gap: SVector::zeros(),
+            gap_jacobian: SMatrix::from_row_slice(&[0.2, 1.0]),
+            gap_time_rate: SVector::zeros(),
+            gap_bias: SVector::zeros(),
+        };
+        let tangents = Tangents { jacobian: SMatrix::from_row_slice(&[1.0, -0.4]), time_rate: SVector::zeros(), bias: SVector::zeros() };
+        let inertia = Inertia::new(&ev.mass).unwrap();
+        let frame = Tangential::new(&ev, &tangents, &inertia, SVector::from_element(0.3));
+        let b = (SVector::from_element(-2.0), SVector::from_element(0.7));
+        let s = frame.solve(&[Mode::Slip(-1.0)], (&b.0, &b.1)).unwrap();
+        let (w_nn, w_nt) = (frame.w[0][0][(0, 0)], frame.w[0][1][(0, 0)]);
+        let normal = 2.0 / (w_nn + 0.3 * w_nt);
+        assert!((s.normal[0] - normal).abs() < 1e-14 * normal && (s.tangent[0] - 0.3 * normal).abs() < 1e-14 * normal);
+        assert!(s.y_normal[0].abs() < 1e-14);
+    }
+}
