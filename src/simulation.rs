@@ -65,7 +65,7 @@ impl<E: EngineModel> Simulation<E> {
             log: None,
             spare_events: Scratch::default(),
         };
-        Self::write_outputs(&sim.model, &mut sim.statistics, &[], &mut sim.outputs);
+        Self::write_outputs(&sim.model, &mut sim.statistics, Some(&[]), &mut sim.outputs);
         Ok(sim)
     }
 
@@ -109,46 +109,54 @@ impl<E: EngineModel> Simulation<E> {
         }
         // The model advances in place, so that the event list inside it keeps its capacity from
         // step to step, and the step's events go into the list of the step before last: no
-        // allocation. The copy taken first (allocation-free: between steps the model holds no
-        // events) puts the model back if the step fails.
-        let before = self.model.clone();
+        // allocation. A copy taken first (allocation-free: between steps the model holds no
+        // events) puts the model back if the step fails; a point the model serves from a step
+        // already taken needs none: the model reads the point before it again.
+        let served = self.model.serve(inputs, derivatives, t_end);
+        let before = served.is_none().then(|| self.model.clone());
         let mut events = std::mem::take(&mut self.spare_events.0);
         events.clear();
-        match self.try_step(inputs, derivatives, t_end, &mut events) {
-            Ok((outputs, statistics)) => {
-                (self.time, self.outputs, self.statistics) = (t_end, outputs, statistics);
+        match self.try_step(served, inputs, derivatives, t_end, &mut events) {
+            Ok(statistics) => {
+                (self.time, self.statistics) = (t_end, statistics);
                 self.spare_events.0 = std::mem::replace(&mut self.step_events, events);
                 Ok(())
             }
             Err(e) => {
-                self.model = before;
                 self.spare_events.0 = events;
+                match before {
+                    Some(before) => self.model = before,
+                    None => self.model.serve_again(self.time).map_err(|u| ModelError(format!("{e}; undoing the step failed: {u}")))?,
+                }
+                // The outputs are those of the model and the statistics: as they were again.
+                Self::write_outputs(&self.model, &mut self.statistics, None, &mut self.outputs);
                 Err(e)
             }
         }
     }
 
-    /// The fallible part of [`Self::step`]: advances the model into `events` and returns the
-    /// outputs and statistics after it. Changes nothing else of `self` (the impact log only once
-    /// nothing can fail any more).
+    /// The fallible part of [`Self::step`]: advances the model into `events` (unless it `served`
+    /// the point already), writes the outputs after it and returns the statistics after it.
+    /// Changes nothing else of `self` (the impact log only once nothing can fail any more).
     fn try_step(
         &mut self,
+        served: Option<Result<(), ModelError>>,
         inputs: &Inputs,
         derivatives: &InputDerivatives,
         t_end: f64,
         events: &mut Vec<EngineEvent>,
-    ) -> Result<(Outputs, ImpactStatistics), ModelError> {
+    ) -> Result<ImpactStatistics, ModelError> {
         let failed = |what: &str, e: &dyn std::fmt::Display| ModelError(format!("step from t = {} s to {t_end} s {what}: {e}", self.time));
-        self.model.advance_interpolated(inputs, derivatives, t_end, events).map_err(|e| failed("failed", &e))?;
+        let advanced = served.unwrap_or_else(|| self.model.advance_interpolated(inputs, derivatives, t_end, events));
+        advanced.map_err(|e| failed("failed", &e))?;
         let mut statistics = self.statistics.clone();
-        let mut outputs = self.outputs.clone();
-        Self::write_outputs(&self.model, &mut statistics, events, &mut outputs);
-        Self::valid(t_end, &outputs).map_err(|e| failed("refused", &e.0))?;
+        Self::write_outputs(&self.model, &mut statistics, Some(events), &mut self.outputs);
+        Self::valid(t_end, &self.outputs).map_err(|e| failed("refused", &e.0))?;
         if let Some(log) = &mut self.log {
             // Cuts the file back and keeps its cursor when it fails.
             log.append(events)?;
         }
-        Ok((outputs, statistics))
+        Ok(statistics)
     }
 
     /// What every state must satisfy (a restored one included): a finite time and finite outputs.
@@ -176,13 +184,16 @@ impl<E: EngineModel> Simulation<E> {
         self.log.as_ref().map_or(Ok(()), ImpactLog::rewind)
     }
 
-    /// The outputs of `model` with the impact statistics `statistics` after `events` (none for a
-    /// new simulation), which end at the model's crank angle.
-    fn write_outputs(model: &E, statistics: &mut ImpactStatistics, events: &[EngineEvent], outputs: &mut Outputs) {
+    /// Writes the outputs of `model` with the impact statistics `statistics`, which first take in the
+    /// `events` of a step (none for a new simulation) ending at the model's crank angle, if given.
+    /// Every output is written from the two: the outputs are a function of them.
+    fn write_outputs(model: &E, statistics: &mut ImpactStatistics, events: Option<&[EngineEvent]>, outputs: &mut Outputs) {
         model.write_outputs(outputs);
         // The engine's sign: what the crank train delivers to the drive or load.
         outputs.engine_torque = -outputs.crank_torque;
-        statistics.record_step(events, outputs.crank_angle);
+        if let Some(events) = events {
+            statistics.record_step(events, outputs.crank_angle);
+        }
         statistics.write(outputs);
     }
 }

@@ -111,17 +111,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 reason: "the end time is before the current time or not finite",
             });
         }
-        // A stepper restored from bytes is trusted no more than its caller: valid options, and a
-        // bounded amount of work below.
-        let reason = self
-            .options
-            .invalid()
-            .or_else(|| {
-                (self.contacts.held >> M != 0 || (self.contacts.stick | self.contacts.back) & !self.contacts.held != 0)
-                    .then_some("the contact set names constraints that do not exist")
-            })
-            .or_else(|| ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some(TOO_MANY_STEPS));
-        if let Some(reason) = reason {
+        if let Some(reason) = self.invalid(t_end) {
             return Err(DynamicsError::InvalidArgument { time: self.time(), reason });
         }
         // Inputs that changed here are likely to change at the next point too: no step past it then.
@@ -133,14 +123,13 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         // vanishing time, while a long span of ordinary impacts only needs more windows.
         let (mut handled, mut steps, mut window_start) = (0, 0.0, self.state.t);
         loop {
-            // (Checked before `take`, which copies the whole option even when empty.)
-            if let Some(ahead) = self.ahead.is_some().then(|| self.ahead.take()).flatten() {
+            if let Some(ahead) = &self.ahead {
                 if t_end < ahead.end.t {
-                    let now = self.between(&ahead.end, t_end)?;
-                    self.ahead = Some(Ahead { end: ahead.end, now });
-                    return Ok(());
+                    return self.serve(t_end);
                 }
-                self.state = ahead.end;
+                if let Some(ahead) = self.ahead.take() {
+                    self.state = ahead.end;
+                }
             }
             if self.state.t >= t_end {
                 return Ok(());
@@ -150,7 +139,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             if steps > MAX_STEPS_PER_ADVANCE {
                 return Err(DynamicsError::InvalidArgument { time: self.state.t, reason: TOO_MANY_STEPS });
             }
-            if self.step(t_end, beyond)? {
+            let event = self.step(t_end, beyond)?;
+            // A step that ran past `t_end` has the state there already.
+            if self.ahead.is_some() {
+                return Ok(());
+            }
+            if event {
                 if self.state.t - window_start >= self.options.step {
                     (handled, window_start) = (0, self.state.t);
                 }
@@ -181,6 +175,42 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             s.friction_work = s0.friction_work;
         }
         Ok(s)
+    }
+
+    /// Why `advance(t_end)` is refused after its time checks, if it is. A stepper restored from
+    /// bytes is trusted no more than its caller: valid options, and a bounded amount of work.
+    fn invalid(&self, t_end: f64) -> Option<&'static str> {
+        self.options
+            .invalid()
+            .or_else(|| {
+                let c = self.contacts;
+                (c.held >> M != 0 || (c.stick | c.back) & !c.held != 0).then_some("the contact set names constraints that do not exist")
+            })
+            .or_else(|| ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some(TOO_MANY_STEPS))
+    }
+
+    /// Whether `advance(t_end)` would only read the state at `t_end` from the step ahead: it is then
+    /// `serve(t_end)`.
+    pub fn serves(&self, t_end: f64) -> bool {
+        !self.changed && self.ahead.as_ref().is_some_and(|a| self.time() <= t_end && t_end < a.end.t) && self.invalid(t_end).is_none()
+    }
+
+    /// Reads the state at `t` from the step ahead, in place and all or nothing (a failure changes
+    /// nothing). `t` may lie before the current time: reading the point before a served one again
+    /// puts the stepper back exactly as it was there, the point being a function of the step.
+    pub fn serve(&mut self, t: f64) -> Result<(), DynamicsError> {
+        let reason = match &self.ahead {
+            Some(ahead) if self.state.t <= t && t < ahead.end.t => {
+                let now = self.between(&ahead.end, t)?;
+                if let Some(ahead) = &mut self.ahead {
+                    ahead.now = now;
+                }
+                return Ok(());
+            }
+            Some(_) => "the time is outside the step ahead",
+            None => "no step ahead to read the state from",
+        };
+        Err(DynamicsError::InvalidArgument { time: self.time(), reason })
     }
 
     /// Puts the state at the current time on the RK4 map (the step ahead cut there), so that the

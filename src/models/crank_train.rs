@@ -211,8 +211,7 @@ impl CrankTrain {
     /// The prescribed crank's angle is a function of time (restarted), the free crank's a
     /// coordinate (shifted: the model has period 4π in it).
     fn keep_angle_within_a_cycle(&mut self) -> Result<(), ModelError> {
-        let angle = self.state().0[0] - 4.0 * PI * self.cycles;
-        let cycles = (angle / (4.0 * PI)).floor();
+        let (angle, cycles) = self.angle_past_cycles();
         if cycles == 0.0 {
             return Ok(());
         }
@@ -225,6 +224,23 @@ impl CrankTrain {
         }
         self.cycles += cycles;
         Ok(())
+    }
+
+    /// The inputs over a step from now, refused unless finite.
+    fn inputs_over_step(&self, inputs: &Inputs, derivatives: &InputDerivatives) -> Result<[InputPolynomial; 3], ModelError> {
+        let polynomials = derivatives.polynomials(inputs, self.time());
+        let [speed, pressure, load] = polynomials;
+        for (name, u) in [("crank_speed", speed), ("gas_pressure", pressure), ("load_torque", load)] {
+            let finite = [u.value, u.slope, u.curvature].iter().all(|x| x.is_finite());
+            check(finite, || format!("input {name} ({}, derivatives {}, {}) must be finite", u.value, u.slope, u.curvature))?;
+        }
+        Ok(polynomials)
+    }
+
+    /// The crank angle less the whole cycles taken off it, and the whole cycles it is past its first.
+    fn angle_past_cycles(&self) -> (f64, f64) {
+        let angle = self.state().0[0] - 4.0 * PI * self.cycles;
+        (angle, (angle / (4.0 * PI)).floor())
     }
 
     /// Corner gaps h_i, m.
@@ -321,12 +337,7 @@ impl EngineModel for CrankTrain {
         t_end: f64,
         events: &mut Vec<EngineEvent>,
     ) -> Result<(), ModelError> {
-        let now = self.time();
-        let [speed, pressure, load] = derivatives.polynomials(inputs, now);
-        for (name, u) in [("crank_speed", speed), ("gas_pressure", pressure), ("load_torque", load)] {
-            let finite = [u.value, u.slope, u.curvature].iter().all(|x| x.is_finite());
-            check(finite, || format!("input {name} ({}, derivatives {}, {}) must be finite", u.value, u.slope, u.curvature))?;
-        }
+        let [speed, pressure, load] = self.inputs_over_step(inputs, derivatives)?;
         if !self.started {
             self.start(inputs.crank_speed)?;
         }
@@ -371,6 +382,32 @@ impl EngineModel for CrankTrain {
             Drive::Free(s) => s.clear_events(),
         }
         Ok(())
+    }
+
+    /// With the inputs held as they are, no cycle to take off the crank angle and the step ahead
+    /// past `t_end`, `advance_interpolated` would only have the stepper serve the point.
+    fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
+        let [speed, pressure, load] = match self.inputs_over_step(inputs, derivatives) {
+            Ok(polynomials) => polynomials,
+            Err(e) => return Some(Err(e)),
+        };
+        if !(self.started && self.engine().holds(&pressure) && self.angle_past_cycles().1 == 0.0) {
+            return None;
+        }
+        let served = match &mut self.drive {
+            Drive::Prescribed(s) if s.system().holds_speed(&speed) && s.serves(t_end) => s.serve(t_end),
+            Drive::Free(s) if s.system().load_torque.same_as(&load) && s.serves(t_end) => s.serve(t_end),
+            _ => return None,
+        };
+        Some(served.map_err(dynamics_error))
+    }
+
+    fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {
+        match &mut self.drive {
+            Drive::Prescribed(s) => s.serve(t),
+            Drive::Free(s) => s.serve(t),
+        }
+        .map_err(dynamics_error)
     }
 
     fn write_outputs(&self, out: &mut Outputs) {

@@ -90,4 +90,18 @@ pub trait EngineModel: Sized + Clone {
 
     /// Writes the kinematic and force outputs (everything but the impact statistics).
     fn write_outputs(&self, out: &mut Outputs);
+
+    /// Advances to `t_end` as [`Self::advance_interpolated`] would where that only reads the state
+    /// there from a step already taken (no events): all or nothing, and a point the caller then
+    /// refuses is undone by [`Self::serve_again`] at the time before it, with no copy. None, with
+    /// nothing done, where it is not such a point.
+    fn serve(&mut self, _inputs: &Inputs, _derivatives: &InputDerivatives, _t_end: f64) -> Option<Result<(), ModelError>> {
+        None
+    }
+
+    /// Reads the state at `t` again from the step already taken, after a point that
+    /// [`Self::serves`] gave beyond `t`: the model is then exactly as it was at `t`.
+    fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {
+        Err(ModelError(format!("no step taken past t = {t} s to read the state from")))
+    }
 }

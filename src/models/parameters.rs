@@ -157,7 +157,7 @@ pub struct Outputs {
 impl Outputs {
     /// The first Real output that is not finite, by name: a step that gives one has failed.
     pub fn first_non_finite(&self) -> Option<(&'static str, f64)> {
-        [
+        let reals = [
             ("impact_velocity", self.impact_velocity),
             ("max_impact_velocity_in_step", self.max_impact_velocity_in_step),
             ("impact_energy_in_step", self.impact_energy_in_step),
@@ -190,9 +190,12 @@ impl Outputs {
             ("friction_force_4", self.friction_force_4),
             ("friction_power", self.friction_power),
             ("friction_energy_total", self.friction_energy_total),
-        ]
-        .into_iter()
-        .find(|(_, x)| !x.is_finite())
+        ];
+        // One sum clears them all (x · 0 is NaN exactly for an infinite or NaN x) before any is named.
+        if reals.iter().map(|(_, x)| x * 0.0).sum::<f64>() == 0.0 {
+            return None;
+        }
+        reals.into_iter().find(|(_, x)| !x.is_finite())
     }
 }
 
@@ -284,6 +287,18 @@ mod tests {
         refused(|p| p.gravity = f64::NAN, "gravity");
         refused(|p| p.bore = 0.079, "bore");
         refused(|p| p.crank_radius = 0.2, "crank_radius");
+    }
+
+    #[test]
+    fn the_first_non_finite_output_is_named() {
+        let finite = Outputs { impact_velocity: f64::MAX, kinetic_energy: -0.0, side_force: f64::MIN_POSITIVE, ..Outputs::default() };
+        assert_eq!(finite.first_non_finite(), None);
+        for x in [f64::INFINITY, f64::NEG_INFINITY] {
+            let out = Outputs { crank_torque: x, kinetic_energy: f64::NAN, ..finite.clone() };
+            assert_eq!(out.first_non_finite(), Some(("crank_torque", x)));
+        }
+        let nan = Outputs { kinetic_energy: f64::NAN, ..finite }.first_non_finite();
+        assert!(matches!(nan, Some(("kinetic_energy", x)) if x.is_nan()), "{nan:?}");
     }
 
     #[test]

@@ -40,4 +40,18 @@ impl EngineModel for ModelVariant {
             ModelVariant::Roller(m) => m.write_outputs(out),
         }
     }
+
+    fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
+        match self {
+            ModelVariant::CrankTrain(m) => m.serve(inputs, derivatives, t_end),
+            ModelVariant::Roller(m) => m.serve(inputs, derivatives, t_end),
+        }
+    }
+
+    fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {
+        match self {
+            ModelVariant::CrankTrain(m) => m.serve_again(t),
+            ModelVariant::Roller(m) => m.serve_again(t),
+        }
+    }
 }

@@ -90,6 +90,22 @@ fn a_failed_step_leaves_the_simulation_as_it_was() {
     }
 }
 
+/// A step refused after the model advanced and the outputs were written (its impact cannot be
+/// logged: the file is gone) puts the model and the outputs back.
+#[test]
+fn a_step_refused_after_the_model_advanced_leaves_the_simulation_as_it_was() {
+    let path = temp_path("gone");
+    let p = Parameters { impact_log: path.to_str().unwrap().into(), ..Parameters::default() };
+    let mut sim = Sim::start(&p, 0.0).unwrap();
+    run(&mut sim, &Inputs::default(), 0.003, 1e-3);
+    let before = sim.clone();
+    std::fs::remove_file(&path).unwrap();
+    let err = sim.step(&Inputs::default(), 0.005).unwrap_err();
+    assert!(err.0.contains("cannot open"), "the impact at 0.004 s: {err}");
+    assert_eq!(sim, before);
+    assert_eq!(sim.outputs(), before.outputs());
+}
+
 #[test]
 fn bad_parameters_are_refused_by_name() {
     let p = Parameters { piston_mass: -1.0, ..Parameters::default() };
@@ -182,4 +198,29 @@ fn engine_torque_is_the_crank_torque_with_the_engine_sign() {
         let out = sim.outputs();
         assert_eq!(out.engine_torque, -out.crank_torque);
     }
+}
+
+/// The crank train serves most points of the default case at 1e-5 s from the step ahead, as
+/// `advance` would to the bit, and reading the point before again puts it back to the bit (as an
+/// FMU state saves it: the caches of the crank's terms are not state), so the step copies nothing.
+#[test]
+fn a_served_point_is_undone_by_reading_the_point_before_again() {
+    let mut model = ModelVariant::new(&Parameters::default(), 0.0).unwrap();
+    let (inputs, derivatives, mut events) = (Inputs::default(), InputDerivatives::default(), Vec::new());
+    let mut served = 0;
+    for k in 1..=2000 {
+        let (t0, t1) = ((k - 1) as f64 * 1e-5, k as f64 * 1e-5);
+        let before = postcard::to_allocvec(&model).unwrap();
+        let mut advanced = model.clone();
+        advanced.advance(&inputs, t1, &mut events).unwrap();
+        if let Some(result) = model.serve(&inputs, &derivatives, t1) {
+            result.unwrap();
+            assert_eq!(postcard::to_allocvec(&model).unwrap(), postcard::to_allocvec(&advanced).unwrap(), "at {t1} s");
+            model.serve_again(t0).unwrap();
+            assert_eq!(postcard::to_allocvec(&model).unwrap(), before, "at {t1} s");
+            served += 1;
+        }
+        model.advance(&inputs, t1, &mut events).unwrap();
+    }
+    assert!(served > 1500, "{served} of 2000 points served");
 }

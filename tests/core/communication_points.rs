@@ -67,3 +67,20 @@ fn a_copy_inside_a_step_continues_to_the_bit_and_a_change_cuts_the_step() {
     assert!((changed.velocity()[0] - v).abs() < 1e-12, "no acceleration after the change");
     assert!((changed.position()[0] - (1.0 - 0.5 * 9.81 * 0.123 * 0.123 + v * 0.077)).abs() < 1e-12);
 }
+
+/// A served point read again at the point before it puts the stepper back to the bit (how a
+/// refused communication point is undone without a copy); a served point that cannot be read
+/// changes nothing.
+#[test]
+fn a_point_read_again_puts_the_stepper_back_to_the_bit() {
+    let mut s = ball();
+    s.advance(0.1234).unwrap();
+    let before = format!("{s:?}");
+    assert!(s.serves(0.1235), "the step from 0.12 s runs past 0.1235 s");
+    s.advance(0.1235).unwrap();
+    assert_ne!(format!("{s:?}"), before);
+    s.serve(0.1234).unwrap();
+    assert_eq!(format!("{s:?}"), before);
+    assert!(s.serve(5.0).is_err() && s.serve(0.0).is_err());
+    assert_eq!(format!("{s:?}"), before);
+}
