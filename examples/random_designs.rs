@@ -6,13 +6,19 @@
 #[path = "../tests/common/designs.rs"]
 mod designs;
 
-use designs::{engine, run, slider, Random};
+use designs::{engine, rubbing_engine, rubbing_slider, run, slider, Random};
 use std::time::Instant;
 
 fn main() {
     let args: Vec<u64> = std::env::args().skip(1).map(|a| a.parse().expect("a whole number")).collect();
     let (n, first) = (args.first().copied().unwrap_or(1000), args.get(1).copied().unwrap_or(0));
-    for (family, make) in [("engine", engine as fn(&mut Random) -> designs::Design), ("slider", slider)] {
+    let families = [
+        ("engine", engine as fn(&mut Random) -> designs::Design),
+        ("slider", slider),
+        ("rubbing engine", rubbing_engine),
+        ("rubbing slider", rubbing_slider),
+    ];
+    for (family, make) in families {
         let (start, mut failed, mut events, mut worst) = (Instant::now(), 0, 0, 0.0_f64);
         for seed in first..first + n {
             let design = make(&mut Random::new(seed));
@@ -29,7 +35,7 @@ fn main() {
         }
         let elapsed = start.elapsed().as_secs_f64();
         // Only the sliders are free of damping, gas and gravity: the engines' balance holds their work.
-        let balance = if family == "slider" { format!(", worst |energy balance| {worst:.1e}") } else { String::new() };
+        let balance = if family.ends_with("slider") { format!(", worst |energy balance| {worst:.1e}") } else { String::new() };
         println!("{family}: {n} designs, {failed} failed, {events} events{balance}, {elapsed:.1} s");
     }
 }

@@ -2,8 +2,9 @@
 //! in release mode, failing on any model error (NaN, unresolved accumulation, event budget — the
 //! stepper's guard against a hang) and on a drift of the energy balance, checked every window
 //! (an engine cycle, a roller revolution):
-//!   E(end) − E(start) = ∫ (P_drive + P_gas − D) dt − Σ impact dissipation + Σ impulsive drive work
-//! with the terms of `EnergyBalance`. The drive power is the FMU's `crank_torque` output times ω
+//!   E(end) − E(start) = ∫ (P_drive + P_gas − D − F) dt − Σ impact dissipation + Σ impulsive drive work
+//! with the terms of `EnergyBalance` (F: liner friction's dissipation rate in persistent contact;
+//! an impact's dissipation includes what its friction impulses dissipate). The drive power is the FMU's `crank_torque` output times ω
 //! (from the crank row, which the reduced dynamics never use), the gas power is F times the speed
 //! of its point of action, D the damping's dissipation, and the impulsive drive work what the
 //! held crank (or the roller's moving walls) does through each impact's impulses.
@@ -11,8 +12,10 @@
 //! 1. Crank train as the FMU runs by default: prescribed crank at 1200 rpm, built-in pressure, e = 0.5.
 //! 2. The same with a free crank (crank_mode 2), load and joint damping calibrated to A&K's
 //!    efficiency (`EfficiencyTarget`); the drive is then the load torque, and impulses do no work.
-//! 3. The roller variant at 1200 rpm: its 1-DOF system of eq 2.13 (`models/roller/energy.rs`), in
-//!    a thread of its own beside 1 and 2 (it takes longest).
+//! 3. The prescribed crank again with liner friction μ = 0.1 and a lateral gravity of 9.81 m/s²
+//!    (a horizontal cylinder): friction dissipation in sliding and in Newton–Coulomb impacts.
+//! 4. The roller variant at 1200 rpm: its 1-DOF system of eq 2.13 (`models/roller/energy.rs`), in
+//!    a thread of its own beside 1–3 (it takes longest).
 //!
 //! Quadrature: the powers are smooth between events. Each window is cut into an even number of
 //! intervals (within one RK4 step for the crank train, about four for the roller), integrated by
@@ -56,12 +59,13 @@ const ROLLER_SAMPLES: usize = 320;
 const CRANK_INTERVAL: f64 = 1e-4;
 const TOLERANCE: f64 = 1e-5;
 
-/// Integrands: drive, gas and damping power, and the scale |drive| + |gas| + damping, W.
-type Powers = [f64; 4];
+/// Integrands: drive, gas, damping and friction power, and the scale |drive| + |gas| + damping +
+/// friction, W.
+type Powers = [f64; 5];
 
 fn powers(model: &impl EnergyBalance) -> Powers {
     let p = model.power_flows();
-    [p.drive, p.gas, p.damping, p.drive.abs() + p.gas.abs() + p.damping]
+    [p.drive, p.gas, p.damping, p.friction, p.drive.abs() + p.gas.abs() + p.damping + p.friction]
 }
 
 fn add(total: &mut Powers, part: Powers) {
@@ -100,7 +104,7 @@ struct Run<Mo> {
 
 impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
     fn new(model: Mo, inputs: Inputs, t0: f64) -> Result<Self, String> {
-        let mut run = Self { model, inputs, now: [0.0; 4], events: Vec::new(), splits: 0, trapezoids: 0 };
+        let mut run = Self { model, inputs, now: [0.0; 5], events: Vec::new(), splits: 0, trapezoids: 0 };
         run.model.advance(&run.inputs, t0, &mut run.events).map_err(|e| e.0)?;
         run.now = powers(&run.model);
         Ok(run)
@@ -115,7 +119,7 @@ impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
     fn integrate(&mut self, t0: f64, t1: f64, n: usize) -> Result<Powers, String> {
         let h = (t1 - t0) / n as f64;
         let at = |k: usize| if k == n { t1 } else { t0 + k as f64 * h };
-        let mut total = [0.0; 4];
+        let mut total = [0.0; 5];
         for k in (0..n).step_by(2) {
             let (a, m, b) = (at(k), at(k + 1), at(k + 2));
             let (copy, start, seen) = (self.model.clone(), self.now, self.events.len());
@@ -150,7 +154,7 @@ impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
     /// ∫ over `[a, b]` from the model at `a`: Simpson with the midpoint from a copy if no event
     /// happens, else split at each event in turn.
     fn interval(&mut self, mut a: f64, b: f64, mut depth: u32) -> Result<Powers, String> {
-        let mut total = [0.0; 4];
+        let mut total = [0.0; 5];
         loop {
             let (copy, start, seen) = (self.model.clone(), self.now, self.events.len());
             self.advance(b)?;
@@ -194,7 +198,7 @@ impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
         let more = self.events[seen..].iter().any(|e| e.time > event);
         let delta = (SPLIT * (b - a)).max(RESOLUTION * event.abs());
         let (before, after) = ((event - delta).max(a), (event + delta).min(b));
-        let (mut total, mut pre, mut early) = ([0.0; 4], copy, Vec::new());
+        let (mut total, mut pre, mut early) = ([0.0; 5], copy, Vec::new());
         if before > a {
             let middle = probe(pre.clone(), &self.inputs, 0.5 * (a + before))?;
             pre.advance(&self.inputs, before, &mut early).map_err(|e| e.0)?;
@@ -235,15 +239,15 @@ impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
     fn window(&mut self, t0: f64, t1: f64, n: usize) -> Result<f64, String> {
         let (energy, work) = (self.model.mechanical_energy(), self.model.impulse_work());
         self.events.clear();
-        let [drive, gas, damping, scale] = self.integrate(t0, t1, n)?;
+        let [drive, gas, damping, friction, scale] = self.integrate(t0, t1, n)?;
         let dissipated: f64 = self.events.iter().map(|e| e.energy_lost).sum();
         let impulsive = self.model.impulse_work() - work;
-        let error = self.model.mechanical_energy() - energy - (drive + gas - damping - dissipated + impulsive);
+        let error = self.model.mechanical_energy() - energy - (drive + gas - damping - friction - dissipated + impulsive);
         let relative = error / (scale + dissipated + impulsive.abs());
         if !relative.is_finite() || relative.abs() > TOLERANCE {
             return Err(format!(
                 "energy balance error {relative:.3e} at t = {t1} s: ΔE {:.6e} J, drive {drive:.6e}, gas {gas:.6e}, \
-                 damping {damping:.6e}, impacts {dissipated:.6e}, impulsive drive {impulsive:.6e}",
+                 damping {damping:.6e}, friction {friction:.6e}, impacts {dissipated:.6e}, impulsive drive {impulsive:.6e}",
                 self.model.mechanical_energy() - energy
             ));
         }
@@ -325,6 +329,10 @@ fn crank_trains(cycles: u64, failed: &AtomicBool) -> Result<(), String> {
     let params = Parameters::default();
     let prescribed = Run::new(CrankTrain::new(&params, 0.0).map_err(|e| e.0)?, inputs.clone(), 0.0)?;
     soak("crank train, prescribed crank", prescribed, 0.0, cycles, cycle, n, failed)?;
+
+    let rubbing = Parameters { friction: 0.1, gravity_lateral: 9.81, ..Parameters::default() };
+    let frictional = Run::new(CrankTrain::new(&rubbing, 0.0).map_err(|e| e.0)?, inputs.clone(), 0.0)?;
+    soak("crank train, liner friction", frictional, 0.0, cycles, cycle, n, failed)?;
 
     let base = Parameters { crank_mode: 2, ..Parameters::default() };
     let geometry = SliderCrank { crank_radius: base.crank_radius, rod_length: base.rod_length, pin_offset: 0.0 };

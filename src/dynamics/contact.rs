@@ -29,10 +29,10 @@ pub(crate) fn select<const M: usize>(pred: impl Fn(usize) -> bool) -> Set {
 
 /// A pivot of the Cholesky factor this small relative to its diagonal entry means the constraints
 /// of the set are linearly dependent (e.g. more closed constraints than degrees of freedom).
-const DEPENDENT_PIVOT: f64 = 1e-10;
+pub(crate) const DEPENDENT_PIVOT: f64 = 1e-10;
 
 /// Relative tolerance of the complementarity checks (against round-off, not physics).
-const COMPLEMENTARITY_TOL: f64 = 1e-9;
+pub(crate) const COMPLEMENTARITY_TOL: f64 = 1e-9;
 
 /// The constraint geometry at one state.
 pub(crate) struct Frame<const N: usize, const M: usize> {
@@ -75,12 +75,23 @@ impl<const N: usize, const M: usize> Frame<N, M> {
         let b = drive + ev.gap_bias;
         let (lambda, support) = solve_lcp(&self.w, &b, candidates, scale)?;
         let gap_acc = self.w * lambda + b;
-        let w_max = members::<M>(candidates).fold(0.0_f64, |s, i| s.max(self.w[(i, i)]));
-        let tie_force = (TIE_FRACTION * scale / w_max).max(TIE_FORCE_FACTOR * force_tolerance);
-        let ties =
-            candidates & select::<M>(|i| if contains(support, i) { lambda[i] <= tie_force } else { gap_acc[i] <= tie_force * w_max });
+        let ties = ties(&self.w, (&lambda, &gap_acc), (candidates, support), scale, force_tolerance);
         Some(Sliding { lambda, support, ties })
     }
+}
+
+/// The candidates of a sliding-law solution `(λ, ḧ)` with closed set `support` that lie within
+/// the tie margin: in the support with a force, or outside it with a gap acceleration, near zero.
+pub(crate) fn ties<const M: usize>(
+    w: &SMatrix<f64, M, M>,
+    (lambda, gap_acc): (&SVector<f64, M>, &SVector<f64, M>),
+    (candidates, support): (Set, Set),
+    scale: f64,
+    force_tolerance: f64,
+) -> Set {
+    let w_max = members::<M>(candidates).fold(0.0_f64, |s, i| s.max(w[(i, i)]));
+    let tie_force = (TIE_FRACTION * scale / w_max).max(TIE_FORCE_FACTOR * force_tolerance);
+    candidates & select::<M>(|i| if contains(support, i) { lambda[i] <= tie_force } else { gap_acc[i] <= tie_force * w_max })
 }
 
 /// Margin of an undecided contact, relative to the scale of the sliding law's terms: a contact

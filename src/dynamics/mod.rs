@@ -25,6 +25,7 @@
 mod contact;
 mod error;
 mod events;
+mod friction;
 mod impact;
 mod inertia;
 mod options;
@@ -45,4 +46,4 @@ pub use options::{StepperOptions, DEFAULT_EVENT_BUDGET};
 pub use record::{Event, EventKind, StepCounts};
 pub use settle::ZENO_APEX_FACTOR;
 pub use stepper::Stepper;
-pub use system::{Evaluation, System};
+pub use system::{Evaluation, System, Tangents};

@@ -11,6 +11,10 @@ pub enum EventKind {
     Slide,
     /// A multiplier reached zero: the constraint opens.
     Release,
+    /// A constraint in persistent contact comes to tangential rest and sticks (with friction).
+    Stick,
+    /// A constraint in persistent contact starts to slip, from sticking or reversing (with friction).
+    Slip,
 }
 
 /// One entry of the event record.
@@ -24,18 +28,24 @@ pub struct Event<const N: usize, const M: usize> {
     /// ḣ⁺.
     pub velocity_after: f64,
     /// Energy dissipated by this constraint's impulse Λ (an impact, or the projection onto ḣ = 0
-    /// when sliding starts): `−Λ (ḣ⁻ + ḣ⁺) / 2`, ≥ 0 for an approaching constraint. Equal to its
+    /// when sliding starts): `−Λ (ḣ⁻ + ḣ⁺) / 2`, ≥ 0 for an approaching constraint, plus with
+    /// friction the tangential impulse's `−Λ_T (γ⁻ + γ⁺) / 2`. Equal to its
     /// share of `T⁻ − T⁺` for a fixed constraint; a moving one also does the work `−Λ ∂h/∂t` on
     /// the system (the drive's, not dissipated), which is not counted here.
     pub energy_lost: f64,
+    /// The part of `energy_lost` the tangential (friction) impulse dissipates (0 without friction).
+    pub friction_energy: f64,
     /// Configuration at the event.
     pub q: SVector<f64, N>,
     /// The impulses Λ on every constraint of the impact or velocity projection that recorded this
     /// event, constraints held in contact included (they take reactions without an event of their
     /// own). One impact or projection may record several events: it carries its impulses on the
     /// first of them, zero on the others, so that sums over the record count each once. Zero for
-    /// a release. With them `Δq̇ = M⁻¹ Jᵀ Λ` and the work of moving constraints `−Λ·∂h/∂t`.
+    /// a release. With them `Δq̇ = M⁻¹ (Jᵀ Λ + J_Tᵀ Λ_T)` and the work of moving constraints
+    /// `−Λ·∂h/∂t − Λ_T·∂γ/∂t`.
     pub impulses: SVector<f64, M>,
+    /// The tangential (friction) impulses `Λ_T` of the same impact, carried alike (zero without friction).
+    pub friction_impulses: SVector<f64, M>,
 }
 
 /// The work `Stepper::advance` has done since the stepper was made (or restored: the counts are

@@ -2,6 +2,7 @@
 //! gap rates), and the RK4 step and its error estimate that make the next one.
 
 use super::contact::{held_acceleration, Frame, Set};
+use super::friction::{Contacts, Tangential};
 use super::inertia::Inertia;
 use super::{rk4, DynamicsError, Evaluation, System};
 use nalgebra::{SMatrix, SVector};
@@ -21,17 +22,40 @@ pub(super) struct Sample<const N: usize, const M: usize> {
     /// ḧ = J q̈ + d: with `h` and `ḣ` at both ends of a step it gives the gaps' own quintic
     /// extension, so that event search samples no configuration.
     pub(super) hdd: SVector<f64, M>,
+    /// Slip velocity γ and tangential force λ_T (zero without friction).
+    pub(super) slip: SVector<f64, M>,
+    pub(super) friction: SVector<f64, M>,
+    /// Energy friction has dissipated in persistent contact since the start, J: integrated with
+    /// the steps (`rk4_step`), carried over where a state is replaced at the same time. (Impacts
+    /// record their own share, `Event::friction_energy`.)
+    pub(super) friction_work: f64,
+}
+
+impl<const N: usize, const M: usize> Sample<N, M> {
+    /// The power friction dissipates, `−λ_T · γ` (≥ 0: a slipping constraint's force opposes γ).
+    pub(super) fn friction_power(&self) -> f64 {
+        -self.friction.dot(&self.slip)
+    }
+
+    /// This sample, continuing the friction work of `from`.
+    pub(super) fn after(self, from: &Sample<N, M>) -> Self {
+        Self { friction_work: from.friction_work, ..self }
+    }
 }
 
 /// A sample with the system's evaluation there (the impact and sliding laws and the drift
 /// projection reuse it), or without one where none is at hand.
 pub(super) type Evaluated<const N: usize, const M: usize> = (Sample<N, M>, Option<Evaluation<N, M>>);
 
-/// Which function of constraint `i` an event watches.
+/// Which function of constraint `i` an event watches: the gap of a free constraint, the normal
+/// force of a held one, and with friction the slip `s γ` of one slipping in direction `s` or the
+/// margin `μ λ_N − |λ_T|` to the friction cone of one sticking with friction coefficient `μ`.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(super) enum Watch {
     Gap,
     Multiplier,
+    Slip(f64),
+    Stick(f64),
 }
 
 impl<const N: usize, const M: usize> Sample<N, M> {
@@ -39,8 +63,51 @@ impl<const N: usize, const M: usize> Sample<N, M> {
         match w {
             Watch::Gap => self.gap[i],
             Watch::Multiplier => self.lambda[i],
+            Watch::Slip(s) => s * self.slip[i],
+            Watch::Stick(mu) => mu * self.lambda[i] - self.friction[i].abs(),
         }
     }
+}
+
+/// μ of each constraint, if any has friction: `None` keeps a frictionless system on the
+/// frictionless paths, to the bit.
+#[inline(always)]
+pub(super) fn friction_of<S: System<N, M>, const N: usize, const M: usize>(sys: &S) -> Option<SVector<f64, M>> {
+    let mu = SVector::<f64, M>::from_fn(|i, _| sys.friction(i));
+    mu.iter().any(|&m| m != 0.0).then_some(mu)
+}
+
+/// What the held contacts give at one state: `q̈`, `λ_N`, `λ_T` and the slip velocities γ.
+pub(super) struct Motion<const N: usize, const M: usize> {
+    pub acc: SVector<f64, N>,
+    pub lambda: SVector<f64, M>,
+    pub friction: SVector<f64, M>,
+    pub slip: SVector<f64, M>,
+}
+
+/// `Motion` at `(t, q, q̇)` with `contacts` held, from the evaluation there.
+#[inline(always)]
+pub(super) fn motion<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    ev: &Evaluation<N, M>,
+    (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
+    contacts: Contacts,
+) -> Result<Motion<N, M>, DynamicsError> {
+    let Some(mu) = friction_of(sys) else {
+        let (acc, lambda) = acceleration(ev, t, contacts.held)?;
+        return Ok(Motion { acc, lambda, friction: SVector::zeros(), slip: SVector::zeros() });
+    };
+    let tangents = sys.tangents(t, q, v);
+    let slip = tangents.slip(v);
+    let (inertia, free_acc) = free_motion(&ev.mass, &ev.force, t)?;
+    if contacts.held == 0 {
+        return Ok(Motion { acc: free_acc, lambda: SVector::zeros(), friction: SVector::zeros(), slip });
+    }
+    let frame = Tangential::new(ev, &tangents, &inertia, mu);
+    let modes = std::array::from_fn(|i| contacts.mode(i));
+    let b = (Frame::gap_acceleration(ev, &free_acc), tangents.jacobian * free_acc + tangents.bias);
+    let s = frame.solve(&modes, (&b.0, &b.1)).ok_or(DynamicsError::DependentContacts { time: t, constraints: contacts.held })?;
+    Ok(Motion { acc: frame.motion(&free_acc, &s), lambda: s.normal, friction: s.tangent, slip })
 }
 
 /// The evaluation at `(t, q, q̇)` and its contact frame; `known`: that evaluation, if at hand.
@@ -85,45 +152,45 @@ pub(super) fn sample<S: System<N, M>, const N: usize, const M: usize>(
     t: f64,
     q: SVector<f64, N>,
     v: SVector<f64, N>,
-    active: Set,
+    contacts: Contacts,
 ) -> Result<Sample<N, M>, DynamicsError> {
-    sample_of(&sys.evaluate(t, &q, &v), t, q, v, active)
+    sample_of(sys, &sys.evaluate(t, &q, &v), t, q, v, contacts)
 }
 
 /// The sample at `(t, q, q̇)` from its evaluation `ev` (borrowed: callers use it again, and a
 /// moved evaluation is a copy). Inlined, like `rk4_step`, so that the sample is built where the
 /// caller keeps it rather than copied out of the `Result`.
 #[inline(always)]
-pub(super) fn sample_of<const N: usize, const M: usize>(
+pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
     ev: &Evaluation<N, M>,
     t: f64,
     q: SVector<f64, N>,
     v: SVector<f64, N>,
-    active: Set,
+    contacts: Contacts,
 ) -> Result<Sample<N, M>, DynamicsError> {
-    let (acc, lambda) = acceleration(ev, t, active)?;
+    let Motion { acc, lambda, friction, slip } = motion(sys, ev, (t, &q, &v), contacts)?;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let hdd = ev.gap_jacobian * acc + ev.gap_bias;
-    let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd, hdd };
+    let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd, hdd, slip, friction, friction_work: 0.0 };
     let finite = |x: &[f64]| x.iter().all(|v| v.is_finite());
-    if [s.q.as_slice(), s.v.as_slice(), s.acc.as_slice(), s.lambda.as_slice(), s.gap.as_slice(), s.hd.as_slice(), s.hdd.as_slice()]
-        .into_iter()
-        .all(finite)
-    {
+    let parts =
+        [s.q.as_slice(), s.v.as_slice(), s.acc.as_slice(), s.lambda.as_slice(), s.gap.as_slice(), s.hd.as_slice(), s.hdd.as_slice()];
+    if parts.into_iter().chain([s.slip.as_slice(), s.friction.as_slice()]).all(finite) {
         Ok(s)
     } else {
         Err(DynamicsError::NonFinite { time: t })
     }
 }
 
-/// One RK4 step from `s0` to `t` with the contact set `active` held, and the end's evaluation.
+/// One RK4 step from `s0` to `t` with `contacts` held, and the end's evaluation.
 pub(super) fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     s0: &Sample<N, M>,
     t: f64,
-    active: Set,
+    contacts: Contacts,
 ) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
-    let (s, ev, _) = rk4_step(sys, s0, t, active)?;
+    let (s, ev, _) = rk4_step(sys, s0, t, contacts)?;
     Ok((s, ev))
 }
 
@@ -134,19 +201,26 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     s0: &Sample<N, M>,
     t: f64,
-    active: Set,
+    contacts: Contacts,
 ) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
+    // The friction power at the stages, for its integral by the step's own weights.
+    let mut powers = [s0.friction_power(), 0.0, 0.0, 0.0];
+    let mut stage = 0;
     let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
-        if active == 0 {
+        if contacts.held == 0 {
             let (mass, force) = sys.inertia_and_force(t, q, v);
             Ok(free_motion(&mass, &force, t)?.1)
         } else {
-            Ok(acceleration(&sys.evaluate(t, q, v), t, active)?.0)
+            let m = motion(sys, &sys.evaluate(t, q, v), (t, q, v), contacts)?;
+            stage += 1;
+            powers[stage] = -m.friction.dot(&m.slip);
+            Ok(m.acc)
         }
     };
     let step = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
     let ev = sys.evaluate(t, &step.q, &step.v);
-    let s = sample_of(&ev, t, step.q, step.v, active)?;
+    let mut s = sample_of(sys, &ev, t, step.q, step.v, contacts)?;
+    s.friction_work = s0.friction_work + (powers[0] + 2.0 * (powers[1] + powers[2]) + powers[3]) * ((t - s0.t) / 6.0);
     Ok((s, ev, step.last_slopes))
 }
 

@@ -3,8 +3,9 @@
 
 use super::contact::contains;
 use super::events::{self, Bracket, EventLocator, Located, Start};
+use super::friction::Mode;
 use super::rk4::Hermite5;
-use super::sample::{acceleration, rk4_to, Evaluated, Sample, Watch};
+use super::sample::{acceleration, friction_of, rk4_to, sample, Evaluated, Sample, Watch};
 use super::stepper::StepEnd;
 use super::{DynamicsError, Evaluation, Stepper, System};
 use std::cell::OnceCell;
@@ -13,14 +14,30 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     fn tolerance(&self, watch: Watch) -> f64 {
         match watch {
             Watch::Gap => self.options.gap_tolerance,
-            Watch::Multiplier => self.options.multiplier_tolerance,
+            Watch::Multiplier | Watch::Stick(_) => self.options.multiplier_tolerance,
+            Watch::Slip(_) => self.options.velocity_tolerance,
         }
+    }
+
+    /// What the step watches: each free constraint's gap, each held one's normal force, and with
+    /// friction each held one's slip (slipping) or margin to the friction cone (sticking).
+    fn watches(&self) -> impl Iterator<Item = (usize, Watch)> + Clone + '_ {
+        let (contacts, mu) = (self.contacts, friction_of(&self.system));
+        (0..M).flat_map(move |i| {
+            let tangential = match (contacts.mode(i), mu.map_or(0.0, |mu| mu[i])) {
+                (_, 0.0) | (Mode::Open, _) => None,
+                (Mode::Stick, mu) => Some(Watch::Stick(mu)),
+                (Mode::Slip(s), _) => Some(Watch::Slip(s)),
+            };
+            let normal = if contains(contacts.held, i) { Watch::Multiplier } else { Watch::Gap };
+            [Some(normal), tangential].into_iter().flatten().map(move |w| (i, w))
+        })
     }
 
     /// The earliest event in the step `self.state → s1`.
     pub(super) fn first_event(&self, s1: Evaluated<N, M>) -> Result<StepEnd<N, M>, DynamicsError> {
-        let (sys, s0, active) = (&self.system, &self.state, self.active);
-        let watch_of = |i| if contains(active, i) { Watch::Multiplier } else { Watch::Gap };
+        let (sys, s0, contacts) = (&self.system, &self.state, self.contacts);
+        let watches = self.watches();
         let step_end = &s1.0;
         // The step's quintic extensions, of the gaps and of the configuration, built once a scan
         // needs them (most steps scan nothing).
@@ -40,7 +57,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                         a1: e.hdd,
                     })
                     .position_of(i, t)),
-                Watch::Multiplier => {
+                Watch::Multiplier | Watch::Slip(_) | Watch::Stick(_) => {
                     let dense = configuration.get_or_init(|| Hermite5 {
                         t0: s0.t,
                         dt: e.t - s0.t,
@@ -52,7 +69,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                         a1: e.acc,
                     });
                     let (q, v) = dense.at(t);
-                    let lambda = acceleration(&sys.evaluate(t, &q, &v), t, active)?.1[i];
+                    if w != Watch::Multiplier {
+                        return Ok(sample(sys, t, q, v, contacts)?.watched(i, w));
+                    }
+                    let lambda = acceleration(&sys.evaluate(t, &q, &v), t, contacts.held)?.1[i];
                     if lambda.is_finite() {
                         Ok(lambda)
                     } else {
@@ -66,8 +86,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let mut located: Option<Evaluated<N, M>> = None;
         for _ in 0..=M {
             let mut earliest: Option<(f64, usize, Watch, Start)> = None;
-            for i in 0..M {
-                let w = watch_of(i);
+            for (i, w) in watches.clone() {
                 let tol = self.tolerance(w);
                 let e = located.as_ref().map_or(step_end, |l| &l.0);
                 let (g0, g1) = (s0.watched(i, w), e.watched(i, w));
@@ -104,7 +123,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 Start::Within(br) => br,
             };
             let (s, ev) = self.locate_on_rk4(br, estimate, i, w)?;
-            let crossed_before = (0..M).any(|j| j != i && s.watched(j, watch_of(j)) < -self.tolerance(watch_of(j)));
+            let crossed_before = watches.clone().any(|(j, v)| (j, v) != (i, w) && s.watched(j, v) < -self.tolerance(v));
             if !crossed_before {
                 return Ok(StepEnd::Event { at: (s, Some(ev)), constraint: i });
             }
@@ -112,20 +131,20 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         }
         // Only reachable with round-off ties between constraints: take the last located state.
         let end = located.unwrap_or(s1);
-        let j = (0..M).find(|&j| end.0.watched(j, watch_of(j)) < 0.0).unwrap_or(0);
+        let j = watches.clone().find(|&(j, v)| end.0.watched(j, v) < 0.0).map_or(0, |(j, _)| j);
         Ok(StepEnd::Event { at: end, constraint: j })
     }
 
     /// The state where `g_i` crosses zero, on the RK4 map from the step start: Illinois started
     /// at the dense-output estimate (usually accepted at once), or bisection (step halving).
     fn locate_on_rk4(&self, br: Bracket, estimate: f64, i: usize, w: Watch) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
-        let (sys, s0, active) = (&self.system, &self.state, self.active);
+        let (sys, s0, contacts) = (&self.system, &self.state, self.contacts);
         let tol = self.tolerance(w);
         let mut last: Option<(Sample<N, M>, Evaluation<N, M>)> = None;
         self.count(|c| c.located += 1);
         let locating = |t: f64| {
             self.count(|c| c.locating += 1);
-            rk4_to(sys, s0, t, active)
+            rk4_to(sys, s0, t, contacts)
         };
         let mut g = |t: f64| -> Result<f64, DynamicsError> {
             let s = locating(t)?;
@@ -146,11 +165,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
 }
 
 /// The time of a located crossing; a collapsed bracket resolves to its admissible end: before
-/// the gap crossing (h ≥ 0), after the multiplier crossing (λ ≤ 0, so the release is real).
+/// the gap crossing (h ≥ 0), after the others (λ ≤ 0, so the release is real; the slip reversed,
+/// the friction cone left).
 fn pick(located: Located, w: Watch) -> f64 {
     match (located, w) {
         (Located::Root(t), _) => t,
         (Located::Collapsed(br), Watch::Gap) => br.lo,
-        (Located::Collapsed(br), Watch::Multiplier) => br.hi,
+        (Located::Collapsed(br), _) => br.hi,
     }
 }

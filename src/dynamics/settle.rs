@@ -1,8 +1,10 @@
 //! What happens at an event: the contact set decided and the state put on it (A&K Fig. 1 at a
 //! discontinuity point), and the drift of held contacts removed between events.
 
-use super::contact::{members, select, solve_on, Frame, Set};
-use super::sample::{frame_at, rk4_to, sample, sample_of, Sample};
+use super::contact::{contains, members, select, solve_on, ties, Frame, Set};
+use super::friction::{Choice, Contacts, Mode, Tangential};
+use super::inertia::Inertia;
+use super::sample::{frame_at, friction_of, rk4_to, sample, sample_of, Sample};
 use super::{impact, DynamicsError, Evaluation, Event, EventKind, Stepper, System};
 use nalgebra::SVector;
 
@@ -26,6 +28,18 @@ const MAX_PROJECTIONS: usize = 4;
 /// far enough that the trend outweighs round-off, near enough that it is the trend at the instant.
 const TIE_PROBE: f64 = 1e-4;
 
+/// What an impact does: the normal and tangential impulses, the velocity and `ḣ` after, and the
+/// energy each constraint's impulses dissipate.
+struct Jump<const N: usize, const M: usize> {
+    normal: SVector<f64, M>,
+    tangent: SVector<f64, M>,
+    v: SVector<f64, N>,
+    hd: SVector<f64, M>,
+    lost: SVector<f64, M>,
+    /// The part of `lost` the tangential impulses dissipate.
+    friction_lost: SVector<f64, M>,
+}
+
 impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// Keeps active constraints on the manifold against RK4 drift: once `h_A` or `ḣ_A` has drifted
     /// beyond `DRIFT_FRACTION` of its tolerance, one M-metric Newton projection of `q` onto
@@ -33,7 +47,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// method is kept, and most steps need no projection (nor the evaluation it costs). `ev`: the
     /// evaluation at the state, if at hand; returns the one at the state afterwards, likewise.
     pub(super) fn stabilize(&mut self, ev: Option<Evaluation<N, M>>) -> Result<Option<Evaluation<N, M>>, DynamicsError> {
-        let (s, active) = (&self.state, self.active);
+        let (s, active) = (&self.state, self.contacts.held);
         let (gap_tol, rate_tol) = (DRIFT_FRACTION * self.options.gap_tolerance, DRIFT_FRACTION * self.options.velocity_tolerance);
         if members::<M>(active).all(|i| s.gap[i].abs() <= gap_tol && s.hd[i].abs() <= rate_tol) {
             return Ok(ev);
@@ -44,7 +58,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let dependent = DynamicsError::DependentContacts { time: t, constraints: active };
         let v = v + frame.projection(&hd, active).ok_or(dependent)?.0;
         let ev = self.system.evaluate(t, &q, &v);
-        self.state = sample_of(&ev, t, q, v, active)?;
+        self.state = sample_of(&self.system, &ev, t, q, v, self.contacts)?.after(&self.state);
         Ok(Some(ev))
     }
 
@@ -73,21 +87,34 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
 
     /// Records one event per constraint of `set` at the current configuration; the first carries
-    /// `impulses` (see `Event::impulses`).
+    /// the normal and tangential `impulses` (see `Event::impulses`).
     fn record(
         &mut self,
         kind: EventKind,
         set: Set,
-        hd: &SVector<f64, M>,
-        hd_after: &SVector<f64, M>,
-        lost: &SVector<f64, M>,
-        impulses: SVector<f64, M>,
+        (hd, hd_after): (&SVector<f64, M>, &SVector<f64, M>),
+        (lost, friction_lost): (&SVector<f64, M>, &SVector<f64, M>),
+        impulses: (SVector<f64, M>, SVector<f64, M>),
     ) {
         let (time, q, mut carried) = (self.state.t, self.state.q, impulses);
         for i in members::<M>(set) {
-            let (velocity_before, velocity_after, energy_lost) = (hd[i], hd_after[i], lost[i]);
-            self.events.push(Event { time, kind, constraint: i, velocity_before, velocity_after, energy_lost, q, impulses: carried });
-            carried = SVector::zeros();
+            let (impulses, friction_impulses) = carried;
+            let (velocity_before, velocity_after) = (hd[i], hd_after[i]);
+            let (energy_lost, friction_energy) = (lost[i], friction_lost[i]);
+            let event = Event {
+                time,
+                kind,
+                constraint: i,
+                velocity_before,
+                velocity_after,
+                energy_lost,
+                friction_energy,
+                q,
+                impulses,
+                friction_impulses,
+            };
+            self.events.push(event);
+            carried = (SVector::zeros(), SVector::zeros());
         }
     }
 
@@ -97,40 +124,143 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// law's answer `TIE_PROBE` nominal steps later along the motion with this instant's support
     /// held. Every support consistent with the ties gives the same acceleration now, so the
     /// motions differ at second order and any of them shows the first-order trend that decides.
-    /// A tie that persists there opens (the law's smallest support). Returns `λ` now and the support.
+    /// A tie that persists there opens (the law's smallest support). Returns the contacts and q̈.
     fn sliding_law(
         &self,
         (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
         ev: &Evaluation<N, M>,
         frame: &Frame<N, M>,
         candidates: Set,
-    ) -> Result<(SVector<f64, M>, Set), DynamicsError> {
+    ) -> Result<(Contacts, SVector<f64, N>), DynamicsError> {
+        if let Some(mu) = friction_of(&self.system) {
+            return self.coulomb_law((t, q, v), ev, mu, candidates);
+        }
         let eps = self.options.multiplier_tolerance;
         let unresolved = |time| DynamicsError::ContactUnresolved { time, constraints: candidates };
         let now = frame.sliding(ev, candidates, eps).ok_or(unresolved(t))?;
+        let acc = |lambda: SVector<f64, M>| frame.free_acc + frame.minv_jt * lambda;
         if now.ties == 0 {
-            return Ok((now.lambda, now.support));
+            return Ok((Contacts::frictionless(now.support), acc(now.lambda)));
         }
-        let start = sample_of(ev, t, *q, *v, now.support)?;
-        let (_, ev_ahead) = rk4_to(&self.system, &start, t + TIE_PROBE * self.options.step, now.support)?;
+        let start = sample_of(&self.system, ev, t, *q, *v, Contacts::frictionless(now.support))?;
+        let (_, ev_ahead) = rk4_to(&self.system, &start, t + TIE_PROBE * self.options.step, Contacts::frictionless(now.support))?;
         let frame_ahead = Frame::new(&ev_ahead).ok_or(DynamicsError::SingularMass { time: t })?;
         let ahead = frame_ahead.sliding(&ev_ahead, candidates, eps).ok_or(unresolved(t))?;
         if ahead.support == now.support {
-            return Ok((now.lambda, now.support));
+            return Ok((Contacts::frictionless(now.support), acc(now.lambda)));
         }
         let free = Frame::gap_acceleration(ev, &frame.free_acc);
         let lambda =
             solve_on(&frame.w, &-free, ahead.support).ok_or(DynamicsError::DependentContacts { time: t, constraints: ahead.support })?;
-        Ok((lambda.map(|x| x.max(0.0)), ahead.support))
+        Ok((Contacts::frictionless(ahead.support), acc(lambda.map(|x| x.max(0.0)))))
+    }
+
+    /// The sliding law with Coulomb friction (`friction.rs`): the modes of the candidates by
+    /// enumeration, a candidate slipping faster than ε_ḣ keeping its direction, one slower
+    /// sticking or starting to slip as its tangential row decides; ties in the normal direction
+    /// by the same rule as without friction.
+    fn coulomb_law(
+        &self,
+        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
+        ev: &Evaluation<N, M>,
+        mu: SVector<f64, M>,
+        candidates: Set,
+    ) -> Result<(Contacts, SVector<f64, N>), DynamicsError> {
+        let at = |t: f64, q: &SVector<f64, N>, v: &SVector<f64, N>, ev: &Evaluation<N, M>| {
+            let tangents = self.system.tangents(t, q, v);
+            let inertia = Inertia::new(&ev.mass).ok_or(DynamicsError::SingularMass { time: t })?;
+            let free = inertia.solve(&ev.force);
+            let b = (Frame::gap_acceleration(ev, &free), tangents.jacobian * free + tangents.bias);
+            let scale = members::<M>(candidates).fold(0.0_f64, |s, i| {
+                s.max((ev.gap_jacobian.row(i) * free)[0].abs() + ev.gap_bias[i].abs())
+                    .max((tangents.jacobian.row(i) * free)[0].abs() + tangents.bias[i].abs())
+            });
+            Ok::<_, DynamicsError>((Tangential::new(ev, &tangents, &inertia, mu), free, b, scale, tangents.slip(v)))
+        };
+        let unresolved = DynamicsError::ContactUnresolved { time: t, constraints: candidates };
+        let (frame, free, b, scale, slip) = at(t, q, v, ev)?;
+        let choices = std::array::from_fn(|i| match (contains(candidates, i), slip[i]) {
+            (false, _) => Choice::Open,
+            (true, g) if g.abs() <= self.options.velocity_tolerance => Choice::AtRest,
+            (true, g) => Choice::Slipping(g.signum()),
+        });
+        let (modes, now) = frame.enumerate(&choices, (&b.0, &b.1), scale).ok_or(unresolved.clone())?;
+        let contacts = Contacts::of(&modes);
+        let w = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?.w;
+        let tied = ties(&w, (&now.normal, &now.y_normal), (candidates, contacts.held), scale, self.options.multiplier_tolerance);
+        if tied == 0 {
+            return Ok((contacts, frame.motion(&free, &now)));
+        }
+        let start = sample_of(&self.system, ev, t, *q, *v, contacts)?;
+        let (s, ev_ahead) = rk4_to(&self.system, &start, t + TIE_PROBE * self.options.step, contacts)?;
+        let (frame_ahead, _, b_ahead, scale_ahead, _) = at(s.t, &s.q, &s.v, &ev_ahead)?;
+        let (ahead, _) = frame_ahead.enumerate(&choices, (&b_ahead.0, &b_ahead.1), scale_ahead).ok_or(unresolved)?;
+        if Contacts::of(&ahead).held == contacts.held {
+            return Ok((contacts, frame.motion(&free, &now)));
+        }
+        let dependent = DynamicsError::DependentContacts { time: t, constraints: Contacts::of(&ahead).held };
+        let mut then = frame.solve(&ahead, (&b.0, &b.1)).ok_or(dependent)?;
+        then.normal = then.normal.map(|x| x.max(0.0));
+        for i in 0..M {
+            if let Mode::Slip(s) = ahead[i] {
+                then.tangent[i] = -mu[i] * s * then.normal[i];
+            }
+        }
+        Ok((Contacts::of(&ahead), frame.motion(&free, &then)))
+    }
+
+    /// The impact over `closed`: the generalized Newton law, or with friction the Newton–Coulomb
+    /// law (`friction.rs`).
+    fn impact(
+        &self,
+        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
+        ev: &Evaluation<N, M>,
+        frame: &Frame<N, M>,
+        closed: Set,
+    ) -> Result<Jump<N, M>, DynamicsError> {
+        let refused = DynamicsError::MultipleImpact { time: t, constraints: closed };
+        let e = SVector::<f64, M>::from_fn(|i, _| self.system.restitution(i));
+        let hd = ev.gap_jacobian * v + ev.gap_time_rate;
+        let Some(mu) = friction_of(&self.system) else {
+            let impulse = impact::newton_impulses(frame, &hd, &e, closed).ok_or(refused)?;
+            let hd_plus = hd + frame.w * impulse;
+            let lost = impact::energy_lost(&impulse, &hd, &hd_plus);
+            return Ok(Jump {
+                normal: impulse,
+                tangent: SVector::zeros(),
+                v: v + frame.minv_jt * impulse,
+                hd: hd_plus,
+                lost,
+                friction_lost: SVector::zeros(),
+            });
+        };
+        let tangents = self.system.tangents(t, q, v);
+        let inertia = Inertia::new(&ev.mass).ok_or(DynamicsError::SingularMass { time: t })?;
+        let coulomb = Tangential::new(ev, &tangents, &inertia, mu);
+        let slip = tangents.slip(v);
+        // ξ = γ⁺ + ε γ⁻ in both directions, ε = e for an approaching constraint, 0 for another
+        // closed one (as without friction).
+        let eps = SVector::<f64, M>::from_fn(|i, _| if hd[i] < 0.0 { e[i] } else { 0.0 });
+        let b = (hd + eps.component_mul(&hd), slip + eps.component_mul(&slip));
+        let choices = std::array::from_fn(|i| if contains(closed, i) { Choice::AtRest } else { Choice::Open });
+        let scale = members::<M>(closed).fold(0.0_f64, |s, i| s.max(hd[i].abs()).max(slip[i].abs()));
+        let (_, jump) = coulomb.enumerate(&choices, (&b.0, &b.1), scale).ok_or(refused)?;
+        let v_plus = coulomb.motion(v, &jump);
+        let hd_plus = ev.gap_jacobian * v_plus + ev.gap_time_rate;
+        let friction_lost = impact::energy_lost(&jump.tangent, &slip, &tangents.slip(&v_plus));
+        let lost = impact::energy_lost(&jump.normal, &hd, &hd_plus) + friction_lost;
+        Ok(Jump { normal: jump.normal, tangent: jump.tangent, v: v_plus, hd: hd_plus, lost, friction_lost })
     }
 
     /// Resolves the closed constraints at the current instant (Fig. 1 at a discontinuity point):
-    /// 1. if any approaches (`ḣ < −ε_ḣ`), the generalized Newton impact over all of `closed`;
+    /// 1. if any approaches (`ḣ < −ε_ḣ`), the generalized Newton impact over all of `closed`
+    ///    (with friction, Newton–Coulomb);
     /// 2. persistent contact for those now at rest (`|ḣ| < ε_ḣ`, or caught by the Zeno guard)
     ///    as the sliding complementarity problem over all of them decides (`sliding_law`): one
     ///    whose multiplier just crossed zero is not released on its own word, since the others'
     ///    forces change with it; one still approaching (−ε_ḣ ≤ ḣ < 0) that sliding refuses gets
-    ///    the impact of 1. after all;
+    ///    the impact of 1. after all; with friction the same problem decides who sticks and who
+    ///    slips which way;
     /// 3. projection of `q` and `q̇` onto the new active set, which becomes the held set.
     ///
     /// Constraints in `hold` at rest (`ḣ < ε_ḣ`) stay in contact whatever the sliding law says.
@@ -138,7 +268,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     pub(super) fn settle(&mut self, closed: Set, hold: Set, known: Option<Evaluation<N, M>>) -> Result<(), DynamicsError> {
         self.event_ahead = None;
         let Sample { t, q, mut v, .. } = self.state;
-        let was_active = self.active;
+        let before = self.contacts;
+        let was_active = before.held;
         let opts = self.options.clone();
         let (mut ev, mut frame) = frame_at(&self.system, t, &q, &v, known)?;
         let mut hd = ev.gap_jacobian * v + ev.gap_time_rate;
@@ -146,45 +277,51 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let mut approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
         let mut impacted: Set = 0;
         let zeno_apex = ZENO_APEX_FACTOR * opts.gap_tolerance;
-        let support = loop {
+        let contacts = loop {
             if approaching != 0 {
-                let e = SVector::<f64, M>::from_fn(|i, _| self.system.restitution(i));
-                let impulse = impact::newton_impulses(&frame, &hd, &e, closed)
-                    .ok_or(DynamicsError::MultipleImpact { time: t, constraints: closed })?;
-                let v_plus = v + frame.minv_jt * impulse;
-                let hd_plus = hd + frame.w * impulse;
-                let lost = impact::energy_lost(&impulse, &hd, &hd_plus);
+                let jump = self.impact((t, &q, &v), &ev, &frame, closed)?;
                 // Recorded: every approaching constraint, and any other not held in contact that
                 // took a real impulse (one that changes its own ḣ by more than ε_ḣ). A held one
                 // pushed harder keeps ḣ = 0 on both sides: a reaction that dissipates nothing, not
                 // an impact (counting it would inflate the impact statistics with zero speeds).
-                let pushed = !was_active & select::<M>(|i| impulse[i] * frame.w[(i, i)] > opts.velocity_tolerance);
-                self.record(EventKind::Impact, closed & (approaching | pushed), &hd, &hd_plus, &lost, impulse);
-                (v, hd) = (v_plus, hd_plus);
+                let pushed = !was_active & select::<M>(|i| jump.normal[i] * frame.w[(i, i)] > opts.velocity_tolerance);
+                let recorded = closed & (approaching | pushed);
+                // With friction a held constraint's reaction slips and dissipates: its share goes
+                // to the first recorded event, so that the record's losses add up.
+                let (mut lost, mut friction_lost) = (jump.lost, jump.friction_lost);
+                if jump.friction_lost != SVector::<f64, M>::zeros() {
+                    let (first, unrecorded) = (recorded.trailing_zeros() as usize, closed & !recorded);
+                    for i in members::<M>(unrecorded) {
+                        (lost[first], friction_lost[first]) = (lost[first] + lost[i], friction_lost[first] + friction_lost[i]);
+                    }
+                }
+                self.record(EventKind::Impact, recorded, (&hd, &jump.hd), (&lost, &friction_lost), (jump.normal, jump.tangent));
+                (v, hd) = (jump.v, jump.hd);
                 (ev, frame) = frame_at(&self.system, t, &q, &v, None)?;
                 impacted |= approaching;
             }
 
             let mut candidates = closed & select::<M>(|i| hd[i] < opts.velocity_tolerance);
-            let support = loop {
-                let (lambda, support) = self.sliding_law((t, &q, &v), &ev, &frame, candidates)?;
-                let support = support | (hold & candidates);
-                let hdd = Frame::gap_acceleration(&ev, &(frame.free_acc + frame.minv_jt * lambda));
+            let contacts = loop {
+                let (contacts, acc) = self.sliding_law((t, &q, &v), &ev, &frame, candidates)?;
+                let contacts = Contacts { held: contacts.held | (hold & candidates), ..contacts };
+                let hdd = Frame::gap_acceleration(&ev, &acc);
                 let zeno = closed & !candidates & select::<M>(|i| hd[i] > 0.0 && hdd[i] < 0.0 && hd[i] * hd[i] < -2.0 * zeno_apex * hdd[i]);
                 if zeno == 0 {
-                    break support;
+                    break contacts;
                 }
                 candidates |= zeno;
             };
             // An approach slower than ε_ḣ that sliding refuses (its force would pull) still needs
             // the impact law, or the gap closes at the next instant with nothing to resolve it.
             // A constraint leaving persistent contact has ḣ = 0 up to round-off: no impact.
-            let grazing = closed & !support & !impacted & !was_active & select::<M>(|i| hd[i] < 0.0);
+            let grazing = closed & !contacts.held & !impacted & !was_active & select::<M>(|i| hd[i] < 0.0);
             if grazing == 0 {
-                break support;
+                break contacts;
             }
             approaching = grazing;
         };
+        let support = contacts.held;
 
         // The new contacts are put on the manifold, and with them any closed constraint that
         // opens a hair below zero (the drift of a step held in contact, or of a projection onto
@@ -194,19 +331,26 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let onto = if members::<M>(support | below).count() <= N { support | below } else { support };
         let state = if onto == 0 {
             // Nothing held or moved: q and q̇ are those `ev` was made at (after any impact).
-            sample_of(&ev, t, q, v, 0)?
+            sample_of(&self.system, &ev, t, q, v, contacts)?
         } else {
             let (q, ev, frame) = self.onto_contacts(t, q, &v, onto, (ev, frame))?;
             let hd = ev.gap_jacobian * v + ev.gap_time_rate;
             let (dv, impulse) = frame.projection(&hd, support).ok_or(DynamicsError::DependentContacts { time: t, constraints: support })?;
             let hd_after = hd + frame.w * impulse;
             let lost = impact::energy_lost(&impulse, &hd, &hd_after);
-            self.record(EventKind::Slide, support & !was_active, &hd, &hd_after, &lost, impulse);
-            sample(&self.system, t, q, v + dv, support)?
+            self.record(EventKind::Slide, support & !was_active, (&hd, &hd_after), (&lost, &SVector::zeros()), (impulse, SVector::zeros()));
+            sample(&self.system, t, q, v + dv, contacts)?
         };
-        self.record(EventKind::Release, was_active & !support, &hd, &hd, &SVector::zeros(), SVector::zeros());
-        self.active = support;
-        self.state = state;
+        let none = SVector::zeros();
+        self.record(EventKind::Release, was_active & !support, (&hd, &hd), (&none, &none), (none, none));
+        // With friction: constraints held before and after that came to stick, or started to slip.
+        let kept = was_active & support;
+        let (stuck, slipping) =
+            (kept & contacts.stick & !before.stick, kept & !contacts.stick & (before.stick | (before.back ^ contacts.back)));
+        self.record(EventKind::Stick, stuck, (&hd, &hd), (&none, &none), (none, none));
+        self.record(EventKind::Slip, slipping, (&hd, &hd), (&none, &none), (none, none));
+        self.contacts = contacts;
+        self.state = state.after(&self.state);
         Ok(())
     }
 }

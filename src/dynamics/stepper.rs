@@ -4,6 +4,7 @@
 
 use super::contact::{bit, contains, select};
 use super::events::EventLocator;
+use super::friction::Contacts;
 use super::options::{MAX_STEPS_PER_ADVANCE, PENETRATION_FACTOR, TOO_MANY_STEPS};
 use super::rk4::Hermite5;
 use super::sample::{local_error, rk4_step, rk4_to, sample, sample_of, Evaluated, Sample};
@@ -43,8 +44,8 @@ pub struct Stepper<S, const N: usize, const M: usize> {
     pub(super) event_budget: usize,
     /// The adaptive step's next size (≤ `options.step`).
     pub(super) step_size: f64,
-    /// Constraints in persistent contact (bitmask).
-    pub(super) active: u32,
+    /// Constraints in persistent contact, and how each carries friction.
+    pub(super) contacts: Contacts,
     pub(super) state: Sample<N, M>,
     /// An accepted, event-free step beyond the last `advance`'s end, kept while the system does not
     /// change: the next communication points inside it are served from its dense output.
@@ -80,14 +81,14 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         if let Some(reason) = reason {
             return Err(DynamicsError::InvalidArgument { time: t0, reason });
         }
-        let state = sample(&system, t0, q0, qd0, 0)?;
+        let state = sample(&system, t0, q0, qd0, Contacts::default())?;
         let mut stepper = Self {
             system,
             step_size: options.step,
             options,
             locator: EventLocator::default(),
             event_budget: DEFAULT_EVENT_BUDGET,
-            active: 0,
+            contacts: Contacts::default(),
             state,
             ahead: None,
             event_ahead: None,
@@ -166,7 +167,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     fn invalid(&self, t_end: f64) -> Option<&'static str> {
         self.options
             .invalid()
-            .or_else(|| (self.active >> M != 0).then_some("the contact set names constraints that do not exist"))
+            .or_else(|| {
+                let c = self.contacts;
+                (c.held >> M != 0 || (c.stick | c.back) & !c.held != 0).then_some("the contact set names constraints that do not exist")
+            })
             .or_else(|| ((t_end - self.state.t) / self.options.step > MAX_STEPS_PER_ADVANCE).then_some(TOO_MANY_STEPS))
     }
 
@@ -183,11 +187,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// nothing). `t` may lie before the current time: reading the point before a served one again
     /// puts the stepper back exactly as it was there, the point being a function of the step.
     pub fn serve(&mut self, t: f64) -> Result<(), DynamicsError> {
-        let Self { system, state, ahead, active, .. } = self;
+        let Self { system, state, ahead, contacts, .. } = self;
         let reason = match ahead {
             Some(ahead) if state.t <= t && t < ahead.end.t => {
                 // Written once the sample is complete and finite: a failure changes nothing.
-                ahead.now = between(system, state, &ahead.end, t, *active)?;
+                ahead.now = between(system, state, &ahead.end, t, *contacts)?;
                 return Ok(());
             }
             Some(_) => "the time is outside the step ahead",
@@ -200,10 +204,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// system may change from it.
     fn settle_ahead(&mut self) -> Result<(), DynamicsError> {
         if let Some(ahead) = self.ahead.take() {
-            let (s, ev) = rk4_to(&self.system, &self.state, ahead.now.t, self.active)?;
+            let (s, ev) = rk4_to(&self.system, &self.state, ahead.now.t, self.contacts)?;
             self.count(|c| c.accepted += 1);
             self.state = s;
-            if self.active != 0 {
+            if self.contacts.held != 0 {
                 self.stabilize(Some(ev))?;
             }
         }
@@ -230,11 +234,29 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
     /// Whether constraint `i` is in persistent (sliding) contact.
     pub fn in_contact(&self, i: usize) -> bool {
-        i < M && contains(self.active, i)
+        i < M && contains(self.contacts.held, i)
     }
     /// λ at the current state (0 for open constraints).
     pub fn multipliers(&self) -> SVector<f64, M> {
         self.current().lambda
+    }
+    /// The tangential (friction) forces λ_T at the current state (0 without friction).
+    pub fn friction_forces(&self) -> SVector<f64, M> {
+        self.current().friction
+    }
+    /// The slip velocities γ at the current state (0 without friction).
+    pub fn slip_velocities(&self) -> SVector<f64, M> {
+        self.current().slip
+    }
+    /// The power friction dissipates now, W, and the energy it has dissipated in persistent
+    /// contact since the start, J, by the steps' quadrature (impacts: `Event::friction_energy`).
+    pub fn friction_dissipation(&self) -> (f64, f64) {
+        let s = self.current();
+        (s.friction_power(), s.friction_work)
+    }
+    /// Whether constraint `i` sticks (held, at tangential rest, with friction).
+    pub fn sticking(&self, i: usize) -> bool {
+        i < M && contains(self.contacts.stick, i)
     }
     /// `h(q, t)` at the current state.
     pub fn gaps(&self) -> SVector<f64, M> {
@@ -302,7 +324,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         if !(dt.is_finite() && dq.iter().all(|x| x.is_finite())) {
             return Err(DynamicsError::InvalidArgument { time: s.t, reason: "the shift must be finite" });
         }
-        self.state = sample(&self.system, s.t + dt, s.q + dq, s.v, self.active)?;
+        self.state = sample(&self.system, s.t + dt, s.q + dq, s.v, self.contacts)?.after(s);
         self.changed = true;
         Ok(())
     }
@@ -313,15 +335,15 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.changed = false;
         let s = &self.state;
         let ev = self.system.evaluate(s.t, &s.q, &s.v);
-        self.state = sample_of(&ev, s.t, s.q, s.v, self.active)?;
+        self.state = sample_of(&self.system, &ev, s.t, s.q, s.v, self.contacts)?.after(s);
         let eps = self.options.gap_tolerance;
         // A free gap a little below −ε_h is closed, not violated: steps end anywhere down to −ε_h,
         // and the drift projection of the active set moves the others by round-off; `settle`
         // puts it back on h = 0. Only a gap far beyond what the event search leaves is refused.
-        if let Some(i) = (0..M).find(|&i| !contains(self.active, i) && self.state.gap[i] < -PENETRATION_FACTOR * eps) {
+        if let Some(i) = (0..M).find(|&i| !contains(self.contacts.held, i) && self.state.gap[i] < -PENETRATION_FACTOR * eps) {
             return Err(DynamicsError::Penetration { time: self.state.t, constraint: i, gap: self.state.gap[i] });
         }
-        let closed = self.active | select::<M>(|i| self.state.gap[i] <= eps);
+        let closed = self.contacts.held | select::<M>(|i| self.state.gap[i] <= eps);
         // In flight there is nothing to resolve.
         if closed == 0 {
             return Ok(());
@@ -344,9 +366,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             if t1 <= t0 {
                 return Err(DynamicsError::InvalidArgument { time: t0, reason: "the step is below the time resolution at this time" });
             }
-            let (s1, ev, slopes) = rk4_step(&self.system, &self.state, t1, self.active)?;
+            let (s1, ev, slopes) = rk4_step(&self.system, &self.state, t1, self.contacts)?;
             let Some(tol) = tol else { return Ok((s1, ev)) };
-            let ratio = local_error(&self.state, (&s1, &ev), slopes, self.active, &self.system.coordinate_lengths())? / tol;
+            let ratio = local_error(&self.state, (&s1, &ev), slopes, self.contacts.held, &self.system.coordinate_lengths())? / tol;
             if ratio.is_nan() {
                 return Err(DynamicsError::NonFinite { time: t1 });
             }
@@ -369,7 +391,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     fn step(&mut self, t_end: f64, beyond: bool) -> Result<bool, DynamicsError> {
         let (s1, ev1) = self.trial_step(t_end, beyond)?;
         self.count(|c| c.accepted += 1);
-        let active = self.active;
+        let active = self.contacts.held;
         match self.first_event((s1, Some(ev1)))? {
             StepEnd::Clear((s1, ev)) if s1.t > t_end => {
                 let start = std::mem::replace(&mut self.state, s1);
@@ -377,7 +399,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     self.stabilize(ev)?;
                 }
                 let end = std::mem::replace(&mut self.state, start);
-                let now = between(&self.system, &self.state, &end, t_end, self.active)?;
+                let now = between(&self.system, &self.state, &end, t_end, self.contacts)?;
                 self.ahead = Some(Ahead { end, now });
                 Ok(false)
             }
@@ -403,7 +425,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 if active != 0 {
                     ev = self.stabilize(ev)?;
                 }
-                let closed = self.active | bit(i) | select::<M>(|j| self.state.gap[j] <= self.options.gap_tolerance);
+                let closed = self.contacts.held | bit(i) | select::<M>(|j| self.state.gap[j] <= self.options.gap_tolerance);
                 self.settle(closed, hold, ev)?;
                 Ok(true)
             }
@@ -412,15 +434,27 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
 }
 
 /// The sample at `t` inside the step from `s0` to `end`: `(q, q̇)` from the step's quintic
-/// extension, forces and gap rates evaluated there with the contact set `active`.
+/// extension, forces and gap rates evaluated there with the contact set `contacts`.
 fn between<S: System<N, M>, const N: usize, const M: usize>(
     system: &S,
     s0: &Sample<N, M>,
     end: &Sample<N, M>,
     t: f64,
-    active: u32,
+    contacts: Contacts,
 ) -> Result<Sample<N, M>, DynamicsError> {
     let dense = Hermite5 { t0: s0.t, dt: end.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: end.q, v1: end.v, a1: end.acc };
     let (q, v) = dense.at(t);
-    sample(system, t, q, v, active)
+    let mut s = sample(system, t, q, v, contacts)?;
+    if end.friction_work != s0.friction_work {
+        // The friction work by the cubic Hermite of its values and rates (the powers) at the ends.
+        let (h, x) = (end.t - s0.t, (t - s0.t) / (end.t - s0.t));
+        let (x2, x3) = (x * x, x * x * x);
+        s.friction_work = (2.0 * x3 - 3.0 * x2 + 1.0) * s0.friction_work
+            + (x3 - 2.0 * x2 + x) * h * s0.friction_power()
+            + (3.0 * x2 - 2.0 * x3) * end.friction_work
+            + (x3 - x2) * h * end.friction_power();
+    } else {
+        s.friction_work = s0.friction_work;
+    }
+    Ok(s)
 }

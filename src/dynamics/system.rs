@@ -20,7 +20,28 @@ pub struct Evaluation<const N: usize, const M: usize> {
     pub gap_bias: SVector<f64, M>,
 }
 
-/// An `N`-degree-of-freedom Lagrangian system with `M` unilateral frictionless constraints.
+/// The tangential kinematics of the constraints at `(t, q, q̇)` (planar contact: one tangent per
+/// constraint, along which its friction acts): the slip velocity `γ = J_T q̇ + ∂γ/∂t` and
+/// `γ̇ = J_T q̈ + d_T`. The tangential force `λ_T` enters the equations as `J_Tᵀ λ_T`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Tangents<const N: usize, const M: usize> {
+    /// `J_T`.
+    pub jacobian: SMatrix<f64, M, N>,
+    /// `∂γ/∂t`: the slip of the constraint's surface (a moving belt, a prescribed drive).
+    pub time_rate: SVector<f64, M>,
+    /// `d_T = γ̇ − J_T q̈`.
+    pub bias: SVector<f64, M>,
+}
+
+impl<const N: usize, const M: usize> Tangents<N, M> {
+    /// `γ = J_T q̇ + ∂γ/∂t`.
+    pub fn slip(&self, qd: &SVector<f64, N>) -> SVector<f64, M> {
+        self.jacobian * qd + self.time_rate
+    }
+}
+
+/// An `N`-degree-of-freedom Lagrangian system with `M` unilateral constraints, frictionless unless
+/// it gives them Coulomb friction coefficients (`friction`) and tangents (`tangents`).
 ///
 /// Inputs a host holds constant over a communication step live in the implementing type; the
 /// stepper re-examines the contact state when they change (see `Stepper::system_mut`).
@@ -45,4 +66,15 @@ pub trait System<const N: usize, const M: usize> {
 
     /// Newton restitution coefficient `e_i ∈ [0, 1]` of constraint `i`.
     fn restitution(&self, constraint: usize) -> f64;
+
+    /// Coulomb friction coefficient `μ_i ≥ 0` of constraint `i`; zero, the default: frictionless
+    /// (the core then takes its frictionless paths and never asks for `tangents`).
+    fn friction(&self, _constraint: usize) -> f64 {
+        0.0
+    }
+
+    /// The tangential kinematics at `(t, q, q̇)`; asked for only where some `friction(i) > 0`.
+    fn tangents(&self, _t: f64, _q: &SVector<f64, N>, _qd: &SVector<f64, N>) -> Tangents<N, M> {
+        Tangents { jacobian: SMatrix::zeros(), time_rate: SVector::zeros(), bias: SVector::zeros() }
+    }
 }

@@ -2,7 +2,7 @@
 //! and the benchmark (`benches/core.rs`). Public because a bench cannot see `cfg(test)` code;
 //! the engine models do not use them.
 
-use super::{Evaluation, System};
+use super::{Evaluation, System, Tangents};
 use nalgebra::{Matrix1, Matrix2, Matrix3, RowVector2, SMatrix, SVector, Vector1, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
@@ -27,6 +27,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> System<N, M> for Counted<S
     }
     fn restitution(&self, i: usize) -> f64 {
         self.inner.restitution(i)
+    }
+    fn friction(&self, i: usize) -> f64 {
+        self.inner.friction(i)
+    }
+    fn tangents(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> Tangents<N, M> {
+        self.inner.tangents(t, q, qd)
     }
 }
 
@@ -239,5 +245,41 @@ impl System<2, 2> for Plank {
     }
     fn restitution(&self, _: usize) -> f64 {
         0.5
+    }
+}
+
+/// A block (a point mass) on a horizontal belt that moves at `belt` m/s along x, under gravity,
+/// pushed along x by `push_rate · t`, with Coulomb friction μ on the belt: `q = (x, y)`, `h = y`,
+/// slip `γ = ẋ − belt` (the belt's motion is the constraint's `∂γ/∂t`).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Block {
+    pub mass: f64,
+    pub gravity: f64,
+    pub friction: f64,
+    pub belt: f64,
+    /// N/s.
+    pub push_rate: f64,
+    pub restitution: f64,
+}
+
+impl System<2, 1> for Block {
+    fn evaluate(&self, t: f64, q: &Vector2<f64>, _qd: &Vector2<f64>) -> Evaluation<2, 1> {
+        Evaluation {
+            mass: Matrix2::identity() * self.mass,
+            force: Vector2::new(self.push_rate * t, -self.mass * self.gravity),
+            gap: Vector1::new(q[1]),
+            gap_jacobian: RowVector2::new(0.0, 1.0),
+            gap_time_rate: Vector1::zeros(),
+            gap_bias: Vector1::zeros(),
+        }
+    }
+    fn restitution(&self, _: usize) -> f64 {
+        self.restitution
+    }
+    fn friction(&self, _: usize) -> f64 {
+        self.friction
+    }
+    fn tangents(&self, _t: f64, _q: &Vector2<f64>, _qd: &Vector2<f64>) -> Tangents<2, 1> {
+        Tangents { jacobian: RowVector2::new(1.0, 0.0), time_rate: Vector1::new(-self.belt), bias: Vector1::zeros() }
     }
 }

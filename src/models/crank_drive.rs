@@ -12,7 +12,7 @@ use super::last_value::LastValue;
 use super::pressure::FourStrokePressure;
 use super::pressure_trace::PressureTrace;
 use super::{InputPolynomial, Inputs, ModelError, Parameters};
-use crate::dynamics::{Evaluation, System};
+use crate::dynamics::{Evaluation, System, Tangents};
 use nalgebra::{Matrix2, Matrix3, Matrix4x2, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 
@@ -36,6 +36,8 @@ pub struct Engine {
     /// Crown area π d²/4, m².
     pub crown_area: f64,
     pub restitution: f64,
+    /// Coulomb friction coefficient μ of the corners on the liner.
+    pub friction: f64,
 }
 
 /// What an evaluation needs of the crank angle alone.
@@ -61,6 +63,7 @@ impl Engine {
             pressure,
             crown_area: 0.25 * std::f64::consts::PI * params.piston_diameter * params.piston_diameter,
             restitution: params.restitution,
+            friction: params.friction,
         })
     }
 
@@ -222,11 +225,28 @@ impl PrescribedCrank {
         self.engine.evaluate(t, &phi, &phid, 0.0, self.crank(phi[0]))
     }
 
-    /// Torque the drive applies to the crank: the crank row `M_1· φ̈ − f_1 − (Jᵀλ)_1` with φ̈1 = ω̇.
-    pub fn drive_torque(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>, qdd: &Vector2<f64>, forces: &Vector4<f64>) -> f64 {
+    /// Torque the drive applies to the crank: the crank row `M_1· φ̈ − f_1 − (Jᵀλ + J_Tᵀλ_T)_1` with
+    /// φ̈1 = ω̇; `forces`: the corners' normal and friction forces.
+    pub fn drive_torque(
+        &self,
+        t: f64,
+        (q, qd, qdd): (&Vector2<f64>, &Vector2<f64>, &Vector2<f64>),
+        forces: (&Vector4<f64>, &Vector4<f64>),
+    ) -> f64 {
         let full = self.evaluate_full(t, q, qd);
         let crank = if self.speed.is_held() { 0.0 } else { full.mass[(0, 0)] * self.acceleration(t) };
-        crank + full.mass[(0, 1)] * qdd[0] + full.mass[(0, 2)] * qdd[1] - full.force[0] - full.gap_jacobian.column(0).dot(forces)
+        let contact = full.gap_jacobian.column(0).dot(forces.0) + self.friction_reaction(t, q, forces.1);
+        crank + full.mass[(0, 1)] * qdd[0] + full.mass[(0, 2)] * qdd[1] - full.force[0] - contact
+    }
+
+    /// The generalized forces `J_Tᵀ λ_T` of the friction forces `friction` in full coordinates (zero
+    /// without friction, and then not computed).
+    pub fn friction_reaction(&self, t: f64, q: &Vector2<f64>, friction: &Vector4<f64>) -> f64 {
+        if *friction == Vector4::zeros() {
+            return 0.0;
+        }
+        let (phi, phid) = self.full_state(t, q, &Vector2::zeros());
+        self.engine.linkage.tangents(&phi, &phid).jacobian.column(0).dot(friction)
     }
 
     /// The rod and piston rows of the full M and f at t, the crank's angular acceleration ω̇ moved
@@ -271,6 +291,23 @@ impl System<2, 4> for PrescribedCrank {
     fn restitution(&self, _constraint: usize) -> f64 {
         self.engine.restitution
     }
+
+    fn friction(&self, _constraint: usize) -> f64 {
+        self.engine.friction
+    }
+
+    /// The full tangents reduced like the gaps: the crank's column times ω is the slip the drive
+    /// makes, and times ω̇ part of the bias.
+    fn tangents(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Tangents<2, 4> {
+        let (phi, phid) = self.full_state(t, q, qd);
+        let full = self.engine.linkage.tangents(&phi, &phid);
+        let crank_column = full.jacobian.column(0);
+        Tangents {
+            jacobian: Matrix4x2::from_columns(&[full.jacobian.column(1), full.jacobian.column(2)]),
+            time_rate: crank_column * self.speed.at(t),
+            bias: full.bias + crank_column * self.acceleration(t),
+        }
+    }
 }
 
 /// The rod and piston rows of the full M and f: the crank's angle is given, not a coordinate.
@@ -302,6 +339,14 @@ impl System<3, 4> for FreeCrank {
 
     fn restitution(&self, _constraint: usize) -> f64 {
         self.engine.restitution
+    }
+
+    fn friction(&self, _constraint: usize) -> f64 {
+        self.engine.friction
+    }
+
+    fn tangents(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> Tangents<3, 4> {
+        self.engine.linkage.tangents(q, qd)
     }
 }
 
@@ -412,7 +457,7 @@ mod tests {
         for sys in [prescribed(), ramping()] {
             let (t, q, qd, qdd) = (0.02, Vector2::new(0.1, -0.001), Vector2::new(20.0, 1.0), Vector2::new(-3000.0, 50.0));
             let forces = Vector4::new(120.0, 0.0, 0.0, 35.0);
-            let torque = sys.drive_torque(t, &q, &qd, &qdd, &forces);
+            let torque = sys.drive_torque(t, (&q, &qd, &qdd), (&forces, &Vector4::zeros()));
             let (phi, phid) = sys.full_state(t, &q, &qd);
             let free = FreeCrank { engine: sys.engine.clone(), load_torque: InputPolynomial::held(-torque) }.evaluate(t, &phi, &phid);
             let phidd = Vector3::new(sys.acceleration(t), qdd[0], qdd[1]);

@@ -24,7 +24,7 @@
 //! `D/2 − x_K` (K3, K4), in metres, so a multiplier is the normal contact force in newtons.
 
 use super::{trig, Parameters};
-use crate::dynamics::Evaluation;
+use crate::dynamics::{Evaluation, Tangents};
 use nalgebra::{Matrix3, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 
@@ -50,6 +50,8 @@ struct Bodies {
     /// (c̄1, c̄2, c̄3).
     damping: [f64; 3],
     gravity: f64,
+    /// Gravity's lateral component, along +x (`gravity_lateral`).
+    gravity_lateral: f64,
     pin_offset: f64,
     bore: f64,
     /// Per corner: z (distance from the pin along the axis), w (offset across it), wall side σ.
@@ -80,6 +82,9 @@ struct Terms {
     q23: f64,
     weight: [f64; 3],
     weight_offset: f64,
+    /// The same of the lateral gravity: `f_k ∋ −G^x_k cos φ_k`, plus `G^x_a sin φ3`.
+    lateral: [f64; 3],
+    lateral_offset: f64,
     /// The crank, the rod and the farthest corner from the pin (`Linkage::lengths`).
     lengths: Vector3<f64>,
 }
@@ -87,7 +92,7 @@ struct Terms {
 impl Terms {
     fn new(bodies: &Bodies) -> Self {
         let ([l1, l2], [b1, b2, b3], [m1, m2, m3], [j1, j2, j3]) = (bodies.links, bodies.along, bodies.masses, bodies.inertias);
-        let (a, g) = (bodies.pin_offset, bodies.gravity);
+        let (a, g, gx) = (bodies.pin_offset, bodies.gravity, bodies.gravity_lateral);
         Self {
             diagonal: [j1 + m1 * b1 * b1 + (m2 + m3) * l1 * l1, j2 + m2 * b2 * b2 + m3 * l2 * l2, j3 + m3 * (b3 * b3 + a * a)],
             p12: (m2 * b2 + m3 * l2) * l1,
@@ -97,6 +102,8 @@ impl Terms {
             q23: m3 * l2 * a,
             weight: [g * (m1 * b1 + (m2 + m3) * l1), g * (m2 * b2 + m3 * l2), g * m3 * b3],
             weight_offset: g * m3 * a,
+            lateral: [gx * (m1 * b1 + (m2 + m3) * l1), gx * (m2 * b2 + m3 * l2), gx * m3 * b3],
+            lateral_offset: gx * m3 * a,
             lengths: Vector3::new(l1, l2, bodies.corners.iter().fold(0.0_f64, |r, &(z, w, _)| r.max(z.hypot(w)))),
         }
     }
@@ -151,6 +158,7 @@ impl Linkage {
             inertias: [p.crank_inertia, p.rod_inertia, p.piston_inertia],
             damping: [p.damping_main, p.damping_crank_pin, p.damping_piston_pin],
             gravity: p.gravity,
+            gravity_lateral: p.gravity_lateral,
             pin_offset: a,
             bore: p.bore,
             corners: [(h, -(half + a), 1.0), (h - s, -(half + a), 1.0), (h, half - a, -1.0), (h - s, half - a, -1.0)],
@@ -242,18 +250,47 @@ impl Linkage {
         let (crank_pin, piston_pin) = (phid[1] - phid[0], phid[2] - phid[1]);
         let gas = loads.gas_force;
         let force = Vector3::new(
-            g12 * w2 + g13 * w3 + (k.weight[0] + gas * l1) * s1 - loads.load_torque + cb2 * crank_pin - cb1 * phid[0],
-            g23 * w3 - g12 * w1 + (k.weight[1] + gas * l2) * s2 + cb3 * piston_pin - cb2 * crank_pin,
-            -g13 * w1 - g23 * w2 + k.weight[2] * s3 + (k.weight_offset + gas * self.bodies.pin_offset) * c3 - cb3 * piston_pin,
+            g12 * w2 + g13 * w3 + (k.weight[0] + gas * l1) * s1 - k.lateral[0] * c1 - loads.load_torque + cb2 * crank_pin - cb1 * phid[0],
+            g23 * w3 - g12 * w1 + (k.weight[1] + gas * l2) * s2 - k.lateral[1] * c2 + cb3 * piston_pin - cb2 * crank_pin,
+            -g13 * w1 - g23 * w2 + k.weight[2] * s3 + (k.weight_offset + gas * self.bodies.pin_offset) * c3 - k.lateral[2] * c3
+                + k.lateral_offset * s3
+                - cb3 * piston_pin,
         );
         (mass, force)
     }
 
-    /// Kinetic and gravitational potential energy (zero at the crank axis level), J.
+    /// Kinetic and gravitational potential energy (zero at the crank axis), J.
     pub fn energy(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) -> (f64, f64) {
         let kinetic = self.kinetic_energy(&Trig::new(phi), phid);
-        let potential = (0..3).map(|k| self.bodies.masses[k] * self.bodies.gravity * self.centre_of_mass(phi, k).y).sum();
+        let (g, gx) = (self.bodies.gravity, self.bodies.gravity_lateral);
+        let potential = (0..3)
+            .map(|k| {
+                let r = self.centre_of_mass(phi, k);
+                self.bodies.masses[k] * (g * r.y - gx * r.x)
+            })
+            .sum();
         (kinetic, potential)
+    }
+
+    /// The corners' tangential kinematics (module docs): each slips along the liner, +y, at
+    /// `ẏ_K = −l1 sin φ1 φ̇1 − l2 sin φ2 φ̇2 + (w cos φ3 − z sin φ3) φ̇3`; friction `λ_T` on a
+    /// corner is the liner's force on the piston along +y.
+    pub fn tangents(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) -> Tangents<3, 4> {
+        let trig = Trig::new(phi);
+        let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
+        let [l1, l2] = self.bodies.links;
+        let (w1, w2, w3) = (phid[0] * phid[0], phid[1] * phid[1], phid[2] * phid[2]);
+        Tangents {
+            jacobian: nalgebra::Matrix4x3::from_fn(|i, j| {
+                let (z, w, _) = self.bodies.corners[i];
+                [-l1 * s1, -l2 * s2, w * c3 - z * s3][j]
+            }),
+            time_rate: Vector4::zeros(),
+            bias: Vector4::from_fn(|i, _| {
+                let (z, w, _) = self.bodies.corners[i];
+                -l1 * c1 * w1 - l2 * c2 * w2 - (z * c3 + w * s3) * w3
+            }),
+        }
     }
 
     /// Kinetic energy ½ φ̇ᵀ M φ̇ from the angles' sines and cosines, J.

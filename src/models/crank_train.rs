@@ -36,6 +36,8 @@ pub struct CrankTrain {
     impulse_work: f64,
     /// Whole cycles (4π) taken off the crank angle (`keep_angle_within_a_cycle`).
     cycles: f64,
+    /// Energy the friction impulses of impacts have dissipated since the start, J.
+    impact_friction_energy: f64,
 }
 
 /// How the start departs from the nominal (zero-clearance) slider-crank state: the pin's lateral
@@ -139,7 +141,7 @@ impl CrankTrain {
             let system = FreeCrank { engine, load_torque: InputPolynomial::held(Inputs::default().load_torque) };
             Drive::Free(Self::free(system, &geometry, &start, angle, start_time, speed, &options)?)
         };
-        Ok(Self { drive, geometry, start, started: false, options, impulse_work: 0.0, cycles: 0.0 })
+        Ok(Self { drive, geometry, start, started: false, options, impulse_work: 0.0, cycles: 0.0, impact_friction_energy: 0.0 })
     }
 
     fn prescribed(
@@ -258,6 +260,16 @@ impl CrankTrain {
         }
     }
 
+    /// Friction forces on the corners along +y, N; the power friction dissipates now, W; and the
+    /// energy it has dissipated since the start, J (sliding and impacts).
+    pub fn friction(&self) -> (Vector4<f64>, f64, f64) {
+        let (forces, (power, sliding)) = match &self.drive {
+            Drive::Prescribed(s) => (s.friction_forces(), s.friction_dissipation()),
+            Drive::Free(s) => (s.friction_forces(), s.friction_dissipation()),
+        };
+        (forces, power, sliding + self.impact_friction_energy)
+    }
+
     /// The integrator's work so far (see `StepCounts`).
     pub fn step_counts(&self) -> StepCounts {
         match &self.drive {
@@ -299,11 +311,14 @@ impl CrankTrain {
                     EventKind::Impact => EngineEventKind::Impact,
                     EventKind::Slide => EngineEventKind::Slide,
                     EventKind::Release => EngineEventKind::Release,
+                    EventKind::Stick => EngineEventKind::Stick,
+                    EventKind::Slip => EngineEventKind::Slip,
                 },
                 corner: e.constraint as u8 + 1,
                 normal_velocity_before: -e.velocity_before,
                 normal_velocity_after: e.velocity_after,
                 energy_lost: e.energy_lost,
+                friction_energy: e.friction_energy,
                 position: self.engine().linkage.pin(&phi).y,
             });
         }
@@ -355,13 +370,17 @@ impl EngineModel for CrankTrain {
                 let sys = s.system();
                 self.log(s.events(), |e| Vector3::new(sys.crank_angle(e.time), e.q[0], e.q[1]), events);
                 for e in s.events().iter().filter(|e| e.impulses != Vector4::zeros()) {
-                    let work = sys.impulse_work(e.time, &e.q, &e.impulses);
+                    let work = sys.impulse_work(e.time, &e.q, (&e.impulses, &e.friction_impulses));
                     self.impulse_work += work
                         .ok_or_else(|| ModelError(format!("crank train: at t = {} s: the rod and piston inertia is singular", e.time)))?;
                 }
             }
             Drive::Free(s) => self.log(s.events(), |e| e.q, events),
         }
+        self.impact_friction_energy += match &self.drive {
+            Drive::Prescribed(s) => s.events().iter().map(|e| e.friction_energy).sum::<f64>(),
+            Drive::Free(s) => s.events().iter().map(|e| e.friction_energy).sum::<f64>(),
+        };
         match &mut self.drive {
             Drive::Prescribed(s) => s.clear_events(),
             Drive::Free(s) => s.clear_events(),
@@ -402,6 +421,7 @@ impl EngineModel for CrankTrain {
         let linkage = &self.engine().linkage;
         let (pin, gaps) = linkage.pin_and_gaps(&trig);
         let (forces, in_contact) = self.contacts();
+        let (friction, friction_power, friction_energy) = self.friction();
         out.piston_lateral = pin.x;
         // ẋ_O3 = −l1 cos φ1 φ̇1 − l2 cos φ2 φ̇2.
         out.piston_lateral_velocity =
@@ -419,7 +439,9 @@ impl EngineModel for CrankTrain {
         out.crank_angle = phi[0] + 4.0 * PI * self.cycles;
         out.rod_angle = phi[1];
         out.crank_torque = match &self.drive {
-            Drive::Prescribed(s) => s.system().drive_torque(s.time(), s.position(), s.velocity(), &s.acceleration(), &forces),
+            Drive::Prescribed(s) => {
+                s.system().drive_torque(s.time(), (s.position(), s.velocity(), &s.acceleration()), (&forces, &friction))
+            }
             // The external torque on the crank: the load, opposing rotation.
             Drive::Free(s) => -s.system().load_torque.at(s.time()),
         };
@@ -432,6 +454,8 @@ impl EngineModel for CrankTrain {
             Drive::Free(_) => phid[0],
         };
         out.kinetic_energy = linkage.kinetic_energy(&trig, &phid);
+        [out.friction_force_1, out.friction_force_2, out.friction_force_3, out.friction_force_4] = friction.into();
+        (out.friction_power, out.friction_energy_total) = (friction_power, friction_energy);
     }
 }
 

@@ -37,6 +37,10 @@ pub enum EngineEventKind {
     Impact,
     Slide,
     Release,
+    /// With liner friction: a corner in contact comes to rest along the liner and sticks.
+    Stick,
+    /// With liner friction: a corner in contact starts to slip, from sticking or reversing.
+    Slip,
 }
 
 /// One row of the impact log (DESIGN.md §4), in SI units.
@@ -56,6 +60,8 @@ pub struct EngineEvent {
     pub normal_velocity_after: f64,
     /// J, kinetic energy dissipated by this event.
     pub energy_lost: f64,
+    /// J, the part of `energy_lost` liner friction dissipated (0 without friction).
+    pub friction_energy: f64,
     /// m, pin position along the cylinder axis.
     pub position: f64,
 }

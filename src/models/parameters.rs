@@ -46,10 +46,12 @@ pub struct Parameters {
     pub bore: f64,
     pub pin_offset: f64,
     pub restitution: f64,
+    pub friction: f64,
     pub damping_main: f64,
     pub damping_crank_pin: f64,
     pub damping_piston_pin: f64,
     pub gravity: f64,
+    pub gravity_lateral: f64,
     pub slap_threshold: f64,
     pub crank_angle_start: f64,
     pub piston_lateral_start: f64,
@@ -144,6 +146,12 @@ pub struct Outputs {
     pub cycle_max_impact_energy_thrust: f64,
     pub crank_speed_actual: f64,
     pub kinetic_energy: f64,
+    pub friction_force_1: f64,
+    pub friction_force_2: f64,
+    pub friction_force_3: f64,
+    pub friction_force_4: f64,
+    pub friction_power: f64,
+    pub friction_energy_total: f64,
 }
 
 impl Outputs {
@@ -176,6 +184,12 @@ impl Outputs {
             ("cycle_max_impact_energy_thrust", self.cycle_max_impact_energy_thrust),
             ("crank_speed_actual", self.crank_speed_actual),
             ("kinetic_energy", self.kinetic_energy),
+            ("friction_force_1", self.friction_force_1),
+            ("friction_force_2", self.friction_force_2),
+            ("friction_force_3", self.friction_force_3),
+            ("friction_force_4", self.friction_force_4),
+            ("friction_power", self.friction_power),
+            ("friction_energy_total", self.friction_energy_total),
         ];
         // One sum clears them all (x · 0 is NaN exactly for an infinite or NaN x) before any is named.
         if reals.iter().map(|(_, x)| x * 0.0).sum::<f64>() == 0.0 {

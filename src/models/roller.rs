@@ -200,11 +200,14 @@ impl Roller {
                 EventKind::Impact => EngineEventKind::Impact,
                 EventKind::Slide => EngineEventKind::Slide,
                 EventKind::Release => EngineEventKind::Release,
+                EventKind::Stick => EngineEventKind::Stick,
+                EventKind::Slip => EngineEventKind::Slip,
             },
             corner: corner(event.constraint),
             normal_velocity_before: -event.velocity_before * speed,
             normal_velocity_after: event.velocity_after * speed,
             energy_lost: event.energy_lost * self.energy_scale(),
+            friction_energy: 0.0,
             position: self.axial_position(event.time, event.q[0]),
         }
     }
@@ -223,8 +226,14 @@ impl EngineModel for Roller {
             ("piston_lateral_velocity_start", p.piston_lateral_velocity_start),
             ("piston_tilt_start", p.piston_tilt_start),
             ("piston_tilt_rate_start", p.piston_tilt_rate_start),
+            ("friction", p.friction),
+            ("gravity_lateral", p.gravity_lateral),
         ] {
-            require(value == 0.0, name, "0 (the roller starts on its nominal path, ψ = ψ' = 0)")?;
+            require(
+                value == 0.0,
+                name,
+                "0 (the roller starts on its nominal path, ψ = ψ' = 0; its walls are frictionless and its cylinder vertical)",
+            )?;
         }
         if !start_time.is_finite() {
             return Err(ModelError(format!("model_variant 2: the start time ({start_time} s) must be finite")));

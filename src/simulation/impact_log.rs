@@ -80,6 +80,8 @@ fn row(e: &EngineEvent) -> String {
         EngineEventKind::Impact => "impact",
         EngineEventKind::Slide => "slide",
         EngineEventKind::Release => "release",
+        EngineEventKind::Stick => "stick",
+        EngineEventKind::Slip => "slip",
     };
     format!(
         "{},{},{kind},{},{},{},{},{},{}\n",

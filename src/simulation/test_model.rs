@@ -70,6 +70,7 @@ impl EngineModel for Shuttle {
                 normal_velocity_before: before.abs(),
                 normal_velocity_after: self.v.abs(),
                 energy_lost: 0.5 * self.mass * (before * before - self.v * self.v),
+                friction_energy: 0.0,
                 position: 0.0,
             });
         }

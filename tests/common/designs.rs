@@ -107,25 +107,42 @@ pub fn slider(r: &mut Random) -> Design {
     Design { params, inputs, duration: 0.1, step: [1e-3, 1e-4][(r.next() * 2.0) as usize] }
 }
 
-/// What a finished run gives: its events and the kinetic energy at its start and end, J.
+/// An engine with liner friction μ ∈ [0, 0.3] and a cylinder tilted from the vertical (lateral
+/// gravity up to ±9.81 m/s²).
+pub fn rubbing_engine(r: &mut Random) -> Design {
+    let design = engine(r);
+    let params = Parameters { friction: r.between(0.0, 0.3), gravity_lateral: r.between(-9.81, 9.81), ..design.params };
+    Design { params, ..design }
+}
+
+/// A light slider with liner friction μ ∈ [0, 0.5] and a start tilting at up to ±1 rad/s.
+pub fn rubbing_slider(r: &mut Random) -> Design {
+    let design = slider(r);
+    let params = Parameters { friction: r.between(0.0, 0.5), piston_tilt_rate_start: r.between(-1.0, 1.0), ..design.params };
+    Design { params, ..design }
+}
+
+/// What a finished run gives: its events, the kinetic energy at its start and end, and the
+/// energy friction dissipated in persistent contact, J.
 pub struct Finished {
     pub events: Vec<EngineEvent>,
     pub initial_energy: f64,
     pub final_energy: f64,
+    pub sliding_friction: f64,
 }
 
 impl Finished {
     /// (T(0) − T(end) − dissipated) / T(0): zero for a design without damping, gas or gravity.
     pub fn energy_balance(&self) -> f64 {
-        let dissipated: f64 = self.events.iter().map(|e| e.energy_lost).sum();
+        let dissipated: f64 = self.events.iter().map(|e| e.energy_lost).sum::<f64>() + self.sliding_friction;
         (self.initial_energy - self.final_energy - dissipated) / self.initial_energy
     }
 }
 
-fn kinetic_energy(model: &CrankTrain) -> f64 {
+fn outputs(model: &CrankTrain) -> Outputs {
     let mut out = Outputs::default();
     model.write_outputs(&mut out);
-    out.kinetic_energy
+    out
 }
 
 /// Runs a design to its end through the model's `advance`, as an FMU host would; the first error
@@ -134,10 +151,12 @@ pub fn run(design: &Design) -> Result<Finished, String> {
     let mut model = CrankTrain::new(&design.params, 0.0).map_err(|e| format!("refused: {e}"))?;
     let mut events = Vec::new();
     model.advance(&design.inputs, 0.0, &mut events).map_err(|e| e.to_string())?;
-    let initial_energy = kinetic_energy(&model);
+    let initial_energy = outputs(&model).kinetic_energy;
     let steps = (design.duration / design.step).ceil() as usize;
     for k in 1..=steps {
         model.advance(&design.inputs, k as f64 * design.step, &mut events).map_err(|e| e.to_string())?;
     }
-    Ok(Finished { events, initial_energy, final_energy: kinetic_energy(&model) })
+    let end = outputs(&model);
+    let sliding_friction = end.friction_energy_total - events.iter().map(|e| e.friction_energy).sum::<f64>();
+    Ok(Finished { events, initial_energy, final_energy: end.kinetic_energy, sliding_friction })
 }

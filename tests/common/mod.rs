@@ -96,6 +96,7 @@ pub fn impacts_per_landing(events: &[EngineEvent]) -> Vec<usize> {
                 count = 0;
             }
             EngineEventKind::Release => count = 0,
+            EngineEventKind::Stick | EngineEventKind::Slip => {}
         }
     }
     landings

@@ -7,6 +7,7 @@ mod contact_transitions;
 mod corner;
 mod coupled;
 mod edges;
+mod friction;
 mod order;
 mod rheonomic;
 mod slow_approach;

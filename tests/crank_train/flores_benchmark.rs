@@ -3,7 +3,7 @@
 //! against Siconos' published figures, the tilting slider at three communication steps.
 
 use crate::common::designs::flores;
-use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
+use pistonslap::models::{CrankTrain, EnergyBalance, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
 use std::f64::consts::PI;
 
 /// The crank starts at 150 rad/s, unloaded, no gas.
@@ -92,4 +92,68 @@ fn tilting_slider_runs_and_converges_with_the_step() {
         assert_eq!(r.impacts_faster_than(1e-3), runs[2].impacts_faster_than(1e-3));
     }
     assert!(runs[2].impacts_faster_than(1e-3).iter().sum::<usize>() > 100, "it does hit the liner");
+}
+
+/// The benchmark as published: μ = 0.01 at the corners, gravity 9.81 m/s² across the guide (Flores'
+/// −y, PistonSlap's +x), the slider's tilt rate −0.01 rad/s at the start.
+fn published() -> Parameters {
+    Parameters { friction: 0.01, gravity_lateral: 9.81, piston_tilt_rate_start: -0.01, ..flores(0.0) }
+}
+
+/// The published case at 1e-3, 1e-4 and 1e-5 s communication steps: Siconos' revolutions and
+/// dissipated fraction, the same motion at every step (the crank's revolutions agree to 1e-9, the
+/// impacts one for one), and the energy balance closed by what the
+/// impacts and the sliding friction dissipated: `E₀ − E = Σ impact losses + sliding friction`, with
+/// E kinetic plus potential in the lateral gravity, to 1e-7 of E₀ (the frictionless slider closes
+/// its balance to 5e-8 at 1e-5 s steps: the drift projections of the held contacts).
+#[test]
+fn published_case_converges_with_the_step_and_balances_its_energy() {
+    let runs: Vec<(Run, f64)> = [1e-3_f64, 1e-4, 1e-5]
+        .into_iter()
+        .map(|step| {
+            let mut model = CrankTrain::new(&published(), 0.0).unwrap();
+            let (mut events, n) = (Vec::new(), (0.2 / step).round() as usize);
+            model.advance(&INPUTS, 0.0, &mut events).unwrap();
+            let start = model.mechanical_energy();
+            for k in 1..=n {
+                model.advance(&INPUTS, k as f64 * step, &mut events).unwrap_or_else(|e| panic!("step {step} s: {e}"));
+            }
+            let out = outputs(&model);
+            let impact_friction: f64 = events.iter().map(|e| e.friction_energy).sum();
+            let lost: f64 = events.iter().map(|e| e.energy_lost).sum::<f64>() + out.friction_energy_total - impact_friction;
+            let balance = (start - model.mechanical_energy() - lost) / start;
+            assert!(balance.abs() < 1e-7, "step {step}: balance {balance:e}");
+            assert!(out.friction_energy_total > 0.0 && impact_friction > 0.0, "friction dissipates in sliding and impacts");
+            let revolutions = out.crank_angle / (2.0 * PI);
+            (Run { revolutions, initial_energy: start, final_energy: model.mechanical_energy(), events }, lost / start)
+        })
+        .collect();
+    let (first, fraction) = &runs[0];
+    for (r, f) in &runs[1..] {
+        assert!((r.revolutions - first.revolutions).abs() < 1e-9, "{} vs {}", r.revolutions, first.revolutions);
+        assert!((f - fraction).abs() < 1e-8, "dissipated {f} vs {fraction}");
+        assert_eq!(r.impacts_faster_than(1e-3), first.impacts_faster_than(1e-3));
+    }
+    // Siconos Moreau–Jean on the same case (its SliderCrank example with the published μ, gravity
+    // and tilt rate; h = 1e-6 … 5e-8 s, run for this test): 2.87828, 2.87808, 2.87803 revolutions
+    // at h = 2e-7, 1e-7, 5e-8 (≈ 2.87801 as h → 0) and 6.644, 6.668, 6.675 % of E₀ dissipated
+    // (≈ 6.68 %). Its first-order error at those steps is ≈ 1e-4 of the revolutions.
+    assert!((first.revolutions / 2.87801 - 1.0).abs() < 1e-4, "{} revolutions", first.revolutions);
+    assert!((100.0 * fraction - 6.68).abs() < 0.03, "{} % dissipated", 100.0 * fraction);
+    eprintln!(
+        "published case: {:.9} revolutions, {:.5} % dissipated, impacts > 1 mm/s {:?}",
+        first.revolutions,
+        100.0 * fraction,
+        first.impacts_faster_than(1e-3)
+    );
+}
+
+/// Friction μ → 0 on the frictional paths (the core's friction solve with μ = 1e-12) gives the
+/// frictionless flat slider: its revolutions to 1e-9, the same impacts.
+#[test]
+fn vanishing_friction_gives_the_frictionless_slider() {
+    let (frictionless, tiny) = (run(&flores(0.0), 1e-4), run(&Parameters { friction: 1e-12, ..flores(0.0) }, 1e-4));
+    assert!((tiny.revolutions - frictionless.revolutions).abs() < 1e-9, "{} vs {}", tiny.revolutions, frictionless.revolutions);
+    assert_eq!(tiny.impacts_faster_than(1e-3), frictionless.impacts_faster_than(1e-3));
+    assert!((tiny.dissipated() / frictionless.dissipated() - 1.0).abs() < 1e-8);
 }

@@ -3,7 +3,7 @@
 //! damping, gas or gravity, so their energy balance closes too: T(0) = T(end) + what the impacts
 //! and sliding starts dissipated. `examples/random_designs` runs the same families by the thousand.
 
-use crate::common::designs::{engine, run, slider, Design, Finished, Random};
+use crate::common::designs::{engine, rubbing_engine, rubbing_slider, run, slider, Design, Finished, Random};
 
 const DESIGNS: u64 = 250;
 
@@ -27,15 +27,31 @@ fn random_engines_all_run() {
     assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
+fn balanced(_: &Design, f: &Finished) -> Result<(), String> {
+    let balance = f.energy_balance();
+    if balance.abs() < 1e-6 {
+        Ok(())
+    } else {
+        Err(format!("energy balance off by {balance:e}"))
+    }
+}
+
 #[test]
 fn random_light_sliders_all_run_and_conserve_energy() {
-    let failed = failures(slider, |_, f| {
-        let balance = f.energy_balance();
-        if balance.abs() < 1e-6 {
-            Ok(())
-        } else {
-            Err(format!("energy balance off by {balance:e}"))
-        }
-    });
+    let failed = failures(slider, balanced);
+    assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
+}
+
+/// With liner friction and a tilted cylinder.
+#[test]
+fn random_rubbing_engines_all_run() {
+    let failed = failures(rubbing_engine, |_, _| Ok(()));
+    assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
+}
+
+/// With liner friction: the balance counts what friction dissipated in sliding and in impacts.
+#[test]
+fn random_rubbing_sliders_all_run_and_balance_their_energy() {
+    let failed = failures(rubbing_slider, balanced);
     assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }

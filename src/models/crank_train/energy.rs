@@ -13,13 +13,18 @@ use crate::models::{EnergyBalance, PowerFlows};
 use nalgebra::{Vector2, Vector4};
 
 impl PrescribedCrank {
-    /// Work the drive does through the corner impulses `impulses` of one impact at `(t, q)`, J;
-    /// `None` if the rod and piston inertia is not positive definite there.
-    pub fn impulse_work(&self, t: f64, q: &Vector2<f64>, impulses: &Vector4<f64>) -> Option<f64> {
+    /// Work the drive does through the corner impulses of one impact at `(t, q)`, normal and
+    /// tangential (friction), J; `None` if the rod and piston inertia is not positive definite there.
+    pub fn impulse_work(&self, t: f64, q: &Vector2<f64>, (normal, friction): (&Vector4<f64>, &Vector4<f64>)) -> Option<f64> {
         let full = self.evaluate_full(t, q, &Vector2::zeros());
         let rows = full.mass.fixed_view::<2, 2>(1, 1).into_owned();
-        let jump = rows.cholesky()?.solve(&(full.gap_jacobian.fixed_columns::<2>(1).transpose() * impulses));
-        let drive_impulse = (full.mass.fixed_view::<1, 2>(0, 1) * jump)[0] - full.gap_jacobian.column(0).dot(impulses);
+        let mut generalized = full.gap_jacobian.transpose() * normal;
+        if *friction != Vector4::zeros() {
+            let (phi, phid) = self.full_state(t, q, &Vector2::zeros());
+            generalized += self.engine.linkage.tangents(&phi, &phid).jacobian.transpose() * friction;
+        }
+        let jump = rows.cholesky()?.solve(&generalized.fixed_rows::<2>(1).into_owned());
+        let drive_impulse = (full.mass.fixed_view::<1, 2>(0, 1) * jump)[0] - generalized[0];
         Some(drive_impulse * self.speed(t))
     }
 }
@@ -42,14 +47,16 @@ impl EnergyBalance for CrankTrain {
         // Damping is the part of the generalized force odd in φ̇ (gyroscopic terms are even).
         let bare = Loads { gas_force: 0.0, load_torque: 0.0 };
         let odd = engine.linkage.evaluate(&phi, &phid, bare).force - engine.linkage.evaluate(&phi, &-phid, bare).force;
+        let (friction, friction_power, _) = self.friction();
         let drive = match &self.drive {
             Drive::Prescribed(s) => {
                 let (forces, _) = self.contacts();
-                s.system().drive_torque(s.time(), s.position(), s.velocity(), &s.acceleration(), &forces) * phid[0]
+                s.system().drive_torque(s.time(), (s.position(), s.velocity(), &s.acceleration()), (&forces, &friction)) * phid[0]
             }
             Drive::Free(s) => -s.system().load_torque.at(s.time()) * phid[0],
         };
-        PowerFlows { drive, gas: -engine.gas_force(self.time(), phi[0]) * height_rate, damping: -0.5 * odd.dot(&phid) }
+        let gas = -engine.gas_force(self.time(), phi[0]) * height_rate;
+        PowerFlows { drive, gas, damping: -0.5 * odd.dot(&phid), friction: friction_power }
     }
 
     fn impulse_work(&self) -> f64 {
@@ -75,7 +82,7 @@ mod tests {
         let sys = PrescribedCrank::new(engine, 0.7, 0.0, 125.66);
         let (t, q, qd) = (0.003, Vector2::new(-0.12, 4e-4), Vector2::new(-25.0, 3.0));
         let impulses = Vector4::new(0.02, 0.0, 0.0, 0.013);
-        let work = sys.impulse_work(t, &q, &impulses).unwrap();
+        let work = sys.impulse_work(t, &q, (&impulses, &Vector4::zeros())).unwrap();
 
         let (phi, phid) = sys.full_state(t, &q, &qd);
         let full = sys.evaluate_full(t, &q, &qd);

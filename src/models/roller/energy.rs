@@ -37,7 +37,7 @@ impl EnergyBalance for Roller {
         let walls = s.multipliers()[super::LOWER] - s.multipliers()[super::UPPER];
         // Rates per radian of crank angle, times Ω for per second.
         let watts = self.energy_scale() * self.crank_speed;
-        PowerFlows { drive: (forcing + walls) * rate * watts, gas: 0.0, damping: sys.lambda * rate * rate * watts }
+        PowerFlows { drive: (forcing + walls) * rate * watts, gas: 0.0, damping: sys.lambda * rate * rate * watts, friction: 0.0 }
     }
 
     fn impulse_work(&self) -> f64 {

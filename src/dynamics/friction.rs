@@ -1,0 +1,316 @@
+//! Coulomb friction at the constraints: planar contact, one tangent per constraint, along which
+//! the slip velocity is `γ = J_T q̇ + ∂γ/∂t` and `γ̇ = J_T q̈ + d_T` ([`Tangents`]), and the
+//! tangential force `λ_T` enters as `J_Tᵀ λ_T` beside the normal `J_Nᵀ λ_N`.
+//!
+//! The force laws (Pfeiffer & Glocker, *Multibody Dynamics with Unilateral Contacts*, 1996, ch. 5;
+//! Glocker, *Set-Valued Force Laws*, 2001):
+//! - **persistent contact**: `λ_N ≥ 0 ⊥ ḧ ≥ 0` as without friction; a constraint slipping
+//!   (`γ ≠ 0`) carries `λ_T = −μ λ_N sign γ`; one at tangential rest (`γ = 0`) either sticks
+//!   (`γ̇ = 0`, `|λ_T| ≤ μ λ_N`) or starts to slip (`λ_T = −μ λ_N sign γ̇`): the planar friction
+//!   complementarity conditions, solved by enumerating the modes ([`Mode`]) of the constraints;
+//! - **impacts**: Glocker's Newton–Coulomb law with the velocities `ξ_N = γ_N⁺ + ε γ_N⁻`,
+//!   `ξ_T = γ_T⁺ + ε γ_T⁻` (the same ε, the constraint's restitution, in both directions):
+//!   `Λ_N ≥ 0 ⊥ ξ_N ≥ 0` and `−Λ_T ∈ μ Λ_N Sign ξ_T`. With `γ⁺ = γ⁻ + W Λ` (W over both
+//!   directions, positive semi-definite) the kinetic energy changes by
+//!   `ΔT = Λᵀξ / (1 + ε) − (1 − ε) ΛᵀWΛ / (2 (1 + ε))`, and `Λᵀξ = −Σ μ Λ_N |ξ_T| ≤ 0`: where the
+//!   contacts of an impact share one ε (always, for one contact) it cannot create energy for any
+//!   μ ≥ 0 and ε ∈ [0, 1] (C. Glocker, "Energetic consistency conditions for standard impacts",
+//!   Multibody System Dynamics 29 (2013)). A sticking impact reverses `γ_T` by ε like `γ_N`;
+//!   Newton's law with `ε_T = 0` instead is known to gain energy (Kane's example).
+//!
+//! Every solve here sits at an event but one: with friction the held acceleration of each RK4
+//! stage is [`Tangential::solve`] with the modes held.
+
+use super::contact::{contains, Set, COMPLEMENTARITY_TOL, DEPENDENT_PIVOT};
+use super::inertia::Inertia;
+use super::{Evaluation, Tangents};
+use nalgebra::{SMatrix, SVector};
+use serde::{Deserialize, Serialize};
+
+/// The held constraints and how each carries tangential force: `stick` at tangential rest, the
+/// others slipping forward (`γ > 0`) or, in `back`, backward. Without friction only `held` is used.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub(crate) struct Contacts {
+    pub held: Set,
+    pub stick: Set,
+    pub back: Set,
+}
+
+impl Contacts {
+    pub fn frictionless(held: Set) -> Self {
+        Self { held, stick: 0, back: 0 }
+    }
+
+    pub fn mode(&self, i: usize) -> Mode {
+        if !contains(self.held, i) {
+            Mode::Open
+        } else if contains(self.stick, i) {
+            Mode::Stick
+        } else {
+            Mode::Slip(if contains(self.back, i) { -1.0 } else { 1.0 })
+        }
+    }
+
+    pub fn of<const M: usize>(modes: &[Mode; M]) -> Self {
+        let set = |pred: fn(&Mode) -> bool| (0..M).filter(|&i| pred(&modes[i])).fold(0, |s, i| s | 1 << i);
+        Self { held: set(|m| *m != Mode::Open), stick: set(|m| *m == Mode::Stick), back: set(|m| *m == Mode::Slip(-1.0)) }
+    }
+}
+
+/// The state of one constraint in a contact problem.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Mode {
+    Open,
+    Stick,
+    /// Slipping in the direction of the sign: `λ_T = −μ s λ_N`.
+    Slip(f64),
+}
+
+/// What a contact problem may choose for each constraint.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Choice {
+    /// Not part of the problem.
+    Open,
+    /// Open, or closed slipping with the known sign of `γ` (no check on the tangential row).
+    Slipping(f64),
+    /// Open, or closed and sticking or slipping either way, as the tangential row decides.
+    AtRest,
+}
+
+/// The contact geometry of both directions at one state, in the metric of the inertia matrix.
+pub(crate) struct Tangential<const N: usize, const M: usize> {
+    /// `M⁻¹ J_Nᵀ`, `M⁻¹ J_Tᵀ`.
+    normal: SMatrix<f64, N, M>,
+    tangent: SMatrix<f64, N, M>,
+    /// `J_N M⁻¹ J_Nᵀ`, `J_N M⁻¹ J_Tᵀ`, `J_T M⁻¹ J_Nᵀ`, `J_T M⁻¹ J_Tᵀ`.
+    w: [[SMatrix<f64, M, M>; 2]; 2],
+    mu: SVector<f64, M>,
+}
+
+/// A solution of a contact problem: the forces (or impulses) and the resulting normal and
+/// tangential accelerations (or velocities ξ).
+#[derive(Clone, Debug)]
+pub(crate) struct Solution<const M: usize> {
+    pub normal: SVector<f64, M>,
+    pub tangent: SVector<f64, M>,
+    pub y_normal: SVector<f64, M>,
+    pub y_tangent: SVector<f64, M>,
+}
+
+impl<const N: usize, const M: usize> Tangential<N, M> {
+    pub fn new(ev: &Evaluation<N, M>, tangents: &Tangents<N, M>, inertia: &Inertia<N>, mu: SVector<f64, M>) -> Self {
+        let (jn, jt) = (&ev.gap_jacobian, &tangents.jacobian);
+        let (normal, tangent) = (inertia.solve(&jn.transpose()), inertia.solve(&jt.transpose()));
+        Self { w: [[jn * normal, jn * tangent], [jt * normal, jt * tangent]], normal, tangent, mu }
+    }
+
+    /// `q̈` (or `Δq̇`) from the forces (impulses) of a solution and the acceleration without them.
+    pub fn motion(&self, free: &SVector<f64, N>, s: &Solution<M>) -> SVector<f64, N> {
+        free + self.normal * s.normal + self.tangent * s.tangent
+    }
+
+    /// The forces of `modes` that zero the normal row of every closed constraint and the
+    /// tangential row of every sticking one, with `b_N`, `b_T` the rows' values at zero force.
+    /// `None` when those rows are dependent (more than `N` of them, or a vanishing pivot).
+    pub fn solve(&self, modes: &[Mode; M], b: (&SVector<f64, M>, &SVector<f64, M>)) -> Option<Solution<M>> {
+        // Unknowns (constraint, direction: 0 normal, 1 tangential), each with its own row.
+        let mut unknowns = [(0, 0); N];
+        let mut r = 0;
+        for (i, mode) in modes.iter().enumerate() {
+            let directions: &[usize] = match mode {
+                Mode::Open => &[],
+                Mode::Slip(_) => &[0],
+                Mode::Stick => &[0, 1],
+            };
+            for &d in directions {
+                *unknowns.get_mut(r)? = (i, d);
+                r += 1;
+            }
+        }
+        // The response of row (i, d) to a unit of unknown (j, e): a slipping constraint's normal
+        // force brings its friction −μ s along.
+        let response = |(i, d): (usize, usize), (j, e): (usize, usize)| match (modes[j], e) {
+            (Mode::Slip(s), 0) => self.w[d][0][(i, j)] - self.mu[j] * s * self.w[d][1][(i, j)],
+            _ => self.w[d][e][(i, j)],
+        };
+        let mut a = SMatrix::<f64, N, N>::zeros();
+        let mut rhs = SVector::<f64, N>::zeros();
+        for k in 0..r {
+            let (i, d) = unknowns[k];
+            rhs[k] = -[b.0, b.1][d][i];
+            for l in 0..r {
+                a[(k, l)] = response(unknowns[k], unknowns[l]);
+            }
+        }
+        let x = gauss(a, rhs, r)?;
+        let (mut normal, mut tangent) = (SVector::<f64, M>::zeros(), SVector::<f64, M>::zeros());
+        for k in 0..r {
+            let (i, d) = unknowns[k];
+            if d == 0 {
+                normal[i] = x[k];
+            } else {
+                tangent[i] = x[k];
+            }
+        }
+        for (i, mode) in modes.iter().enumerate() {
+            if let Mode::Slip(s) = mode {
+                tangent[i] = -self.mu[i] * s * normal[i];
+            }
+        }
+        let y = |d: usize| self.w[d][0] * normal + self.w[d][1] * tangent + [b.0, b.1][d];
+        Some(Solution { y_normal: y(0), y_tangent: y(1), normal, tangent })
+    }
+
+    /// The first consistent modes for `choices`, by enumeration: fewest closed constraints
+    /// first (as the frictionless law), slipping before sticking (at the edge of the friction cone
+    /// both are consistent, and the slip is what follows). `scale`: the magnitude of the rows'
+    /// terms before cancellation, for the round-off tolerances.
+    pub fn enumerate(
+        &self,
+        choices: &[Choice; M],
+        b: (&SVector<f64, M>, &SVector<f64, M>),
+        scale: f64,
+    ) -> Option<([Mode; M], Solution<M>)> {
+        let options = |c: Choice, mu: f64| -> &'static [Mode] {
+            match c {
+                Choice::Open => &[Mode::Open],
+                Choice::Slipping(s) if s < 0.0 => &[Mode::Open, Mode::Slip(-1.0)],
+                Choice::Slipping(_) => &[Mode::Open, Mode::Slip(1.0)],
+                // Without friction the tangential row carries no force: nothing to choose.
+                Choice::AtRest if mu == 0.0 => &[Mode::Open, Mode::Slip(1.0)],
+                Choice::AtRest => &[Mode::Open, Mode::Slip(1.0), Mode::Slip(-1.0), Mode::Stick],
+            }
+        };
+        let lists: [&[Mode]; M] = std::array::from_fn(|i| options(choices[i], self.mu[i]));
+        let w_max = (0..M).filter(|&i| choices[i] != Choice::Open).fold(0.0_f64, |s, i| s.max(self.w[0][0][(i, i)]));
+        let tol_y = COMPLEMENTARITY_TOL * scale + f64::MIN_POSITIVE;
+        let tol_x = if w_max > 0.0 { tol_y / w_max } else { tol_y };
+        let consistent = |modes: &[Mode; M], s: &Solution<M>| {
+            (0..M).all(|i| match modes[i] {
+                Mode::Open => choices[i] == Choice::Open || s.y_normal[i] >= -tol_y,
+                Mode::Stick => s.normal[i] >= -tol_x && s.tangent[i].abs() <= self.mu[i] * s.normal[i] + tol_x,
+                Mode::Slip(sign) => s.normal[i] >= -tol_x && (choices[i] != Choice::AtRest || sign * s.y_tangent[i] >= -tol_y),
+            })
+        };
+        for closed in 0..=M {
+            let mut index = [0_usize; M];
+            loop {
+                let modes: [Mode; M] = std::array::from_fn(|i| lists[i][index[i]]);
+                if modes.iter().filter(|m| **m != Mode::Open).count() == closed {
+                    if let Some(s) = self.solve(&modes, b).filter(|s| consistent(&modes, s)) {
+                        return Some((modes, s));
+                    }
+                }
+                // The next combination (an odometer over the lists).
+                let Some(k) = (0..M).find(|&k| index[k] + 1 < lists[k].len()) else { break };
+                index[k] += 1;
+                index[..k].iter_mut().for_each(|x| *x = 0);
+            }
+        }
+        None
+    }
+}
+
+/// Solves the leading `r × r` block of `a x = rhs` by Gaussian elimination with partial pivoting
+/// (the block is not symmetric: friction couples the directions one way). `None` when a pivot
+/// vanishes against the block's largest entry: dependent rows.
+fn gauss<const N: usize>(mut a: SMatrix<f64, N, N>, mut rhs: SVector<f64, N>, r: usize) -> Option<SVector<f64, N>> {
+    let largest = (0..r).flat_map(|k| (0..r).map(move |l| (k, l))).fold(0.0_f64, |m, (k, l)| m.max(a[(k, l)].abs()));
+    for k in 0..r {
+        let p = (k..r).max_by(|&i, &j| a[(i, k)].abs().total_cmp(&a[(j, k)].abs()))?;
+        // (A NaN pivot fails too.)
+        if a[(p, k)].abs().partial_cmp(&(DEPENDENT_PIVOT * largest)) != Some(std::cmp::Ordering::Greater) {
+            return None;
+        }
+        a.swap_rows(k, p);
+        rhs.swap_rows(k, p);
+        for i in k + 1..r {
+            let factor = a[(i, k)] / a[(k, k)];
+            for l in k..r {
+                a[(i, l)] -= factor * a[(k, l)];
+            }
+            rhs[i] -= factor * rhs[k];
+        }
+    }
+    let mut x = SVector::<f64, N>::zeros();
+    for k in (0..r).rev() {
+        x[k] = (rhs[k] - (k + 1..r).map(|l| a[(k, l)] * x[l]).sum::<f64>()) / a[(k, k)];
+    }
+    Some(x)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::test_random::{positive_definite, uniform};
+    use super::*;
+    use nalgebra::{SMatrix, SVector};
+
+    /// Newton–Coulomb impacts on random systems (3 degrees of freedom, one or two contacts
+    /// approaching together, coupled inertia and directions) at μ up to 3 and every ε: a solution
+    /// exists, satisfies the law, and the kinetic energy never grows; the work of the impulses
+    /// `Λᵀ(γ⁻ + γ⁺)/2` is the change of `½ q̇ᵀ M q̇`.
+    #[test]
+    fn newton_coulomb_impacts_never_create_energy() {
+        let mut random = uniform(2026);
+        let mut solved = 0;
+        for case in 0..2000 {
+            let mass: SMatrix<f64, 3, 3> = positive_definite(&mut random);
+            let ev = Evaluation::<3, 2> {
+                mass,
+                force: SVector::zeros(),
+                gap: SVector::zeros(),
+                gap_jacobian: SMatrix::from_fn(|_, _| random()),
+                gap_time_rate: SVector::zeros(),
+                gap_bias: SVector::zeros(),
+            };
+            let tangents = Tangents { jacobian: SMatrix::from_fn(|_, _| random()), time_rate: SVector::zeros(), bias: SVector::zeros() };
+            let (mu, eps) = (3.0 * (random() + 0.5), random() + 0.5);
+            let inertia = Inertia::new(&mass).unwrap();
+            let frame = Tangential::new(&ev, &tangents, &inertia, SVector::from_element(mu));
+            let v = SVector::<f64, 3>::from_fn(|_, _| random());
+            let (hd, slip) = (ev.gap_jacobian * v, tangents.slip(&v));
+            let both = case % 2 == 0;
+            if hd[0] >= 0.0 || (both && hd[1] >= 0.0) {
+                continue;
+            }
+            let choices = [Choice::AtRest, if both { Choice::AtRest } else { Choice::Open }];
+            let b = (hd * (1.0 + eps), slip * (1.0 + eps));
+            let scale = hd.amax().max(slip.amax());
+            let (modes, jump) = frame.enumerate(&choices, (&b.0, &b.1), scale).unwrap_or_else(|| panic!("case {case}: no solution"));
+            let v_plus = frame.motion(&v, &jump);
+            let kinetic = |v: &SVector<f64, 3>| 0.5 * v.dot(&(mass * v));
+            let gain = kinetic(&v_plus) - kinetic(&v);
+            let work = 0.5 * (jump.normal.dot(&(hd + ev.gap_jacobian * v_plus)) + jump.tangent.dot(&(slip + tangents.slip(&v_plus))));
+            assert!(gain <= 1e-12 * kinetic(&v), "case {case}: μ {mu}, ε {eps}, {modes:?}: the impact gains {gain:e} J");
+            assert!((gain - work).abs() <= 1e-12 * kinetic(&v), "case {case}: ΔT {gain:e} against the impulses' work {work:e}");
+            for i in (0..2).filter(|&i| modes[i] != Mode::Open) {
+                assert!(jump.normal[i] >= 0.0 && jump.tangent[i].abs() <= mu * jump.normal[i] * (1.0 + 1e-12), "case {case}: {jump:?}");
+            }
+            solved += 1;
+        }
+        assert!(solved > 500, "{solved} impacts");
+    }
+
+    /// A slipping contact's friction enters its own normal row: for one contact the normal force is
+    /// `−b_N / (W_NN − μ s W_NT)` and `λ_T = −μ s λ_N`.
+    #[test]
+    fn one_slipping_contact_in_closed_form() {
+        let ev = Evaluation::<2, 1> {
+            mass: SMatrix::from_row_slice(&[2.0, 0.3, 0.3, 1.0]),
+            force: SVector::zeros(),
+            gap: SVector::zeros(),
+            gap_jacobian: SMatrix::from_row_slice(&[0.2, 1.0]),
+            gap_time_rate: SVector::zeros(),
+            gap_bias: SVector::zeros(),
+        };
+        let tangents = Tangents { jacobian: SMatrix::from_row_slice(&[1.0, -0.4]), time_rate: SVector::zeros(), bias: SVector::zeros() };
+        let inertia = Inertia::new(&ev.mass).unwrap();
+        let frame = Tangential::new(&ev, &tangents, &inertia, SVector::from_element(0.3));
+        let b = (SVector::from_element(-2.0), SVector::from_element(0.7));
+        let s = frame.solve(&[Mode::Slip(-1.0)], (&b.0, &b.1)).unwrap();
+        let (w_nn, w_nt) = (frame.w[0][0][(0, 0)], frame.w[0][1][(0, 0)]);
+        let normal = 2.0 / (w_nn + 0.3 * w_nt);
+        assert!((s.normal[0] - normal).abs() < 1e-14 * normal && (s.tangent[0] - 0.3 * normal).abs() < 1e-14 * normal);
+        assert!(s.y_normal[0].abs() < 1e-14);
+    }
+}

@@ -1,0 +1,61 @@
+//! Coulomb friction in the core against closed forms: a block on a moving belt slips, then sticks
+//! (the stick located as an event, the dissipated energy ½ m Δv²), and a block pushed harder and
+//! harder sticks, then slips once the push reaches μ m g.
+
+use nalgebra::Vector2;
+use pistonslap::dynamics::testbeds::Block;
+use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
+
+const G: f64 = 9.81;
+
+fn block(belt: f64, push_rate: f64, speed: f64) -> Stepper<Block, 2, 1> {
+    let block = Block { mass: 2.0, gravity: G, friction: 0.5, belt, push_rate, restitution: 0.5 };
+    let options = StepperOptions { step: 1e-3, ..Default::default() };
+    let s = Stepper::new(block, 0.0, Vector2::zeros(), Vector2::new(speed, 0.0), options).unwrap();
+    assert!(s.in_contact(0), "resting on the belt");
+    s
+}
+
+/// Thrown at 3 m/s onto a belt running at 1 m/s: the friction force −μ m g decelerates it at μ g
+/// until t* = (3 − 1)/(μ g), x = 3 t − μ g t²/2; then it sticks and rides the belt. Friction
+/// dissipates ½ m (3 − 1)² = 4 J, whatever μ.
+#[test]
+fn a_block_faster_than_its_belt_slips_then_sticks() {
+    let mut s = block(1.0, 0.0, 3.0);
+    let stick = 2.0 / (0.5 * G);
+    for t in [0.1, 0.3, stick - 1e-3] {
+        s.advance(t).unwrap();
+        let x = 3.0 * t - 0.25 * G * t * t;
+        assert!((s.position()[0] - x).abs() < 1e-12, "t {t}: x {} vs {x}", s.position()[0]);
+        assert!((s.friction_forces()[0] + 0.5 * 2.0 * G).abs() < 1e-12, "slipping: λ_T = −μ λ_N");
+        assert!(!s.sticking(0));
+    }
+    s.advance(1.0).unwrap();
+    let sticks: Vec<f64> = s.events().iter().filter(|e| e.kind == EventKind::Stick).map(|e| e.time).collect();
+    assert_eq!(sticks.len(), 1, "{:?}", s.events());
+    assert!((sticks[0] - stick).abs() < 1e-9, "stick at {} vs {stick}", sticks[0]);
+    assert!(s.sticking(0) && s.friction_forces()[0].abs() < 1e-12, "riding the belt needs no force");
+    let x = 3.0 * stick - 0.25 * G * stick * stick + (1.0 - stick);
+    assert!((s.position()[0] - x).abs() < 1e-9 && (s.velocity()[0] - 1.0).abs() < 1e-12, "{:?}", s.position());
+    let (power, work) = s.friction_dissipation();
+    assert_eq!(power, 0.0);
+    assert!((work - 4.0).abs() < 1e-9, "dissipated {work} J");
+}
+
+/// At rest on a still belt and pushed by k t (k = 10 N/s): it sticks while k t ≤ μ m g, then
+/// slips at t_s = μ m g / k with m ẍ = k (t − t_s), so x = k (t − t_s)³ / (6 m).
+#[test]
+fn a_block_pushed_ever_harder_sticks_then_slips() {
+    let mut s = block(0.0, 10.0, 0.0);
+    let slip = 0.5 * 2.0 * G / 10.0;
+    s.advance(slip - 0.05).unwrap();
+    assert!(s.sticking(0) && s.position()[0] == 0.0, "sticks: {:?}", s.position());
+    assert!((s.friction_forces()[0] + 10.0 * s.time()).abs() < 1e-9, "holds the push: {}", s.friction_forces()[0]);
+    s.advance(slip + 0.3).unwrap();
+    let slips: Vec<f64> = s.events().iter().filter(|e| e.kind == EventKind::Slip).map(|e| e.time).collect();
+    assert_eq!(slips.len(), 1, "{:?}", s.events());
+    assert!((slips[0] - slip).abs() < 1e-9, "slips at {} vs {slip}", slips[0]);
+    let x = 10.0 * 0.3_f64.powi(3) / 12.0;
+    assert!((s.position()[0] / x - 1.0).abs() < 1e-6, "x {} vs {x}", s.position()[0]);
+    assert!(!s.sticking(0) && (s.friction_forces()[0] + 0.5 * 2.0 * G).abs() < 1e-9);
+}
