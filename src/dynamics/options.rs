@@ -26,8 +26,8 @@ pub struct StepperOptions {
 impl StepperOptions {
     /// Why these options cannot be used, if they cannot.
     pub(super) fn invalid(&self) -> Option<&'static str> {
-        // Written out: an iterator over the tolerances cost ~100 instructions, and the served
-        // communication points check the options of a restored stepper too.
+        // Written out rather than iterated: served communication points check a restored stepper's
+        // options, on their hot path.
         let positive = |x: f64| x > 0.0 && x < f64::INFINITY;
         if !positive(self.step) {
             Some("the step must be positive and finite")

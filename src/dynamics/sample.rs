@@ -203,8 +203,8 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     t: f64,
     contacts: Contacts,
 ) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
-    // The friction power at the stages, for its integral by the step's own weights.
-    let mut powers = [s0.friction_power(), 0.0, 0.0, 0.0];
+    // The friction power at stages 2–4 (the first is `s0`'s), for its integral by the step's own weights.
+    let mut powers = [0.0, 0.0, 0.0, 0.0];
     let mut stage = 0;
     let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
         if contacts.held == 0 {
@@ -220,7 +220,12 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     let step = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
     let ev = sys.evaluate(t, &step.q, &step.v);
     let mut s = sample_of(sys, &ev, t, step.q, step.v, contacts)?;
-    s.friction_work = s0.friction_work + (powers[0] + 2.0 * (powers[1] + powers[2]) + powers[3]) * ((t - s0.t) / 6.0);
+    // Nothing held: no friction force, no work (and nothing to add on the flights' hot path).
+    s.friction_work = if contacts.held == 0 {
+        s0.friction_work
+    } else {
+        s0.friction_work + (s0.friction_power() + 2.0 * (powers[1] + powers[2]) + powers[3]) * ((t - s0.t) / 6.0)
+    };
     Ok((s, ev, step.last_slopes))
 }
 

@@ -22,16 +22,19 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// What the step watches: each free constraint's gap, each held one's normal force, and with
     /// friction each held one's slip (slipping) or margin to the friction cone (sticking).
     fn watches(&self) -> impl Iterator<Item = (usize, Watch)> + Clone + '_ {
-        let (contacts, mu) = (self.contacts, friction_of(&self.system));
-        (0..M).flat_map(move |i| {
-            let tangential = match (contacts.mode(i), mu.map_or(0.0, |mu| mu[i])) {
-                (_, 0.0) | (Mode::Open, _) => None,
-                (Mode::Stick, mu) => Some(Watch::Stick(mu)),
-                (Mode::Slip(s), _) => Some(Watch::Slip(s)),
-            };
-            let normal = if contains(contacts.held, i) { Watch::Multiplier } else { Watch::Gap };
-            [Some(normal), tangential].into_iter().flatten().map(move |w| (i, w))
-        })
+        let contacts = self.contacts;
+        let normal = (0..M).map(move |i| (i, if contains(contacts.held, i) { Watch::Multiplier } else { Watch::Gap }));
+        // Only a frictional system with contacts held has tangential watches.
+        let mu = if contacts.held == 0 { None } else { friction_of(&self.system) };
+        let tangential = mu.into_iter().flat_map(move |mu| {
+            (0..M).filter_map(move |i| match contacts.mode(i) {
+                _ if mu[i] == 0.0 => None,
+                Mode::Open => None,
+                Mode::Stick => Some((i, Watch::Stick(mu[i]))),
+                Mode::Slip(s) => Some((i, Watch::Slip(s))),
+            })
+        });
+        normal.chain(tangential)
     }
 
     /// The earliest event in the step `self.state → s1`.
