@@ -1,5 +1,6 @@
-//! Event detection and location: a watched function `g` (a gap `hᵢ` of a free constraint, or a
-//! multiplier `λᵢ` of a sliding one) crossing from positive to below `−tol` within a step.
+//! Event detection and location: a watched function `g` (a gap `hᵢ` of a free constraint, a
+//! multiplier `λᵢ` of a sliding one, with friction its slip or its margin to the friction cone)
+//! crossing from positive to below `−tol` within a step.
 
 use serde::{Deserialize, Serialize};
 
@@ -63,10 +64,10 @@ const MAX_ITERATIONS: usize = 200;
 /// The first sub-interval of `[t0, t1]` where `g` goes from above `tol` to below `−tol`, scanning
 /// `SCAN_SAMPLES` points of the dense output: this finds the earliest of several roots and a
 /// crossing-and-return inside one step (a grazing dip) that the end values alone would miss.
-/// `rising`: `g` is at most 0 at `t0` but increasing (a constraint closed and separating, e.g.
-/// just after an impact); a crossing then lies after `t0` even if the first sample is below
-/// `−tol` (a flight shorter than a sample), so the sample interval is halved towards `t0` until
-/// `g` is positive there. Without this the event would be reported at `t0`, where there is
+/// `rising`: `g` is within `tol` of zero at `t0` but increasing (a constraint closed and
+/// separating, e.g. just after an impact, or a slip just started from rest); a crossing then lies
+/// after `t0` even if the first sample is below `−tol` (a flight or a slip shorter than a sample),
+/// so the sample interval is halved towards `t0` until `g` is above `tol` there. Without this the event would be reported at `t0`, where there is
 /// nothing to resolve, again and again.
 pub(crate) fn first_crossing<E>(
     mut g: impl FnMut(f64) -> Result<f64, E>,

@@ -99,7 +99,13 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 }
                 let start = match self.locator {
                     EventLocator::DenseOutput => {
-                        let rising = w == Watch::Gap && s0.hd[i] > 0.0;
+                        let rising = match w {
+                            Watch::Gap => s0.hd[i] > 0.0,
+                            // A slip the law just started from rest within ε_ḣ: its direction
+                            // is that of γ̇, so it grows before it can reverse.
+                            Watch::Slip(s) => g0 <= tol && s * self.slip_rate(s0, i) > 0.0,
+                            Watch::Multiplier | Watch::Stick(_) => false,
+                        };
                         events::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (e.t, g1), tol, rising)?
                     }
                     EventLocator::StepHalving if g1 < -tol && g0 > 0.0 => {
@@ -136,6 +142,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let end = located.unwrap_or(s1);
         let j = watches.clone().find(|&(j, v)| end.0.watched(j, v) < 0.0).map_or(0, |(j, _)| j);
         Ok(StepEnd::Event { at: end, constraint: j })
+    }
+
+    /// `γ̇ᵢ = J_T q̈ + d_T` at `s`.
+    fn slip_rate(&self, s: &Sample<N, M>, i: usize) -> f64 {
+        let tangents = self.system.tangents(s.t, &s.q, &s.v);
+        (tangents.jacobian.row(i) * s.acc)[0] + tangents.bias[i]
     }
 
     /// The state where `g_i` crosses zero, on the RK4 map from the step start: Illinois started

@@ -1,6 +1,7 @@
 //! Coulomb friction in the core against closed forms: a block on a moving belt slips, then sticks
-//! (the stick located as an event, the dissipated energy ½ m Δv²), and a block pushed harder and
-//! harder sticks, then slips once the push reaches μ m g.
+//! (the stick located as an event, the dissipated energy ½ m Δv²), a block pushed harder and
+//! harder sticks, then slips once the push reaches μ m g, and one that comes to rest while the
+//! push still exceeds the cone slips back for an instant shorter than the step's samples.
 
 use nalgebra::Vector2;
 use pistonslap::dynamics::testbeds::Block;
@@ -9,9 +10,13 @@ use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
 const G: f64 = 9.81;
 
 fn block(belt: f64, push_rate: f64, speed: f64) -> Stepper<Block, 2, 1> {
+    block_from(0.0, belt, push_rate, speed)
+}
+
+fn block_from(t0: f64, belt: f64, push_rate: f64, speed: f64) -> Stepper<Block, 2, 1> {
     let block = Block { mass: 2.0, gravity: G, friction: 0.5, belt, push_rate, restitution: 0.5 };
     let options = StepperOptions { step: 1e-3, ..Default::default() };
-    let s = Stepper::new(block, 0.0, Vector2::zeros(), Vector2::new(speed, 0.0), options).unwrap();
+    let s = Stepper::new(block, t0, Vector2::zeros(), Vector2::new(speed, 0.0), options).unwrap();
     assert!(s.in_contact(0), "resting on the belt");
     s
 }
@@ -58,4 +63,36 @@ fn a_block_pushed_ever_harder_sticks_then_slips() {
     let x = 10.0 * 0.3_f64.powi(3) / 12.0;
     assert!((s.position()[0] / x - 1.0).abs() < 1e-6, "x {} vs {x}", s.position()[0]);
     assert!(!s.sticking(0) && (s.friction_forces()[0] + 0.5 * 2.0 * G).abs() < 1e-9);
+}
+
+/// Sliding forward against the push k t (k = 10⁴ N/s, from t₀ = −10 ms) on a still belt, it comes
+/// to rest at t_r = t_c − δ, just before the push enters the friction cone at t_c = −μ m g / k
+/// (δ = 50 µs): it slips back, m v̇ = k t + μ m g, so v = k (t − t_r)(t − t_2) / (2 m) with the
+/// slip ending at t_2 = t_c + δ, where the push is within the cone and the block sticks; it slips
+/// forward again at −t_c. The backward slip (100 µs, |v| ≤ k δ² / (2 m) = 6.25 µm/s) ends
+/// before the step's first sample: it is located, not taken for a reversal at its own start.
+#[test]
+fn a_block_at_rest_beyond_the_cone_slips_back_for_an_instant_then_sticks() {
+    let (m, k, t0, delta) = (2.0, 1e4, -0.01, 5e-5);
+    let cone = 0.5 * m * G;
+    let t_c = -cone / k;
+    let (t_r, t_2) = (t_c - delta, t_c + delta);
+    // v(t) = v0 + (k (t² − t0²)/2 − μ m g (t − t0)) / m, zero at t_r.
+    let v0 = -(0.5 * k * (t_r * t_r - t0 * t0) - cone * (t_r - t0)) / m;
+    let x = |t: f64| v0 * (t - t0) + (k * ((t.powi(3) - t0.powi(3)) / 3.0 - t0 * t0 * (t - t0)) / 2.0 - cone * (t - t0).powi(2) / 2.0) / m;
+    let back = 2.0 * k * delta.powi(3) / (3.0 * m);
+    let mut s = block_from(t0, 0.0, k, v0);
+    s.advance(0.0).unwrap();
+    assert!(s.sticking(0) && (s.position()[0] - (x(t_r) - back)).abs() < 1e-12, "x {} vs {}", s.position()[0], x(t_r) - back);
+    s.advance(2e-3).unwrap();
+    let changes: Vec<(EventKind, f64)> =
+        s.events().iter().filter(|e| matches!(e.kind, EventKind::Slip | EventKind::Stick)).map(|e| (e.kind, e.time)).collect();
+    let expected = [(EventKind::Slip, t_r), (EventKind::Stick, t_2), (EventKind::Slip, -t_c)];
+    assert_eq!(changes.len(), 3, "{changes:?}");
+    for ((kind, t), (kind_expected, t_expected)) in changes.iter().zip(expected) {
+        assert!(*kind == kind_expected && (t - t_expected).abs() < 1e-9, "{kind:?} at {t} vs {kind_expected:?} at {t_expected}");
+    }
+    let (_, work) = s.friction_dissipation();
+    let slid = x(t_r) + back + (s.position()[0] - (x(t_r) - back));
+    assert!((work - cone * slid).abs() < 1e-9 * work, "friction work {work} J vs μ m g × {slid} m");
 }
