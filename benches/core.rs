@@ -57,7 +57,7 @@ fn main() {
     println!("median of {RUNS} runs; steps are nominal (t_end / h_RK4)");
     let free = DoublePendulum { masses: [1.0, 0.5], lengths: [1.0, 0.7], gravity: 9.81, wall: 10.0, restitution: 1.0 };
     report("double pendulum, free (2 DOF)", &run(&free, Vector2::new(1.0, -0.5), Vector2::zeros(), 1e-3, 100.0, dense));
-    let rod = Rod { mass: 1.0, length: 1.0, gravity: 9.81, restitution: 0.5, floor: Floor::Fixed };
+    let rod = Rod { mass: 1.0, length: 1.0, gravity: 9.81, restitution: 0.5, friction: 0.0, floor: Floor::Fixed };
     report(
         "rod tumbling to rest, e = 0.5 (3 DOF, 2 ends)",
         &run(&rod, Vector3::new(0.0, 1.0, 0.3), Vector3::new(0.5, 0.0, 4.0), 1e-4, 10.0, dense),

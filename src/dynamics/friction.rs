@@ -112,7 +112,23 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
     /// The forces of `modes` that zero the normal row of every closed constraint and the
     /// tangential row of every sticking one, with `b_N`, `b_T` the rows' values at zero force.
     /// `None` when those rows are dependent (more than `N` of them, or a vanishing pivot).
+    ///
+    /// Sticking constraints whose tangents act alike (equal columns of `M⁻¹ J_Tᵀ`: one body at
+    /// rest on one surface at several points) have dependent tangential rows: the motion fixes
+    /// only the sum of their friction forces, which is solved for once and split in proportion to
+    /// their normal forces, the split that keeps each as far inside its cone as the others.
     pub fn solve(&self, modes: &[Mode; M], b: (&SVector<f64, M>, &SVector<f64, M>)) -> Option<Solution<M>> {
+        // The sticking constraint whose tangential unknown each sticking one shares (itself if none).
+        let mut shares: [usize; M] = std::array::from_fn(|i| i);
+        for i in 0..M {
+            if modes[i] == Mode::Stick {
+                let alike = |&j: &usize| {
+                    let (a, c) = (self.tangent.column(i), self.tangent.column(j));
+                    (a - c).amax() <= DEPENDENT_PIVOT * a.amax()
+                };
+                shares[i] = (0..i).filter(|&j| modes[j] == Mode::Stick && shares[j] == j).find(alike).unwrap_or(i);
+            }
+        }
         // Unknowns (constraint, direction: 0 normal, 1 tangential), each with its own row.
         let mut unknowns = [(0, 0); N];
         let mut r = 0;
@@ -120,6 +136,7 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
             let directions: &[usize] = match mode {
                 Mode::Open => &[],
                 Mode::Slip(_) => &[0],
+                Mode::Stick if shares[i] != i => &[0],
                 Mode::Stick => &[0, 1],
             };
             for &d in directions {
@@ -157,12 +174,22 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
                 tangent[i] = -self.mu[i] * s * normal[i];
             }
         }
+        for i in (0..M).filter(|&i| shares.iter().skip(i + 1).any(|&j| j == i)) {
+            let group = || (0..M).filter(move |&j| modes[j] == Mode::Stick && shares[j] == i);
+            let (total, load, count) = (tangent[i], group().map(|j| normal[j]).sum::<f64>(), group().count() as f64);
+            for j in group() {
+                tangent[j] = if load > 0.0 { total * normal[j] / load } else { total / count };
+            }
+        }
         let y = |d: usize| self.w[d][0] * normal + self.w[d][1] * tangent + [b.0, b.1][d];
         Some(Solution { y_normal: y(0), y_tangent: y(1), normal, tangent })
     }
 
     /// The first consistent modes for `choices`, by enumeration: fewest closed constraints
-    /// first (as the frictionless law), slipping before sticking (at the edge of the friction cone
+    /// first (as the frictionless law), and first among modes that decide beyond round-off (a
+    /// slip from rest whose tangential acceleration has its direction, a stick strictly inside its
+    /// cone): a body at rest on several points sticks rather than slips nowhere. Only where none
+    /// decides so, modes at the edge, slipping before sticking (at the edge of the friction cone
     /// both are consistent, and the slip is what follows). `scale`: the magnitude of the rows'
     /// terms before cancellation, for the round-off tolerances.
     pub fn enumerate(
@@ -185,26 +212,31 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
         let w_max = (0..M).filter(|&i| choices[i] != Choice::Open).fold(0.0_f64, |s, i| s.max(self.w[0][0][(i, i)]));
         let tol_y = COMPLEMENTARITY_TOL * scale + f64::MIN_POSITIVE;
         let tol_x = if w_max > 0.0 { tol_y / w_max } else { tol_y };
-        let consistent = |modes: &[Mode; M], s: &Solution<M>| {
+        // `edge`: the margin a stick's cone and a starting slip's acceleration may fall short by.
+        let consistent = |modes: &[Mode; M], s: &Solution<M>, (edge_x, edge_y): (f64, f64)| {
             (0..M).all(|i| match modes[i] {
                 Mode::Open => choices[i] == Choice::Open || s.y_normal[i] >= -tol_y,
-                Mode::Stick => s.normal[i] >= -tol_x && s.tangent[i].abs() <= self.mu[i] * s.normal[i] + tol_x,
-                Mode::Slip(sign) => s.normal[i] >= -tol_x && (choices[i] != Choice::AtRest || sign * s.y_tangent[i] >= -tol_y),
+                Mode::Stick => s.normal[i] >= -tol_x && s.tangent[i].abs() <= self.mu[i] * s.normal[i] + edge_x,
+                Mode::Slip(sign) => {
+                    s.normal[i] >= -tol_x && (choices[i] != Choice::AtRest || self.mu[i] == 0.0 || sign * s.y_tangent[i] >= -edge_y)
+                }
             })
         };
-        for closed in 0..=M {
-            let mut index = [0_usize; M];
-            loop {
-                let modes: [Mode; M] = std::array::from_fn(|i| lists[i][index[i]]);
-                if modes.iter().filter(|m| **m != Mode::Open).count() == closed {
-                    if let Some(s) = self.solve(&modes, b).filter(|s| consistent(&modes, s)) {
-                        return Some((modes, s));
+        for edge in [(-tol_x, -tol_y), (tol_x, tol_y)] {
+            for closed in 0..=M {
+                let mut index = [0_usize; M];
+                loop {
+                    let modes: [Mode; M] = std::array::from_fn(|i| lists[i][index[i]]);
+                    if modes.iter().filter(|m| **m != Mode::Open).count() == closed {
+                        if let Some(s) = self.solve(&modes, b).filter(|s| consistent(&modes, s, edge)) {
+                            return Some((modes, s));
+                        }
                     }
+                    // The next combination (an odometer over the lists).
+                    let Some(k) = (0..M).find(|&k| index[k] + 1 < lists[k].len()) else { break };
+                    index[k] += 1;
+                    index[..k].iter_mut().for_each(|x| *x = 0);
                 }
-                // The next combination (an odometer over the lists).
-                let Some(k) = (0..M).find(|&k| index[k] + 1 < lists[k].len()) else { break };
-                index[k] += 1;
-                index[..k].iter_mut().for_each(|x| *x = 0);
             }
         }
         None

@@ -95,13 +95,14 @@ impl System<1, 1> for Ball {
 /// A uniform planar rod (mass `m`, length `L`) above a horizontal floor at height `y_f(t)` under
 /// gravity, `q = (x, y, θ)` of its centre; constraint `i` keeps end `i` above the floor:
 /// `h₀ = y − y_f − (L/2) sin θ`, `h₁ = y − y_f + (L/2) sin θ`. The ends couple translation and
-/// rotation.
+/// rotation. With Coulomb friction μ on the floor, end `i` slips at `γᵢ = ẋ ± (L/2) sin θ θ̇`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Rod {
     pub mass: f64,
     pub length: f64,
     pub gravity: f64,
     pub restitution: f64,
+    pub friction: f64,
     pub floor: Floor,
 }
 
@@ -130,6 +131,19 @@ impl System<3, 2> for Rod {
     }
     fn restitution(&self, _: usize) -> f64 {
         self.restitution
+    }
+    fn friction(&self, _: usize) -> f64 {
+        self.friction
+    }
+    fn tangents(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> Tangents<3, 2> {
+        let half = 0.5 * self.length;
+        let (s, c) = q[2].sin_cos();
+        let spin = half * c * qd[2] * qd[2];
+        Tangents {
+            jacobian: SMatrix::<f64, 2, 3>::new(1.0, 0.0, half * s, 1.0, 0.0, -half * s),
+            time_rate: Vector2::zeros(),
+            bias: Vector2::new(spin, -spin),
+        }
     }
 }
 

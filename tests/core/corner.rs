@@ -70,7 +70,7 @@ fn resting_in_the_corner_uses_both_constraints() {
 #[test]
 fn rod_landing_flat_bounces_flat() {
     let (v, e, gap) = (1.5, 0.7, 1e-3);
-    let rod = Rod { mass: 2.0, length: 1.0, gravity: 0.0, restitution: e, floor: Floor::Fixed };
+    let rod = Rod { mass: 2.0, length: 1.0, gravity: 0.0, restitution: e, friction: 0.0, floor: Floor::Fixed };
     let mut s = Stepper::new(
         rod,
         0.0,
@@ -91,7 +91,7 @@ fn rod_landing_flat_bounces_flat() {
 #[test]
 fn tumbling_rod_comes_to_rest_on_both_ends() {
     let (m, g) = (1.2, 9.81);
-    let rod = Rod { mass: m, length: 1.0, gravity: g, restitution: 0.5, floor: Floor::Fixed };
+    let rod = Rod { mass: m, length: 1.0, gravity: g, restitution: 0.5, friction: 0.0, floor: Floor::Fixed };
     let mut s = Stepper::new(
         rod,
         0.0,
@@ -120,7 +120,7 @@ fn tumbling_rod_comes_to_rest_on_both_ends() {
 fn rod_on_a_shaking_floor_leaves_on_both_ends_at_once() {
     let (m, g, a, w) = (0.8, 9.81, 0.01, 50.0);
     let floor = Floor::Oscillating { amplitude: a, angular_frequency: w };
-    let rod = Rod { mass: m, length: 1.0, gravity: g, restitution: 0.5, floor };
+    let rod = Rod { mass: m, length: 1.0, gravity: g, restitution: 0.5, friction: 0.0, floor };
     let mut s =
         Stepper::new(rod, 0.0, Vector3::zeros(), Vector3::new(0.0, a * w, 0.0), StepperOptions { step: 1e-4, ..Default::default() })
             .unwrap();

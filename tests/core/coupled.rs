@@ -12,7 +12,7 @@ use pistonslap::dynamics::{EventKind, Stepper, StepperOptions, System};
 #[test]
 fn rod_end_impact_matches_hand_derivation() {
     let (m, l, e, v, theta, gap) = (1.3, 0.8, 0.6, 2.0, std::f64::consts::FRAC_PI_6, 1e-3);
-    let rod = Rod { mass: m, length: l, gravity: 0.0, restitution: e, floor: Floor::Fixed };
+    let rod = Rod { mass: m, length: l, gravity: 0.0, restitution: e, friction: 0.0, floor: Floor::Fixed };
     let q0 = Vector3::new(0.0, gap + 0.5 * l * theta.sin(), theta);
     let v0 = Vector3::new(0.3, -v, 0.0);
     let mut s = Stepper::new(rod, 0.0, q0, v0, StepperOptions { step: 1e-4, ..Default::default() }).unwrap();

@@ -1,10 +1,11 @@
 //! Coulomb friction in the core against closed forms: a block on a moving belt slips, then sticks
 //! (the stick located as an event, the dissipated energy ½ m Δv²), a block pushed harder and
-//! harder sticks, then slips once the push reaches μ m g, and one that comes to rest while the
-//! push still exceeds the cone slips back for an instant shorter than the step's samples.
+//! harder sticks, then slips once the push reaches μ m g, one that comes to rest while the
+//! push still exceeds the cone slips back for an instant shorter than the step's samples, and a
+//! rod flat on the floor slides on both ends, then sticks on both.
 
-use nalgebra::Vector2;
-use pistonslap::dynamics::testbeds::Block;
+use nalgebra::{Vector2, Vector3};
+use pistonslap::dynamics::testbeds::{Block, Floor, Rod};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
 
 const G: f64 = 9.81;
@@ -95,4 +96,36 @@ fn a_block_at_rest_beyond_the_cone_slips_back_for_an_instant_then_sticks() {
     let (_, work) = s.friction_dissipation();
     let slid = x(t_r) + back + (s.position()[0] - (x(t_r) - back));
     assert!((work - cone * slid).abs() < 1e-9 * work, "friction work {work} J vs μ m g × {slid} m");
+}
+
+/// A uniform rod (2 kg, 1 m) lying flat on the floor, thrown along its axis at 2 m/s, μ = 0.4:
+/// the friction at its ends acts on the line of its centre, so each end carries m g / 2 and it
+/// slides to rest at t* = v₀/(μ g), x* = v₀²/(2 μ g), dissipating ½ m v₀²; then both ends stick
+/// (how the zero friction force splits between them is not determined, its sum is: zero) and it
+/// stays there.
+#[test]
+fn a_rod_flat_on_the_floor_slides_then_sticks_on_both_ends() {
+    let (m, mu, v0) = (2.0, 0.4, 2.0);
+    let rod = Rod { mass: m, length: 1.0, gravity: G, restitution: 0.5, friction: mu, floor: Floor::Fixed };
+    let options = StepperOptions { step: 1e-3, ..Default::default() };
+    let mut s = Stepper::new(rod, 0.0, Vector3::zeros(), Vector3::new(v0, 0.0, 0.0), options).unwrap();
+    assert!(s.in_contact(0) && s.in_contact(1), "lying on both ends");
+    let rest = v0 / (mu * G);
+    for t in [0.1, 0.3, rest - 1e-3] {
+        s.advance(t).unwrap();
+        let x = v0 * t - 0.5 * mu * G * t * t;
+        assert!((s.position()[0] - x).abs() < 1e-12 && s.position()[2].abs() < 1e-12, "t {t}: {:?} vs x {x}", s.position());
+        for (i, f) in s.friction_forces().iter().enumerate() {
+            assert!((f + 0.5 * mu * m * G).abs() < 1e-9, "t {t}: end {i} carries λ_T {f}, not −μ m g / 2");
+        }
+    }
+    s.advance(2.0).unwrap();
+    let sticks: Vec<f64> = s.events().iter().filter(|e| e.kind == EventKind::Stick).map(|e| e.time).collect();
+    assert!(!sticks.is_empty() && sticks.iter().all(|t| (t - rest).abs() < 1e-9), "sticks at {sticks:?}, not {rest}");
+    assert!(s.sticking(0) && s.sticking(1), "both ends stick");
+    assert!(s.velocity().norm() < 1e-12 && s.friction_forces().sum().abs() < 1e-9, "{:?}, {:?}", s.velocity(), s.friction_forces());
+    let x = v0 * v0 / (2.0 * mu * G);
+    assert!((s.position()[0] - x).abs() < 1e-9 && s.position()[2].abs() < 1e-12, "{:?} vs x {x}", s.position());
+    let (_, work) = s.friction_dissipation();
+    assert!((work - 0.5 * m * v0 * v0).abs() < 1e-9, "dissipated {work} J");
 }
