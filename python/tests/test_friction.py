@@ -1,0 +1,84 @@
+"""Liner friction through fmpy: the published Flores–Leine–Glocker slider crank against Siconos, and the friction
+outputs of an engine against the Coulomb law they report (cone, sign, power, accumulated energy)."""
+
+import numpy as np
+import pytest
+from fmpy.fmi1 import FMICallException
+
+from harness import FMI_ERROR, Instance
+from pistonslap.fmu import simulate, simulate_with_events
+
+# The benchmark's links, slider and guide mapped onto the crank train (tests/crank_train/flores_benchmark.rs),
+# as published: mu = 0.01, gravity 9.81 m/s^2 across the guide, a start tilt rate of -0.01 rad/s.
+FLORES = {
+    "crank_mode": 2, "pressure_source": 1, "crank_speed": 150.0, "gas_pressure": 0.0, "load_torque": 0.0,
+    "crank_radius": 0.153, "rod_length": 0.306, "crank_com": 0.0765, "rod_com": 0.153, "piston_com": 0.0,
+    "crank_mass": 0.038, "rod_mass": 0.038, "piston_mass": 0.076,
+    "crank_inertia": 7.4e-5, "rod_inertia": 5.9e-4, "piston_inertia": 2.7e-6,
+    "piston_diameter": 0.05, "skirt_length": 0.1, "pin_height": 0.05, "bore": 0.052, "restitution": 0.4,
+    "damping_main": 0.0, "damping_crank_pin": 0.0, "damping_piston_pin": 0.0, "gravity": 0.0,
+    "gravity_lateral": 9.81, "friction": 0.01, "piston_tilt_rate_start": -0.01,
+}
+
+
+def test_flores_as_published_matches_siconos():
+    """0.2 s at 1 ms steps: Siconos Moreau-Jean, its SliderCrank example run as published and extrapolated to
+    h -> 0, turns the crank 2.87801 times; friction slows it against the frictionless 2.89271 with gravity alone."""
+    result = simulate(stop_time=0.2, output_interval=1e-3, start_values=FLORES,
+                      output=["crank_angle", "friction_energy_total", "friction_power"])
+    revolutions = result["crank_angle"][-1] / (2 * np.pi)
+    assert revolutions == pytest.approx(2.87801, rel=1e-4)
+    assert revolutions < 2.8927 - 1e-3
+    assert result["friction_energy_total"][-1] > 0 and np.all(np.diff(result["friction_energy_total"]) >= 0)
+
+
+@pytest.fixture(scope="module")
+def rubbing_engine():
+    """One engine cycle of the default case with mu = 0.1 on a horizontal cylinder, at 0.1 ms steps."""
+    corners = [f"{name}_{i}" for name in ("friction_force", "contact_force", "contact_state") for i in range(1, 5)]
+    return simulate_with_events(start_values={"friction": 0.1, "gravity_lateral": 9.81}, stop_time=0.1,
+                                output_interval=1e-4,
+                                output=corners + ["friction_power", "friction_energy_total", "crank_angle"])
+
+
+def test_friction_forces_obey_the_coulomb_law(rubbing_engine):
+    """A free corner carries no friction; a held one at most mu times its normal force; the force dissipates
+    (power >= 0), and some corner slides on the liner through most of the cycle."""
+    result, _ = rubbing_engine
+    loaded = 0
+    for i in range(1, 5):
+        force, normal, held = (result[f"{n}_{i}"] for n in ("friction_force", "contact_force", "contact_state"))
+        assert np.all(force[held == 0] == 0)
+        assert np.all(np.abs(force) <= 0.1 * normal * (1 + 1e-9) + 1e-12)
+        loaded += np.count_nonzero(np.abs(force) > 0)
+    assert loaded > 0.5 * len(result)
+    assert np.all(result["friction_power"] >= -1e-9 * np.abs(result["friction_power"]).max())
+
+
+def test_friction_energy_accumulates_its_power(rubbing_engine):
+    """friction_energy_total starts at 0, never decreases, and holds at least the sliding friction's work (the
+    trapezoid of friction_power, to 2 % for the trapezoid's error at 0.1 ms): impacts add their share."""
+    result, events = rubbing_engine
+    energy, power, time = result["friction_energy_total"], result["friction_power"], result["time"]
+    assert energy[0] == 0 and np.all(np.diff(energy) >= 0)
+    sliding = np.trapezoid(power, time)
+    assert energy[-1] >= 0.98 * sliding > 0
+
+
+def test_corners_stick_and_reverse_only_near_the_dead_centres(rubbing_engine):
+    """A held corner comes to rest along the liner, or reverses its slip, only where the piston's axial speed
+    passes zero: near top and bottom dead centre (crank angle 0 or 180 degrees, mod 180), the tilt's share of a
+    corner's axial speed moving the instant by less than a degree."""
+    _, events = rubbing_engine
+    turns = events[np.isin(events["kind"], ["stick", "slip"])]
+    assert len(turns) > 0
+    off_centre = np.abs((turns["crank_angle_deg"] + 90) % 180 - 90)
+    assert off_centre.max() < 1, turns
+
+
+def test_the_roller_refuses_friction(unpacked_fmu):
+    """Model variant 2 is frictionless: a non-zero friction is refused at initialization, naming the parameter."""
+    with Instance(unpacked_fmu) as fmu:
+        with pytest.raises(FMICallException):
+            fmu.initialize(model_variant=2, friction=0.1)
+        assert any("friction" in m for m in fmu.messages(FMI_ERROR)), fmu.messages()
