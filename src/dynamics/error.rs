@@ -1,6 +1,6 @@
 //! What the core cannot resolve, as a value.
 
-use super::options::PENETRATION_FACTOR;
+use super::options::{ACCUMULATION_WINDOW, PENETRATION_FACTOR};
 use std::fmt;
 
 /// What the core cannot resolve, as a value. Constraint sets are bitmasks (bit i = constraint i).
@@ -18,8 +18,8 @@ pub enum DynamicsError {
     ContactUnresolved { time: f64, constraints: u32 },
     /// A free constraint is violated by more than `PENETRATION_FACTOR · ε_h` at the start of a step.
     Penetration { time: f64, constraint: usize, gap: f64 },
-    /// More events than the budget while the time advanced by less than one nominal step (an
-    /// unresolved accumulation).
+    /// More events than the budget while the time advanced by less than `ACCUMULATION_WINDOW`
+    /// nominal steps (an unresolved accumulation).
     EventBudget { time: f64, events: usize },
     /// A refused argument: bad options, or an end time before the current time.
     InvalidArgument { time: f64, reason: &'static str },
@@ -65,7 +65,10 @@ impl fmt::Display for DynamicsError {
                 write!(f, "at t = {time} s: constraint {constraint} is violated, gap {gap:e} m (beyond {PENETRATION_FACTOR} ε_h)")
             }
             EventBudget { time, events } => {
-                write!(f, "at t = {time} s: more than {events} events within one nominal step (accumulation not resolved)")
+                write!(
+                    f,
+                    "at t = {time} s: more than {events} events within {ACCUMULATION_WINDOW} of a nominal step (accumulation not resolved)"
+                )
             }
             InvalidArgument { time, reason } => write!(f, "at t = {time} s: {reason}"),
         }

@@ -15,8 +15,8 @@
 //!   persistent contact for the constraints at rest as the sliding complementarity problem over
 //!   all of them decides, a tie (zero force and zero gap acceleration) by the same problem a moment
 //!   later along the motion (`settle.rs`); the Zeno guard ([`ZENO_APEX_FACTOR`]) turns an
-//!   accumulation of impacts into sliding, and an event budget per nominal step turns anything
-//!   else into an error;
+//!   accumulation of impacts into sliding, and an event budget per thousandth of a nominal step
+//!   turns anything else into an error;
 //! - where the system did not change since the last `advance`, its last step may run past the
 //!   end: the end's state comes from the step's quintic extension, and the step goes on next time.
 //!
@@ -42,7 +42,7 @@ pub mod testbeds;
 
 pub use error::DynamicsError;
 pub use events::EventLocator;
-pub use options::{StepperOptions, DEFAULT_EVENT_BUDGET};
+pub use options::{StepperOptions, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
 pub use record::{Event, EventKind, StepCounts};
 pub use settle::ZENO_APEX_FACTOR;
 pub use stepper::Stepper;

@@ -8,7 +8,7 @@ use super::friction::Contacts;
 use super::options::{MAX_STEPS_PER_ADVANCE, PENETRATION_FACTOR, TOO_MANY_STEPS};
 use super::rk4::Hermite5;
 use super::sample::{local_error, rk4_step, rk4_to, sample, sample_of, Evaluated, Sample};
-use super::{DynamicsError, Evaluation, Event, StepCounts, StepperOptions, System, DEFAULT_EVENT_BUDGET};
+use super::{DynamicsError, Evaluation, Event, StepCounts, StepperOptions, System, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
 use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
@@ -125,8 +125,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         if self.changed {
             self.reexamine()?;
         }
-        // Events are counted per window of one nominal step: an accumulation piles them up in a
-        // vanishing time, while a long span of ordinary impacts only needs more windows.
+        // Events are counted per window of `ACCUMULATION_WINDOW` nominal steps: an accumulation
+        // piles them up in a vanishing time, while a long span of ordinary impacts only needs more
+        // windows.
         let (mut handled, mut steps, mut window_start) = (0, 0.0, self.state.t);
         loop {
             if let Some(ahead) = &self.ahead {
@@ -151,7 +152,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 return Ok(());
             }
             if event {
-                if self.state.t - window_start >= self.options.step {
+                if self.state.t - window_start >= ACCUMULATION_WINDOW * self.options.step {
                     (handled, window_start) = (0, self.state.t);
                 }
                 handled += 1;
@@ -306,8 +307,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     pub fn set_locator(&mut self, locator: EventLocator) {
         self.locator = locator;
     }
-    /// Bounds the events handled while the time advances by less than one nominal step (default
-    /// `DEFAULT_EVENT_BUDGET`); beyond it `advance` returns `DynamicsError::EventBudget` instead of
+    /// Bounds the events handled while the time advances by less than `ACCUMULATION_WINDOW`
+    /// nominal steps (default `DEFAULT_EVENT_BUDGET`); beyond it `advance` returns `DynamicsError::EventBudget` instead of
     /// spinning.
     pub fn set_event_budget(&mut self, events: usize) {
         self.event_budget = events;
