@@ -73,7 +73,7 @@ impl RollerSystem {
 
 impl System<1, 2> for RollerSystem {
     fn evaluate(&self, t: f64, q: &Vector1<f64>, qd: &Vector1<f64>) -> Evaluation<1, 2> {
-        let at = self.last_angle.get_or(t, || self.mechanism.at(t));
+        let at = self.last_angle.get_or([t], || self.mechanism.at(t));
         let limit = at.psi_max(self.rho);
         let force = at.forcing(self.lambda) - self.lambda * qd[0] - at.stiffness() * q[0];
         Evaluation {
