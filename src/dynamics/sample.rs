@@ -174,11 +174,9 @@ pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
     let hdd = ev.gap_jacobian * acc + ev.gap_bias;
     let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd, hdd, slip, friction, friction_work: 0.0 };
     // One sum clears every number (x · 0 is NaN exactly for an infinite or NaN x).
-    let zero = |x: &[f64]| x.iter().map(|x| x * 0.0).sum::<f64>();
-    let coordinates = [s.q.as_slice(), s.v.as_slice(), s.acc.as_slice()].map(zero);
-    let constraints =
-        [s.lambda.as_slice(), s.gap.as_slice(), s.hd.as_slice(), s.hdd.as_slice(), s.slip.as_slice(), s.friction.as_slice()].map(zero);
-    if coordinates.iter().chain(&constraints).sum::<f64>() == 0.0 {
+    let coordinates = (s.q * 0.0 + s.v * 0.0 + s.acc * 0.0).sum();
+    let constraints = (s.lambda * 0.0 + s.gap * 0.0 + s.hd * 0.0 + s.hdd * 0.0 + s.slip * 0.0 + s.friction * 0.0).sum();
+    if coordinates + constraints == 0.0 {
         Ok(s)
     } else {
         Err(DynamicsError::NonFinite { time: t })
@@ -206,24 +204,28 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     contacts: Contacts,
 ) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
     let dt = t - s0.t;
-    // Two monomorphizations of the step: a flight's stages need `M` and `f` alone and add no
-    // friction work; held stages solve the contacts and keep the friction power at stages 2–4
-    // (the first is `s0`'s) for its integral by the step's own weights.
+    // Three monomorphizations of the step: a flight's stages need `M` and `f` alone, and
+    // frictionless held stages the normal forces alone, neither adding friction work; rubbing
+    // stages keep the friction power at stages 2–4 (the first is `s0`'s) for its integral by the
+    // step's own weights.
     let (step, work) = if contacts.held == 0 {
         let flight = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let (mass, force) = sys.inertia_and_force(t, q, v);
             Ok(free_motion(&mass, &force, t)?.1)
         };
         (rk4::step(flight, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work)
+    } else if friction_of(sys).is_none() {
+        let held = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| Ok(acceleration(&sys.evaluate(t, q, v), t, contacts.held)?.0);
+        (rk4::step(held, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work)
     } else {
         let (mut powers, mut stage) = ([0.0; 4], 0);
-        let held = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
+        let rubbing = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let m = motion(sys, &sys.evaluate(t, q, v), (t, q, v), contacts)?;
             stage += 1;
             powers[stage] = -m.friction.dot(&m.slip);
             Ok(m.acc)
         };
-        let step = rk4::step(held, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;
+        let step = rk4::step(rubbing, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;
         (step, s0.friction_work + (s0.friction_power() + 2.0 * (powers[1] + powers[2]) + powers[3]) * (dt / 6.0))
     };
     let ev = sys.evaluate(t, &step.q, &step.v);
