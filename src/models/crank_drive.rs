@@ -244,6 +244,7 @@ impl PrescribedCrank {
         self.engine.evaluate(t, &phi, &phid, 0.0, crank)
     }
 
+    /// φ, φ̇ and the crank's terms at `(t, q, q̇)`.
     #[inline(always)]
     fn full_state_and_crank(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Vector3<f64>, Vector3<f64>, Crank) {
         let (phi, phid) = self.full_state(t, q, qd);
@@ -269,9 +270,9 @@ impl PrescribedCrank {
         let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
         let row =
             self.point_row.get_or(self.row_key(t, &phi, &phid, &crank), || CrankRow::of(&self.engine.evaluate(t, &phi, &phid, 0.0, crank)));
-        let crank = if self.speed.is_held() { 0.0 } else { row.mass[0] * self.acceleration(t) };
+        let driven = if self.speed.is_held() { 0.0 } else { row.mass[0] * self.acceleration(t) };
         let contact = row.gaps.dot(forces.0) + self.friction_reaction(t, q, forces.1);
-        crank + row.mass[1] * qdd[0] + row.mass[2] * qdd[1] - row.force - contact
+        driven + row.mass[1] * qdd[0] + row.mass[2] * qdd[1] - row.force - contact
     }
 
     /// The generalized forces `J_Tᵀ λ_T` of the friction forces `friction` in full coordinates (zero
