@@ -173,10 +173,10 @@ pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let hdd = ev.gap_jacobian * acc + ev.gap_bias;
     let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd, hdd, slip, friction, friction_work: 0.0 };
-    let finite = |x: &[f64]| x.iter().all(|v| v.is_finite());
-    let parts =
-        [s.q.as_slice(), s.v.as_slice(), s.acc.as_slice(), s.lambda.as_slice(), s.gap.as_slice(), s.hd.as_slice(), s.hdd.as_slice()];
-    if parts.into_iter().chain([s.slip.as_slice(), s.friction.as_slice()]).all(finite) {
+    // One sum clears every number (x · 0 is NaN exactly for an infinite or NaN x).
+    let coordinates = (s.q * 0.0 + s.v * 0.0 + s.acc * 0.0).sum();
+    let constraints = (s.lambda * 0.0 + s.gap * 0.0 + s.hd * 0.0 + s.hdd * 0.0 + s.slip * 0.0 + s.friction * 0.0).sum();
+    if coordinates + constraints == 0.0 {
         Ok(s)
     } else {
         Err(DynamicsError::NonFinite { time: t })
@@ -203,29 +203,34 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     t: f64,
     contacts: Contacts,
 ) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
-    // The friction power at stages 2–4 (the first is `s0`'s), for its integral by the step's own weights.
-    let mut powers = [0.0, 0.0, 0.0, 0.0];
-    let mut stage = 0;
-    let accel = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
-        if contacts.held == 0 {
+    let dt = t - s0.t;
+    // Three monomorphizations of the step: a flight's stages need `M` and `f` alone, and
+    // frictionless held stages the normal forces alone, neither adding friction work; rubbing
+    // stages keep the friction power at stages 2–4 (the first is `s0`'s) for its integral by the
+    // step's own weights.
+    let (step, work) = if contacts.held == 0 {
+        let flight = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let (mass, force) = sys.inertia_and_force(t, q, v);
             Ok(free_motion(&mass, &force, t)?.1)
-        } else {
+        };
+        (rk4::step(flight, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work)
+    } else if friction_of(sys).is_none() {
+        let held = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| Ok(acceleration(&sys.evaluate(t, q, v), t, contacts.held)?.0);
+        (rk4::step(held, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work)
+    } else {
+        let (mut powers, mut stage) = ([0.0; 4], 0);
+        let rubbing = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let m = motion(sys, &sys.evaluate(t, q, v), (t, q, v), contacts)?;
             stage += 1;
             powers[stage] = -m.friction.dot(&m.slip);
             Ok(m.acc)
-        }
+        };
+        let step = rk4::step(rubbing, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;
+        (step, s0.friction_work + (s0.friction_power() + 2.0 * (powers[1] + powers[2]) + powers[3]) * (dt / 6.0))
     };
-    let step = rk4::step(accel, s0.t, &s0.q, &s0.v, &s0.acc, t - s0.t)?;
     let ev = sys.evaluate(t, &step.q, &step.v);
     let mut s = sample_of(sys, &ev, t, step.q, step.v, contacts)?;
-    // Nothing held: no friction force, no work (and nothing to add on the flights' hot path).
-    s.friction_work = if contacts.held == 0 {
-        s0.friction_work
-    } else {
-        s0.friction_work + (s0.friction_power() + 2.0 * (powers[1] + powers[2]) + powers[3]) * ((t - s0.t) / 6.0)
-    };
+    s.friction_work = work;
     Ok((s, ev, step.last_slopes))
 }
 

@@ -445,7 +445,7 @@ fn between<S: System<N, M>, const N: usize, const M: usize>(
 ) -> Result<Sample<N, M>, DynamicsError> {
     let dense = Hermite5 { t0: s0.t, dt: end.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: end.q, v1: end.v, a1: end.acc };
     let (q, v) = dense.at(t);
-    let mut s = sample(system, t, q, v, contacts)?;
+    let mut s = sample_of(system, &system.evaluate_point(t, &q, &v), t, q, v, contacts)?;
     if end.friction_work != s0.friction_work {
         // The friction work by the cubic Hermite of its values and rates (the powers) at the ends.
         let (h, x) = (end.t - s0.t, (t - s0.t) / (end.t - s0.t));

@@ -49,6 +49,13 @@ pub trait System<const N: usize, const M: usize> {
     /// Full evaluation at `(t, q, q̇)`; computes each trigonometric function once.
     fn evaluate(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> Evaluation<N, M>;
 
+    /// `evaluate` at a communication point read from a step ahead (the state the stepper then
+    /// shows): a system whose outputs need more of the same terms may keep them here. The result
+    /// must equal `evaluate`'s.
+    fn evaluate_point(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> Evaluation<N, M> {
+        self.evaluate(t, q, qd)
+    }
+
     /// `M` and `f` alone: all an RK4 stage needs while no constraint is held. A system whose
     /// constraint terms cost work of their own overrides it; the result must equal `evaluate`'s.
     fn inertia_and_force(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> (SMatrix<f64, N, N>, SVector<f64, N>) {

@@ -154,13 +154,31 @@ pub struct PrescribedCrank {
     /// The crank's terms at the last crank angle evaluated (RK4's paired stages share it).
     #[serde(skip)]
     last_crank: LastValue<Crank>,
+    /// The crank row at the last communication point (`evaluate_point`), for its drive torque.
+    #[serde(skip)]
+    point_row: LastValue<CrankRow, 7>,
+}
+
+/// The crank row of the full equations at one state, the drive torque's terms: `M_1·`, `f_1` and
+/// the gaps' crank column `∂h/∂φ1`.
+#[derive(Clone, Copy, Debug)]
+struct CrankRow {
+    mass: Vector3<f64>,
+    force: f64,
+    gaps: Vector4<f64>,
+}
+
+impl CrankRow {
+    fn of(full: &Evaluation<3, 4>) -> Self {
+        Self { mass: full.mass.row(0).transpose(), force: full.force[0], gaps: full.gap_jacobian.column(0).into_owned() }
+    }
 }
 
 impl PrescribedCrank {
     /// The crank at `crank_angle` at `time`, turning at `speed` held.
     pub fn new(engine: Engine, crank_angle: f64, time: f64, speed: f64) -> Self {
         let speed = InputPolynomial { time, ..InputPolynomial::held(speed) };
-        Self { engine, angle_ref: crank_angle, speed, last_crank: LastValue::default() }
+        Self { engine, angle_ref: crank_angle, speed, last_crank: LastValue::default(), point_row: LastValue::default() }
     }
 
     /// φ1(t): the speed integrated exactly.
@@ -196,14 +214,15 @@ impl PrescribedCrank {
     /// The same crank with the crank angle `angle` at time `t` (a whole number of cycles away from
     /// its own), the speed's reference moved to `t`.
     pub fn rebased(&self, t: f64, angle: f64) -> Self {
-        Self { engine: self.engine.clone(), angle_ref: angle, speed: self.speed.from(t), last_crank: LastValue::default() }
+        let (last_crank, point_row) = (LastValue::default(), LastValue::default());
+        Self { engine: self.engine.clone(), angle_ref: angle, speed: self.speed.from(t), last_crank, point_row }
     }
 
     /// The crank terms at `angle`, from the cache when it is the last angle evaluated (inlined:
     /// see `Engine::crank`).
     #[inline(always)]
     fn crank(&self, angle: f64) -> Crank {
-        self.last_crank.get_or(angle, || self.engine.crank(angle))
+        self.last_crank.get_or([angle], || self.engine.crank(angle))
     }
 
     /// Gauge gas pressure on the crown at time t and crank angle φ1 within the cycle, Pa: the
@@ -221,8 +240,22 @@ impl PrescribedCrank {
     /// evaluation, where the crank row's unused terms and a copy then drop out.
     #[inline(always)]
     pub fn evaluate_full(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<3, 4> {
+        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
+        self.engine.evaluate(t, &phi, &phid, 0.0, crank)
+    }
+
+    /// φ, φ̇ and the crank's terms at `(t, q, q̇)`.
+    #[inline(always)]
+    fn full_state_and_crank(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Vector3<f64>, Vector3<f64>, Crank) {
         let (phi, phid) = self.full_state(t, q, qd);
-        self.engine.evaluate(t, &phi, &phid, 0.0, self.crank(phi[0]))
+        let crank = self.crank(phi[0]);
+        (phi, phid, crank)
+    }
+
+    /// What the crank row is a function of: φ, φ̇ and the gas force.
+    #[inline(always)]
+    fn row_key(&self, t: f64, phi: &Vector3<f64>, phid: &Vector3<f64>, crank: &Crank) -> [f64; 7] {
+        [phi[0], phi[1], phi[2], phid[0], phid[1], phid[2], self.engine.gas_force_at(t, crank)]
     }
 
     /// Torque the drive applies to the crank: the crank row `M_1· φ̈ − f_1 − (Jᵀλ + J_Tᵀλ_T)_1` with
@@ -233,10 +266,13 @@ impl PrescribedCrank {
         (q, qd, qdd): (&Vector2<f64>, &Vector2<f64>, &Vector2<f64>),
         forces: (&Vector4<f64>, &Vector4<f64>),
     ) -> f64 {
-        let full = self.evaluate_full(t, q, qd);
-        let crank = if self.speed.is_held() { 0.0 } else { full.mass[(0, 0)] * self.acceleration(t) };
-        let contact = full.gap_jacobian.column(0).dot(forces.0) + self.friction_reaction(t, q, forces.1);
-        crank + full.mass[(0, 1)] * qdd[0] + full.mass[(0, 2)] * qdd[1] - full.force[0] - contact
+        // The point's own evaluation kept the row, where this is the point's state.
+        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
+        let row =
+            self.point_row.get_or(self.row_key(t, &phi, &phid, &crank), || CrankRow::of(&self.engine.evaluate(t, &phi, &phid, 0.0, crank)));
+        let driven = if self.speed.is_held() { 0.0 } else { row.mass[0] * self.acceleration(t) };
+        let contact = row.gaps.dot(forces.0) + self.friction_reaction(t, q, forces.1);
+        driven + row.mass[1] * qdd[0] + row.mass[2] * qdd[1] - row.force - contact
     }
 
     /// The generalized forces `J_Tᵀ λ_T` of the friction forces `friction` in full coordinates (zero
@@ -247,6 +283,22 @@ impl PrescribedCrank {
         }
         let (phi, phid) = self.full_state(t, q, &Vector2::zeros());
         self.engine.linkage.tangents(&phi, &phid).jacobian.column(0).dot(friction)
+    }
+
+    /// The reduced evaluation (coordinates φ2, φ3) of the full one at t.
+    #[inline(always)]
+    fn reduce(&self, t: f64, full: Evaluation<3, 4>) -> Evaluation<2, 4> {
+        let (mass, force) = self.reduced(t, &full.mass, &full.force);
+        let crank_column = full.gap_jacobian.column(0);
+        let gap_bias = if self.speed.is_held() { full.gap_bias } else { full.gap_bias + crank_column * self.acceleration(t) };
+        Evaluation {
+            mass,
+            force,
+            gap: full.gap,
+            gap_jacobian: Matrix4x2::from_columns(&[full.gap_jacobian.column(1), full.gap_jacobian.column(2)]),
+            gap_time_rate: crank_column * self.speed.at(t),
+            gap_bias,
+        }
     }
 
     /// The rod and piston rows of the full M and f at t, the crank's angular acceleration ω̇ moved
@@ -263,18 +315,15 @@ impl PrescribedCrank {
 
 impl System<2, 4> for PrescribedCrank {
     fn evaluate(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
-        let full = self.evaluate_full(t, q, qd);
-        let (mass, force) = self.reduced(t, &full.mass, &full.force);
-        let crank_column = full.gap_jacobian.column(0);
-        let gap_bias = if self.speed.is_held() { full.gap_bias } else { full.gap_bias + crank_column * self.acceleration(t) };
-        Evaluation {
-            mass,
-            force,
-            gap: full.gap,
-            gap_jacobian: Matrix4x2::from_columns(&[full.gap_jacobian.column(1), full.gap_jacobian.column(2)]),
-            gap_time_rate: crank_column * self.speed.at(t),
-            gap_bias,
-        }
+        self.reduce(t, self.evaluate_full(t, q, qd))
+    }
+
+    /// Keeps the crank row for the point's drive torque.
+    fn evaluate_point(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
+        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
+        let full = self.engine.evaluate(t, &phi, &phid, 0.0, crank);
+        self.point_row.set(self.row_key(t, &phi, &phid, &crank), CrankRow::of(&full));
+        self.reduce(t, full)
     }
 
     fn inertia_and_force(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Matrix2<f64>, Vector2<f64>) {
@@ -416,6 +465,23 @@ mod tests {
                 let fresh = PrescribedCrank::new(sys.engine.clone(), 0.1, 0.0, speed);
                 assert_eq!(sys.evaluate(t, &q, &qd), fresh.evaluate(t, &q, &qd), "t {t}, held {held}, speed {speed}");
             }
+        }
+    }
+
+    /// The drive torque from the row a point's evaluation kept is the one computed afresh, also
+    /// after the pressure and the speed changed at the same state.
+    #[test]
+    fn the_point_row_never_changes_a_drive_torque() {
+        let (t, q, qd, qdd) = (0.013, Vector2::new(-0.05, 0.0007), Vector2::new(-28.0, 3.0), Vector2::new(-3000.0, 50.0));
+        let forces = (Vector4::new(120.0, 0.0, 0.0, 35.0), Vector4::new(3.0, 0.0, 0.0, -1.0));
+        let mut sys = ramping();
+        for (pressure, speed) in [(2e6, 125.66), (5e6, 125.66), (5e6, 80.0)] {
+            sys.engine.hold_pressure(InputPolynomial { time: 0.01, value: pressure, slope: 4e8, curvature: 0.0 });
+            sys.hold_speed(InputPolynomial { time: 0.01, value: speed, slope: 3000.0, curvature: 0.0 });
+            let fresh = PrescribedCrank { point_row: LastValue::default(), ..sys.clone() };
+            assert_eq!(sys.evaluate_point(t, &q, &qd), fresh.evaluate(t, &q, &qd));
+            let torque = sys.drive_torque(t, (&q, &qd, &qdd), (&forces.0, &forces.1));
+            assert_eq!(torque.to_bits(), fresh.drive_torque(t, (&q, &qd, &qdd), (&forces.0, &forces.1)).to_bits(), "{pressure} {speed}");
         }
     }
 

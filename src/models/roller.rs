@@ -73,7 +73,7 @@ impl RollerSystem {
 
 impl System<1, 2> for RollerSystem {
     fn evaluate(&self, t: f64, q: &Vector1<f64>, qd: &Vector1<f64>) -> Evaluation<1, 2> {
-        let at = self.last_angle.get_or(t, || self.mechanism.at(t));
+        let at = self.last_angle.get_or([t], || self.mechanism.at(t));
         let limit = at.psi_max(self.rho);
         let force = at.forcing(self.lambda) - self.lambda * qd[0] - at.stiffness() * q[0];
         Evaluation {
@@ -110,6 +110,9 @@ pub struct Roller {
     impulse_work: f64,
     /// Whole turns (2π) taken off the stepper's crank angle (`keep_angle_bounded`).
     turns: f64,
+    /// The time and crank angle before the last point served from the step ahead (`serve_again`).
+    #[serde(skip)]
+    served_from: Option<(f64, f64)>,
 }
 
 fn require(ok: bool, name: &str, range: &str) -> Result<(), ModelError> {
@@ -180,12 +183,41 @@ impl Roller {
     /// of them off (the model has period 2π in it): left to grow, its round-off reaches the gaps
     /// near the event tolerance (θ ≈ 6e6 rad, ulp 1e-9, after 10⁶ revolutions).
     fn keep_angle_bounded(&mut self) -> Result<(), ModelError> {
-        let turns = (self.stepper.time() / (2.0 * PI * WRAP_TURNS)).floor() * WRAP_TURNS;
+        let turns = self.turns_to_take_off();
         if turns != 0.0 {
             self.stepper.shift(-2.0 * PI * turns, &SVector::zeros()).map_err(self.error_now())?;
             self.turns += turns;
         }
         Ok(())
+    }
+
+    /// The whole turns `keep_angle_bounded` would take off the crank angle now.
+    fn turns_to_take_off(&self) -> f64 {
+        (self.stepper.time() / (2.0 * PI * WRAP_TURNS)).floor() * WRAP_TURNS
+    }
+
+    /// The crank speed the inputs hold over a step, refused unless finite, positive and without
+    /// derivatives (the thesis's equations are in crank angle at constant speed).
+    fn held_speed(inputs: &Inputs, derivatives: &InputDerivatives) -> Result<f64, ModelError> {
+        if derivatives.crank_speed != [0.0; 2] {
+            return Err(ModelError(format!(
+                "model_variant 2 holds crank_speed over a step (its equations are in crank angle at constant speed): \
+                 derivatives {:?} refused",
+                derivatives.crank_speed
+            )));
+        }
+        let omega = inputs.crank_speed;
+        if !(omega.is_finite() && omega > 0.0) {
+            return Err(ModelError(format!("model_variant 2: crank_speed must be finite and > 0, got {omega}")));
+        }
+        Ok(omega)
+    }
+
+    /// The crank angle at `t_end` at the held speed, and a core error's time on the engine's clock
+    /// from the current time on.
+    fn angle_and_clock(&self, t_end: f64) -> (f64, impl Fn(DynamicsError) -> ModelError) {
+        let (theta_start, now, omega) = (self.stepper.time(), self.time, self.crank_speed);
+        (theta_start + omega * (t_end - now), move |e| core_error(e, |theta| now + (theta - theta_start) / omega))
     }
 
     fn engine_event(&self, event: &Event<1, 2>, theta_start: f64) -> EngineEvent {
@@ -270,6 +302,7 @@ impl EngineModel for Roller {
             time: start_time,
             impulse_work: 0.0,
             turns: 0.0,
+            served_from: None,
         })
     }
 
@@ -282,17 +315,7 @@ impl EngineModel for Roller {
         t_end: f64,
         events: &mut Vec<EngineEvent>,
     ) -> Result<(), ModelError> {
-        if derivatives.crank_speed != [0.0; 2] {
-            return Err(ModelError(format!(
-                "model_variant 2 holds crank_speed over a step (its equations are in crank angle at constant speed): \
-                 derivatives {:?} refused",
-                derivatives.crank_speed
-            )));
-        }
-        let omega = inputs.crank_speed;
-        if !(omega.is_finite() && omega > 0.0) {
-            return Err(ModelError(format!("model_variant 2: crank_speed must be finite and > 0, got {omega}")));
-        }
+        let omega = Self::held_speed(inputs, derivatives)?;
         if t_end <= self.time {
             return Ok(());
         }
@@ -300,16 +323,44 @@ impl EngineModel for Roller {
         self.keep_angle_bounded()?;
         let theta_start = self.stepper.time();
         self.stepper.clear_events();
-        let now = self.time;
-        self.stepper
-            .advance(theta_start + omega * (t_end - now))
-            .map_err(|e| core_error(e, |theta| now + (theta - theta_start) / omega))?;
+        let (theta_end, clock) = self.angle_and_clock(t_end);
+        self.stepper.advance(theta_end).map_err(clock)?;
         events.extend(self.stepper.events().iter().map(|e| self.engine_event(e, theta_start)));
         let system = self.stepper.system();
         self.impulse_work += self.stepper.events().iter().map(|e| system.impulse_work(e)).sum::<f64>() * self.energy_scale();
         self.stepper.clear_events();
         self.time = t_end;
         Ok(())
+    }
+
+    /// With the crank speed held as it is, no turns to take off and the step ahead past `t_end`,
+    /// `advance_interpolated` would only have the stepper serve the point.
+    fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
+        let omega = match Self::held_speed(inputs, derivatives) {
+            Ok(omega) => omega,
+            Err(e) => return Some(Err(e)),
+        };
+        let (theta_end, clock) = self.angle_and_clock(t_end);
+        if !(omega == self.crank_speed && t_end > self.time && self.turns_to_take_off() == 0.0 && self.stepper.serves(theta_end)) {
+            return None;
+        }
+        let before = (self.time, self.stepper.time());
+        let served = self.stepper.serve(theta_end).map_err(clock);
+        if served.is_ok() {
+            (self.time, self.served_from) = (t_end, Some(before));
+        }
+        Some(served)
+    }
+
+    fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {
+        match self.served_from {
+            Some((time, theta)) if time == t => {
+                self.stepper.serve(theta).map_err(|e| core_error(e, |_| t))?;
+                self.time = time;
+                Ok(())
+            }
+            _ => Err(ModelError(format!("model_variant 2: no point served from t = {t} s to read again"))),
+        }
     }
 
     fn write_outputs(&self, out: &mut Outputs) {
