@@ -72,7 +72,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                         a1: e.acc,
                     });
                     let (q, v) = dense.at(t);
-                    if w != Watch::Multiplier {
+                    // With friction the normal forces depend on the tangential ones: the whole law.
+                    if w != Watch::Multiplier || friction_of(sys).is_some() {
                         return Ok(sample(sys, t, q, v, contacts)?.watched(i, w));
                     }
                     let lambda = acceleration(&sys.evaluate(t, &q, &v), t, contacts.held)?.1[i];

@@ -9,9 +9,10 @@ const DESIGNS: u64 = 250;
 
 /// Designs beyond the first `DESIGNS` that a larger sweep found failing once, kept here: slider 5223,
 /// a corner at rest that the motion closes again before it lifts beyond ε_h; rubbing engine 2814,
-/// a corner slipping back for less than a scan sample before it sticks. (Rubbing engine 10362 has
-/// a test of its own, below.)
-const FOUND_BY_LARGER_SWEEPS: [u64; 2] = [5223, 2814];
+/// a corner slipping back for less than a scan sample before it sticks; rubbing engine 34815, a
+/// slipping corner's release, whose normal force friction changes. (Rubbing engine 10362 has a
+/// test of its own, below.)
+const FOUND_BY_LARGER_SWEEPS: [u64; 3] = [5223, 2814, 34815];
 
 fn failures(make: fn(&mut Random) -> Design, check: impl Fn(&Design, &Finished) -> Result<(), String>) -> Vec<String> {
     (0..DESIGNS)
