@@ -67,8 +67,8 @@ const MAX_ITERATIONS: usize = 200;
 /// `rising`: `g` is within `tol` of zero at `t0` but increasing (a constraint closed and
 /// separating, e.g. just after an impact, or a slip just started from rest); a crossing then lies
 /// after `t0` even if the first sample is below `−tol` (a flight or a slip shorter than a sample),
-/// so the sample interval is halved towards `t0` until `g` is above `tol` there. Without this the event would be reported at `t0`, where there is
-/// nothing to resolve, again and again.
+/// so the sample interval is halved towards `t0` until `g` is above `tol` there. Without this the
+/// event would be reported at `t0`, where there is nothing to resolve, again and again.
 pub(crate) fn first_crossing<E>(
     mut g: impl FnMut(f64) -> Result<f64, E>,
     (t0, g0): (f64, f64),

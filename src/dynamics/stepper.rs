@@ -308,8 +308,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.locator = locator;
     }
     /// Bounds the events handled while the time advances by less than `ACCUMULATION_WINDOW`
-    /// nominal steps (default `DEFAULT_EVENT_BUDGET`); beyond it `advance` returns `DynamicsError::EventBudget` instead of
-    /// spinning.
+    /// nominal steps (default `DEFAULT_EVENT_BUDGET`); beyond it `advance` returns
+    /// `DynamicsError::EventBudget` instead of spinning.
     pub fn set_event_budget(&mut self, events: usize) {
         self.event_budget = events;
     }
