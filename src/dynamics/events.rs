@@ -85,16 +85,21 @@ pub(crate) fn first_crossing<E>(
             (t, g(t)?)
         };
         if gt < -tol && positive.is_none() && rising {
+            // `(t, gt)` stays the earliest point found below `−tol`: if `g` never rises above `tol`,
+            // the crossing starts at `t0` after all.
+            let mut mid = t;
             for _ in 0..MAX_ITERATIONS {
-                let mid = t0 + 0.5 * (t - t0);
-                if mid <= t0 || mid >= t {
+                mid = t0 + 0.5 * (mid - t0);
+                if mid <= t0 {
                     break;
                 }
                 let g_mid = g(mid)?;
                 if g_mid > tol {
                     return Ok(Some(Start::Within(Bracket { lo: mid, g_lo: g_mid, hi: t, g_hi: gt })));
                 }
-                (t, gt) = (mid, g_mid);
+                if g_mid < -tol {
+                    (t, gt) = (mid, g_mid);
+                }
             }
         }
         if gt < -tol {
@@ -248,5 +253,15 @@ mod tests {
             Some(Start::Within(b)) => assert!(b.lo > 0.0 && b.g_lo > 1e-12 && b.hi > 0.01, "{b:?}"),
             other => panic!("{other:?}"),
         }
+    }
+
+    /// Rising at the start but turning back before it lifts beyond the tolerance (apex 2.5e-13
+    /// above zero), then below it: no bracket to locate, so the crossing is at the start, not
+    /// missed.
+    #[test]
+    fn a_rise_below_the_tolerance_then_a_fall_is_a_crossing_at_the_start() {
+        let f = |t: f64| 1e-6 * t - 1.0 * t * t;
+        let found = first_crossing(|t| Ok::<_, Infallible>(f(t)), (0.0, f(0.0)), (1e-5, f(1e-5)), 1e-12, true).unwrap();
+        assert_eq!(found, Some(Start::Immediate));
     }
 }

@@ -94,7 +94,15 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 let tol = self.tolerance(w);
                 let e = located.as_ref().map_or(step_end, |l| &l.0);
                 let (g0, g1) = (s0.watched(i, w), e.watched(i, w));
-                let dip = w == Watch::Gap && s0.hd[i] < 0.0 && e.hd[i] > 0.0 && g0.min(g1) < 2.0 * (e.t - s0.t) * -s0.hd[i];
+                // A gap rising at the step's end may have dipped inside it: one falling at the start
+                // within reach of the wall, or one rising at the start so slowly against its
+                // deceleration that it turns within the step at a height its fall then exceeds.
+                let dt = e.t - s0.t;
+                let (hd0, hdd0) = (s0.hd[i], s0.hdd[i]);
+                let dip = w == Watch::Gap
+                    && e.hd[i] > 0.0
+                    && ((hd0 < 0.0 && g0.min(g1) < 2.0 * dt * -hd0)
+                        || (hd0 >= 0.0 && hdd0 < 0.0 && hd0 < -hdd0 * dt && g0 + hd0 * hd0 / (-2.0 * hdd0) < -hdd0 * dt * dt));
                 if g1 >= -tol && !dip {
                     continue;
                 }
@@ -105,7 +113,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                             // A slip the law just started from rest within ε_ḣ: its direction
                             // is that of γ̇, so it grows before it can reverse.
                             Watch::Slip(s) => g0 <= tol && s * self.slip_rate(s0, i) > 0.0,
-                            Watch::Multiplier | Watch::Stick(_) => false,
+                            // A held constraint pulling at the start was kept on the trend of its
+                            // force (a tie, or a flight below the event resolution): it grows first.
+                            Watch::Multiplier => g0 < 0.0,
+                            Watch::Stick(_) => false,
                         };
                         events::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (e.t, g1), tol, rising)?
                     }

@@ -263,7 +263,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     ///    slips which way;
     /// 3. projection of `q` and `q̇` onto the new active set, which becomes the held set.
     ///
-    /// Constraints in `hold` at rest (`ḣ < ε_ḣ`) stay in contact whatever the sliding law says.
+    /// Constraints in `hold` (a flight the motion ends below the event resolution) stay in contact
+    /// whatever the sliding law says, their `ḣ` put to zero, unless an impact sent them off.
     /// `known`: the system's evaluation at the current state, if the caller has it.
     pub(super) fn settle(&mut self, closed: Set, hold: Set, known: Option<Evaluation<N, M>>) -> Result<(), DynamicsError> {
         self.event_ahead = None;
@@ -301,10 +302,18 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 impacted |= approaching;
             }
 
-            let mut candidates = closed & select::<M>(|i| hd[i] < opts.velocity_tolerance);
+            let mut candidates = closed & ((hold & !impacted) | select::<M>(|i| hd[i] < opts.velocity_tolerance));
             let contacts = loop {
                 let (contacts, acc) = self.sliding_law((t, &q, &v), &ev, &frame, candidates)?;
-                let contacts = Contacts { held: contacts.held | (hold & candidates), ..contacts };
+                // A held one the law would open slips the way it moves along the surface.
+                let forced = hold & candidates & !contacts.held;
+                let backward = if forced != 0 && friction_of(&self.system).is_some() {
+                    let slip = self.system.tangents(t, &q, &v).slip(&v);
+                    forced & select::<M>(|i| slip[i] < 0.0)
+                } else {
+                    0
+                };
+                let contacts = Contacts { held: contacts.held | forced, back: contacts.back | backward, ..contacts };
                 let hdd = Frame::gap_acceleration(&ev, &acc);
                 let zeno = closed & !candidates & select::<M>(|i| hd[i] > 0.0 && hdd[i] < 0.0 && hd[i] * hd[i] < -2.0 * zeno_apex * hdd[i]);
                 if zeno == 0 {

@@ -10,9 +10,11 @@ const DESIGNS: u64 = 250;
 /// Designs beyond the first `DESIGNS` that a larger sweep found failing once, kept here: slider 5223,
 /// a corner at rest that the motion closes again before it lifts beyond ε_h; rubbing engine 2814,
 /// a corner slipping back for less than a scan sample before it sticks; rubbing engine 34815, a
-/// slipping corner's release, whose normal force friction changes. (Rubbing engine 10362 has a
-/// test of its own, below.)
-const FOUND_BY_LARGER_SWEEPS: [u64; 3] = [5223, 2814, 34815];
+/// slipping corner's release, whose normal force friction changes; rubbing engine 92086, a corner
+/// released at a dead centre that the motion closes again before it lifts beyond ε_h; rubbing
+/// engines 81325 and 95532, a corner rising off the liner that turns and touches it again within
+/// one step. (Rubbing engine 10362 has a test of its own, below.)
+const FOUND_BY_LARGER_SWEEPS: [u64; 6] = [5223, 2814, 34815, 81325, 92086, 95532];
 
 fn failures(make: fn(&mut Random) -> Design, check: impl Fn(&Design, &Finished) -> Result<(), String>) -> Vec<String> {
     (0..DESIGNS)
@@ -73,4 +75,22 @@ fn a_rattle_pumped_by_friction_runs_at_every_communication_step() {
     };
     let (coarse, fine) = (fastest(1e-3), fastest(1e-4));
     assert!(coarse > 100.0 && (coarse / fine - 1.0).abs() < 1e-6, "fastest impacts {coarse} and {fine} m/s");
+}
+
+/// Rubbing engine 95532: corner K2 rises off the liner at 5 µm/s against a deceleration of
+/// 5.8 m/s², turns 10 pm above it and comes back within one step, which ends with the corner rising
+/// again: the touch is found inside the step, so the motion is the same at 1 ms, 0.1 ms and 10 µs
+/// communication steps (before, a served point inside the dip found the corner 0.27 nm in the
+/// liner at 0.1 ms, and the other steps missed the touch, their fastest impacts 3e-4 apart).
+#[test]
+fn a_touch_inside_one_step_is_found_at_every_communication_step() {
+    let design = rubbing_engine(&mut Random::new(95532));
+    let impacts = |step: f64| {
+        let finished = run(&Design { step, ..design.clone() }).unwrap_or_else(|e| panic!("at {step} s steps: {e}"));
+        let fastest = finished.events.iter().map(|e| e.normal_velocity_before.abs()).fold(0.0, f64::max);
+        (finished.events.len(), fastest)
+    };
+    let (coarse, fine, finest) = (impacts(1e-3), impacts(1e-4), impacts(1e-5));
+    assert!(coarse.0 == fine.0 && fine.0 == finest.0, "events {coarse:?} {fine:?} {finest:?}");
+    assert!((coarse.1 / finest.1 - 1.0).abs() < 1e-7 && (fine.1 / finest.1 - 1.0).abs() < 1e-7, "{coarse:?} {fine:?} {finest:?}");
 }
