@@ -97,13 +97,14 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 // A gap rising at the step's end may have dipped inside it: one falling at the start
                 // within reach of the wall, or one rising at the start so slowly against its
                 // deceleration that it turns within the step at a height its fall then exceeds.
-                let dt = e.t - s0.t;
-                let (hd0, hdd0) = (s0.hd[i], s0.hdd[i]);
-                let dip = w == Watch::Gap
-                    && e.hd[i] > 0.0
-                    && ((hd0 < 0.0 && g0.min(g1) < 2.0 * dt * -hd0)
-                        || (hd0 >= 0.0 && hdd0 < 0.0 && hd0 < -hdd0 * dt && g0 + hd0 * hd0 / (-2.0 * hdd0) < -hdd0 * dt * dt));
-                if g1 >= -tol && !dip {
+                let dip = || {
+                    let (dt, hd0, hdd0) = (e.t - s0.t, s0.hd[i], s0.hdd[i]);
+                    w == Watch::Gap
+                        && e.hd[i] > 0.0
+                        && ((hd0 < 0.0 && g0.min(g1) < 2.0 * dt * -hd0)
+                            || (hd0 >= 0.0 && hdd0 < 0.0 && hd0 < -hdd0 * dt && g0 + hd0 * hd0 / (-2.0 * hdd0) < -hdd0 * dt * dt))
+                };
+                if g1 >= -tol && !dip() {
                     continue;
                 }
                 let start = match self.locator {
