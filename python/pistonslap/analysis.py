@@ -14,7 +14,6 @@ time the crank angle. Every impact comes from the impact log; its normal speed v
 rate |psi' - psi_wall'| times l*Lambda*Omega, from which psi' at impact is recovered.
 """
 
-import argparse
 import csv
 import itertools
 import os
@@ -27,6 +26,7 @@ import numpy as np
 import pyarrow.parquet as pq
 
 from .fmu import fmu_path, simulate_with_events
+from .refusal import Parser, Refusal, check_start_values, number
 from .response import ALPHA, BETA, CHAOTIC_TRANSIENT, CRANK_CYCLE, XI, Response, Run, classify, impacts_from_log
 
 #: Piston diameter of the thesis runs; the bore adds the clearance 2*rho (only their difference matters).
@@ -363,8 +363,24 @@ def cross_check(clearance, stop_time=0.05, min_speed=2e-3):
     return tuple(_cross_sequence(run, (1,), min_speed) for run in runs)
 
 
+def check(args):
+    """Refuses arguments no run can take, before anything runs; a case's parameters the FMU checks itself."""
+    for name in ("transient", "cycles"):
+        if getattr(args, name, 1) < (0 if name == "transient" else 1):
+            raise Refusal(f"--{name} = {getattr(args, name)}: give a whole number >= {0 if name == 'transient' else 1}")
+    if args.command == "case":
+        check_start_values(thesis_start_values(args.lam, args.rho, args.e, args.forcing), fmu_path())
+    elif args.command == "crosscheck":
+        for clearance in args.clearance:
+            number(clearance, "--clearance", low=0, low_open=True)
+    elif args.command == "forces" and not args.forces_tool.is_file():
+        raise Refusal(f"--forces-tool {args.forces_tool}: no such file (cargo build --release --example roller_forces)")
+    elif args.command == "thesis" and args.scheduler is None and args.workers < 1:
+        raise Refusal(f"--workers = {args.workers}: give at least 1")
+
+
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser = Parser(prog="pistonslap analysis", description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
     case = sub.add_parser("case", help="one run: impacts, Poincare section, impact profile and spectra")
     case.add_argument("--lam", type=float, required=True, help="damping parameter lambda")
@@ -389,6 +405,7 @@ def main(argv=None):
     for p in sub.choices.values():
         p.add_argument("--out", type=Path, default=Path("out/thesis"), help="output folder")
     args = parser.parse_args(argv)
+    check(args)
 
     if args.command == "case":
         run = simulate_case(args.lam, args.rho, args.e, args.forcing, args.transient + args.cycles)

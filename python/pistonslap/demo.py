@@ -6,13 +6,13 @@
 Options not given keep the FMU's defaults (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
 """
 
-import argparse
 from pathlib import Path
 
 import fmpy
 import numpy as np
 
 from .fmu import CYCLE, fmu_path, last_cycle, simulate_with_events
+from .refusal import Parser, Refusal, check_start_values, number
 from .tables import cycle_metrics, write_table
 
 #: Crank angle between samples (and communication points), deg: the FMU's default experiment samples every
@@ -23,7 +23,7 @@ MAGNIFICATION = 200
 
 
 def _parser():
-    parser = argparse.ArgumentParser(prog="pistonslap demo", description=__doc__.splitlines()[0])
+    parser = Parser(prog="pistonslap demo", description=__doc__.splitlines()[0])
     parser.add_argument("--out", type=Path, default=Path("out"), help="output folder (default: out)")
     parser.add_argument("--rpm", type=float, help="crank speed, rpm (default 1200)")
     parser.add_argument("--peak-pressure", type=float, help="peak of the built-in gas pressure curve, bar (default 80)")
@@ -33,6 +33,17 @@ def _parser():
     parser.add_argument("--cycles", type=int, default=2, help="engine cycles (720° each) to simulate (default 2)")
     parser.add_argument("--slap-threshold", type=float, help="impacts faster than this count as slaps, mm/s (default 10)")
     return parser
+
+
+def check(args):
+    """Refuses options no run can take before anything runs (the FMU checks the rest, `check_start_values`)."""
+    if args.rpm is not None:
+        number(args.rpm, "--rpm", low=0, high=30000, low_open=True, unit=" rpm", meaning="the crank speed")
+    if args.clearance is not None:
+        number(args.clearance, "--clearance", low=0, low_open=True, unit=" µm",
+               meaning="the diametral clearance c = D − d (bore minus piston diameter)")
+    if args.cycles < 1:
+        raise Refusal(f"--cycles = {args.cycles}: give a whole number of engine cycles >= 1")
 
 
 def start_values(args, defaults):
@@ -62,13 +73,15 @@ def case_title(p):
 
 def main(argv=None):
     args = _parser().parse_args(argv)
+    check(args)
     try:
         from . import plots
     except ImportError as e:
-        raise SystemExit(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
+        raise Refusal(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
     md = fmpy.read_model_description(str(fmu_path()))
     defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
     values = start_values(args, defaults)
+    check_start_values(values, fmu_path(), md)
     p = dict(defaults, **values)
     omega = p["crank_speed"]
     interval = np.radians(SAMPLE_DEG) / omega

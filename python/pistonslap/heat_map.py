@@ -5,7 +5,6 @@ Points on a full (x, y) grid fill cells; scattered points (a Latin hypercube) ar
 (status not ok) and unclassified ones are grey.
 """
 
-import argparse
 from pathlib import Path
 
 import matplotlib.pyplot as plt
@@ -14,6 +13,7 @@ import pyarrow.compute as pc
 import pyarrow.parquet as pq
 from matplotlib.colors import ListedColormap
 
+from .refusal import Parser, Refusal, number
 from .sweep_point import METRICS
 
 #: The response classes in the order of their colours.
@@ -23,7 +23,7 @@ _FAILED = "lightgrey"
 
 
 def _parser():
-    parser = argparse.ArgumentParser(prog="pistonslap map", description=__doc__.splitlines()[0])
+    parser = Parser(prog="pistonslap map", description=__doc__.splitlines()[0])
     parser.add_argument("folder", type=Path, help="the sweep's folder (holding results.parquet)")
     parser.add_argument("--x", required=True, help="swept variable along x")
     parser.add_argument("--y", required=True, help="swept variable along y")
@@ -38,8 +38,8 @@ def _select(table, where):
     for condition in where:
         name, _, value = condition.partition("=")
         if name not in table.column_names:
-            raise SystemExit(f"--where {condition}: no column {name!r}")
-        table = table.filter(pc.equal(table[name], pc.cast(float(value), table[name].type)))
+            raise Refusal(f"--where {condition}: no column {name!r}")
+        table = table.filter(pc.equal(table[name], pc.cast(number(value, f"--where {condition}"), table[name].type)))
     return table
 
 
@@ -55,9 +55,9 @@ def heat_map(table, x, y, metric, path, title):
     """Writes the map of `metric` (a METRICS name or 'response') over columns `x`, `y` of `table` to `path`."""
     for name in (x, y):
         if name not in table.column_names:
-            raise SystemExit(f"no swept variable {name!r} in the results (columns: {', '.join(table.column_names)})")
+            raise Refusal(f"no swept variable {name!r} in the results (columns: {', '.join(table.column_names)})")
     if metric != "response" and metric not in METRICS:
-        raise SystemExit(f"--metric {metric}: give one of {', '.join(METRICS)} or response")
+        raise Refusal(f"--metric {metric}: give one of {', '.join(METRICS)} or response")
     xs, ys = table[x].to_numpy().astype(float), table[y].to_numpy().astype(float)
     failed = np.array([s != "ok" for s in table["status"].to_pylist()])
     if metric == "response":
@@ -79,7 +79,7 @@ def heat_map(table, x, y, metric, path, title):
     elif len(cells) == len(xs):
         artist = ax.scatter(xs, ys, c=np.ma.masked_invalid(values), cmap=cmap, plotnonfinite=True, s=60, **norm)
     else:
-        raise SystemExit(f"several points share an ({x}, {y}) pair: other variables vary; pick one value of each "
+        raise Refusal(f"several points share an ({x}, {y}) pair: other variables vary; pick one value of each "
                          "with --where NAME=VALUE")
     bar = fig.colorbar(artist, ax=ax)
     if metric == "response":
@@ -100,7 +100,7 @@ def main(argv=None):
     args = _parser().parse_args(argv)
     results = args.folder / "results.parquet"
     if not results.exists():
-        raise SystemExit(f"{results} is missing: run the sweep (pistonslap sweep SPEC --out ...) into it first")
+        raise Refusal(f"{results} is missing: run the sweep (pistonslap sweep SPEC --out ...) into it first")
     table = _select(pq.read_table(results), args.where)
     out = args.out or args.folder / f"{args.metric}_{args.x}_{args.y}.png"
     condition = f" ({', '.join(args.where)})" if args.where else ""

@@ -5,7 +5,6 @@ and keeps; a task carries only a batch of points and the spec's fixed settings, 
 writes each finished batch as a parquet part, so a rerun runs only the points not recorded yet.
 """
 
-import argparse
 import math
 import os
 import sys
@@ -17,7 +16,10 @@ from distributed import Client, LocalCluster, as_completed, get_worker
 from distributed.diagnostics.plugin import WorkerPlugin
 from tqdm import tqdm
 
+import pyarrow.parquet as pq
+
 from .fmu import fmu_path
+from .refusal import Parser, Refusal
 from .sweep_point import run_point
 from .sweep_spec import SpecError, load
 from .sweep_store import Store
@@ -74,7 +76,7 @@ def run(spec, out, client, fmu=None, batch_size=None, progress=True):
 
 
 def _parser():
-    parser = argparse.ArgumentParser(prog="pistonslap sweep", description=__doc__.splitlines()[0])
+    parser = Parser(prog="pistonslap sweep", description=__doc__.splitlines()[0])
     parser.add_argument("spec", type=Path, help="the sweep's TOML spec")
     where = parser.add_mutually_exclusive_group()
     where.add_argument("--workers", type=int, default=os.cpu_count(),
@@ -92,14 +94,26 @@ def connect(workers, scheduler):
     return Client(LocalCluster(n_workers=workers, threads_per_worker=1, processes=True, dashboard_address=None))
 
 
+def summary(path, ran):
+    """One line on the results at `path`: points, run now, failed, and the first failure's point and message."""
+    table = pq.read_table(path, columns=["point", "status"])
+    failed = [(p, s) for p, s in zip(table["point"].to_pylist(), table["status"].to_pylist()) if s != "ok"]
+    line = f"wrote {path} ({table.num_rows} points, {ran} run now, {len(failed)} failed"
+    return line + (f"; first failure: point {failed[0][0]}: {failed[0][1]})" if failed else ")")
+
+
 def main(argv=None):
     args = _parser().parse_args(argv)
     if args.batch is not None and args.batch < 1:
-        raise SystemExit("--batch: give at least 1")
+        raise Refusal(f"--batch = {args.batch}: give at least 1")
+    if args.scheduler is None and args.workers < 1:
+        raise Refusal(f"--workers = {args.workers}: give at least 1")
+    if not args.spec.is_file():
+        raise Refusal(f"{args.spec}: no such spec file")
     try:
         spec = load(args.spec, fmpy.read_model_description(str(fmu_path())))
+        with connect(args.workers, args.scheduler) as client:
+            path, ran = run(spec, args.out, client, batch_size=args.batch)
     except SpecError as e:
-        raise SystemExit(f"{args.spec}: {e}") from None
-    with connect(args.workers, args.scheduler) as client:
-        path, ran = run(spec, args.out, client, batch_size=args.batch)
-    print(f"wrote {path} ({len(spec.points)} points, {ran} run now)")
+        raise Refusal(f"{args.spec}: {e}") from None
+    print(summary(path, ran))

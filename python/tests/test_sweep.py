@@ -14,7 +14,7 @@ import pytest
 from distributed import Client, LocalCluster
 
 from pistonslap.fmu import CYCLE, simulate
-from pistonslap.sweep import run
+from pistonslap.sweep import run, summary
 from pistonslap.sweep_spec import SpecError, parse
 from pistonslap.sweep_store import Store
 
@@ -44,6 +44,9 @@ def test_grid_rows_are_the_direct_runs(client, model_description, tmp_path):
     path, ran = run(spec, tmp_path, client, batch_size=1, progress=False)
     rows = Store(tmp_path, spec).read().to_pylist()
     assert ran == 6 and [r["point"] for r in rows] == list(range(6)) and path.exists()
+    # points 4 and 5 have the narrow bore; the summary counts them and quotes the FMU's refusal of the first
+    assert summary(path, ran).startswith(f"wrote {path} (6 points, 6 run now, 2 failed; first failure: point 4: ")
+    assert "bore" in summary(path, ran).split("point 4: ")[1]
     for row in rows:
         assert (row["bore"], row["restitution"]) == (spec.points[row["point"]]["bore"], spec.points[row["point"]]["restitution"])
         if row["bore"] < 0.08:
@@ -133,5 +136,5 @@ def test_the_command_refuses_a_bad_spec_before_starting_a_cluster(tmp_path):
     (tmp_path / "bad.toml").write_text("name = 'bad'\ncycles = 4\n[grid]\nrestitution = [2.0]\n")
     done = subprocess.run([sys.executable, "-m", "pistonslap.cli", "sweep", str(tmp_path / "bad.toml"), "--out",
                            str(tmp_path)], capture_output=True, text=True, timeout=60)
-    assert done.returncode == 1 and "grid.restitution[0] = 2.0 is outside restitution's range" in done.stderr
+    assert done.returncode == 2 and "grid.restitution[0] = 2.0 is outside restitution's range" in done.stderr
     assert not (tmp_path / "bad").exists()

@@ -1,0 +1,64 @@
+"""Every refusal class of the `pistonslap` commands: exit status 2, exactly one line on stderr naming the cause,
+no traceback; `--debug` shows the traceback instead. The cases are the ones a new user tried (issue 30)."""
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+PISTONSLAP = Path(sys.executable).parent / "pistonslap"
+
+#: (arguments, words the one line must hold), one per refusal class.
+CASES = {
+    "usage error": (["demo", "--rpm", "abc"], ["--rpm", "invalid float"]),
+    "unknown option": (["demo", "--bogus"], ["--bogus"]),
+    "unknown command": (["demos"], ["demos"]),
+    "value out of range before the FMU": (["demo", "--rpm", "0"], ["--rpm", "> 0"]),
+    "negative speed": (["demo", "--rpm=-3000"], ["--rpm", "-3000"]),
+    "no cycle": (["demo", "--cycles", "0"], ["--cycles"]),
+    "negative cycles": (["demo", "--cycles", "-2"], ["--cycles"]),
+    "no clearance": (["demo", "--clearance", "0"], ["--clearance", "diametral"]),
+    "negative clearance": (["demo", "--clearance", "-20"], ["--clearance"]),
+    "FMU refusal": (["demo", "--restitution", "1.5"], ["restitution", "[0, 1]"]),
+    "FMU refusal of the pin offset": (["demo", "--pin-offset", "50"], ["pin_offset"]),
+    "FMU refusal of the threshold": (["demo", "--slap-threshold", "-5"], ["slap_threshold"]),
+    "missing file": (["sweep", "nonexist.toml"], ["nonexist.toml"]),
+    "zero step": (["coupled", "--step", "0"], ["--step"]),
+    "negative step": (["coupled", "--step", "-0.001"], ["--step"]),
+    "step coarser than a fraction of a cycle": (["coupled", "--step", "0.05"], ["--step", "360°", "at most"]),
+    "too few cycles to count": (["coupled", "--cycles", "2"], ["--cycles"]),
+    "missing sweep results": (["map", "nowhere", "--x", "a", "--y", "b", "--metric", "c"], ["results.parquet"]),
+    "analysis FMU refusal": (["analysis", "case", "--lam", "0.05", "--rho", "-1"], ["bore"]),
+}
+
+
+def _run(args, cwd):
+    return subprocess.run([str(PISTONSLAP), *args], cwd=cwd, env=dict(os.environ, MPLBACKEND="Agg"),
+                          capture_output=True, text=True, timeout=120)
+
+
+@pytest.mark.parametrize("case", CASES)
+def test_refusal_is_one_line_and_exit_2(case, tmp_path):
+    args, words = CASES[case]
+    done = _run(args + ["--out", str(tmp_path / "out")] if args[0] == "demo" else args, tmp_path)
+    lines = done.stderr.splitlines()
+    assert done.returncode == 2, (done.returncode, done.stderr)
+    assert len(lines) == 1 and "Traceback" not in done.stderr, done.stderr
+    assert lines[0].startswith("pistonslap"), lines
+    for word in words:
+        assert word in lines[0], (word, lines[0])
+    assert not (tmp_path / "out").exists(), "nothing is written before the arguments are checked"
+
+
+def test_a_bad_spec_is_one_line(tmp_path):
+    spec = tmp_path / "bad.toml"
+    spec.write_text('name = "x"\ncycles = 0\n[grid]\nbore = [0.08008]\n')
+    done = _run(["sweep", str(spec)], tmp_path)
+    assert done.returncode == 2 and len(done.stderr.splitlines()) == 1 and "cycles" in done.stderr, done.stderr
+
+
+def test_debug_shows_the_traceback(tmp_path):
+    done = _run(["--debug", "demo", "--rpm", "0", "--out", str(tmp_path / "out")], tmp_path)
+    assert done.returncode != 0 and "Traceback" in done.stderr and "Refusal" in done.stderr, done.stderr
