@@ -19,7 +19,7 @@ import fmpy
 import numpy as np
 from fmpy.fmi2 import FMU2Slave
 
-from .fmu import CYCLE, fmu_path
+from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, from_firing_tdc
 from .refusal import Parser, Refusal, number
 
 #: The partner FMU the package carries next to PistonSlap.fmu (`make fmu` copies both).
@@ -162,8 +162,9 @@ def energy_per_cycle(rows, first_cycle, last_cycle):
     return (rows["impact_energy_total"][end] - rows["impact_energy_total"][start]) / (last_cycle - first_cycle)
 
 
-def write(rows, out):
-    """`out/coupled.csv` and the plots: pressure and impacts against crank angle, both FMUs' crank angles."""
+def write(rows, out, origin=CENTRED):
+    """`out/coupled.csv` and the plots: pressure and impacts against crank angle from firing TDC (the axis from
+    `origin`, rad: `CENTRED` -360...360°, or 0...720°), both FMUs' crank angles."""
     import matplotlib.pyplot as plt
 
     out = Path(out)
@@ -172,18 +173,20 @@ def write(rows, out):
         writer = csv.writer(f)
         writer.writerow(COLUMNS)
         writer.writerows(rows.tolist())
-    degrees = np.degrees(np.mod(rows["crank_angle"] + CYCLE / 2, CYCLE) - CYCLE / 2)
+    degrees = np.degrees(from_firing_tdc(rows["crank_angle"], origin))
     fig, (ax_p, ax_i) = plt.subplots(2, 1, sharex=True, figsize=(9, 6))
     fig.suptitle(f"PistonSlap driven by EngineCycle: {len(rows) - 1} steps of {rows['time'][1] - rows['time'][0]:g} s, "
                  "every cycle overlaid")
-    # One line per engine cycle: broken where the angle wraps from +360° to -360°.
+    # One line per engine cycle: broken where the angle wraps to the axis' start.
     wraps = np.flatnonzero(np.diff(degrees) < 0) + 1
     ax_p.plot(np.insert(degrees, wraps, np.nan), np.insert(rows["gas_pressure"] / 1e5, wraps, np.nan), lw=1)
     ax_p.set_ylabel("gas pressure (EngineCycle) [bar]")
     hit = rows["impacts_in_step"] > 0
     ax_i.plot(degrees[hit], rows["max_impact_velocity_in_step"][hit], ".", ms=4)
     ax_i.set_ylabel("largest impact velocity in step [m/s]")
-    ax_i.set_xlabel("crank angle from firing TDC [deg]")
+    ax_i.set_xlabel("crank angle [deg]  (0 = firing TDC)")
+    ax_i.set_xlim(np.degrees(origin), np.degrees(origin) + 720)
+    ax_i.set_xticks(np.arange(np.degrees(origin), np.degrees(origin) + 721, 90))
     fig.tight_layout()
     fig.savefig(out / "pressure_and_impacts.png", dpi=120)
     plt.close(fig)
@@ -208,6 +211,8 @@ def main(argv=None):
     parser.add_argument("--step", type=float, default=1e-3,
                         help=f"communication step, s (default 0.001; at most {MAX_STEP_DEG:g}° of crank angle)")
     parser.add_argument("--held", action="store_true", help="hold the inputs over each step (no derivatives)")
+    parser.add_argument("--crank-0-720", action="store_true",
+                        help="draw the crank angle from 0 to 720° (default -360 to 360°; 0 = firing TDC either way)")
     args = parser.parse_args(argv)
     if args.cycles < 3:
         raise Refusal(f"--cycles = {args.cycles}: give at least 3 (the energy per cycle is counted after two)")
@@ -220,7 +225,7 @@ def main(argv=None):
     period = CYCLE / SPEED
     stop = round(args.cycles * period / args.step) * args.step
     rows = run(stop, args.step, derivatives=not args.held)
-    write(rows, args.out)
+    write(rows, args.out, FROM_FIRING_TDC if args.crank_0_720 else CENTRED)
     print(f"{args.out}: {len(rows) - 1} steps, {int(rows['impact_count'][-1])} impacts, "
           f"{energy_per_cycle(rows, 2, args.cycles):.4g} J per cycle after "
           "two cycles")

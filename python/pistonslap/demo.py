@@ -1,7 +1,7 @@
 """Simulates one operating point of the FMU through fmpy and writes CSVs and plots of its last engine cycle.
 
     pistonslap demo [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM] [--restitution E]
-                    [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S]
+                    [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S] [--crank-0-720]
 
 Options not given keep the FMU's defaults (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
 """
@@ -11,9 +11,9 @@ from pathlib import Path
 import fmpy
 import numpy as np
 
-from .fmu import CYCLE, fmu_path, last_cycle, simulate_with_events
+from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate_with_events
 from .refusal import Parser, Refusal, check_start_values, number
-from .tables import cycle_metrics, write_table
+from .tables import cycle_metrics, slap_rows, write_table
 
 #: Crank angle between samples (and communication points), deg: the FMU's default experiment samples every
 #: 5e-5 s, 0.36° at 1200 rpm.
@@ -31,6 +31,8 @@ def _parser():
     parser.add_argument("--restitution", type=float, help="coefficient of restitution (default 0.5)")
     parser.add_argument("--pin-offset", type=float, help="pin offset toward the major-thrust side, mm (default 0)")
     parser.add_argument("--cycles", type=int, default=2, help="engine cycles (720° each) to simulate (default 2)")
+    parser.add_argument("--crank-0-720", action="store_true",
+                        help="draw the crank angle from 0 to 720° (default -360 to 360°; 0 = firing TDC either way)")
     parser.add_argument("--slap-threshold", type=float, help="impacts faster than this count as slaps, mm/s (default 10)")
     return parser
 
@@ -83,10 +85,11 @@ def main(argv=None):
     values = start_values(args, defaults)
     check_start_values(values, fmu_path(), md)
     p = dict(defaults, **values)
-    omega = p["crank_speed"]
+    omega, origin = p["crank_speed"], FROM_FIRING_TDC if args.crank_0_720 else CENTRED
     interval = np.radians(SAMPLE_DEG) / omega
-    # one sample past the last cycle's end, so that its figures are out
-    stop_time = args.cycles * CYCLE / omega + interval
+    # one sample past the last cycle's end, so that its figures are out; with the axis centred on firing TDC, half a
+    # cycle more, so that the last cycle drawn is the one centred on the last firing TDC
+    stop_time = (args.cycles * CYCLE - origin) / omega + interval
 
     args.out.mkdir(parents=True, exist_ok=True)
     result, events = simulate_with_events(log_path=args.out / "impact_log.csv", start_values=values,
@@ -97,20 +100,21 @@ def main(argv=None):
     written = [write_table(args.out / "demo.csv", result, units), args.out / "impact_log.csv",
                write_table(args.out / "cycles.csv", *cycle_metrics(result))]
 
-    cycle, phase = last_cycle(result["crank_angle"])
+    cycle, angle = last_cycle(result["crank_angle"], origin=origin)
     times = result["time"][cycle]
-    # the log's crank angle is already taken mod 4π, i.e. the phase within the cycle
-    in_cycle = events[(events["time"] >= times[0]) & (events["time"] <= times[-1])]
+    window = (events["time"] >= times[0]) & (events["time"] <= times[-1])
+    in_cycle = events[window]
     geometry = (p["bore"], p["piston_diameter"], p["skirt_length"], p["pin_height"])
     half_clearance = (p["bore"] - p["piston_diameter"]) / 2
     written += [
-        plots.piston_motion(phase[cycle], result[cycle], half_clearance, args.out / "piston_motion.png", case),
-        plots.slap(in_cycle, p["slap_threshold"], args.out / "slap.png", case),
-        plots.forces(phase[cycle], result[cycle], args.out / "forces.png", case),
-        plots.piston_positions(phase[cycle], result[cycle], in_cycle, geometry, MAGNIFICATION,
-                               args.out / "piston_positions.png", case),
-        plots.piston_animation(phase[cycle], result[cycle], in_cycle, geometry, MAGNIFICATION,
-                               args.out / "piston_positions.gif", case),
+        plots.piston_motion(angle[cycle], result[cycle], half_clearance, args.out / "piston_motion.png", case, origin),
+        plots.slap(in_cycle, slap_rows(events, p["slap_threshold"])[window], p["slap_threshold"], args.out / "slap.png",
+                   case, origin),
+        plots.forces(angle[cycle], result[cycle], args.out / "forces.png", case, origin),
+        plots.piston_positions(angle[cycle], result[cycle], in_cycle, geometry, MAGNIFICATION,
+                               args.out / "piston_positions.png", case, origin=origin),
+        plots.piston_animation(angle[cycle], result[cycle], in_cycle, geometry, MAGNIFICATION,
+                               args.out / "piston_positions.gif", case, origin=origin),
     ]
     impacts = int((events["kind"] == "impact").sum())
     last = result[-1]

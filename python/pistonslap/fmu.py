@@ -14,7 +14,8 @@ CYCLE = 4 * np.pi
 #: The FMU the package carries: `make fmu` copies the packaged FMU here, and the wheel includes it.
 PACKAGED_FMU = Path(__file__).resolve().parent / "fmu" / "PistonSlap.fmu"
 
-#: Rows of the `impact_log` CSV (SI units; the crank angle also in degrees), in the order of its header.
+#: Rows of the `impact_log` CSV (SI units; the crank angle also in degrees from firing TDC in [-360, 360)), in the
+#: order of its header (the line after the `#` line stating the conventions).
 EVENT_DTYPE = np.dtype([
     ("time", "f8"),
     ("crank_angle", "f8"),
@@ -71,7 +72,7 @@ def simulate_with_events(log_path=None, start_values=None, **kwargs):
 def read_impact_log(path) -> np.ndarray:
     """The `impact_log` CSV as a structured array of `EVENT_DTYPE` (one row per impact, slide or release)."""
     with open(path, newline="") as f:
-        reader = csv.reader(f)
+        reader = csv.reader(line for line in f if not line.startswith("#"))
         header = tuple(next(reader))
         if header != EVENT_DTYPE.names:
             raise ValueError(f"{path}: header {header} is not the impact log's {EVENT_DTYPE.names}")
@@ -94,15 +95,27 @@ def input_signals(time, **signals) -> np.ndarray:
     return table
 
 
-def last_cycle(crank_angle, slack=np.radians(0.1)):
-    """The last complete engine cycle in a record of the accumulated crank angle.
+#: Where an engine cycle's crank-angle axis starts, rad from firing TDC: -2π (the cycle centred on firing TDC,
+#: -360°...360°, as engine people read it) or 0 (0...720°).
+CENTRED, FROM_FIRING_TDC = -2 * np.pi, 0.0
 
-    Returns `(mask, phase)`: which samples lie in it, and the crank angle from the start of their cycle
-    (firing TDC, crank angle 0 mod 4π), in [0, 4π]. A cycle short of its end by less than `slack` counts as complete
-    (the default 125.66 rad/s is a hair under 1200 rpm). A record shorter than one cycle is returned whole.
+
+def from_firing_tdc(crank_angle, origin=CENTRED):
+    """The crank angle (rad, accumulated or within a cycle) from firing TDC, in [origin, origin + 4π)."""
+    return np.mod(np.asarray(crank_angle) - origin, CYCLE) + origin
+
+
+def last_cycle(crank_angle, slack=np.radians(0.1), origin=CENTRED):
+    """The last complete engine cycle in a record of the accumulated crank angle, its axis starting at `origin`
+    (rad from firing TDC, crank angle 0 mod 4π: `CENTRED` -2π or `FROM_FIRING_TDC` 0).
+
+    Returns `(mask, angle)`: which samples lie in it, and their crank angle from firing TDC in [origin, origin + 4π].
+    A cycle short of its end by less than `slack` counts as complete (the default 125.66 rad/s is a hair under
+    1200 rpm). A record shorter than one cycle is returned whole, from its first sample's cycle.
     """
     crank_angle = np.asarray(crank_angle)
-    start = (np.floor((crank_angle[-1] + slack) / CYCLE) - 1) * CYCLE
+    start = (np.floor((crank_angle[-1] + slack - origin) / CYCLE) - 1) * CYCLE + origin
     if start < crank_angle[0] - slack:
-        return np.ones(len(crank_angle), dtype=bool), crank_angle - np.floor(crank_angle[0] / CYCLE) * CYCLE
-    return (crank_angle >= start) & (crank_angle <= start + CYCLE), crank_angle - start
+        start = np.floor((crank_angle[0] - origin) / CYCLE) * CYCLE + origin
+        return np.ones(len(crank_angle), dtype=bool), crank_angle - start + origin
+    return (crank_angle >= start) & (crank_angle <= start + CYCLE), crank_angle - start + origin

@@ -1,8 +1,9 @@
 """Plots of one engine cycle against crank angle, in the style of Awrejcewicz & Kudra (2005) Figs 5-10, and the
 successive piston positions in the bore of their Fig. 7.
 
-Every function takes the samples of one cycle (`phase` = crank angle within the cycle, rad), a `case` title naming
-the operating point, and writes a PNG (the piston positions also an animated GIF). Sides follow the FMU's
+Every function takes the samples of one cycle (`angle` = crank angle from firing TDC, rad, over one cycle from
+`origin`: -2π for the -360...360° axis engine people read, 0 for 0...720°), a `case` title naming the operating
+point, and writes a PNG (the piston positions also an animated GIF). Sides follow the FMU's
 conventions: +x (corners K3, K4) is the major-thrust wall, the one the piston presses on in the power stroke;
 -x (K1, K2) the anti-thrust wall.
 """
@@ -14,18 +15,21 @@ import numpy as np
 from matplotlib.animation import FuncAnimation, PillowWriter
 from matplotlib.patches import Polygon
 
+from .fmu import CENTRED, from_firing_tdc
+
 CORNERS = (1, 2, 3, 4)
 #: (label, corners, colour) of the two walls.
 SIDES = (("major thrust (+x: K3, K4)", (3, 4), "tab:red"), ("anti-thrust (−x: K1, K2)", (1, 2), "tab:blue"))
 
 
-def _axes(rows, title, case):
+def _axes(rows, title, case, origin):
     fig, axes = plt.subplots(rows, 1, sharex=True, figsize=(9, 2.2 * rows + 1.0), squeeze=False)
     axes = axes[:, 0]
     fig.suptitle(f"{title}\n{case}", fontsize="medium")
+    start = np.degrees(origin)
     axes[-1].set_xlabel("crank angle [deg]  (0 = firing TDC)")
-    axes[-1].set_xlim(0, 720)
-    axes[-1].set_xticks(np.arange(0, 721, 90))
+    axes[-1].set_xlim(start, start + 720)
+    axes[-1].set_xticks(np.arange(start, start + 721, 90))
     for ax in axes:
         ax.grid(True, alpha=0.3)
     return fig, axes
@@ -42,18 +46,18 @@ def _save(fig, path):
     return path
 
 
-def piston_motion(phase, result, half_clearance, path, case):
+def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED):
     """Eccentricity of the skirt top and bottom and of the pin, tilt, contact states (a bar per corner while in
     sliding contact), and contact force per corner."""
-    deg = np.degrees(phase)
-    fig, (lateral, tilt, states, forces) = _axes(4, "Piston secondary motion over one engine cycle", case)
+    deg = np.degrees(angle)
+    fig, (lateral, tilt, states, forces) = _axes(4, "Piston secondary motion over one engine cycle", case, origin)
     for name, label, style in (("skirt_top_lateral", "skirt top (K1/K3 level)", "-"),
                                ("skirt_bottom_lateral", "skirt bottom (K2/K4 level)", "-"),
                                ("piston_lateral", "pin", ":")):
         lateral.plot(deg, result[name] * 1e6, style, label=label)
     for sign, (label, _, colour) in zip((1, -1), SIDES):
         lateral.axhline(sign * half_clearance * 1e6, color=colour, lw=0.8, ls="--")
-        lateral.annotate(label.split(" (")[0] + " wall", (5, sign * half_clearance * 1e6), color=colour,
+        lateral.annotate(label.split(" (")[0] + " wall", (np.degrees(origin) + 5, sign * half_clearance * 1e6), color=colour,
                          fontsize="x-small", va="top" if sign > 0 else "bottom")
     lateral.set_ylabel("eccentricity x [µm]\n(+ toward major thrust)")
     _legend(lateral, ncol=3)
@@ -71,42 +75,60 @@ def piston_motion(phase, result, half_clearance, path, case):
     return _save(fig, path)
 
 
-def slap(events, slap_threshold, path, case):
-    """Every impact of one cycle against the crank angle, by wall, on linear scales: the kinetic energy it
-    dissipated, and its normal approach speed with the slap threshold drawn. Impacts below the threshold are
-    drawn hollow. Rows of the impact log only: no quantity here depends on the communication step."""
-    fig, (energy, speed) = _axes(2, "Piston slap: impacts over one engine cycle", case)
-    impacts = events[events["kind"] == "impact"]
+def slap(events, is_slap, slap_threshold, path, case, origin=CENTRED):
+    """Every impact of one cycle against the crank angle, by wall, on linear scales: the energy its normal
+    (restitution) part dissipated, and its normal approach speed with the slap threshold drawn. Slaps (`is_slap`: the
+    landings on the other wall, `slap_rows`) are filled on stems, the other impacts hollow. Rows of the impact log
+    only: no quantity here depends on the communication step."""
+    fig, (energy, speed) = _axes(2, "Piston slap: impacts over one engine cycle", case, origin)
+    impacts = events["kind"] == "impact"
+    deg = np.degrees(from_firing_tdc(events["crank_angle"], origin))
     for label, corners, colour in SIDES:
-        mine = impacts[np.isin(impacts["corner"], corners)]
-        slaps = mine["normal_velocity_before"] > slap_threshold
-        for ax, values in ((energy, mine["energy_lost"] * 1e3), (speed, mine["normal_velocity_before"] * 1e3)):
-            ax.vlines(mine["crank_angle_deg"][slaps], 0, values[slaps], color=colour, lw=1)
-            ax.plot(mine["crank_angle_deg"][slaps], values[slaps], "o", color=colour, ms=4,
+        mine = impacts & np.isin(events["corner"], corners)
+        slaps, others = mine & is_slap, mine & ~is_slap
+        for ax, values in ((energy, events["energy_lost"] * 1e3), (speed, events["normal_velocity_before"] * 1e3)):
+            ax.vlines(deg[slaps], 0, values[slaps], color=colour, lw=1)
+            ax.plot(deg[slaps], values[slaps], "o", color=colour, ms=5, zorder=4,
                     label=f"{label}: {slaps.sum()} slaps")
-            ax.plot(mine["crank_angle_deg"][~slaps], values[~slaps], "o", mfc="none", color=colour, ms=3,
-                    label=f"{label}: {(~slaps).sum()} below threshold")
+            ax.plot(deg[others], values[others], "o", mfc="none", color=colour, ms=3, mew=0.8, zorder=3, clip_on=False,
+                    label=f"{label}: {others.sum()} other impacts")
     speed.axhline(slap_threshold * 1e3, color="k", lw=0.8, ls="--")
-    speed.annotate(f"slap threshold {slap_threshold * 1e3:g} mm/s", (5, slap_threshold * 1e3), fontsize="x-small",
-                   va="bottom")
+    speed.annotate(f"slap threshold {slap_threshold * 1e3:g} mm/s", (np.degrees(origin) + 5, slap_threshold * 1e3),
+                   fontsize="x-small", va="bottom")
     energy.set_ylabel("energy dissipated\nper impact [mJ]")
     speed.set_ylabel("impact speed [mm/s]")
-    energy.set_ylim(bottom=0)
-    speed.set_ylim(bottom=0)
+    for ax in (energy, speed):
+        # the zero line a little above the bottom, so that impacts dissipating next to nothing stay visible
+        top = max(ax.get_ylim()[1], 1e-9)
+        ax.set_ylim(-0.04 * top, top)
+        ax.axhline(0, color="0.6", lw=0.5, zorder=1)
     _legend(speed, ncol=2)
     return _save(fig, path)
 
 
-def forces(phase, result, path, case):
-    """The gas pressure that acted with the net side force of the liner on the piston, and the engine torque."""
-    deg = np.degrees(phase)
-    fig, (side, torque) = _axes(2, "Side force, gas pressure and engine torque over one engine cycle", case)
+def _zero_at_same_height(*axes):
+    """Lowers the bottoms of twin y-axes so that their zeros lie at the same height, each still showing its data."""
+    limits = [(min(lo, 0.0), max(hi, 0.0)) for lo, hi in (ax.get_ylim() for ax in axes)]
+    # the largest fraction of the height below zero, given to every axis
+    below = max(-lo / (hi - lo) for lo, hi in limits)
+    if below < 1:
+        for ax, (lo, hi) in zip(axes, limits):
+            ax.set_ylim(min(lo, -below * hi / (1 - below)), hi)
+
+
+def forces(angle, result, path, case, origin=CENTRED):
+    """The gas pressure that acted with the net side force of the liner on the piston (zeros level), and the engine
+    torque."""
+    deg = np.degrees(angle)
+    fig, (side, torque) = _axes(2, "Side force, gas pressure and engine torque over one engine cycle", case, origin)
     side.plot(deg, result["side_force"] * 1e-3, color="tab:purple", label="net side force (liner on piston)")
-    side.set_ylabel("side force [kN]\n(− = from the major-thrust wall)")
+    side.set_ylabel("side force [kN]\n(− from major thrust)")
     pressure = side.twinx()
     pressure.plot(deg, result["gas_pressure_acting"] * 1e-5, color="tab:gray", lw=0.8, label="gas pressure (gauge)")
     pressure.set_ylabel("gas pressure [bar]")
-    lines = side.get_lines() + pressure.get_lines()
+    _zero_at_same_height(side, pressure)
+    side.axhline(0, color="k", lw=0.5, label="_zero")
+    lines = [line for line in side.get_lines() + pressure.get_lines() if not line.get_label().startswith("_")]
     side.legend(lines, [line.get_label() for line in lines], loc="lower right", bbox_to_anchor=(1, 1), ncol=2,
                 fontsize="small", frameon=False)
     torque.plot(deg, result["engine_torque"])
@@ -148,15 +170,16 @@ def _draw_piston(ax, frame, geometry, magnification):
     ax.set_title(f"{frame['deg']:.0f}°", fontsize="small", pad=2)
 
 
-def position_frames(phase, result, events, every_deg):
+def position_frames(angle, result, events, every_deg, origin=CENTRED):
     """The piston at every `every_deg` of crank angle in the cycle: skirt positions, corners in sliding contact,
     and corners that hit since the previous frame."""
-    deg = np.degrees(phase)
+    deg = np.degrees(angle)
     impacts = events[events["kind"] == "impact"]
+    hit = np.degrees(from_firing_tdc(impacts["crank_angle"], origin))
     frames = []
-    for target in np.arange(0, 720, every_deg):
+    for target in np.arange(np.degrees(origin), np.degrees(origin) + 720, every_deg):
         k = int(np.argmin(np.abs(deg - target)))
-        recent = (impacts["crank_angle_deg"] > target - every_deg) & (impacts["crank_angle_deg"] <= target)
+        recent = (hit > target - every_deg) & (hit <= target)
         frames.append({
             "deg": target, "top": result["skirt_top_lateral"][k], "bottom": result["skirt_bottom_lateral"][k],
             "sliding": [c for c in CORNERS if result[f"contact_state_{c}"][k] > 0],
@@ -170,10 +193,10 @@ def _positions_caption(magnification):
             "● corner sliding on the liner, ○ corner hit since the previous frame; + piston pin")
 
 
-def piston_positions(phase, result, events, geometry, magnification, path, case, every_deg=30):
+def piston_positions(angle, result, events, geometry, magnification, path, case, every_deg=30, origin=CENTRED):
     """Awrejcewicz & Kudra Fig. 7: successive positions of the piston in the bore over one cycle, one small panel
     every `every_deg` degrees. `geometry` = (bore, piston_diameter, skirt_length, pin_height), m."""
-    frames = position_frames(phase, result, events, every_deg)
+    frames = position_frames(angle, result, events, every_deg, origin)
     columns = 8
     rows = -(-len(frames) // columns)
     fig, axes = plt.subplots(rows, columns, figsize=(1.5 * columns, 2.1 * rows + 1.0), squeeze=False)
@@ -190,9 +213,9 @@ def piston_positions(phase, result, events, geometry, magnification, path, case,
     return path
 
 
-def piston_animation(phase, result, events, geometry, magnification, path, case, every_deg=5):
+def piston_animation(angle, result, events, geometry, magnification, path, case, every_deg=5, origin=CENTRED):
     """The positions of `piston_positions` as an animated GIF, one frame every `every_deg` degrees."""
-    frames = position_frames(phase, result, events, every_deg)
+    frames = position_frames(angle, result, events, every_deg, origin)
     fig, ax = plt.subplots(figsize=(4, 5))
 
     def draw(frame):

@@ -5,6 +5,7 @@ from fmpy.fmi1 import FMICallException
 
 from .response import CLASSIFIABLE_CYCLES, classify, roller_run
 from .fmu import CYCLE, simulate_with_events
+from .tables import side_changes
 
 #: The results' columns after the swept values, and their units.
 METRICS = {
@@ -55,15 +56,11 @@ def run_point(fmu, model_description, values, cycles, skip_cycles):
 
 def metrics(events, cycle, cycles, skip_cycles):
     """`METRICS` of the impact log `events` whose rows fall in the cycles `cycle` (0 = the run's first), counted
-    over cycles skip_cycles to cycles - 1. A side change is a landing (impact or slide) on the other wall than the
-    landing before it: corners 1, 2 are the wall at -D/2, 3, 4 the one at +D/2."""
+    over cycles skip_cycles to cycles - 1 (side changes: `tables.side_changes`)."""
     counted = cycles - skip_cycles
     window = (cycle >= skip_cycles) & (cycle < cycles)
     impacts = window & (events["kind"] == "impact")
-    landing = events["kind"] != "release"
-    wall = np.where(events["corner"][landing] <= 2, -1, 1)
-    change = np.zeros(len(events), dtype=bool)
-    change[np.flatnonzero(landing)[1:]] = wall[1:] != wall[:-1]
+    change = side_changes(events)
     velocities = events["normal_velocity_before"][impacts]
     return {
         "impacts_per_cycle": impacts.sum() / counted,

@@ -1,4 +1,5 @@
-"""CSV tables with units in their header (`name [unit]`), and the per-cycle metrics of a simulation record."""
+"""CSV tables with units in their header (`name [unit]`), the per-cycle metrics of a simulation record, and which
+rows of an impact log are side changes and slaps."""
 
 import csv
 
@@ -33,3 +34,20 @@ def cycle_metrics(result):
     for name in CYCLE_METRICS:
         table[name] = result[name][ends]
     return table, dict(CYCLE_METRICS, time="s", cycle="1")
+
+
+def side_changes(events):
+    """Per row of the impact log `events`: a landing (impact or slide start) on the other wall than the landing
+    before it. Corners 1, 2 are the anti-thrust wall at -D/2, 3, 4 the major-thrust wall at +D/2; the first landing
+    of the log is no change."""
+    landing = np.isin(events["kind"], ("impact", "slide"))
+    wall = np.where(events["corner"][landing] <= 2, -1, 1)
+    change = np.zeros(len(events), dtype=bool)
+    change[np.flatnonzero(landing)[1:]] = wall[1:] != wall[:-1]
+    return change
+
+
+def slap_rows(events, slap_threshold):
+    """Per row of the impact log `events`: a slap, the impact that lands the piston on the other wall (a side
+    change), approaching faster than `slap_threshold` (m/s), as the FMU's cycle_slap outputs count them."""
+    return side_changes(events) & (events["kind"] == "impact") & (events["normal_velocity_before"] > slap_threshold)

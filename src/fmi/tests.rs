@@ -429,7 +429,7 @@ fn strings_status_queries_and_debug_logging() {
     }
     host.run(0.0, 0.005, 1e-3);
     host.logged("Impact");
-    assert_eq!(std::fs::read_to_string(&path).unwrap().lines().count(), 2, "header and the impact at 4 ms");
+    assert_eq!(std::fs::read_to_string(&path).unwrap().lines().count(), 3, "the two header lines and the impact at 4 ms");
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
         let mut t = 0.0;

@@ -1,5 +1,7 @@
 //! The `impact_log` CSV: one row per impact, slide start or release, in SI units, with the crank
-//! angle in degrees as well (the last column, so readers of the older columns are unaffected).
+//! angle in degrees as well (the last column, so readers of the older columns are unaffected). A first
+//! line starting with `#` states the crank-angle conventions: `crank_angle` in rad in [0, 4π), and
+//! `crank_angle_deg` as engine people read it, in [−360, 360), both from firing TDC.
 //!
 //! The file always holds the events of the trajectory the instance is on: the cursor (bytes written so
 //! far) is part of the saved state, and restoring a state cuts the file back to that cursor, so rows
@@ -10,7 +12,8 @@ use serde::{Deserialize, Serialize};
 use std::fs::{File, OpenOptions};
 use std::io::Write;
 
-const HEADER: &str = "time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position,crank_angle_deg\n";
+const HEADER: &str = "# crank_angle [rad] in [0, 4π) and crank_angle_deg [deg] in [-360, 360), both from firing TDC\n\
+time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position,crank_angle_deg\n";
 
 /// An open log: its path and the length of what this trajectory has written.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -92,6 +95,16 @@ fn row(e: &EngineEvent) -> String {
         e.normal_velocity_after,
         e.energy_lost,
         e.position,
-        e.crank_angle.to_degrees()
+        degrees_from_firing_tdc(e.crank_angle)
     )
+}
+
+/// The crank angle `phase` ∈ [0, 4π) from firing TDC in degrees in [−360, 360): the cycle centred on firing TDC.
+fn degrees_from_firing_tdc(phase: f64) -> f64 {
+    let degrees = phase.to_degrees();
+    if degrees >= 360.0 {
+        degrees - 720.0
+    } else {
+        degrees
+    }
 }
