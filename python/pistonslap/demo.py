@@ -73,6 +73,20 @@ def case_title(p):
             f"pin offset {p['pin_offset'] * 1e3:g} mm, slap threshold {p['slap_threshold'] * 1e3:g} mm/s")
 
 
+def summary(last):
+    """The last completed cycle in words: slaps (side changes) per wall with their energy, then all impacts;
+    `last` is a record row holding the FMU's cycle_ outputs."""
+    mj = 1e3
+    walls = "; ".join(
+        f"{last[f'cycle_slaps_{side}']} on the {name} wall, {last[f'cycle_slap_energy_{side}'] * mj:.3g} mJ "
+        f"(largest {last[f'cycle_max_slap_energy_{side}'] * mj:.3g} mJ)"
+        for side, name in (("thrust", "major-thrust"), ("antithrust", "anti-thrust")))
+    return (f"Last cycle: {last['cycle_slap_events']} slaps (landings on the other wall): {walls}. "
+            f"{last['cycle_impacts']} impacts (every bounce) dissipated {last['cycle_impact_energy'] * mj:.3g} mJ, "
+            f"the largest {last['cycle_max_impact_energy_thrust'] * mj:.3g} mJ on the major-thrust wall and "
+            f"{last['cycle_max_impact_energy_antithrust'] * mj:.3g} mJ on the anti-thrust wall.")
+
+
 def main(argv=None):
     args = _parser().parse_args(argv)
     check(args)
@@ -116,13 +130,8 @@ def main(argv=None):
         plots.piston_animation(angle[cycle], result[cycle], in_cycle, geometry, MAGNIFICATION,
                                args.out / "piston_positions.gif", case, origin=origin),
     ]
-    impacts = int((events["kind"] == "impact").sum())
-    last = result[-1]
-    print(f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s, {impacts} impacts, "
-          f"{len(events) - impacts} sliding starts/releases. Last cycle: {last['cycle_slap_events']} slaps, "
-          f"{last['cycle_impact_energy'] * 1e3:.3g} mJ dissipated by impacts, largest impact "
-          f"{last['cycle_max_impact_energy_thrust'] * 1e3:.3g} mJ on the major-thrust wall, "
-          f"{last['cycle_max_impact_energy_antithrust'] * 1e3:.3g} mJ on the anti-thrust wall.")
+    print(f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. "
+          + summary(result[-1]))
     for path in written:
         print(f"wrote {path}")
 

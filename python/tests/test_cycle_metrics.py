@@ -6,6 +6,7 @@ import pytest
 
 from harness import Instance
 from pistonslap.fmu import CYCLE, simulate_with_events
+from pistonslap.tables import slap_rows
 
 OMEGA = 125.66  # rad/s, the crank_speed start value
 HALF_CLEARANCE = (0.08008 - 0.08) / 2
@@ -23,42 +24,57 @@ def run(request, fmu_file):
 
 def test_cycle_metrics_are_those_of_the_impact_log(run):
     """At the first communication point after each firing TDC the cycle outputs hold the figures of the impacts
-    logged in the cycle just ended (its crank angles ω t in [4πk, 4π(k+1))), and keep them until the next one."""
+    logged in the cycle just ended (its crank angles ω t in [4πk, 4π(k+1))), and keep them until the next one. Slaps
+    are the impacts landing on the other wall than the last landing (impact or slide), faster than the threshold,
+    found here from the log's rows alone."""
     threshold, result, events = run
-    impacts = events[events["kind"] == "impact"]
+    is_impact = events["kind"] == "impact"
+    impacts, is_slap = events[is_impact], slap_rows(events, threshold)[is_impact]
     cycle_of_impact = np.floor(OMEGA * impacts["time"] / CYCLE)
     count = result["cycle_count"]
     np.testing.assert_array_equal(count, np.floor(result["crank_angle"] / CYCLE))
     assert count[-1] == 3
-    slaps_seen = set()
+    slaps_seen = {}
     for k in range(1, len(result)):
-        mine = impacts[cycle_of_impact == count[k] - 1]
+        in_cycle = cycle_of_impact == count[k] - 1
+        mine = impacts[in_cycle]
         if count[k] == 0:
             assert result["cycle_impact_energy"][k] == 0 and result["cycle_slap_events"][k] == 0
             continue
         assert len(mine) > 10, "the default cycle has dozens of impacts"
-        slaps = int((mine["normal_velocity_before"] > threshold).sum())
-        slaps_seen.add(slaps / len(mine))
-        assert result["cycle_slap_events"][k] == slaps
+        assert result["cycle_impacts"][k] == len(mine)
+        slaps = impacts[in_cycle & is_slap]
+        slaps_seen[count[k]] = len(slaps)
+        assert result["cycle_slap_events"][k] == len(slaps)
+        for side, corners in (("thrust", (3, 4)), ("antithrust", (1, 2))):
+            on_side = slaps["energy_lost"][np.isin(slaps["corner"], corners)]
+            assert result[f"cycle_slaps_{side}"][k] == len(on_side)
+            assert result[f"cycle_slap_energy_{side}"][k] == pytest.approx(on_side.sum(), rel=1e-12)
+            assert result[f"cycle_max_slap_energy_{side}"][k] == (on_side.max() if len(on_side) else 0.0)
         assert result["cycle_impact_energy"][k] == pytest.approx(mine["energy_lost"].sum(), rel=1e-12)
         for column, corners in (("cycle_max_impact_energy_thrust", (3, 4)), ("cycle_max_impact_energy_antithrust", (1, 2))):
             on_side = mine["energy_lost"][np.isin(mine["corner"], corners)]
             assert result[column][k] == (on_side.max() if len(on_side) else 0.0), column
-    # the threshold decides: the slap of the power stroke runs at ≈ 0.4 m/s, the tails of bounce sequences at < 1 mm/s
-    assert all(0 < share < 1 for share in slaps_seen), slaps_seen
+    # the paper's six side changes per cycle, each landing with an impact faster than 10 mm/s (the first cycle's first
+    # landing is no change); at 1200 rpm most land slower than 200 mm/s
+    if threshold == 0.01:
+        assert slaps_seen == {1: 5, 2: 6, 3: 6}, slaps_seen
+    else:
+        assert max(slaps_seen.values()) < 6, slaps_seen
 
 
 def test_the_threshold_counts_only_faster_impacts(fmu_file):
-    """Per-cycle slap counts fall as the threshold rises, and none pass the fastest impact."""
+    """Per-cycle slap counts fall as the threshold rises, and none pass the fastest impact; with no threshold every
+    side change landing with an impact is a slap."""
     counts = []
     for threshold in (0.0, 0.01, 0.1, 10.0):
         result, events = simulate_with_events(start_values={"slap_threshold": threshold},
                                               stop_time=1.02 * CYCLE / OMEGA, output_interval=2e-3)
         counts.append(int(result["cycle_slap_events"][-1]))
         if threshold == 0.0:
-            in_first = (events["kind"] == "impact") & (OMEGA * events["time"] < CYCLE)
+            in_first = slap_rows(events, 0.0) & (OMEGA * events["time"] < CYCLE)
             assert counts[0] == int(in_first.sum()), "every impact approaches at > 0 m/s"
-    assert counts[0] > counts[1] > counts[2] > 0 and counts[3] == 0, counts
+    assert counts[0] >= counts[1] >= counts[2] >= counts[3] == 0 and counts[1] > 0, counts
 
 
 def test_gas_pressure_acting_is_the_input_held_over_the_step(unpacked_fmu):

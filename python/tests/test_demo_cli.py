@@ -41,6 +41,7 @@ def test_demo_at_an_operating_point(tmp_path):
     with open(out / "cycles.csv", newline="") as f:
         rows = list(csv.reader(f))
     assert rows[0][:3] == ["time [s]", "cycle [1]", "cycle_slap_events [1]"] and len(rows) == 2 and rows[1][1] == "1"
+    assert "cycle_slap_energy_thrust [J]" in rows[0] and "cycle_impacts [1]" in rows[0]
     for name in ("slap.png", "forces.png", "piston_motion.png", "piston_positions.png", "piston_positions.gif",
                  "impact_log.csv"):
         assert (out / name).stat().st_size > 1000, name

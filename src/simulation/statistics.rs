@@ -16,6 +16,8 @@ pub struct ImpactStatistics {
     last_impact_corner: i32,
     last_impact_crank_angle: f64,
     slap_threshold: f64,
+    /// The wall of the last landing (impact or slide start): −1 anti-thrust, 1 major thrust, 0 none yet.
+    wall: i8,
     /// The engine cycle in progress: its index (whole cycles of the crank angle) and its figures.
     cycle: i64,
     open: CycleMetrics,
@@ -24,22 +26,41 @@ pub struct ImpactStatistics {
     cycle_count: i32,
 }
 
-/// What one engine cycle's impacts amount to.
+/// What one engine cycle's impacts amount to: all of them, and the slaps among them.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 struct CycleMetrics {
-    slap_events: i32,
+    impacts: i32,
     impact_energy: f64,
     max_impact_energy_antithrust: f64,
     max_impact_energy_thrust: f64,
+    /// Per wall, [anti-thrust, major thrust]: slaps, their energy, the largest.
+    slaps: [i32; 2],
+    slap_energy: [f64; 2],
+    max_slap_energy: [f64; 2],
+}
+
+/// The wall a corner touches: −1 for corners 1, 2 (−D/2, anti-thrust), 1 for 3, 4 (+D/2, major thrust).
+fn wall_of(corner: u8) -> i8 {
+    if corner <= 2 {
+        -1
+    } else {
+        1
+    }
 }
 
 impl CycleMetrics {
-    fn add(&mut self, e: &EngineEvent, slap_threshold: f64) {
-        self.slap_events += i32::from(e.normal_velocity_before > slap_threshold);
+    /// Takes in one impact; `slap` when it lands the piston on the other wall faster than the threshold.
+    fn add(&mut self, e: &EngineEvent, slap: bool) {
+        self.impacts = self.impacts.saturating_add(1);
         self.impact_energy += e.energy_lost;
-        // Corners 1, 2 touch the −D/2 wall (anti-thrust), 3, 4 the +D/2 wall (major thrust).
         let side = if e.corner <= 2 { &mut self.max_impact_energy_antithrust } else { &mut self.max_impact_energy_thrust };
         *side = side.max(e.energy_lost);
+        if slap {
+            let w = usize::from(e.corner > 2);
+            self.slaps[w] = self.slaps[w].saturating_add(1);
+            self.slap_energy[w] += e.energy_lost;
+            self.max_slap_energy[w] = self.max_slap_energy[w].max(e.energy_lost);
+        }
     }
 }
 
@@ -56,15 +77,23 @@ impl ImpactStatistics {
 
     /// Takes in the events of one step, after which the crank angle is `crank_angle` (rad,
     /// accumulated). Only impacts count: slides and releases dissipate nothing in the outputs'
-    /// definition ("energy dissipated by impacts"). A cycle is complete once an event or the step's
-    /// end lies in a later one; cycles without impacts complete with zero figures.
+    /// definition ("energy dissipated by impacts"); a slide start is a landing, though, so the next
+    /// impact on the same wall is no slap. A slap is an impact landing the piston on the other wall
+    /// than the last landing's (a side change; the first landing is none), faster than
+    /// `slap_threshold`. A cycle is complete once an event or the step's end lies in a later one;
+    /// cycles without impacts complete with zero figures.
     pub fn record_step(&mut self, events: &[EngineEvent], crank_angle: f64) {
         self.impacts_in_step = 0;
         self.max_impact_velocity_in_step = 0.0;
         self.impact_energy_in_step = 0.0;
-        for e in events.iter().filter(|e| e.kind == EngineEventKind::Impact) {
+        for e in events.iter().filter(|e| matches!(e.kind, EngineEventKind::Impact | EngineEventKind::Slide)) {
+            let (previous, wall) = (self.wall, wall_of(e.corner));
+            self.wall = wall;
+            if e.kind == EngineEventKind::Slide {
+                continue;
+            }
             self.advance_to_cycle(e.cycle);
-            self.open.add(e, self.slap_threshold);
+            self.open.add(e, previous == -wall && e.normal_velocity_before > self.slap_threshold);
             self.impacts_in_step = self.impacts_in_step.saturating_add(1);
             self.max_impact_velocity_in_step = self.max_impact_velocity_in_step.max(e.normal_velocity_before);
             self.impact_energy_in_step += e.energy_lost;
@@ -100,9 +129,14 @@ impl ImpactStatistics {
         out.last_impact_corner = self.last_impact_corner;
         out.last_impact_crank_angle = self.last_impact_crank_angle;
         out.cycle_count = self.cycle_count;
-        out.cycle_slap_events = self.completed.slap_events;
-        out.cycle_impact_energy = self.completed.impact_energy;
-        out.cycle_max_impact_energy_antithrust = self.completed.max_impact_energy_antithrust;
-        out.cycle_max_impact_energy_thrust = self.completed.max_impact_energy_thrust;
+        let c = &self.completed;
+        out.cycle_slap_events = c.slaps[0].saturating_add(c.slaps[1]);
+        out.cycle_impacts = c.impacts;
+        out.cycle_impact_energy = c.impact_energy;
+        out.cycle_max_impact_energy_antithrust = c.max_impact_energy_antithrust;
+        out.cycle_max_impact_energy_thrust = c.max_impact_energy_thrust;
+        [out.cycle_slaps_antithrust, out.cycle_slaps_thrust] = c.slaps;
+        [out.cycle_slap_energy_antithrust, out.cycle_slap_energy_thrust] = c.slap_energy;
+        [out.cycle_max_slap_energy_antithrust, out.cycle_max_slap_energy_thrust] = c.max_slap_energy;
     }
 }

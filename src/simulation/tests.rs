@@ -154,7 +154,8 @@ fn an_unwritable_log_path_is_an_error_at_start() {
 /// The shuttle's cycle figures in closed form: at the default 125.66 rad/s an engine cycle (4π) lasts
 /// 0.1000029 s, and the impacts at 0.004, 0.020, 0.052 s (speeds v0, e v0, e² v0 on the +x, −x, +x
 /// walls), 0.116 s (e³ v0, −x) and 0.244 s (e⁴ v0, +x) fall into cycles 0, 0, 0, 1, 2; an impact at
-/// speed v dissipates ½ m v² (1 − e²).
+/// speed v dissipates ½ m v² (1 − e²). Every impact after the first lands on the other wall: a slap when
+/// faster than the threshold.
 #[test]
 fn cycle_metrics_match_the_closed_form() {
     let p = Parameters { slap_threshold: 0.004, ..Parameters::default() };
@@ -170,7 +171,11 @@ fn cycle_metrics_match_the_closed_form() {
     run(&mut sim, &inputs, 0.101, 1e-3);
     let out = sim.outputs().clone();
     assert_eq!(out.cycle_count, 1);
-    assert_eq!(out.cycle_slap_events, 2, "v0 and e v0 exceed 4 mm/s, e² v0 does not");
+    assert_eq!(out.cycle_impacts, 3);
+    assert_eq!(out.cycle_slap_events, 1, "the first landing (v0) is no side change; e v0 exceeds 4 mm/s, e² v0 does not");
+    assert_eq!((out.cycle_slaps_antithrust, out.cycle_slaps_thrust), (1, 0));
+    assert!(close(out.cycle_slap_energy_antithrust, energy(1)) && close(out.cycle_max_slap_energy_antithrust, energy(1)));
+    assert_eq!((out.cycle_slap_energy_thrust, out.cycle_max_slap_energy_thrust), (0.0, 0.0));
     assert!(close(out.cycle_impact_energy, energy(0) + energy(1) + energy(2)), "{out:?}");
     assert!(close(out.cycle_max_impact_energy_thrust, energy(0)), "{out:?}");
     assert!(close(out.cycle_max_impact_energy_antithrust, energy(1)), "{out:?}");
