@@ -69,6 +69,15 @@ impl<E: EngineModel> Simulation<E> {
         Ok(sim)
     }
 
+    /// Before the first step: puts the model into the state the first step will start from with
+    /// `inputs` (a free crank at its start speed `crank_speed`), so that the initial outputs
+    /// (`kinetic_energy`, `crank_speed_actual`) describe it. A step rebuilds it from the inputs then.
+    pub fn prepare(&mut self, inputs: &Inputs) -> Result<(), ModelError> {
+        self.model.prepare(inputs)?;
+        Self::write_outputs(&self.model, &mut self.statistics, None, &mut self.outputs);
+        Ok(())
+    }
+
     /// Builds as [`Self::new`] and creates the impact log when `impact_log` names a file: an unwritable
     /// path is an error here, not at the first impact.
     pub fn start(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
@@ -118,6 +127,7 @@ impl<E: EngineModel> Simulation<E> {
         let mut events = std::mem::take(&mut self.spare_events.0);
         events.clear();
         let statistics = self.statistics;
+        let in_step = (self.outputs.liner_impulse_antithrust_in_step, self.outputs.liner_impulse_thrust_in_step);
         match self.try_step(served, inputs, derivatives, t_end, &mut events) {
             Ok(()) => {
                 self.time = t_end;
@@ -133,6 +143,7 @@ impl<E: EngineModel> Simulation<E> {
                 }
                 // The outputs are those of the model and the statistics: as they were again.
                 Self::write_outputs(&self.model, &mut self.statistics, None, &mut self.outputs);
+                (self.outputs.liner_impulse_antithrust_in_step, self.outputs.liner_impulse_thrust_in_step) = in_step;
                 Err(e)
             }
         }
@@ -152,7 +163,12 @@ impl<E: EngineModel> Simulation<E> {
         let failed = |what: &str, e: &dyn std::fmt::Display| ModelError(format!("step from t = {} s to {t_end} s {what}: {e}", self.time));
         let advanced = served.unwrap_or_else(|| self.model.advance_interpolated(inputs, derivatives, t_end, events));
         advanced.map_err(|e| failed("failed", &e))?;
+        let before = self.outputs.liner_impulse_total;
         Self::write_outputs(&self.model, &mut self.statistics, Some(events), &mut self.outputs);
+        // The liner's impulse during the step: the difference of its totals.
+        let total = self.outputs.liner_impulse_total;
+        [self.outputs.liner_impulse_antithrust_in_step, self.outputs.liner_impulse_thrust_in_step] =
+            [total[0] - before[0], total[1] - before[1]];
         Self::valid(t_end, &self.outputs).map_err(|e| failed("refused", &e.0))?;
         if let Some(log) = &mut self.log {
             // Cuts the file back and keeps its cursor when it fails.
@@ -197,6 +213,7 @@ impl<E: EngineModel> Simulation<E> {
             statistics.record_step(events, outputs.crank_angle);
         }
         statistics.write(outputs);
+        outputs.dissipated_energy_total = outputs.impact_energy_total + outputs.friction_energy_total;
     }
 }
 

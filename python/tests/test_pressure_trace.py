@@ -57,13 +57,16 @@ def test_the_trace_drives_the_piston_as_the_same_pressure_fed_as_an_input(fmu_fi
 
 
 BAD_TRACES = {
-    "non-numeric": ("angle,p\n-360,1\n-355,one\n", "line 3: pressure \"one\" is not a finite number"),
-    "columns": ("angle,p\n-360,1\n-355;1\n", "line 3: 1 columns, expected 2"),
-    "non-increasing": ("angle,p\n-360,1\n-355,1\n-356,1\n", "line 4: crank angle -356° does not increase"),
-    "negative": ("angle,p\n-360,1\n-355,-0.2\n", "line 3: absolute pressure -0.2 bar is negative"),
-    "short": ("angle,p\n" + "".join(f"{a},1\n" for a in range(-360, 0, 5)), "line 73: the angles span 355°"),
-    "long": ("angle,p\n" + "".join(f"{a},1\n" for a in range(-360, 371, 5)), "line 148: the angles span 730°"),
-    "empty": ("angle,p\n", "no samples after the header row"),
+    "non-numeric": ("angle [deg],p [bar] absolute\n-360,1\n-355,one\n", "line 3: pressure \"one\" is not a finite number"),
+    "columns": ("angle [deg],p [bar] absolute\n-360,1\n-355;1\n", "line 3: 1 columns, expected 2"),
+    "non-increasing": ("angle [deg],p [bar] absolute\n-360,1\n-355,1\n-356,1\n", "line 4: crank angle -356° does not increase"),
+    "negative": ("angle [deg],p [bar] absolute\n-360,1\n-355,-0.2\n", "line 3: absolute pressure -0.2 is negative"),
+    "short": ("angle [deg],p [bar] absolute\n" + "".join(f"{a},1\n" for a in range(-360, 0, 5)), "line 73: the angles span 355°"),
+    "long": ("angle [deg],p [bar] absolute\n" + "".join(f"{a},1\n" for a in range(-360, 371, 5)), "line 148: the angles span 730°"),
+    "no header": ("-360,1\n-355,1\n", "line 1: holds numbers, not a header"),
+    "no unit": ("angle [deg],p\n-360,1\n", "line 1: the pressure column \"p\" names no unit"),
+    "neither absolute nor gauge": ("angle [deg],p [bar]\n-360,1\n", "say whether the pressure is absolute or gauge"),
+    "empty": ("angle [deg],p [bar] absolute\n", "no samples after the header row"),
 }
 
 
@@ -74,7 +77,7 @@ def test_a_bad_trace_is_refused_at_exit_initialization_naming_file_line_and_faul
         text, expected = BAD_TRACES[case]
         path.write_text(text)
     elif case == "not UTF-8":
-        path.write_bytes(b"angle,p\n-360,1\xff\n")
+        path.write_bytes(b"angle [deg],p [bar] absolute\n-360,1\xff\n")
         expected = "cannot be read: stream did not contain valid UTF-8"
     elif case == "a directory":
         path.mkdir()
@@ -89,3 +92,25 @@ def test_a_bad_trace_is_refused_at_exit_initialization_naming_file_line_and_faul
             s.slave.exitInitializationMode()
         errors = s.messages(FMI_ERROR)
         assert any(f'pressure_trace "{path}"' in m and expected in m for m in errors), errors
+
+
+def test_a_trace_as_users_keep_it(unpacked_fmu, tmp_path, monkeypatch):
+    """The shipped full-load trace written in Pa with a [Pa] header, gauge in [psig], and under the shipped name in
+    the working directory (looked up there before the FMU's resources): the same pressure acts as from the
+    shipped file; a copy at twice the pressure in the working directory is the one used."""
+    angle, bar = trace_of(unpacked_fmu, "full_load.csv")
+    monkeypatch.chdir(tmp_path)
+
+    def acting(name):
+        return simulate(stop_time=0.1, output_interval=1e-3, output=["gas_pressure_acting"],
+                        start_values={"pressure_source": 3, "pressure_trace": name})["gas_pressure_acting"]
+
+    shipped = acting("full_load.csv")
+    for name, header, values in (("pa.csv", "cylinder pressure [Pa] absolute", bar * 1e5),
+                                 ("psig.csv", "cylinder pressure [psig]", (bar - 1) * 1e5 / 6894.757293168361)):
+        (tmp_path / name).write_text(f"crank angle [deg],{header}\n"
+                                     + "".join(f"{a:.17g},{p:.17g}\n" for a, p in zip(angle, values)))
+        np.testing.assert_allclose(acting(name), shipped, rtol=1e-12, atol=1e-6)
+    (tmp_path / "full_load.csv").write_text("crank angle [deg],cylinder pressure [bar] absolute\n"
+                                            + "".join(f"{a:.17g},{2 * p:.17g}\n" for a, p in zip(angle, bar)))
+    np.testing.assert_allclose(acting("full_load.csv"), 2 * shipped + 1e5, rtol=1e-12, atol=1e-6)

@@ -29,6 +29,9 @@ pub(super) struct Sample<const N: usize, const M: usize> {
     /// the steps (`rk4_step`), carried over where a state is replaced at the same time. (Impacts
     /// record their own share, `Event::friction_energy`.)
     pub(super) friction_work: f64,
+    /// ∫ λ dt per constraint since the start, N·s: the persistent contact forces' impulse, by the
+    /// same quadrature as `friction_work` (impacts record their own, `Event::impulses`).
+    pub(super) contact_impulse: SVector<f64, M>,
 }
 
 impl<const N: usize, const M: usize> Sample<N, M> {
@@ -39,7 +42,7 @@ impl<const N: usize, const M: usize> Sample<N, M> {
 
     /// This sample, continuing the friction work of `from`.
     pub(super) fn after(self, from: &Sample<N, M>) -> Self {
-        Self { friction_work: from.friction_work, ..self }
+        Self { friction_work: from.friction_work, contact_impulse: from.contact_impulse, ..self }
     }
 }
 
@@ -172,7 +175,7 @@ pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
     let Motion { acc, lambda, friction, slip } = motion(sys, ev, (t, &q, &v), contacts)?;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let hdd = ev.gap_jacobian * acc + ev.gap_bias;
-    let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd, hdd, slip, friction, friction_work: 0.0 };
+    let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd, hdd, slip, friction, friction_work: 0.0, contact_impulse: SVector::zeros() };
     // One sum clears every number (x · 0 is NaN exactly for an infinite or NaN x).
     let coordinates = (s.q * 0.0 + s.v * 0.0 + s.acc * 0.0).sum();
     let constraints = (s.lambda * 0.0 + s.gap * 0.0 + s.hd * 0.0 + s.hdd * 0.0 + s.slip * 0.0 + s.friction * 0.0).sum();
@@ -208,29 +211,41 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     // frictionless held stages the normal forces alone, neither adding friction work; rubbing
     // stages keep the friction power at stages 2–4 (the first is `s0`'s) for its integral by the
     // step's own weights.
-    let (step, work) = if contacts.held == 0 {
+    // Held stages also keep λ at stages 2–4 for the contact impulse, by the same weights.
+    let by_weights = |first: SVector<f64, M>, [_, a, b, c]: [SVector<f64, M>; 4]| (first + (a + b) * 2.0 + c) * (dt / 6.0);
+    let mut lambdas = [SVector::<f64, M>::zeros(); 4];
+    let (step, work, impulse) = if contacts.held == 0 {
         let flight = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let (mass, force) = sys.inertia_and_force(t, q, v);
             Ok(free_motion(&mass, &force, t)?.1)
         };
-        (rk4::step(flight, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work)
+        (rk4::step(flight, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work, s0.contact_impulse)
     } else if friction_of(sys).is_none() {
-        let held = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| Ok(acceleration(&sys.evaluate(t, q, v), t, contacts.held)?.0);
-        (rk4::step(held, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work)
+        let mut stage = 0;
+        let held = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
+            let (acc, lambda) = acceleration(&sys.evaluate(t, q, v), t, contacts.held)?;
+            stage += 1;
+            lambdas[stage] = lambda;
+            Ok(acc)
+        };
+        let step = rk4::step(held, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;
+        (step, s0.friction_work, s0.contact_impulse + by_weights(s0.lambda, lambdas))
     } else {
         let (mut powers, mut stage) = ([0.0; 4], 0);
         let rubbing = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let m = motion(sys, &sys.evaluate(t, q, v), (t, q, v), contacts)?;
             stage += 1;
             powers[stage] = -m.friction.dot(&m.slip);
+            lambdas[stage] = m.lambda;
             Ok(m.acc)
         };
         let step = rk4::step(rubbing, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;
-        (step, s0.friction_work + (s0.friction_power() + 2.0 * (powers[1] + powers[2]) + powers[3]) * (dt / 6.0))
+        let work = s0.friction_work + (s0.friction_power() + 2.0 * (powers[1] + powers[2]) + powers[3]) * (dt / 6.0);
+        (step, work, s0.contact_impulse + by_weights(s0.lambda, lambdas))
     };
     let ev = sys.evaluate(t, &step.q, &step.v);
     let mut s = sample_of(sys, &ev, t, step.q, step.v, contacts)?;
-    s.friction_work = work;
+    (s.friction_work, s.contact_impulse) = (work, impulse);
     Ok((s, ev, step.last_slopes))
 }
 

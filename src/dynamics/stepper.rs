@@ -255,6 +255,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let s = self.current();
         (s.friction_power(), s.friction_work)
     }
+    /// ∫ λ dt per constraint since the start, N·s: the impulse of the persistent contact forces
+    /// (impacts: `Event::impulses`).
+    pub fn contact_impulses(&self) -> SVector<f64, M> {
+        self.current().contact_impulse
+    }
     /// Whether constraint `i` sticks (held, at tangential rest, with friction).
     pub fn sticking(&self, i: usize) -> bool {
         i < M && contains(self.contacts.stick, i)
@@ -446,16 +451,23 @@ fn between<S: System<N, M>, const N: usize, const M: usize>(
     let dense = Hermite5 { t0: s0.t, dt: end.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: end.q, v1: end.v, a1: end.acc };
     let (q, v) = dense.at(t);
     let mut s = sample_of(system, &system.evaluate_point(t, &q, &v), t, q, v, contacts)?;
-    if end.friction_work != s0.friction_work {
-        // The friction work by the cubic Hermite of its values and rates (the powers) at the ends.
-        let (h, x) = (end.t - s0.t, (t - s0.t) / (end.t - s0.t));
-        let (x2, x3) = (x * x, x * x * x);
-        s.friction_work = (2.0 * x3 - 3.0 * x2 + 1.0) * s0.friction_work
-            + (x3 - 2.0 * x2 + x) * h * s0.friction_power()
-            + (3.0 * x2 - 2.0 * x3) * end.friction_work
-            + (x3 - x2) * h * end.friction_power();
+    // The friction work and the contact impulse by the cubic Hermite of their values and rates (the
+    // powers, the forces) at the ends.
+    let (h, x) = (end.t - s0.t, (t - s0.t) / (end.t - s0.t));
+    let (x2, x3) = (x * x, x * x * x);
+    let weights = [2.0 * x3 - 3.0 * x2 + 1.0, (x3 - 2.0 * x2 + x) * h, 3.0 * x2 - 2.0 * x3, (x3 - x2) * h];
+    s.friction_work = if end.friction_work != s0.friction_work {
+        weights[0] * s0.friction_work
+            + weights[1] * s0.friction_power()
+            + weights[2] * end.friction_work
+            + weights[3] * end.friction_power()
     } else {
-        s.friction_work = s0.friction_work;
-    }
+        s0.friction_work
+    };
+    s.contact_impulse = if end.contact_impulse != s0.contact_impulse {
+        s0.contact_impulse * weights[0] + s0.lambda * weights[1] + end.contact_impulse * weights[2] + end.lambda * weights[3]
+    } else {
+        s0.contact_impulse
+    };
     Ok(s)
 }

@@ -173,7 +173,7 @@ impl<E: Model> Instance<E> {
 
     /// Builds the simulation from the parameters: bad parameters are a failure naming the parameter.
     pub fn exit_initialization_mode(&mut self) -> Outcome {
-        let sim = E::start(&self.resolved_parameters(), self.core.start_time).map_err(|e| self.fail(e))?;
+        let sim = E::start(&self.resolved_parameters(), &self.core.inputs, self.core.start_time).map_err(|e| self.fail(e))?;
         self.core.phase = Phase::StepComplete(sim);
         Ok(())
     }
@@ -279,7 +279,7 @@ impl<E: Model> Instance<E> {
         let outputs = match &self.core.phase {
             Phase::StepComplete(sim) | Phase::Terminated(sim) => E::outputs(sim),
             _ if vrs.iter().any(|&vr| is_output::<E>(vr)) => {
-                preview = E::preview(&self.resolved_parameters(), self.core.start_time)
+                preview = E::preview(&self.resolved_parameters(), &self.core.inputs, self.core.start_time)
                     .map_err(|e| Refusal::error(format!("cannot compute the initial outputs: {e}")))?;
                 E::outputs(&preview)
             }

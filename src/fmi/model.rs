@@ -41,10 +41,11 @@ pub trait Model: Sized + Clone + Debug + 'static {
     fn resolve(parameters: &Self::Parameters, resources: Option<&Path>) -> Self::Parameters;
     /// The parameters' own checks (ranges and relations), naming the parameter.
     fn validate(parameters: &Self::Parameters) -> Result<(), ModelError>;
-    /// The simulation at `start_time`, touching no file: its outputs are the initial ones.
-    fn preview(parameters: &Self::Parameters, start_time: f64) -> Result<Self::Simulation, ModelError>;
-    /// The simulation fmi2ExitInitializationMode starts (opening its files).
-    fn start(parameters: &Self::Parameters, start_time: f64) -> Result<Self::Simulation, ModelError>;
+    /// The simulation at `start_time`, touching no file: its outputs are the initial ones, of the
+    /// state the first step starts from with `inputs` (a free crank at its start speed).
+    fn preview(parameters: &Self::Parameters, inputs: &Self::Inputs, start_time: f64) -> Result<Self::Simulation, ModelError>;
+    /// The simulation fmi2ExitInitializationMode starts (opening its files), prepared as `preview`'s.
+    fn start(parameters: &Self::Parameters, inputs: &Self::Inputs, start_time: f64) -> Result<Self::Simulation, ModelError>;
     /// Advances to `t_end` with the inputs following their derivatives.
     fn step(sim: &mut Self::Simulation, inputs: &Self::Inputs, derivatives: &Self::InputDerivatives, t_end: f64) -> Result<(), ModelError>;
     /// Logs what happened during the last step (category `logEvents`).
@@ -85,11 +86,15 @@ impl<E: EngineModel + Debug + Serialize + DeserializeOwned + 'static> Model for 
     fn validate(parameters: &Parameters) -> Result<(), ModelError> {
         parameters.validate()
     }
-    fn preview(parameters: &Parameters, start_time: f64) -> Result<Simulation<E>, ModelError> {
-        Simulation::new(parameters, start_time)
+    fn preview(parameters: &Parameters, inputs: &Inputs, start_time: f64) -> Result<Simulation<E>, ModelError> {
+        let mut sim = Simulation::new(parameters, start_time)?;
+        sim.prepare(inputs)?;
+        Ok(sim)
     }
-    fn start(parameters: &Parameters, start_time: f64) -> Result<Simulation<E>, ModelError> {
-        Simulation::start(parameters, start_time)
+    fn start(parameters: &Parameters, inputs: &Inputs, start_time: f64) -> Result<Simulation<E>, ModelError> {
+        let mut sim = Simulation::start(parameters, start_time)?;
+        sim.prepare(inputs)?;
+        Ok(sim)
     }
     fn step(sim: &mut Simulation<E>, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Result<(), ModelError> {
         sim.step_interpolated(inputs, derivatives, t_end)
@@ -149,10 +154,10 @@ impl Model for EngineCycle {
     fn validate(parameters: &EngineCycleParameters) -> Result<(), ModelError> {
         parameters.validate()
     }
-    fn preview(parameters: &EngineCycleParameters, start_time: f64) -> Result<EngineCycleRun, ModelError> {
+    fn preview(parameters: &EngineCycleParameters, _: &EngineCycleInputs, start_time: f64) -> Result<EngineCycleRun, ModelError> {
         EngineCycleRun::new(parameters, start_time)
     }
-    fn start(parameters: &EngineCycleParameters, start_time: f64) -> Result<EngineCycleRun, ModelError> {
+    fn start(parameters: &EngineCycleParameters, _: &EngineCycleInputs, start_time: f64) -> Result<EngineCycleRun, ModelError> {
         EngineCycleRun::new(parameters, start_time)
     }
     fn step(sim: &mut EngineCycleRun, _: &EngineCycleInputs, _: &(), t_end: f64) -> Result<(), ModelError> {

@@ -31,10 +31,11 @@ pub fn directory(uri: &str) -> Option<PathBuf> {
     Some(PathBuf::from(String::from_utf8(bytes).ok()?))
 }
 
-/// `name` as a path to open: a bare file name (no directory part) in `resources`, anything else as given.
+/// `name` as a path to open: a bare file name (no directory part) from the working directory when a
+/// file there has it, else from `resources`; anything else as given.
 pub fn resolve(name: &str, resources: Option<&Path>) -> String {
     match resources {
-        Some(dir) if !name.is_empty() && !name.contains('/') => dir.join(name).to_string_lossy().into_owned(),
+        Some(dir) if !name.is_empty() && !name.contains('/') && !Path::new(name).is_file() => dir.join(name).to_string_lossy().into_owned(),
         _ => name.to_string(),
     }
 }
@@ -54,8 +55,10 @@ mod tests {
     }
 
     #[test]
-    fn bare_names_are_looked_up_in_the_resources() {
+    fn bare_names_are_looked_up_in_the_working_directory_then_the_resources() {
         let dir = Path::new("/fmu/resources");
+        // cargo runs the tests in the crate's directory
+        assert_eq!(resolve("Cargo.toml", Some(dir)), "Cargo.toml");
         assert_eq!(resolve("full_load.csv", Some(dir)), "/fmu/resources/full_load.csv");
         assert_eq!(resolve("./mine.csv", Some(dir)), "./mine.csv");
         assert_eq!(resolve("/data/mine.csv", Some(dir)), "/data/mine.csv");

@@ -38,6 +38,14 @@ pub struct CrankTrain {
     cycles: f64,
     /// Energy the friction impulses of impacts have dissipated since the start, J.
     impact_friction_energy: f64,
+    /// The impacts' impulse on the piston since the start per wall [anti-thrust (K1, K2), major
+    /// thrust (K3, K4)], N·s.
+    impact_impulse: [f64; 2],
+}
+
+/// A per-corner quantity summed per wall: [K1 + K2 (anti-thrust), K3 + K4 (major thrust)].
+fn by_wall(x: &Vector4<f64>) -> [f64; 2] {
+    [x[0] + x[1], x[2] + x[3]]
 }
 
 /// How the start departs from the nominal (zero-clearance) slider-crank state: the pin's lateral
@@ -141,7 +149,17 @@ impl CrankTrain {
             let system = FreeCrank { engine, load_torque: InputPolynomial::held(Inputs::default().load_torque) };
             Drive::Free(Self::free(system, &geometry, &start, angle, start_time, speed, &options)?)
         };
-        Ok(Self { drive, geometry, start, started: false, options, impulse_work: 0.0, cycles: 0.0, impact_friction_energy: 0.0 })
+        Ok(Self {
+            drive,
+            geometry,
+            start,
+            started: false,
+            options,
+            impulse_work: 0.0,
+            cycles: 0.0,
+            impact_friction_energy: 0.0,
+            impact_impulse: [0.0; 2],
+        })
     }
 
     fn prescribed(
@@ -270,6 +288,14 @@ impl CrankTrain {
         (forces, power, sliding + self.impact_friction_energy)
     }
 
+    /// The persistent contact forces' impulse on the piston per wall since the start, N·s.
+    fn contact_impulse(&self) -> [f64; 2] {
+        by_wall(&match &self.drive {
+            Drive::Prescribed(s) => s.contact_impulses(),
+            Drive::Free(s) => s.contact_impulses(),
+        })
+    }
+
     /// The integrator's work so far (see `StepCounts`).
     pub fn step_counts(&self) -> StepCounts {
         match &self.drive {
@@ -334,6 +360,14 @@ impl EngineModel for CrankTrain {
         )
     }
 
+    fn prepare(&mut self, inputs: &Inputs) -> Result<(), ModelError> {
+        if !self.started && inputs.crank_speed.is_finite() {
+            self.start(inputs.crank_speed)?;
+            self.started = false;
+        }
+        Ok(())
+    }
+
     fn advance_interpolated(
         &mut self,
         inputs: &Inputs,
@@ -377,10 +411,13 @@ impl EngineModel for CrankTrain {
             }
             Drive::Free(s) => self.log(s.events(), |e| e.q, events),
         }
-        self.impact_friction_energy += match &self.drive {
-            Drive::Prescribed(s) => s.events().iter().map(|e| e.friction_energy).sum::<f64>(),
-            Drive::Free(s) => s.events().iter().map(|e| e.friction_energy).sum::<f64>(),
+        let (friction_energy, impulses) = match &self.drive {
+            Drive::Prescribed(s) => s.events().iter().fold((0.0, Vector4::zeros()), |(f, p), e| (f + e.friction_energy, p + e.impulses)),
+            Drive::Free(s) => s.events().iter().fold((0.0, Vector4::zeros()), |(f, p), e| (f + e.friction_energy, p + e.impulses)),
         };
+        self.impact_friction_energy += friction_energy;
+        let [anti, thrust] = by_wall(&impulses);
+        self.impact_impulse = [self.impact_impulse[0] + anti, self.impact_impulse[1] + thrust];
         match &mut self.drive {
             Drive::Prescribed(s) => s.clear_events(),
             Drive::Free(s) => s.clear_events(),
@@ -453,7 +490,9 @@ impl EngineModel for CrankTrain {
             Drive::Prescribed(s) => s.system().speed(s.time()),
             Drive::Free(_) => phid[0],
         };
-        out.kinetic_energy = linkage.kinetic_energy(&trig, &phid);
+        (out.kinetic_energy, out.potential_energy) = linkage.energy(&phi, &phid);
+        let contact = self.contact_impulse();
+        out.liner_impulse_total = std::array::from_fn(|w| contact[w] + self.impact_impulse[w]);
         [out.friction_force_1, out.friction_force_2, out.friction_force_3, out.friction_force_4] = friction.into();
         (out.friction_power, out.friction_energy_total) = (friction_power, friction_energy);
     }

@@ -88,6 +88,12 @@ pub trait EngineModel: Sized + Clone {
         events: &mut Vec<EngineEvent>,
     ) -> Result<(), ModelError>;
 
+    /// Before the first step, the state that step would start from with `inputs` (whose outputs are
+    /// then the initial ones); the first step rebuilds it from its own inputs.
+    fn prepare(&mut self, _inputs: &Inputs) -> Result<(), ModelError> {
+        Ok(())
+    }
+
     /// Writes the kinematic and force outputs (everything but the impact statistics).
     fn write_outputs(&self, out: &mut Outputs);
 

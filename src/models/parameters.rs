@@ -159,6 +159,13 @@ pub struct Outputs {
     pub friction_force_4: f64,
     pub friction_power: f64,
     pub friction_energy_total: f64,
+    pub potential_energy: f64,
+    pub dissipated_energy_total: f64,
+    pub liner_impulse_thrust_in_step: f64,
+    pub liner_impulse_antithrust_in_step: f64,
+    /// N·s, the liner's impulse on the piston since the start per wall [anti-thrust, major thrust],
+    /// impacts and contact forces (no variable: the `_in_step` outputs are its steps' differences).
+    pub liner_impulse_total: [f64; 2],
 }
 
 impl Outputs {
@@ -201,6 +208,10 @@ impl Outputs {
             ("friction_force_4", self.friction_force_4),
             ("friction_power", self.friction_power),
             ("friction_energy_total", self.friction_energy_total),
+            ("potential_energy", self.potential_energy),
+            ("dissipated_energy_total", self.dissipated_energy_total),
+            ("liner_impulse_thrust_in_step", self.liner_impulse_thrust_in_step),
+            ("liner_impulse_antithrust_in_step", self.liner_impulse_antithrust_in_step),
         ];
         // One sum clears them all (x · 0 is NaN exactly for an infinite or NaN x) before any is named.
         if reals.iter().map(|(_, x)| x * 0.0).sum::<f64>() == 0.0 {

@@ -1,6 +1,11 @@
 //! A measured cylinder pressure trace (`pressure_source = 3`): a CSV file of one four-stroke cycle,
-//! a header row, then `crank angle [deg], absolute pressure [bar]` rows with increasing angles over
-//! 720° (any start; 0 = firing TDC, the model's crank angle 0 mod 4π), as indicating systems export it.
+//! a header row naming the columns, then `crank angle, pressure` rows with increasing angles in
+//! degrees over 720° (any start; 0 = firing TDC, the model's crank angle 0 mod 4π), as indicating
+//! systems export it. The pressure column's header carries its unit, `[bar]`, `[Pa]`, `[kPa]`,
+//! `[MPa]` or `[psi]`, and says whether it is `absolute` (the crankcase pressure is subtracted) or
+//! `gauge` (relative to ambient, taken as the crankcase pressure: used as it is); `[bara]`, `[barg]`,
+//! `[psia]`, `[psig]` say both at once. A header missing either, or a first row of numbers (a file
+//! without header), is refused with the reason.
 //!
 //! The gauge pressure `p(φ) − p_crankcase` is interpolated periodically (period 4π) by the monotone
 //! piecewise cubic Hermite interpolant of Fritsch & Carlson with Fritsch–Butland tangents
@@ -16,6 +21,63 @@ use std::f64::consts::PI;
 const CYCLE: f64 = 4.0 * PI;
 /// Fewer samples cannot describe a compression, a combustion and a gas exchange.
 const MIN_SAMPLES: usize = 4;
+/// Pressure units a header may name, with their size in Pa.
+const UNITS: [(&str, f64); 5] = [("bar", 1e5), ("pa", 1.0), ("kpa", 1e3), ("mpa", 1e6), ("psi", 6894.757293168361)];
+const HEADER_EXAMPLE: &str = "crank angle [deg], cylinder pressure [bar] absolute";
+
+/// What a header row says of the pressure column: Pa per unit, and whether it is absolute.
+struct Column {
+    scale: f64,
+    absolute: bool,
+}
+
+/// The unit inside `[…]` of a header field, lower case, if any.
+fn bracketed(field: &str) -> Option<String> {
+    let open = field.find('[')?;
+    let close = field[open..].find(']')? + open;
+    Some(field[open + 1..close].trim().to_lowercase())
+}
+
+/// Reads the header row `row` of the file `path` (line 1).
+fn header(path: &str, row: &str) -> Result<Column, ModelError> {
+    let refuse = |what: String| Err(fault(path, Some(1), what));
+    let fields: Vec<&str> = row.split(',').map(str::trim).collect();
+    if fields.len() != 2 {
+        return refuse(format!("header of {} columns, expected 2 ({HEADER_EXAMPLE})", fields.len()));
+    }
+    if fields.iter().all(|f| f.parse::<f64>().is_ok()) {
+        return refuse(format!("holds numbers, not a header: name the columns and the pressure's unit ({HEADER_EXAMPLE})"));
+    }
+    if let Some(unit) = bracketed(fields[0]).filter(|u| !matches!(u.as_str(), "deg" | "°" | "degree" | "degrees")) {
+        return refuse(format!("crank angle in [{unit}]: give it in degrees [deg]"));
+    }
+    let Some(unit) = bracketed(fields[1]) else {
+        return refuse(format!(
+            "the pressure column {:?} names no unit: give [bar], [Pa], [kPa], [MPa] or [psi] ({HEADER_EXAMPLE})",
+            fields[1]
+        ));
+    };
+    // [bara], [psig]: the unit with the reference appended.
+    let (name, suffix) = match UNITS.iter().find(|(u, _)| *u == unit) {
+        Some(_) => (unit.as_str(), None),
+        None => (&unit[..unit.len().saturating_sub(1)], unit.chars().last()),
+    };
+    let Some(&(_, scale)) = UNITS.iter().find(|(u, _)| *u == name && (suffix.is_none() || matches!(name, "bar" | "psi"))) else {
+        return refuse(format!(
+            "pressure unit [{unit}] is not one of [bar], [Pa], [kPa], [MPa], [psi] (or [bara], [barg], [psia], [psig])"
+        ));
+    };
+    let words = fields[1].to_lowercase();
+    let absolute = suffix == Some('a') || words.contains("absolute");
+    let gauge = suffix == Some('g') || words.contains("gauge");
+    if absolute == gauge {
+        return refuse(format!(
+            "say whether the pressure is absolute or gauge: write `absolute` or `gauge` in its header {:?} ({HEADER_EXAMPLE})",
+            fields[1]
+        ));
+    }
+    Ok(Column { scale, absolute })
+}
 
 /// The periodic interpolant of a trace's gauge pressure, Pa, against crank angle, rad.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -39,7 +101,7 @@ fn fault(path: &str, line: Option<usize>, what: impl std::fmt::Display) -> Model
 }
 
 impl PressureTrace {
-    /// Reads the trace at `path` (a file path, as given) and subtracts `crankcase` (Pa).
+    /// Reads the trace at `path` (a file path, as given); an absolute one less `crankcase` (Pa).
     pub fn read(path: &str, crankcase: f64) -> Result<Self, ModelError> {
         if path.is_empty() {
             return Err(ModelError("pressure_trace is empty: pressure_source = 3 needs a trace file".into()));
@@ -50,6 +112,10 @@ impl PressureTrace {
 
     /// Parses the text of a trace file named `path` (for the messages).
     pub fn parse(path: &str, text: &str, crankcase: f64) -> Result<Self, ModelError> {
+        let Some(first_row) = text.lines().next() else {
+            return Err(fault(path, None, format!("is empty: give a header row ({HEADER_EXAMPLE}) and the samples")));
+        };
+        let column = header(path, first_row)?;
         let mut samples: Vec<(f64, f64, usize)> = Vec::new();
         for (index, row) in text.lines().enumerate().skip(1) {
             let line = index + 1;
@@ -58,11 +124,7 @@ impl PressureTrace {
             }
             let fields: Vec<&str> = row.split(',').map(str::trim).collect();
             if fields.len() != 2 {
-                return Err(fault(
-                    path,
-                    Some(line),
-                    format!("{} columns, expected 2 (crank angle [deg], absolute pressure [bar])", fields.len()),
-                ));
+                return Err(fault(path, Some(line), format!("{} columns, expected 2 (crank angle, pressure)", fields.len())));
             }
             let number = |what: &str, text: &str| match text.parse::<f64>() {
                 Ok(x) if x.is_finite() => Ok(x),
@@ -74,8 +136,8 @@ impl PressureTrace {
                     return Err(fault(path, Some(line), format!("crank angle {angle}° does not increase (previous {previous}°)")));
                 }
             }
-            if pressure < 0.0 {
-                return Err(fault(path, Some(line), format!("absolute pressure {pressure} bar is negative")));
+            if column.absolute && pressure < 0.0 {
+                return Err(fault(path, Some(line), format!("absolute pressure {pressure} is negative")));
             }
             samples.push((angle, pressure, line));
         }
@@ -98,7 +160,8 @@ impl PressureTrace {
         }
         let start = first.to_radians();
         let offsets: Vec<f64> = samples.iter().map(|&(angle, _, _)| (angle - first).to_radians()).collect();
-        let values: Vec<f64> = samples.iter().map(|&(_, bar, _)| bar * 1e5 - crankcase).collect();
+        let reference = if column.absolute { crankcase } else { 0.0 };
+        let values: Vec<f64> = samples.iter().map(|&(_, p, _)| p * column.scale - reference).collect();
         let slopes = tangents(&offsets, &values);
         Ok(Self { offsets, start, values, slopes })
     }
@@ -146,7 +209,7 @@ mod tests {
     use super::*;
 
     fn csv(rows: &[(f64, f64)]) -> String {
-        let mut text = String::from("crank angle [deg],pressure [bar]\n");
+        let mut text = String::from("crank angle [deg],pressure [bar] absolute\n");
         for (a, p) in rows {
             text += &format!("{a},{p}\n");
         }
@@ -222,14 +285,50 @@ mod tests {
         }
     }
 
+    /// A file of `rows` (angle, pressure in the header's unit) under the header `pressure`.
+    fn with_header(pressure: &str, rows: &[(f64, f64)]) -> String {
+        csv(rows).replacen("pressure [bar] absolute", pressure, 1)
+    }
+
+    #[test]
+    fn the_header_sets_the_unit_and_the_reference() {
+        let rows: Vec<(f64, f64)> = (0..144).map(|k| (k as f64 * 5.0, 2.0 + (k % 7) as f64)).collect();
+        let reference = PressureTrace::parse("t.csv", &csv(&rows), 1e5).unwrap();
+        let psi = 6894.757293168361;
+        for (header, pa_per_unit) in
+            [("p [Pa] absolute", 1.0), ("p [kPa] absolute", 1e3), ("p [MPa] absolute", 1e6), ("p [psi] absolute", psi), ("p [bara]", 1e5)]
+        {
+            let scaled: Vec<(f64, f64)> = rows.iter().map(|&(a, bar)| (a, bar * 1e5 / pa_per_unit)).collect();
+            let trace = PressureTrace::parse("t.csv", &with_header(header, &scaled), 1e5).unwrap();
+            for (a, b) in trace.values.iter().zip(&reference.values) {
+                assert!((a - b).abs() < 1e-9 * b.abs().max(1e5), "{header}: {a} vs {b}");
+            }
+        }
+        // gauge: relative to ambient, taken as the crankcase pressure, so used as it is
+        for header in ["p [bar] gauge", "p [barg]"] {
+            let gauge = PressureTrace::parse("t.csv", &with_header(header, &rows), 1e5).unwrap();
+            for (g, a) in gauge.values.iter().zip(&reference.values) {
+                assert!((g - (a + 1e5)).abs() < 1e-9, "{header}: {g} vs {a}");
+            }
+        }
+    }
+
     #[test]
     fn bad_files_are_refused_naming_the_file_the_line_and_the_fault() {
-        refused("angle,p\n0,1\n5,x\n", "line 3: pressure \"x\" is not a finite number");
-        refused("angle,p\n0,1\nNaN,1\n", "line 3: crank angle \"NaN\" is not a finite number");
-        refused("angle,p\n0,1\n5,1,7\n", "line 3: 3 columns, expected 2");
-        refused("angle,p\n0,1\n5,1\n5,1\n", "line 4: crank angle 5° does not increase (previous 5°)");
-        refused("angle,p\n0,1\n5,-0.5\n", "line 3: absolute pressure -0.5 bar is negative");
-        refused("angle,p\n", "no samples after the header row");
+        let h = "angle [deg],p [bar] absolute\n";
+        refused(&format!("{h}0,1\n5,x\n"), "line 3: pressure \"x\" is not a finite number");
+        refused(&format!("{h}0,1\nNaN,1\n"), "line 3: crank angle \"NaN\" is not a finite number");
+        refused(&format!("{h}0,1\n5,1,7\n"), "line 3: 3 columns, expected 2");
+        refused(&format!("{h}0,1\n5,1\n5,1\n"), "line 4: crank angle 5° does not increase (previous 5°)");
+        refused(&format!("{h}0,1\n5,-0.5\n"), "line 3: absolute pressure -0.5 is negative");
+        refused(h, "no samples after the header row");
+        refused("", "is empty");
+        refused("0,1\n5,1\n", "line 1: holds numbers, not a header");
+        refused("angle [deg],p\n0,1\n", "line 1: the pressure column \"p\" names no unit");
+        refused("angle [deg],p [atm] absolute\n0,1\n", "line 1: pressure unit [atm] is not one of");
+        refused("angle [deg],p [bar]\n0,1\n", "line 1: say whether the pressure is absolute or gauge");
+        refused("angle [deg],p [barg] absolute\n0,1\n", "line 1: say whether the pressure is absolute or gauge");
+        refused("angle [rad],p [bar] gauge\n0,1\n", "line 1: crank angle in [rad]: give it in degrees");
         let short: Vec<(f64, f64)> = (0..100).map(|k| (k as f64 * 5.0, 2.0)).collect();
         refused(&csv(&short), "line 101: the angles span 495° (0° to 495°), not one four-stroke cycle of 720° ± one sample (5°)");
         let long: Vec<(f64, f64)> = (0..=146).map(|k| (k as f64 * 5.0, 2.0)).collect();

@@ -1,19 +1,22 @@
 //! The `impact_log` CSV: one row per impact, slide start or release, in SI units, with the crank
 //! angle in degrees as well (the last column, so readers of the older columns are unaffected). A first
 //! line starting with `#` states the crank-angle conventions: `crank_angle` in rad in [0, 4π), and
-//! `crank_angle_deg` as engine people read it, in [−360, 360), both from firing TDC.
+//! `crank_angle_deg` as engine people read it, in [−360, 360), both from firing TDC. `energy_lost` is
+//! what the normal (restitution) impulse dissipated, as `impact_energy_total` counts it;
+//! `friction_energy_lost` the tangential (friction) impulse's share, which `friction_energy_total` counts.
 //!
 //! The file always holds the events of the trajectory the instance is on: the cursor (bytes written so
 //! far) is part of the saved state, and restoring a state cuts the file back to that cursor, so rows
 //! of an abandoned future (a host's rejected step) disappear.
 
+use super::statistics::normal_energy;
 use crate::models::{EngineEvent, EngineEventKind, ModelError};
 use serde::{Deserialize, Serialize};
 use std::fs::{File, OpenOptions};
 use std::io::Write;
 
 const HEADER: &str = "# crank_angle [rad] in [0, 4π) and crank_angle_deg [deg] in [-360, 360), both from firing TDC\n\
-time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position,crank_angle_deg\n";
+time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position,crank_angle_deg,friction_energy_lost\n";
 
 /// An open log: its path and the length of what this trajectory has written.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -87,15 +90,16 @@ fn row(e: &EngineEvent) -> String {
         EngineEventKind::Slip => "slip",
     };
     format!(
-        "{},{},{kind},{},{},{},{},{},{}\n",
+        "{},{},{kind},{},{},{},{},{},{},{}\n",
         e.time,
         e.crank_angle,
         e.corner,
         e.normal_velocity_before,
         e.normal_velocity_after,
-        e.energy_lost,
+        normal_energy(e),
         e.position,
-        degrees_from_firing_tdc(e.crank_angle)
+        degrees_from_firing_tdc(e.crank_angle),
+        e.friction_energy
     )
 }
 

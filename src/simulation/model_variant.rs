@@ -34,6 +34,13 @@ impl EngineModel for ModelVariant {
         }
     }
 
+    fn prepare(&mut self, inputs: &Inputs) -> Result<(), ModelError> {
+        match self {
+            ModelVariant::CrankTrain(m) => m.prepare(inputs),
+            ModelVariant::Roller(m) => m.prepare(inputs),
+        }
+    }
+
     fn write_outputs(&self, out: &mut Outputs) {
         match self {
             ModelVariant::CrankTrain(m) => m.write_outputs(out),

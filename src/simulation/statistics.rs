@@ -51,17 +51,25 @@ fn wall_of(corner: u8) -> i8 {
 impl CycleMetrics {
     /// Takes in one impact; `slap` when it lands the piston on the other wall faster than the threshold.
     fn add(&mut self, e: &EngineEvent, slap: bool) {
+        let energy = normal_energy(e);
         self.impacts = self.impacts.saturating_add(1);
-        self.impact_energy += e.energy_lost;
+        self.impact_energy += energy;
         let side = if e.corner <= 2 { &mut self.max_impact_energy_antithrust } else { &mut self.max_impact_energy_thrust };
-        *side = side.max(e.energy_lost);
+        *side = side.max(energy);
         if slap {
             let w = usize::from(e.corner > 2);
             self.slaps[w] = self.slaps[w].saturating_add(1);
-            self.slap_energy[w] += e.energy_lost;
-            self.max_slap_energy[w] = self.max_slap_energy[w].max(e.energy_lost);
+            self.slap_energy[w] += energy;
+            self.max_slap_energy[w] = self.max_slap_energy[w].max(energy);
         }
     }
+}
+
+/// J, what an event's normal (restitution) impulse dissipated: its loss less the tangential
+/// (friction) part, which `friction_energy_total` counts. The impact outputs count only this, so
+/// that impact and friction energy partition the dissipation.
+pub fn normal_energy(e: &EngineEvent) -> f64 {
+    e.energy_lost - e.friction_energy
 }
 
 /// Whole engine cycles (4π) in an accumulated crank angle: the index of the cycle it lies in.
@@ -96,7 +104,7 @@ impl ImpactStatistics {
             self.open.add(e, previous == -wall && e.normal_velocity_before > self.slap_threshold);
             self.impacts_in_step = self.impacts_in_step.saturating_add(1);
             self.max_impact_velocity_in_step = self.max_impact_velocity_in_step.max(e.normal_velocity_before);
-            self.impact_energy_in_step += e.energy_lost;
+            self.impact_energy_in_step += normal_energy(e);
             self.impact_velocity = e.normal_velocity_before;
             self.last_impact_corner = i32::from(e.corner);
             self.last_impact_crank_angle = e.crank_angle;

@@ -125,11 +125,14 @@ fn the_impact_log_holds_the_rows_of_the_trajectory() {
     let text = std::fs::read_to_string(&path).unwrap();
     let lines: Vec<&str> = text.lines().collect();
     assert!(lines[0].starts_with("# ") && lines[0].contains("[-360, 360)"), "{}", lines[0]);
-    assert_eq!(lines[1], "time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position,crank_angle_deg");
+    assert_eq!(
+        lines[1],
+        "time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position,crank_angle_deg,friction_energy_lost"
+    );
     assert_eq!(lines.len(), 5);
     for (line, t) in lines[2..].iter().zip(impact_times(0.5, 3)) {
         let cols: Vec<&str> = line.split(',').collect();
-        assert_eq!(cols.len(), 9);
+        assert_eq!(cols.len(), 10);
         let (rad, deg): (f64, f64) = (cols[1].parse().unwrap(), cols[8].parse().unwrap());
         // the same angle from firing TDC: equal mod 720°, and within the cycle centred on firing TDC
         assert!((-360.0..360.0).contains(&deg) && ((rad.to_degrees() - deg) % 720.0).abs() < 1e-9, "{line}");
