@@ -1,9 +1,11 @@
 """Simulates one operating point of the FMU through fmpy and writes CSVs and plots of its last engine cycle.
 
-    pistonslap demo [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM] [--restitution E]
+    pistonslap demo [--engine NAME] [--params FILE.toml] [--set NAME=VALUE ...] [--pressure-trace FILE]
+                    [--friction MU] [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM] [--restitution E]
                     [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S] [--crank-0-720]
 
-Options not given keep the FMU's defaults (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
+Values apply in that order, a later one over an earlier one: the engine preset, the parameter file, then the options.
+What none sets keeps the FMU's default (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
 """
 
 from pathlib import Path
@@ -12,7 +14,9 @@ import fmpy
 import numpy as np
 
 from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate_with_events
+from .presets import PRESETS, help_text
 from .refusal import Parser, Refusal, check_start_values, number
+from .settings import parse_set, read_params, to_fmu
 from .tables import cycle_metrics, slap_rows, write_table
 
 #: Crank angle between samples (and communication points), deg: the FMU's default experiment samples every
@@ -24,6 +28,14 @@ MAGNIFICATION = 200
 
 def _parser():
     parser = Parser(prog="pistonslap demo", description=__doc__.splitlines()[0])
+    parser.add_argument("--engine", choices=PRESETS, help=f"engine preset: {help_text()}")
+    parser.add_argument("--params", type=Path, help="TOML file of parameters: name = SI number or \"number unit\"")
+    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
+                        help="any FMU parameter, SI or with a unit the FMU declares (crank_speed=3000rpm, "
+                             "peak_pressure=90bar, bore=80.08mm); repeatable")
+    parser.add_argument("--pressure-trace", type=Path,
+                        help="CSV trace (header: crank angle [deg], pressure [bar|Pa|kPa|MPa|psi] absolute|gauge)")
+    parser.add_argument("--friction", type=float, help="Coulomb friction coefficient at the liner (default 0)")
     parser.add_argument("--out", type=Path, default=Path("out"), help="output folder (default: out)")
     parser.add_argument("--rpm", type=float, help="crank speed, rpm (default 1200)")
     parser.add_argument("--peak-pressure", type=float, help="peak of the built-in gas pressure curve, bar (default 80)")
@@ -48,8 +60,24 @@ def check(args):
         raise Refusal(f"--cycles = {args.cycles}: give a whole number of engine cycles >= 1")
 
 
+def all_start_values(args, md, defaults):
+    """The start values (SI) of the preset, the parameter file, the options and --set, in that order."""
+    values = dict(PRESETS[args.engine].values) if args.engine else {}
+    if args.params:
+        values.update(read_params(args.params, md))
+    values.update(start_values(args, dict(defaults, **values)))
+    if args.pressure_trace is not None:
+        if not args.pressure_trace.is_file():
+            raise Refusal(f"--pressure-trace {args.pressure_trace}: no such file")
+        values.update(pressure_source=3, pressure_trace=str(args.pressure_trace.resolve()))
+    if args.friction is not None:
+        values["friction"] = number(args.friction, "--friction", low=0, meaning="the friction coefficient")
+    values.update(parse_set(args.set, md))
+    return to_fmu(values, defaults)
+
+
 def start_values(args, defaults):
-    """FMU start values (SI) for the options given; `defaults` are the FMU's start values by name."""
+    """FMU start values (SI) for the operating-point options given; `defaults` are the start values so far."""
     values = {}
     if args.rpm is not None:
         values["crank_speed"] = args.rpm * np.pi / 30
@@ -96,7 +124,7 @@ def main(argv=None):
         raise Refusal(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
     md = fmpy.read_model_description(str(fmu_path()))
     defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
-    values = start_values(args, defaults)
+    values = all_start_values(args, md, defaults)
     check_start_values(values, fmu_path(), md)
     p = dict(defaults, **values)
     omega, origin = p["crank_speed"], FROM_FIRING_TDC if args.crank_0_720 else CENTRED

@@ -26,6 +26,7 @@ EVENT_DTYPE = np.dtype([
     ("energy_lost", "f8"),
     ("position", "f8"),
     ("crank_angle_deg", "f8"),
+    ("friction_energy_lost", "f8"),
 ])
 
 

@@ -7,13 +7,16 @@ Points on a full (x, y) grid fill cells; scattered points (a Latin hypercube) ar
 
 from pathlib import Path
 
+import fmpy
 import matplotlib.pyplot as plt
 import numpy as np
 import pyarrow.compute as pc
 import pyarrow.parquet as pq
 from matplotlib.colors import ListedColormap
 
+from .fmu import fmu_path
 from .refusal import Parser, Refusal, number
+from .settings import display_unit
 from .sweep_point import METRICS
 
 #: The response classes in the order of their colours.
@@ -58,6 +61,8 @@ def heat_map(table, x, y, metric, path, title):
             raise Refusal(f"no swept variable {name!r} in the results (columns: {', '.join(table.column_names)})")
     if metric != "response" and metric not in METRICS:
         raise Refusal(f"--metric {metric}: give one of {', '.join(METRICS)} or response")
+    md = fmpy.read_model_description(str(fmu_path()))
+    (x_unit, x_factor), (y_unit, y_factor) = display_unit(x, md), display_unit(y, md)
     xs, ys = table[x].to_numpy().astype(float), table[y].to_numpy().astype(float)
     failed = np.array([s != "ok" for s in table["status"].to_pylist()])
     if metric == "response":
@@ -75,9 +80,10 @@ def heat_map(table, x, y, metric, path, title):
     if len(cells) == len(xs) == len(grid_x) * len(grid_y):
         image = np.full((len(grid_y), len(grid_x)), np.nan)
         image[np.searchsorted(grid_y, ys), np.searchsorted(grid_x, xs)] = values
-        artist = ax.pcolormesh(_cell_edges(grid_x), _cell_edges(grid_y), np.ma.masked_invalid(image), cmap=cmap, **norm)
+        artist = ax.pcolormesh(_cell_edges(grid_x) * x_factor, _cell_edges(grid_y) * y_factor,
+                               np.ma.masked_invalid(image), cmap=cmap, **norm)
     elif len(cells) == len(xs):
-        artist = ax.scatter(xs, ys, c=np.ma.masked_invalid(values), cmap=cmap, plotnonfinite=True, s=60, **norm)
+        artist = ax.scatter(xs * x_factor, ys * y_factor, c=np.ma.masked_invalid(values), cmap=cmap, plotnonfinite=True, s=60, **norm)
     else:
         raise Refusal(f"several points share an ({x}, {y}) pair: other variables vary; pick one value of each "
                          "with --where NAME=VALUE")
@@ -87,8 +93,8 @@ def heat_map(table, x, y, metric, path, title):
         bar.set_label("response (grey: failed or not classified)")
     else:
         bar.set_label(f"{metric} [{METRICS[metric]}] (grey: failed)")
-    ax.set_xlabel(x)
-    ax.set_ylabel(y)
+    ax.set_xlabel(f"{x} [{x_unit}]")
+    ax.set_ylabel(f"{y} [{y_unit}]")
     ax.set_title(title, fontsize="medium")
     fig.tight_layout()
     fig.savefig(path, dpi=120)

@@ -12,6 +12,7 @@ import fmpy
 
 #: fmi2Status of an error, and above it fatal.
 _FMI_ERROR = 3
+_logger = None
 
 
 class Refusal(Exception):
@@ -56,12 +57,15 @@ def whole(text, name, low):
 def check_start_values(start_values, fmu, model_description=None):
     """Initializes the FMU `fmu` (file or extracted folder) with `start_values` without stepping it; a `Refusal`
     carrying the FMU's error message when it refuses them."""
+    global _logger
     errors = []
 
     def logger(_component, _instance, status, _category, message):
         if status >= _FMI_ERROR:
             errors.append(message.decode(errors="replace"))
 
+    # fmpy hands the logger to one process-wide native proxy, which may call it after this returns: kept alive.
+    _logger = logger
     md = model_description or fmpy.read_model_description(str(fmu))
     unknown = sorted(set(start_values) - {v.name for v in md.modelVariables})
     if unknown:

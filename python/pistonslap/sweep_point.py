@@ -5,6 +5,7 @@ from fmpy.fmi1 import FMICallException
 
 from .response import CLASSIFIABLE_CYCLES, classify, roller_run
 from .fmu import CYCLE, simulate_with_events
+from .settings import to_fmu
 from .tables import side_changes
 
 #: The results' columns after the swept values, and their units.
@@ -31,6 +32,7 @@ def defaults(model_description):
 def run_point(fmu, model_description, values, cycles, skip_cycles):
     """Runs `cycles` cycles with the start values `values` from `fmu` (a file or extracted folder) and returns the
     row of metrics over the cycles after the first `skip_cycles`; an FMI error is the row's status."""
+    values = to_fmu(values, defaults(model_description))
     every = dict(defaults(model_description), **values)
     speed, angle = every["crank_speed"], CYCLE_ANGLE[every["model_variant"]]
     errors = []

@@ -7,12 +7,14 @@
     [start]                         # fixed start values of any parameter or input
     peak_pressure = 6e6
     [grid]                          # full factorial: a list, or {start, stop, num} (evenly spaced, both ends)
-    bore = {start = 0.08004, stop = 0.0802, num = 5}
+    clearance = {start = "40 um", stop = "200 um", num = 5}   # SI numbers, or strings with a unit the FMU declares
     restitution = [0.3, 0.5, 0.8]
     [random]                        # optional Latin hypercube of n samples, crossed with the grid
     n = 20
     seed = 1
-    crank_speed = [100.0, 200.0]    # [low, high]
+    crank_speed = ["1000 rpm", "2000 rpm"]    # [low, high]
+
+`clearance` is the diametral clearance bore - piston_diameter (`settings.CLEARANCE`); the runs set `bore` from it.
 """
 
 import itertools
@@ -21,6 +23,9 @@ import tomllib
 from dataclasses import dataclass
 
 import numpy as np
+
+from .refusal import Refusal
+from .settings import CLEARANCE, value_of
 
 #: The sweep sets the impact log itself (one per run, read for the metrics).
 RESERVED = ("impact_log",)
@@ -67,7 +72,7 @@ def parse(raw, model_description):
     skip = _integer(raw.get("skip_cycles", 0), "skip_cycles", minimum=0)
     if skip >= cycles:
         raise SpecError(f"skip_cycles = {skip} leaves no cycle of the {cycles} to count")
-    variables = {v.name: v for v in model_description.modelVariables}
+    variables = Variables(model_description)
 
     fixed = {name: _value(variables, f"start.{name}", name, value) for name, value in raw.get("start", {}).items()}
     if "model_variant" in raw:
@@ -95,6 +100,14 @@ def _integer(value, entry, minimum):
     return value
 
 
+class Variables(dict):
+    """The variables by name (with the diametral `clearance`) and the model description they are from."""
+
+    def __init__(self, model_description):
+        super().__init__({v.name: v for v in model_description.modelVariables}, clearance=CLEARANCE)
+        self.model_description = model_description
+
+
 def _variable(variables, name, entry):
     """The settable FMU variable `name`, or a `SpecError` naming `entry`."""
     if name in RESERVED:
@@ -115,6 +128,11 @@ def _bound(variable, which):
 def _value(variables, entry, name, value):
     """`value` checked against the type and the declared range of the variable `name`."""
     variable = _variable(variables, name, entry)
+    if isinstance(value, str) and variable.type != "String":
+        try:
+            value = value_of(name, value, variables.model_description, entry)
+        except Refusal as e:
+            raise SpecError(str(e)) from None
     if variable.type == "String":
         if not isinstance(value, str):
             raise SpecError(f"{entry} = {value!r}: {name} takes a string")
@@ -143,11 +161,10 @@ def _grid_values(variables, name, entry):
         if set(entry) != {"start", "stop", "num"}:
             raise SpecError(f"{where} = {entry!r}: give a list or {{start, stop, num}}")
         num = _integer(entry["num"], f"{where}.num", minimum=1)
-        for key in ("start", "stop"):
-            _value(variables, f"{where}.{key}", name, entry[key])
-        if num == 1 and entry["start"] != entry["stop"]:
+        start, stop = (_value(variables, f"{where}.{key}", name, entry[key]) for key in ("start", "stop"))
+        if num == 1 and start != stop:
             raise SpecError(f"{where}: num = 1 cannot span start = {entry['start']} to stop = {entry['stop']}")
-        entry = np.linspace(entry["start"], entry["stop"], num).tolist()
+        entry = np.linspace(start, stop, num).tolist()
     if not isinstance(entry, list) or not entry:
         raise SpecError(f"{where} = {entry!r}: give a non-empty list or {{start, stop, num}}")
     values = [_value(variables, f"{where}[{i}]", name, value) for i, value in enumerate(entry)]

@@ -6,6 +6,7 @@ import pyarrow as pa
 import pytest
 
 from pistonslap.heat_map import heat_map
+from pistonslap.refusal import Refusal
 
 LIGHTGREY = np.array([211, 211, 211]) / 255
 
@@ -30,5 +31,5 @@ def test_failed_and_unclassified_points_are_grey(tmp_path):
 
 
 def test_points_sharing_a_cell_are_refused(tmp_path):
-    with pytest.raises(SystemExit, match="--where"):
+    with pytest.raises(Refusal, match="--where"):
         heat_map(table(["ok"] * 4, y=(0.1, 0.1, 0.1, 0.2)), "x", "y", "impacts_per_cycle", tmp_path / "m.png", "t")

@@ -1,0 +1,130 @@
+"""Start values as users write them: `NAME=VALUE` with a unit the model description declares (`crank_speed=3000rpm`,
+`peak_pressure=90bar`, `bore=80.08mm`; no unit = SI), a TOML file of such values, and the engine presets.
+
+Every value is checked against the FMU's model description here: an unknown name or unit is a `Refusal` naming it;
+ranges and relations the FMU checks itself (`refusal.check_start_values`).
+"""
+
+import difflib
+import re
+import tomllib
+from pathlib import Path
+from types import SimpleNamespace
+
+from .refusal import Refusal
+
+#: Spellings of display units without the micro sign.
+_ALIASES = {"um": "µm", "μm": "µm"}
+_NUMBER_AND_UNIT = re.compile(r"^\s*([-+]?(?:\d+\.?\d*|\.\d+)(?:[eE][-+]?\d+)?)\s*(\S*)\s*$")
+
+
+def _unit_of(variable):
+    return variable.unit or (variable.declaredType.unit if variable.declaredType else None)
+
+
+def units(model_description):
+    """{unit: {display unit: (factor, offset)}} of the model description (display = factor · SI + offset)."""
+    table = {}
+    for unit in model_description.unitDefinitions:
+        table[unit.name] = {d.name: (d.factor, d.offset) for d in unit.displayUnits}
+    return table
+
+
+#: The running clearance as engine people quote it: diametral, c = D − d (bore less piston diameter), m (display µm).
+#: Not an FMU variable: it sets `bore` to `piston_diameter` + c (`to_fmu`).
+CLEARANCE = SimpleNamespace(
+    name="clearance", type="Real", causality="parameter", unit="m", min="0", max=None, start=None,
+    declaredType=SimpleNamespace(unit="m", min=None, max=None, displayUnit="µm"),
+    description="diametral clearance c = bore - piston_diameter")
+
+
+def settable(model_description):
+    """The parameters and inputs by name, with the diametral `clearance`."""
+    variables = {v.name: v for v in model_description.modelVariables if v.causality in ("parameter", "input")}
+    return dict(variables, clearance=CLEARANCE)
+
+
+def to_fmu(values, defaults):
+    """`values` with a diametral `clearance` turned into `bore` (piston_diameter from `values`, else `defaults`),
+    over any bore given."""
+    if "clearance" not in values:
+        return dict(values)
+    values = dict(values)
+    clearance = values.pop("clearance")
+    values["bore"] = values.get("piston_diameter", defaults["piston_diameter"]) + clearance
+    return values
+
+
+def _unknown(name, names, where):
+    close = difflib.get_close_matches(name, names, n=3)
+    hint = f" (did you mean {', '.join(close)}?)" if close else ""
+    return Refusal(f"{where}: the FMU has no parameter or input {name!r}{hint}")
+
+
+def value_of(name, text, model_description, where):
+    """The SI start value of `name` from `text` (a number with an optional unit, or a TOML value), checked."""
+    variables = settable(model_description)
+    if name not in variables:
+        raise _unknown(name, variables, where)
+    variable = variables[name]
+    if variable.type == "String":
+        return str(text)
+    if isinstance(text, bool) or variable.type == "Boolean":
+        if variable.type != "Boolean" or not isinstance(text, bool) and text not in ("true", "false"):
+            raise Refusal(f"{where}: {name} is a {variable.type}; give {'true or false' if variable.type == 'Boolean' else 'a number'}")
+        return text if isinstance(text, bool) else text == "true"
+    if isinstance(text, (int, float)):
+        number, unit = float(text), ""
+    else:
+        match = _NUMBER_AND_UNIT.match(str(text))
+        if not match:
+            raise Refusal(f"{where}: {name} = {text!r} is not a number with an optional unit")
+        number, unit = float(match.group(1)), _ALIASES.get(match.group(2), match.group(2))
+    si = _unit_of(variable)
+    if unit and unit != si:
+        display = units(model_description).get(si, {})
+        if unit not in display:
+            known = [u for u in (si, *display) if u]
+            raise Refusal(f"{where}: {name} takes {' or '.join(known) if known else 'no unit'}, not {unit!r}")
+        factor, offset = display[unit]
+        number = (number - offset) / factor
+    if variable.type in ("Integer", "Enumeration"):
+        if number != int(number):
+            raise Refusal(f"{where}: {name} = {text} is an {variable.type}: give a whole number")
+        return int(number)
+    return number
+
+
+def parse_set(assignments, model_description):
+    """`--set NAME=VALUE` arguments as start values."""
+    values = {}
+    for assignment in assignments:
+        name, equals, text = assignment.partition("=")
+        if not equals or not name.strip():
+            raise Refusal(f"--set {assignment!r}: give NAME=VALUE, e.g. crank_speed=3000rpm")
+        values[name.strip()] = value_of(name.strip(), text.strip(), model_description, f"--set {assignment}")
+    return values
+
+
+def read_params(path, model_description):
+    """A TOML file of `name = value` (a number in SI, or a string with a unit: `crank_speed = "3000 rpm"`)."""
+    path = Path(path)
+    if not path.is_file():
+        raise Refusal(f"--params {path}: no such file")
+    try:
+        with open(path, "rb") as f:
+            raw = tomllib.load(f)
+    except tomllib.TOMLDecodeError as e:
+        raise Refusal(f"--params {path}: not TOML: {e}") from None
+    return {name: value_of(name, value, model_description, f"{path}: {name}") for name, value in raw.items()}
+
+
+def display_unit(name, model_description):
+    """(unit, factor) to show the SI values of `name` in: its display unit where it declares one, else its unit."""
+    variable = settable(model_description).get(name)
+    if variable is None or variable.type != "Real":
+        return "1", 1.0
+    si = _unit_of(variable)
+    shown = variable.declaredType.displayUnit if variable.declaredType else None
+    factor, _ = units(model_description).get(si, {}).get(shown, (1.0, 0.0))
+    return (shown, factor) if shown and si != shown and factor else (si or "1", 1.0)
