@@ -233,7 +233,7 @@ impl Parameters {
         self.check_ranges()?;
         if self.bore <= self.piston_diameter {
             return Err(ModelError(format!(
-                "bore = {} m must exceed piston_diameter = {} m (the clearance is (bore − piston_diameter)/2)",
+                "bore = {} m must exceed piston_diameter = {} m (the diametral clearance c = bore − piston_diameter must be > 0)",
                 self.bore, self.piston_diameter
             )));
         }
@@ -248,7 +248,7 @@ impl Parameters {
 }
 
 pub(super) fn check_real(name: &str, value: f64, min: Option<f64>, max: Option<f64>, positive: bool, unit: &str) -> Result<(), ModelError> {
-    let refuse = |range: String| Err(ModelError(format!("{name} = {value} {unit} is out of range: {range}")));
+    let refuse = |range: String| Err(ModelError(format!("{name} = {value}{}{unit} is out of range: {range}", if unit.is_empty() { "" } else { " " })));
     if !value.is_finite() {
         return refuse("must be finite".into());
     }
