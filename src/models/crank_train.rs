@@ -11,6 +11,7 @@ use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
 mod energy;
+use energy::by_wall;
 
 /// The adaptive RK4 step's largest size, s (7.2° of crank angle at 1200 rpm), and its bound on
 /// the local error of each step on the corner gaps, m. Event times and velocities do not depend
@@ -41,11 +42,6 @@ pub struct CrankTrain {
     /// The impacts' impulse on the piston since the start per wall [anti-thrust (K1, K2), major
     /// thrust (K3, K4)], N·s.
     impact_impulse: [f64; 2],
-}
-
-/// A per-corner quantity summed per wall: [K1 + K2 (anti-thrust), K3 + K4 (major thrust)].
-fn by_wall(x: &Vector4<f64>) -> [f64; 2] {
-    [x[0] + x[1], x[2] + x[3]]
 }
 
 /// How the start departs from the nominal (zero-clearance) slider-crank state: the pin's lateral
@@ -286,14 +282,6 @@ impl CrankTrain {
             Drive::Free(s) => (s.friction_forces(), s.friction_dissipation()),
         };
         (forces, power, sliding + self.impact_friction_energy)
-    }
-
-    /// The persistent contact forces' impulse on the piston per wall since the start, N·s.
-    fn contact_impulse(&self) -> [f64; 2] {
-        by_wall(&match &self.drive {
-            Drive::Prescribed(s) => s.contact_impulses(),
-            Drive::Free(s) => s.contact_impulses(),
-        })
     }
 
     /// The integrator's work so far (see `StepCounts`).

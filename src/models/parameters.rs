@@ -248,7 +248,9 @@ impl Parameters {
 }
 
 pub(super) fn check_real(name: &str, value: f64, min: Option<f64>, max: Option<f64>, positive: bool, unit: &str) -> Result<(), ModelError> {
-    let refuse = |range: String| Err(ModelError(format!("{name} = {value}{}{unit} is out of range: {range}", if unit.is_empty() { "" } else { " " })));
+    let refuse = |range: String| {
+        Err(ModelError(format!("{name} = {value}{}{unit} is out of range: {range}", if unit.is_empty() { "" } else { " " })))
+    };
     if !value.is_finite() {
         return refuse("must be finite".into());
     }

@@ -1,4 +1,4 @@
-//! The crank train's energy balance terms.
+//! The crank train's energy balance terms, and the liner's impulse per wall.
 //!
 //! With the crank held at ω (crank_mode 1) every impulse Λ on the corners is met by an impulse P_d
 //! of the drive that keeps φ̇1 = ω: the full equations integrated over the impact,
@@ -27,6 +27,21 @@ impl PrescribedCrank {
         let drive_impulse = (full.mass.fixed_view::<1, 2>(0, 1) * jump)[0] - generalized[0];
         Some(drive_impulse * self.speed(t))
     }
+}
+
+impl CrankTrain {
+    /// The persistent contact forces' impulse on the piston per wall since the start, N·s.
+    pub(super) fn contact_impulse(&self) -> [f64; 2] {
+        by_wall(&match &self.drive {
+            Drive::Prescribed(s) => s.contact_impulses(),
+            Drive::Free(s) => s.contact_impulses(),
+        })
+    }
+}
+
+/// A per-corner quantity summed per wall: [K1 + K2 (anti-thrust), K3 + K4 (major thrust)].
+pub(super) fn by_wall(x: &Vector4<f64>) -> [f64; 2] {
+    [x[0] + x[1], x[2] + x[3]]
 }
 
 impl EnergyBalance for CrankTrain {
