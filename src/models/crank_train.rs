@@ -21,6 +21,9 @@ mod energy;
 /// speeds to 2.3e-4 relative, as a fixed 1e-4 s step does (4.5e-9 s, 2.8e-4) with 2.3×
 /// as many RK4 steps; 1e-10 m gives 3.0e-8 s and 8.7e-4.
 pub const MAX_STEP: f64 = 1e-3;
+/// The crank angle one step of the prescribed crank may span, rad (7.2°: `MAX_STEP` at 1200 rpm, so
+/// that slower cranks keep `MAX_STEP`); see `PrescribedCrank::largest_step`.
+pub const MAX_STEP_ANGLE: f64 = 2.0 * PI / 50.0;
 pub const LOCAL_ERROR: f64 = 1e-11;
 
 /// The crank train in one of its two crank modes.
