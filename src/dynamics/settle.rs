@@ -247,8 +247,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let (_, jump) = coulomb.enumerate(&choices, (&b.0, &b.1), scale).ok_or(refused)?;
         let v_plus = coulomb.motion(v, &jump);
         let hd_plus = ev.gap_jacobian * v_plus + ev.gap_time_rate;
-        let friction_lost = impact::energy_lost(&jump.tangent, &slip, &tangents.slip(&v_plus));
-        let lost = impact::energy_lost(&jump.normal, &hd, &hd_plus) + friction_lost;
+        let lost = impact::energy_lost(&jump.normal, &hd, &hd_plus) + impact::energy_lost(&jump.tangent, &slip, &tangents.slip(&v_plus));
+        // Friction's share: −Λ_T ξ_T / (1 + ε) = μ Λ_N |ξ_T| / (1 + ε) ≥ 0, the term the Coulomb
+        // law contributes to ΔT (friction.rs); the work of Λ_T on the mean slip, −Λ_T (γ⁻ + γ⁺)/2,
+        // can be negative where the impulses couple the normal and tangential motion.
+        let xi = tangents.slip(&v_plus) + eps.component_mul(&slip);
+        let friction_lost = SVector::<f64, M>::from_fn(|i, _| -jump.tangent[i] * xi[i] / (1.0 + eps[i]));
         Ok(Jump { normal: jump.normal, tangent: jump.tangent, v: v_plus, hd: hd_plus, lost, friction_lost })
     }
 

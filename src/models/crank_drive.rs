@@ -8,10 +8,10 @@
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
 use super::crank_linkage::{Linkage, Loads, Trig};
+use super::crank_train::MAX_STEP_ANGLE;
 use super::last_value::LastValue;
 use super::pressure::FourStrokePressure;
 use super::pressure_trace::PressureTrace;
-use super::crank_train::MAX_STEP_ANGLE;
 use super::{InputPolynomial, Inputs, ModelError, Parameters};
 use crate::dynamics::{Evaluation, System, Tangents};
 use nalgebra::{Matrix2, Matrix3, Matrix4x2, Vector2, Vector3, Vector4};
