@@ -453,7 +453,7 @@ fn between<S: System<N, M>, const N: usize, const M: usize>(
         let (h, x) = (end.t - s0.t, (t - s0.t) / (end.t - s0.t));
         let (x2, x3) = (x * x, x * x * x);
         let (rise, mut slopes) = (end.friction_work - s0.friction_work, [h * s0.friction_power(), h * end.friction_power()]);
-        let norm = slopes[0].hypot(slopes[1]);
+        let norm = libm::hypot(slopes[0], slopes[1]);
         if norm > 3.0 * rise {
             slopes = slopes.map(|m| m * (3.0 * rise).max(0.0) / norm);
         }

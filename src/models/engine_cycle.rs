@@ -185,7 +185,7 @@ impl EngineCycle {
     pub fn volume(&self, theta: f64) -> Volume {
         let p = &self.parameters;
         let (r, l, area) = (0.5 * p.stroke, p.rod_length, p.area());
-        let (sin, cos) = theta.sin_cos();
+        let (sin, cos) = libm::sincos(theta);
         let root = (l * l - r * r * sin * sin).sqrt();
         let s = r + l - r * cos - root;
         let ds = r * sin + r * r * sin * cos / root;
@@ -202,7 +202,7 @@ impl EngineCycle {
             return 0.0;
         }
         let xm = x.powi(WIEBE_FORM);
-        let rate = WIEBE_EFFICIENCY * f64::from(WIEBE_FORM + 1) / p.burn_duration * xm * (-WIEBE_EFFICIENCY * xm * x).exp();
+        let rate = WIEBE_EFFICIENCY * f64::from(WIEBE_FORM + 1) / p.burn_duration * xm * libm::exp(-WIEBE_EFFICIENCY * xm * x);
         p.heat_release * rate
     }
 
@@ -223,7 +223,7 @@ impl EngineCycle {
         } else if theta <= PI {
             let (p_evo, _) = self.closed_pressure(evo);
             let phase = FRAC_PI_2 * (theta - evo) / (PI - evo);
-            let (sin, cos) = phase.sin_cos();
+            let (sin, cos) = libm::sincos(phase);
             let excess = p_evo - p.exhaust_pressure;
             (p.exhaust_pressure + excess * cos * cos, -excess * 2.0 * sin * cos * FRAC_PI_2 / (PI - evo))
         } else if theta < 2.0 * PI {
@@ -382,13 +382,13 @@ mod tests {
         let mut worst: f64 = 0.0;
         for k in 0..=20_000 {
             let theta = -PI + (PI + p.exhaust_valve_opening) * k as f64 / 20_000.0;
-            let exact = p.intake_pressure * (v_ivc / model.volume(theta).v).powf(p.polytropic_exponent);
+            let exact = p.intake_pressure * libm::pow(v_ivc / model.volume(theta).v, p.polytropic_exponent);
             worst = worst.max((model.pressure(theta).0 / exact - 1.0).abs());
         }
         println!("motored cycle: largest relative error against p Vⁿ = const {worst:.2e}");
         assert!(worst < 1e-8, "largest relative error {worst:e}");
         // The compression end pressure of the closed form: p_intake ε^n.
-        let tdc = p.intake_pressure * p.compression_ratio.powf(p.polytropic_exponent);
+        let tdc = p.intake_pressure * libm::pow(p.compression_ratio, p.polytropic_exponent);
         assert!((model.pressure(0.0).0 / tdc - 1.0).abs() < 1e-8);
     }
 
@@ -469,7 +469,7 @@ mod tests {
         println!("fired default: IMEP {:.3} bar, peak {:.2} bar at {at:.1}° after firing TDC", fired.imep(14_400) / 1e5, peak / 1e5);
         // Combustion raises the peak well above the motored compression pressure p_intake ε^n, after TDC.
         let p = fired.parameters();
-        let motored = p.intake_pressure * p.compression_ratio.powf(p.polytropic_exponent);
+        let motored = p.intake_pressure * libm::pow(p.compression_ratio, p.polytropic_exponent);
         assert!(peak > 1.3 * motored && peak < 200e5 && at > 0.0 && at < 30.0, "peak {peak} Pa at {at}°");
     }
 }

@@ -37,7 +37,7 @@ pub(super) fn validate(p: &Parameters) -> Result<(), ModelError> {
     p.validate()?;
     check(p.skirt_length > 0.0, || format!("skirt_length ({} m) must be positive: the corners K2, K4 lie at its end", p.skirt_length))?;
     // The corner description (A&K eq 26) holds while the piston cannot turn across the bore.
-    let diagonal = p.piston_diameter.hypot(p.skirt_length);
+    let diagonal = libm::hypot(p.piston_diameter, p.skirt_length);
     check(p.bore < diagonal, || {
         format!("bore ({} m) must be below the piston diagonal √(piston_diameter² + skirt_length²) ({diagonal} m)", p.bore)
     })?;
@@ -71,9 +71,8 @@ fn plausible_links(p: &Parameters) -> Result<(), ModelError> {
         ("rod", p.rod_mass, p.rod_inertia, p.rod_length, "rod_length"),
         ("crank", p.crank_mass, p.crank_inertia, p.crank_radius, "crank_radius"),
     ];
-    let (lightest, heaviest) = links.iter().fold((links[0], links[0]), |(lo, hi), &l| {
-        (if l.1 < lo.1 { l } else { lo }, if l.1 > hi.1 { l } else { hi })
-    });
+    let (lightest, heaviest) =
+        links.iter().fold((links[0], links[0]), |(lo, hi), &l| (if l.1 < lo.1 { l } else { lo }, if l.1 > hi.1 { l } else { hi }));
     check(heaviest.1 <= MAX_MASS_RATIO * lightest.1, || {
         format!(
             "{}_mass ({} kg) and {}_mass ({} kg) differ by more than a factor {MAX_MASS_RATIO}: the linkage's inertia matrix is \
