@@ -113,8 +113,11 @@ STALLING_FREE_CRANK = {"model_variant": 1, "piston_diameter": 0.0396912, "skirt_
 
 
 @pytest.mark.parametrize("params, inputs, stop, step, refusal", [
-    # mu = 1.52 against this design's critical 0.437: the sliding problem of K1, K4 had no solution.
-    (PAINLEVE, {"crank_speed": 23.5723}, 0.267722, 0.00689, ["friction (1.52233)", "critical coefficient 0.437"]),
+    # mu = 1.52: the sliding problem of K1, K4 had no solution; beyond friction's maximum 1, and at 0.5 beyond this
+    # design's critical 0.437.
+    (PAINLEVE, {"crank_speed": 23.5723}, 0.267722, 0.00689, ["friction = 1.52233", "must be in [0, 1]"]),
+    ({**PAINLEVE, "friction": 0.5}, {"crank_speed": 23.5723}, 0.267722, 0.00689,
+     ["friction (0.5)", "critical coefficient 0.437"]),
     # rod ratio 1.06: the corners left the bore by 5e-9 m.
     (SHORT_ROD, {"crank_speed": 632.02}, 0.00998995, 0.00104, ["rod_length (0.0598013 m)", "1.5 ×"]),
     # a 1.3 g piston on a 15.7 kg rod and a 324 kg crank: the state went non-finite.
