@@ -189,15 +189,25 @@ def write(rows, out):
 
 
 def main(argv=None):
+    import sys
+
+    from .engine_cycle_presets import PRESETS, slap_geometry
+
     parser = argparse.ArgumentParser(prog="pistonslap coupled", description=__doc__.split("\n\n")[0])
     parser.add_argument("--out", default="out/coupled")
-    parser.add_argument("--cycles", type=int, default=20, help="engine cycles at the constant default speed")
+    parser.add_argument("--cycles", type=int, default=20, help="engine cycles at the engine's constant speed")
     parser.add_argument("--step", type=float, default=1e-3, help="communication step, s")
     parser.add_argument("--held", action="store_true", help="hold the inputs over each step (no derivatives)")
+    parser.add_argument("--engine", help=f"EngineCycle preset: {', '.join(PRESETS)} (default: the FMU's defaults)")
     args = parser.parse_args(argv)
-    period = CYCLE / 125.66
+    if args.engine is not None and args.engine not in PRESETS:
+        print(f"pistonslap coupled: unknown --engine {args.engine!r} (presets: {', '.join(PRESETS)})", file=sys.stderr)
+        raise SystemExit(2)
+    engine = PRESETS[args.engine]["engine"] if args.engine else {}
+    slap = slap_geometry(engine) if args.engine else {}
+    period = CYCLE / engine.get("speed_start", 125.66)
     stop = round(args.cycles * period / args.step) * args.step
-    rows = run(stop, args.step, derivatives=not args.held)
+    rows = run(stop, args.step, engine_values=engine, slap_values=slap, derivatives=not args.held)
     write(rows, args.out)
     print(f"{args.out}: {len(rows) - 1} steps, {int(rows['impact_count'][-1])} impacts, "
           f"{energy_per_cycle(rows, 2, args.cycles - 1):.4g} J per cycle after two cycles")

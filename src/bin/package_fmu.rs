@@ -4,10 +4,15 @@
 //! The one binary serves both FMUs (it makes an instance of the model whose GUID it gets):
 //! - `PistonSlap.fmu`: `modelDescription.xml` and the documentation's variable table, both generated from
 //!   `modelDescription/variables.xml`, the binary as `binaries/linux64/PistonSlap.so`, and `resources/`;
-//! - `EngineCycle.fmu`: its `modelDescription.xml` (from `modelDescription/variables_engine_cycle.xml`) and the binary
-//!   as `binaries/linux64/EngineCycle.so`.
+//! - `EngineCycle.fmu`: its `modelDescription.xml` (from `modelDescription/variables_engine_cycle.xml`), its
+//!   documentation (`documentation/engine_cycle.html` with the variable table) and the binary as
+//!   `binaries/linux64/EngineCycle.so`.
+//!
+//! Each FMU's copy of the binary is stamped with its model (`pistonslap::fmi::identity`): it then refuses the
+//! other FMU's GUID.
 
-use pistonslap::fmi::description::{engine_cycle, Causality, Kind, MODEL_DESCRIPTION_XML, VARIABLES};
+use pistonslap::fmi::description::{engine_cycle, Causality, Kind, Variable, MODEL_DESCRIPTION_XML, VARIABLES};
+use pistonslap::fmi::identity::{stamp, Identity};
 use std::fs::File;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -31,19 +36,26 @@ fn run() -> Result<(), String> {
     let binary =
         std::fs::read(&library).map_err(|e| format!("cannot read {} ({e}); run `cargo build --release` first", library.display()))?;
     std::fs::create_dir_all(&out_dir).map_err(|e| format!("cannot create {}: {e}", out_dir.display()))?;
-    let documentation = documentation();
+    let stamped = |identity| {
+        let mut copy = binary.clone();
+        stamp(&mut copy, identity).map(|()| copy).map_err(|e| format!("{}: {e}", library.display()))
+    };
+    let (slap_binary, engine_binary) = (stamped(Identity::PistonSlap)?, stamped(Identity::EngineCycle)?);
+    let slap_documentation = documentation(DOCUMENTATION, &VARIABLES);
+    let engine_documentation = documentation(ENGINE_DOCUMENTATION, &engine_cycle::VARIABLES);
     let piston_slap: [(&str, &[u8], bool); 7] = [
         ("modelDescription.xml", MODEL_DESCRIPTION_XML.as_bytes(), false),
-        ("binaries/linux64/PistonSlap.so", &binary, true),
-        ("documentation/index.html", documentation.as_bytes(), false),
+        ("binaries/linux64/PistonSlap.so", &slap_binary, true),
+        ("documentation/index.html", slap_documentation.as_bytes(), false),
         ("documentation/geometry.svg", GEOMETRY_SVG.as_bytes(), false),
         ("resources/README.txt", RESOURCES_README.as_bytes(), false),
         ("resources/full_load.csv", FULL_LOAD_TRACE.as_bytes(), false),
         ("resources/motored.csv", MOTORED_TRACE.as_bytes(), false),
     ];
-    let engine_cycle: [(&str, &[u8], bool); 2] = [
+    let engine_cycle: [(&str, &[u8], bool); 3] = [
         ("modelDescription.xml", engine_cycle::MODEL_DESCRIPTION_XML.as_bytes(), false),
-        ("binaries/linux64/EngineCycle.so", &binary, true),
+        ("binaries/linux64/EngineCycle.so", &engine_binary, true),
+        ("documentation/index.html", engine_documentation.as_bytes(), false),
     ];
     for (name, files, variables) in
         [("PistonSlap.fmu", &piston_slap[..], VARIABLES.len()), ("EngineCycle.fmu", &engine_cycle[..], engine_cycle::VARIABLES.len())]
@@ -76,16 +88,17 @@ fn escape(s: &str) -> String {
     s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
 }
 
-/// The FMU's documentation page (`documentation/index.html` of the sources, placeholders `{{…}}`) and the
-/// geometry sketch it shows.
+/// The FMUs' documentation pages (`documentation/index.html` and `documentation/engine_cycle.html` of the sources,
+/// placeholders `{{…}}`) and the geometry sketch PistonSlap's shows.
 const DOCUMENTATION: &str = include_str!("../../documentation/index.html");
+const ENGINE_DOCUMENTATION: &str = include_str!("../../documentation/engine_cycle.html");
 const GEOMETRY_SVG: &str = include_str!("../../documentation/geometry.svg");
 
-/// documentation/index.html: what the model is, its conventions, its variables (from the same table as
-/// the XML), its assumptions and references.
-fn documentation() -> String {
+/// documentation/index.html of `template`: what the model is, its conventions, its variables (from the same
+/// table as the XML), its assumptions and references.
+fn documentation(template: &str, variables: &[Variable]) -> String {
     let mut rows = String::new();
-    for (vr, v) in VARIABLES.iter().enumerate() {
+    for (vr, v) in variables.iter().enumerate() {
         let causality = match v.causality {
             Causality::Input => "input",
             Causality::Output => "output",
@@ -105,5 +118,5 @@ fn documentation() -> String {
             escape(v.description)
         ));
     }
-    DOCUMENTATION.replace("{{version}}", env!("CARGO_PKG_VERSION")).replace("{{variables}}", &rows)
+    template.replace("{{version}}", env!("CARGO_PKG_VERSION")).replace("{{variables}}", &rows)
 }
