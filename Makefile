@@ -8,17 +8,24 @@ FMU := target/fmu/PistonSlap.fmu
 ENGINE_FMU := target/fmu/EngineCycle.fmu
 
 PISTONSLAP := $(VENV)/bin/pistonslap
+# The cross toolchain (build/toolchain.sh): pinned, unpacked once per machine.
+CROSS_CACHE ?= $(or $(XDG_CACHE_HOME),$(HOME)/.cache)/pistonslap
 
 # Plots render without a display.
 export MPLBACKEND := Agg
 
-.PHONY: fmu venv demo coupled test thesis bench soak clean
+.PHONY: toolchain fmu venv demo coupled test thesis bench soak clean
 
-# cargo decides what to rebuild, so this always asks it. One binary, packed as PistonSlap.fmu and as its
-# partner EngineCycle.fmu; the Python package carries a copy of both.
+# The cross compilers of win64 and of the glibc 2.28 baseline (Debian's rustc-web, MinGW-w64, Wine, cargo-zigbuild),
+# pinned; installs what is missing (apt needs root), otherwise only checks.
+toolchain:
+	build/toolchain.sh $(CROSS_CACHE)
+
+# cargo decides what to rebuild, so this always asks it. One binary per platform (linux64, and win64 where
+# `make toolchain` ran), packed as PistonSlap.fmu and as its partner EngineCycle.fmu; the Python package carries
+# a copy of both.
 fmu:
-	cargo build --release
-	cargo run --release --bin package_fmu
+	build/fmu.sh $(CROSS_CACHE)
 	mkdir -p python/pistonslap/fmu
 	cp $(FMU) python/pistonslap/fmu/PistonSlap.fmu
 	cp $(ENGINE_FMU) python/pistonslap/fmu/EngineCycle.fmu
@@ -44,8 +51,8 @@ coupled: fmu venv
 	for preset in $$($(VENV_PYTHON) -c "from pistonslap.engine_cycle_presets import PRESETS; print(*PRESETS)"); do $(PISTONSLAP) coupled --engine $$preset --out out/coupled/$$preset || exit 1; done
 
 # The style gate (rustfmt, clippy with warnings as errors), the Rust tests, then the fmpy tests
-# against the packaged FMU; fails if any fails.
-test: fmu venv
+# against the packaged FMU, its win64 binary under Wine among them; fails if any fails.
+test: toolchain fmu venv
 	cargo fmt --check
 	cargo clippy --all-targets -- -D warnings
 	cargo test --release

@@ -52,11 +52,11 @@ fn states(p: &Parameters, speed: f64) -> Vec<(f64, SVector<f64, 3>, SVector<f64,
             let t = cycle * k as f64 / STATES as f64;
             let angle = p.crank_angle_start + speed * t;
             let s = geometry.at(angle);
-            let rock = (7.0 * angle).sin();
+            let rock = libm::sin(7.0 * angle);
             (
                 t,
                 Vector3::new(angle, s.rod_angle + 1e-4 * rock, 2e-3 * rock),
-                Vector3::new(speed, s.rod_rate * speed, 14.0 * speed * 2e-3 * rock.cos()),
+                Vector3::new(speed, s.rod_rate * speed, 14.0 * speed * 2e-3 * libm::cos(rock)),
             )
         })
         .collect()

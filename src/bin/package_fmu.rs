@@ -1,15 +1,14 @@
-//! Packs the FMUs: `cargo run --release --bin package_fmu [-- <libpistonslap.so> [<out directory>]]`.
+//! Packs the FMUs: `cargo run --release --bin package_fmu [-- [--linux64 <.so>] [--win64 <.dll>] [--out <directory>]]`.
 //!
-//! Defaults: the cdylib next to this executable (the same cargo profile directory) and `<target>/fmu/`.
-//! The one binary serves both FMUs (it makes an instance of the model whose GUID it gets):
+//! Defaults: the linux64 cdylib next to this executable (the same cargo profile directory), no win64 binary,
+//! and `<target>/fmu/`. The one binary of each platform serves both FMUs, each FMU's copy stamped with its model
+//! (`pistonslap::fmi::identity`) so that it refuses the other FMU's GUID:
 //! - `PistonSlap.fmu`: `modelDescription.xml` and the documentation's variable table, both generated from
-//!   `modelDescription/variables.xml`, the binary as `binaries/linux64/PistonSlap.so`, and `resources/`;
+//!   `modelDescription/variables.xml`, the binaries as `binaries/<platform>/PistonSlap.{so,dll}`, and
+//!   `resources/`;
 //! - `EngineCycle.fmu`: its `modelDescription.xml` (from `modelDescription/variables_engine_cycle.xml`), its
-//!   documentation (`documentation/engine_cycle.html` with the variable table) and the binary as
-//!   `binaries/linux64/EngineCycle.so`.
-//!
-//! Each FMU's copy of the binary is stamped with its model (`pistonslap::fmi::identity`): it then refuses the
-//! other FMU's GUID.
+//!   documentation (`documentation/engine_cycle.html` with the variable table) and the binaries as
+//!   `binaries/<platform>/EngineCycle.{so,dll}`.
 
 use pistonslap::fmi::description::{engine_cycle, Causality, Kind, Variable, MODEL_DESCRIPTION_XML, VARIABLES};
 use pistonslap::fmi::identity::{stamp, Identity};
@@ -26,52 +25,81 @@ fn main() {
     }
 }
 
+/// A platform's folder under `binaries/` (FMI 2.0 §2.4) and its shared-library extension.
+const PLATFORMS: [(&str, &str, &str); 2] = [("--linux64", "linux64", "so"), ("--win64", "win64", "dll")];
+
 fn run() -> Result<(), String> {
     let here = std::env::current_exe().map_err(|e| e.to_string())?;
     let profile_dir = here.parent().ok_or("no executable directory")?.to_path_buf();
-    let mut args = std::env::args_os().skip(1);
-    let library = args.next().map_or_else(|| profile_dir.join("libpistonslap.so"), PathBuf::from);
     let target_dir = profile_dir.parent().unwrap_or(&profile_dir);
-    let out_dir = args.next().map_or_else(|| target_dir.join("fmu"), PathBuf::from);
-    let binary =
-        std::fs::read(&library).map_err(|e| format!("cannot read {} ({e}); run `cargo build --release` first", library.display()))?;
+    let mut libraries: Vec<(usize, PathBuf)> = vec![(0, profile_dir.join("libpistonslap.so"))];
+    let mut out_dir = target_dir.join("fmu");
+    let mut args = std::env::args_os().skip(1);
+    while let Some(flag) = args.next() {
+        let value = args.next().map(PathBuf::from).ok_or_else(|| format!("{} needs a path", flag.to_string_lossy()))?;
+        match PLATFORMS.iter().position(|p| flag == p.0) {
+            Some(platform) => {
+                libraries.retain(|(p, _)| *p != platform);
+                libraries.push((platform, value));
+            }
+            None if flag == "--out" => out_dir = value,
+            None => return Err(format!("unknown option {}: --linux64, --win64 or --out", flag.to_string_lossy())),
+        }
+    }
+    let binaries = libraries
+        .iter()
+        .map(|(platform, path)| {
+            std::fs::read(path)
+                .map(|bytes| (PLATFORMS[*platform], bytes))
+                .map_err(|e| format!("cannot read {} ({e}); run `make fmu`", path.display()))
+        })
+        .collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(&out_dir).map_err(|e| format!("cannot create {}: {e}", out_dir.display()))?;
-    let stamped = |identity| {
-        let mut copy = binary.clone();
-        stamp(&mut copy, identity).map(|()| copy).map_err(|e| format!("{}: {e}", library.display()))
-    };
-    let (slap_binary, engine_binary) = (stamped(Identity::PistonSlap)?, stamped(Identity::EngineCycle)?);
     let slap_documentation = documentation(DOCUMENTATION, &VARIABLES);
     let engine_documentation = documentation(ENGINE_DOCUMENTATION, &engine_cycle::VARIABLES);
-    let piston_slap: [(&str, &[u8], bool); 7] = [
-        ("modelDescription.xml", MODEL_DESCRIPTION_XML.as_bytes(), false),
-        ("binaries/linux64/PistonSlap.so", &slap_binary, true),
-        ("documentation/index.html", slap_documentation.as_bytes(), false),
-        ("documentation/geometry.svg", GEOMETRY_SVG.as_bytes(), false),
-        ("resources/README.txt", RESOURCES_README.as_bytes(), false),
-        ("resources/full_load.csv", FULL_LOAD_TRACE.as_bytes(), false),
-        ("resources/motored.csv", MOTORED_TRACE.as_bytes(), false),
+    // Each model's copies of the binaries, stamped with its identity.
+    let binaries_of = |model: &str, identity: Identity| -> Result<Vec<(String, Vec<u8>, bool)>, String> {
+        binaries
+            .iter()
+            .map(|((_, folder, ext), bytes)| {
+                let mut copy = bytes.clone();
+                stamp(&mut copy, identity).map_err(|e| format!("the {folder} binary: {e}"))?;
+                Ok((format!("binaries/{folder}/{model}.{ext}"), copy, true))
+            })
+            .collect()
+    };
+    let piston_slap_files: [(&str, &[u8]); 6] = [
+        ("modelDescription.xml", MODEL_DESCRIPTION_XML.as_bytes()),
+        ("documentation/index.html", slap_documentation.as_bytes()),
+        ("documentation/geometry.svg", GEOMETRY_SVG.as_bytes()),
+        ("resources/README.txt", RESOURCES_README.as_bytes()),
+        ("resources/full_load.csv", FULL_LOAD_TRACE.as_bytes()),
+        ("resources/motored.csv", MOTORED_TRACE.as_bytes()),
     ];
-    let engine_cycle: [(&str, &[u8], bool); 3] = [
-        ("modelDescription.xml", engine_cycle::MODEL_DESCRIPTION_XML.as_bytes(), false),
-        ("binaries/linux64/EngineCycle.so", &engine_binary, true),
-        ("documentation/index.html", engine_documentation.as_bytes(), false),
+    let engine_cycle_files: [(&str, &[u8]); 2] = [
+        ("modelDescription.xml", engine_cycle::MODEL_DESCRIPTION_XML.as_bytes()),
+        ("documentation/index.html", engine_documentation.as_bytes()),
     ];
-    for (name, files, variables) in
-        [("PistonSlap.fmu", &piston_slap[..], VARIABLES.len()), ("EngineCycle.fmu", &engine_cycle[..], engine_cycle::VARIABLES.len())]
-    {
-        let out = out_dir.join(name);
-        write_fmu(&out, files).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
-        println!("wrote {} ({variables} variables, binary {})", out.display(), library.display());
+    let platforms: Vec<&str> = binaries.iter().map(|((_, folder, _), _)| *folder).collect();
+    for (name, identity, files, variables) in [
+        ("PistonSlap", Identity::PistonSlap, &piston_slap_files[..], VARIABLES.len()),
+        ("EngineCycle", Identity::EngineCycle, &engine_cycle_files[..], engine_cycle::VARIABLES.len()),
+    ] {
+        let stamped = binaries_of(name, identity)?;
+        let mut entries: Vec<(String, &[u8], bool)> = files.iter().map(|&(path, bytes)| (path.to_string(), bytes, false)).collect();
+        entries.extend(stamped.iter().map(|(path, bytes, executable)| (path.clone(), &bytes[..], *executable)));
+        let out = out_dir.join(format!("{name}.fmu"));
+        write_fmu(&out, &entries).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
+        println!("wrote {} ({variables} variables, binaries {})", out.display(), platforms.join(" and "));
     }
     Ok(())
 }
 
 /// The archive of `files`: (name in the archive, bytes, executable).
-fn write_fmu(out: &Path, files: &[(&str, &[u8], bool)]) -> zip::result::ZipResult<()> {
+fn write_fmu(out: &Path, files: &[(String, &[u8], bool)]) -> zip::result::ZipResult<()> {
     let mut zip = zip::ZipWriter::new(File::create(out)?);
     let text = SimpleFileOptions::default().compression_method(CompressionMethod::Deflated);
-    for &(name, bytes, executable) in files {
+    for &(ref name, bytes, executable) in files {
         zip.start_file(name, if executable { text.unix_permissions(0o755) } else { text })?;
         zip.write_all(bytes)?;
     }

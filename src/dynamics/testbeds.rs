@@ -58,7 +58,7 @@ impl Floor {
             Floor::Fixed => (0.0, 0.0, 0.0),
             Floor::Moving { velocity } => (velocity * t, velocity, 0.0),
             Floor::Oscillating { amplitude: a, angular_frequency: w } => {
-                let (s, c) = (w * t).sin_cos();
+                let (s, c) = libm::sincos(w * t);
                 (a * s, a * w * c, -a * w * w * s)
             }
         }
@@ -116,7 +116,7 @@ impl Rod {
 impl System<3, 2> for Rod {
     fn evaluate(&self, t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> Evaluation<3, 2> {
         let half = 0.5 * self.length;
-        let (s, c) = q[2].sin_cos();
+        let (s, c) = libm::sincos(q[2]);
         let spin = half * s * qd[2] * qd[2];
         let (yf, vf, af) = self.floor.motion(t);
         let (centre, rise) = (q[1] - yf, half * s);
@@ -137,7 +137,7 @@ impl System<3, 2> for Rod {
     }
     fn tangents(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> Tangents<3, 2> {
         let half = 0.5 * self.length;
-        let (s, c) = q[2].sin_cos();
+        let (s, c) = libm::sincos(q[2]);
         let spin = half * c * qd[2] * qd[2];
         Tangents {
             jacobian: SMatrix::<f64, 2, 3>::new(1.0, 0.0, half * s, 1.0, 0.0, -half * s),
@@ -194,14 +194,14 @@ pub struct DoublePendulum {
 impl DoublePendulum {
     pub fn mass_matrix(&self, q: &Vector2<f64>) -> Matrix2<f64> {
         let ([m1, m2], [l1, l2]) = (self.masses, self.lengths);
-        let coupling = m2 * l1 * l2 * (q[0] - q[1]).cos();
+        let coupling = m2 * l1 * l2 * libm::cos(q[0] - q[1]);
         Matrix2::new((m1 + m2) * l1 * l1, coupling, coupling, m2 * l2 * l2)
     }
 
     /// Total mechanical energy `T + V`.
     pub fn energy(&self, q: &Vector2<f64>, qd: &Vector2<f64>) -> f64 {
         let ([m1, m2], [l1, l2]) = (self.masses, self.lengths);
-        let potential = -(m1 + m2) * self.gravity * l1 * q[0].cos() - m2 * self.gravity * l2 * q[1].cos();
+        let potential = -(m1 + m2) * self.gravity * l1 * libm::cos(q[0]) - m2 * self.gravity * l2 * libm::cos(q[1]);
         0.5 * qd.dot(&(self.mass_matrix(q) * qd)) + potential
     }
 }
@@ -209,9 +209,9 @@ impl DoublePendulum {
 impl System<2, 1> for DoublePendulum {
     fn evaluate(&self, _t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 1> {
         let ([m1, m2], [l1, l2], g) = (self.masses, self.lengths, self.gravity);
-        let (s1, c1) = q[0].sin_cos();
-        let (s2, c2) = q[1].sin_cos();
-        let cross = m2 * l1 * l2 * (q[0] - q[1]).sin();
+        let (s1, c1) = libm::sincos(q[0]);
+        let (s2, c2) = libm::sincos(q[1]);
+        let cross = m2 * l1 * l2 * libm::sin(q[0] - q[1]);
         Evaluation {
             mass: self.mass_matrix(q),
             force: Vector2::new(-cross * qd[1] * qd[1] - (m1 + m2) * g * l1 * s1, cross * qd[0] * qd[0] - m2 * g * l2 * s2),
@@ -246,7 +246,7 @@ pub struct Plank {
 
 impl System<2, 2> for Plank {
     fn evaluate(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 2> {
-        let (s, c) = q[1].sin_cos();
+        let (s, c) = libm::sincos(q[1]);
         let a = self.half_length;
         Evaluation {
             mass: Matrix2::new(self.mass, 0.0, 0.0, self.inertia),

@@ -107,8 +107,9 @@ mod tests {
         // Eq 46's printed integrand for L_F, integrated independently (Simpson on a finer grid).
         let n = 200_000;
         let h = 4.0 * PI / n as f64;
-        let integrand =
-            |a: f64| curve.gauge(a) * AREA * 0.04 * a.sin() * (1.0 + a.cos() / (lambda * (1.0 - (a.sin() / lambda).powi(2)).sqrt()));
+        let integrand = |a: f64| {
+            curve.gauge(a) * AREA * 0.04 * libm::sin(a) * (1.0 + libm::cos(a) / (lambda * (1.0 - (libm::sin(a) / lambda).powi(2)).sqrt()))
+        };
         let simpson: f64 = (0..n)
             .map(|i| (integrand(i as f64 * h) + 4.0 * integrand((i as f64 + 0.5) * h) + integrand((i as f64 + 1.0) * h)) * h / 6.0)
             .sum();

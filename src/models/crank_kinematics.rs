@@ -34,7 +34,7 @@ impl SliderCrank {
     /// The state at crank angle φ1; requires `l1 + |a| < l2` (checked where parameters are accepted).
     pub fn at(&self, crank_angle: f64) -> SliderCrankState {
         let (l1, l2, a) = (self.crank_radius, self.rod_length, self.pin_offset);
-        let (s1, c1) = crank_angle.sin_cos();
+        let (s1, c1) = libm::sincos(crank_angle);
         // l2 sin φ2 = −(a + l1 sin φ1), differentiated once and twice in φ1.
         let s2 = -(a + l1 * s1) / l2;
         let c2 = (1.0 - s2 * s2).sqrt();
@@ -42,7 +42,7 @@ impl SliderCrank {
         // l2 (cos φ2 φ2'' − sin φ2 φ2'²) = l1 sin φ1.
         let rod_curvature = (l1 * s1 + l2 * s2 * rod_rate * rod_rate) / (l2 * c2);
         SliderCrankState {
-            rod_angle: s2.asin(),
+            rod_angle: libm::asin(s2),
             rod_rate,
             rod_curvature,
             pin_axial: l1 * c1 + l2 * c2,
@@ -63,7 +63,7 @@ mod tests {
         for k in 0..50 {
             let phi = -7.0 + 0.29 * k as f64;
             let s = GEOMETRY.at(phi);
-            let x_pin = -0.04 * phi.sin() - 0.15 * s.rod_angle.sin();
+            let x_pin = -0.04 * libm::sin(phi) - 0.15 * libm::sin(s.rod_angle);
             assert!((x_pin - 0.003).abs() < 1e-15, "x_O3 = {x_pin}");
             let (plus, minus) = (GEOMETRY.at(phi + step), GEOMETRY.at(phi - step));
             let rate = (plus.rod_angle - minus.rod_angle) / (2.0 * step);

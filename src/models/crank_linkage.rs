@@ -104,7 +104,7 @@ impl Terms {
             weight_offset: g * m3 * a,
             lateral: [gx * (m1 * b1 + (m2 + m3) * l1), gx * (m2 * b2 + m3 * l2), gx * m3 * b3],
             lateral_offset: gx * m3 * a,
-            lengths: Vector3::new(l1, l2, bodies.corners.iter().fold(0.0_f64, |r, &(z, w, _)| r.max(z.hypot(w)))),
+            lengths: Vector3::new(l1, l2, bodies.corners.iter().fold(0.0_f64, |r, &(z, w, _)| r.max(libm::hypot(z, w)))),
         }
     }
 }
@@ -138,11 +138,11 @@ impl Trig {
 }
 
 fn along(phi: f64) -> Vector2<f64> {
-    Vector2::new(-phi.sin(), phi.cos())
+    Vector2::new(-libm::sin(phi), libm::cos(phi))
 }
 
 fn across(phi: f64) -> Vector2<f64> {
-    Vector2::new(phi.cos(), phi.sin())
+    Vector2::new(libm::cos(phi), libm::sin(phi))
 }
 
 impl Linkage {
@@ -483,7 +483,7 @@ mod tests {
                     -c2 * (phid[1] - phid[0]) + c3 * (phid[2] - phid[1]),
                     -c3 * (phid[2] - phid[1]),
                 );
-                let gas_point = |p: &Vector3<f64>| l.pin(p).y - a * p[2].sin();
+                let gas_point = |p: &Vector3<f64>| l.pin(p).y - a * libm::sin(p[2]);
                 let gas = Vector3::from_fn(|i, _| {
                     let step = Vector3::from_fn(|r, _| if r == i { eps } else { 0.0 });
                     -LOADS.gas_force * (gas_point(&(phi + step)) - gas_point(&(phi - step))) / (2.0 * eps)
@@ -512,27 +512,28 @@ mod tests {
         let (c1, c2, c3) = (p.damping_main, p.damping_crank_pin, p.damping_piston_pin);
         let damping = Matrix3::new(c1 + c2, -c2, 0.0, -c2, c2 + c3, -c3, 0.0, -c3, c3);
         for (phi, phid) in states() {
-            let c = |i: usize, j: usize| (phi[i] - phi[j]).cos();
-            let s = |i: usize, j: usize| (phi[i] - phi[j]).sin();
+            let c = |i: usize, j: usize| libm::cos(phi[i] - phi[j]);
+            let s = |i: usize, j: usize| libm::sin(phi[i] - phi[j]);
             let mass =
                 Matrix3::new(b[0], n12 * c(0, 1), n13 * c(0, 2), n12 * c(0, 1), b[1], n23 * c(1, 2), n13 * c(0, 2), n23 * c(1, 2), b[2]);
             let gyro =
                 Matrix3::new(0.0, n12 * s(0, 1), n13 * s(0, 2), -n12 * s(0, 1), 0.0, n23 * s(1, 2), -n13 * s(0, 2), -n23 * s(1, 2), 0.0);
             let squares = phid.component_mul(&phid);
-            let restoring = -Vector3::new(big_m[0] * phi[0].sin(), big_m[1] * phi[1].sin(), big_m[2] * phi[2].sin());
-            let f_e = Vector3::new(LOADS.gas_force * l1 * phi[0].sin() - LOADS.load_torque, LOADS.gas_force * l2 * phi[1].sin(), 0.0);
+            let restoring = -Vector3::new(big_m[0] * libm::sin(phi[0]), big_m[1] * libm::sin(phi[1]), big_m[2] * libm::sin(phi[2]));
+            let f_e =
+                Vector3::new(LOADS.gas_force * l1 * libm::sin(phi[0]) - LOADS.load_torque, LOADS.gas_force * l2 * libm::sin(phi[1]), 0.0);
             let printed_force = f_e - gyro * squares - damping * phid - restoring;
             let ev = l.evaluate(&phi, &phid, LOADS);
             assert!((ev.mass - mass).norm() < 1e-14);
             assert!((ev.force - printed_force).norm() < 1e-9 * printed_force.norm());
             // Eq 28 times l1.
             let (d, big_d, h, sk) = (p.piston_diameter, p.bore, p.pin_height, p.skirt_length);
-            let common = l1 * phi[0].sin() + l2 * phi[1].sin();
+            let common = l1 * libm::sin(phi[0]) + l2 * libm::sin(phi[1]);
             let printed_gaps = Vector4::new(
-                big_d / 2.0 - common - h * phi[2].sin() - d / 2.0 * phi[2].cos(),
-                big_d / 2.0 - common + (sk - h) * phi[2].sin() - d / 2.0 * phi[2].cos(),
-                big_d / 2.0 + common + h * phi[2].sin() - d / 2.0 * phi[2].cos(),
-                big_d / 2.0 + common - (sk - h) * phi[2].sin() - d / 2.0 * phi[2].cos(),
+                big_d / 2.0 - common - h * libm::sin(phi[2]) - d / 2.0 * libm::cos(phi[2]),
+                big_d / 2.0 - common + (sk - h) * libm::sin(phi[2]) - d / 2.0 * libm::cos(phi[2]),
+                big_d / 2.0 + common + h * libm::sin(phi[2]) - d / 2.0 * libm::cos(phi[2]),
+                big_d / 2.0 + common - (sk - h) * libm::sin(phi[2]) - d / 2.0 * libm::cos(phi[2]),
             );
             assert!((ev.gap - printed_gaps).norm() < 1e-15);
         }

@@ -64,10 +64,10 @@ impl StartOffset {
     /// −(a + x₀ + l1 sin φ1)) moving at ẋ₀ (−l2 cos φ2 φ̇2 = ẋ₀ + l1 cos φ1 ω), the tilt as given.
     fn state(&self, geometry: &SliderCrank, crank_angle: f64, speed: f64) -> Result<(Vector2<f64>, Vector2<f64>), ModelError> {
         let shifted = SliderCrank { pin_offset: geometry.pin_offset + self.lateral, ..*geometry };
-        let sine = -(shifted.pin_offset + shifted.crank_radius * crank_angle.sin()) / shifted.rod_length;
+        let sine = -(shifted.pin_offset + shifted.crank_radius * libm::sin(crank_angle)) / shifted.rod_length;
         check(sine.abs() < 1.0, || format!("piston_lateral_start ({} m) puts the pin out of the rod's reach", self.lateral))?;
         let s = shifted.at(crank_angle);
-        let rod_rate = s.rod_rate * speed - self.lateral_velocity / (shifted.rod_length * s.rod_angle.cos());
+        let rod_rate = s.rod_rate * speed - self.lateral_velocity / (shifted.rod_length * libm::cos(s.rod_angle));
         Ok((Vector2::new(s.rod_angle, self.tilt), Vector2::new(rod_rate, self.tilt_rate)))
     }
 }
@@ -92,7 +92,7 @@ fn validate(p: &Parameters) -> Result<(), ModelError> {
     p.validate()?;
     check(p.skirt_length > 0.0, || format!("skirt_length ({} m) must be positive: the corners K2, K4 lie at its end", p.skirt_length))?;
     // The corner description (A&K eq 26) holds while the piston cannot turn across the bore.
-    let diagonal = p.piston_diameter.hypot(p.skirt_length);
+    let diagonal = libm::hypot(p.piston_diameter, p.skirt_length);
     check(p.bore < diagonal, || {
         format!("bore ({} m) must be below the piston diagonal √(piston_diameter² + skirt_length²) ({diagonal} m)", p.bore)
     })?;
@@ -524,9 +524,9 @@ mod tests {
         let mut contacts = 0;
         for out in run(&p, &Inputs::default(), 1e-4, 1000) {
             let (top, bottom, tilt) = (out.skirt_top_lateral, out.skirt_bottom_lateral, out.piston_tilt);
-            assert!((top - bottom + p.skirt_length * tilt.sin()).abs() < 1e-15, "{out:?}");
+            assert!((top - bottom + p.skirt_length * libm::sin(tilt)).abs() < 1e-15, "{out:?}");
             assert!((0.5 * (top + bottom) - out.piston_lateral).abs() < 1e-15, "{out:?}");
-            let wall = 0.5 * (p.bore - p.piston_diameter * tilt.cos());
+            let wall = 0.5 * (p.bore - p.piston_diameter * libm::cos(tilt));
             let ends =
                 [(out.contact_state_1, -top), (out.contact_state_2, -bottom), (out.contact_state_3, top), (out.contact_state_4, bottom)];
             for (state, toward_wall) in ends.into_iter().filter(|(state, _)| *state == 1) {

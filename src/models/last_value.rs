@@ -53,11 +53,11 @@ mod tests {
         let (cache, calls) = (LastValue::default(), Cell::new(0));
         let value = |x: f64| {
             calls.set(calls.get() + 1);
-            x.sin()
+            libm::sin(x)
         };
         for (arg, computed) in [(0.5, 1), (0.5, 1), (0.25, 2), (0.5, 3), (0.0, 4), (-0.0, 5), (-0.0, 5)] {
             let got = cache.get_or([arg], || value(arg));
-            assert_eq!(got.to_bits(), arg.sin().to_bits(), "{arg}");
+            assert_eq!(got.to_bits(), libm::sin(arg).to_bits(), "{arg}");
             assert_eq!(calls.get(), computed, "calls after {arg}");
         }
     }

@@ -64,7 +64,7 @@ impl FourStrokePressure {
 
     /// Gauge pressure at `crank_angle` (rad, any value; period 4π).
     pub fn gauge(&self, crank_angle: f64) -> f64 {
-        let (sin, cos) = crank_angle.sin_cos();
+        let (sin, cos) = libm::sincos(crank_angle);
         self.gauge_at(crank_angle, sin, cos)
     }
 
@@ -81,12 +81,13 @@ impl FourStrokePressure {
             return 0.0;
         }
         let burnt = if theta > BURN_START {
-            1.0 - (-WIEBE_EFFICIENCY * ((theta - BURN_START) / BURN_DURATION).powi(WIEBE_FORM + 1)).exp()
+            1.0 - libm::exp(-WIEBE_EFFICIENCY * ((theta - BURN_START) / BURN_DURATION).powi(WIEBE_FORM + 1))
         } else {
             0.0
         };
-        let blowdown = if theta > EXHAUST_OPENS { (FRAC_PI_2 * (theta - EXHAUST_OPENS) / (PI - EXHAUST_OPENS)).cos().powi(2) } else { 1.0 };
-        let expansion = (BDC_VOLUME / self.volume(sin, cos)).powf(POLYTROPIC_EXPONENT);
+        let blowdown =
+            if theta > EXHAUST_OPENS { libm::cos(FRAC_PI_2 * (theta - EXHAUST_OPENS) / (PI - EXHAUST_OPENS)).powi(2) } else { 1.0 };
+        let expansion = libm::pow(BDC_VOLUME / self.volume(sin, cos), POLYTROPIC_EXPONENT);
         (expansion * (1.0 + (COMBUSTION_PRESSURE_RATIO - 1.0) * burnt) - 1.0) * blowdown
     }
 
@@ -164,7 +165,7 @@ mod tests {
         let angle = below * 4.0 * PI;
         let p = curve();
         for theta in [angle, angle - 4.0 * PI] {
-            assert_eq!(p.shape(theta, theta.sin(), theta.cos()), 0.0);
+            assert_eq!(p.shape(theta, libm::sin(theta), libm::cos(theta)), 0.0);
         }
     }
 
@@ -173,10 +174,10 @@ mod tests {
         // Before burn start p̂ + 1 = (V(BDC)/V)^n: the absolute pressure ratio between two angles.
         let p = curve();
         let (a, b) = (-2.5, -0.5);
-        let shape = |x: f64| p.shape(x, x.sin(), x.cos());
+        let shape = |x: f64| p.shape(x, libm::sin(x), libm::cos(x));
         let ratio = (shape(b) + 1.0) / (shape(a) + 1.0);
-        let expected = (p.volume(a.sin(), a.cos()) / p.volume(b.sin(), b.cos())).powf(POLYTROPIC_EXPONENT);
+        let expected = libm::pow(p.volume(libm::sin(a), libm::cos(a)) / p.volume(libm::sin(b), libm::cos(b)), POLYTROPIC_EXPONENT);
         assert!((ratio - expected).abs() < 1e-12 * expected);
-        assert_eq!(BDC_VOLUME, p.volume(PI.sin(), PI.cos()));
+        assert_eq!(BDC_VOLUME, p.volume(libm::sin(PI), libm::cos(PI)));
     }
 }

@@ -157,7 +157,7 @@ mod tests {
     fn cosine(first: f64, step: f64) -> String {
         let n = (720.0 / step).round() as usize;
         let rows: Vec<(f64, f64)> =
-            (0..n).map(|k| first + k as f64 * step).map(|a| (a, 30.0 + 20.0 * (a.to_radians() / 2.0).cos())).collect();
+            (0..n).map(|k| first + k as f64 * step).map(|a| (a, 30.0 + 20.0 * libm::cos(a.to_radians() / 2.0))).collect();
         csv(&rows)
     }
 
@@ -171,7 +171,7 @@ mod tests {
         let trace = PressureTrace::parse("t.csv", &cosine(-360.0, 5.0), 1e5).unwrap();
         for k in 0..144 {
             let a = -360.0 + 5.0 * k as f64;
-            let expected = (30.0 + 20.0 * (a.to_radians() / 2.0).cos()) * 1e5 - 1e5;
+            let expected = (30.0 + 20.0 * libm::cos(a.to_radians() / 2.0)) * 1e5 - 1e5;
             for shift in [0.0, 720.0, -1440.0] {
                 assert!((trace.gauge((a + shift).to_radians()) - expected).abs() < 1e-6, "{a} + {shift}");
             }
@@ -186,7 +186,7 @@ mod tests {
             let trace = PressureTrace::parse("t.csv", &cosine(-360.0, step), 0.0).unwrap();
             (0..4000)
                 .map(|k| -400.0 + 0.2 * k as f64)
-                .map(|a| (trace.gauge(f64::to_radians(a)) - (30.0 + 20.0 * (a.to_radians() / 2.0).cos()) * 1e5).abs())
+                .map(|a| (trace.gauge(f64::to_radians(a)) - (30.0 + 20.0 * libm::cos(a.to_radians() / 2.0)) * 1e5).abs())
                 .fold(0.0, f64::max)
         };
         let (coarse, fine) = (error(10.0), error(5.0));

@@ -156,7 +156,7 @@ impl Roller {
     /// Pin position along the cylinder axis: r cos θ + l cos(φ − ψ).
     fn axial_position(&self, theta: f64, psi: f64) -> f64 {
         let phi = self.mechanism().at(theta).rod_angle().value;
-        self.crank_radius * theta.cos() + self.rod_length * (phi - psi).cos()
+        self.crank_radius * libm::cos(theta) + self.rod_length * libm::cos(phi - psi)
     }
 
     /// [`core_error`] between steps, where the core's crank angle is the one at `self.time`.

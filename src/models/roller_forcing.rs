@@ -119,7 +119,7 @@ impl RollerMechanism {
         let phi = self.at(tau).rod_angle();
         let (u, du, ddu) = (phi.value - psi[0], phi.d1 - psi[1], phi.d2 - psi[2]);
         let k = (1.0 + self.alpha / 2.0) * self.xi;
-        let (s, c) = (tau + u).sin_cos();
+        let (s, c) = libm::sincos(tau + u);
         self.inertia() * du * ddu - k * ddu * c + k * du * (1.0 + du) * s + lambda * (1.0 + du) * (1.0 + du)
     }
 
@@ -133,11 +133,11 @@ impl RollerMechanism {
     fn kinetic_energy_with(&self, tau: f64, psi: f64, dpsi: f64, rod_rate: f64) -> f64 {
         let phi = self.at(tau).rod_angle();
         let (u, du) = (phi.value - psi, phi.d1 - dpsi);
-        let (s, c) = tau.sin_cos();
+        let (s, c) = libm::sincos(tau);
         // Speed² of the point a fraction k along the rod from the crank pin (k = 1: the roller).
         let speed2 = |k: f64| {
-            let vx = -self.xi * s - k * du * u.sin();
-            let vy = self.xi * c - k * du * u.cos();
+            let vx = -self.xi * s - k * du * libm::sin(u);
+            let vy = self.xi * c - k * du * libm::cos(u);
             vx * vx + vy * vy
         };
         0.5 * self.alpha * speed2(0.5) + 0.5 * self.beta * rod_rate * rod_rate + 0.5 * speed2(1.0)
@@ -154,7 +154,7 @@ impl AtAngle {
     /// The rod angle φ (value) with φ' and φ''.
     pub fn rod_angle(&self) -> Jet {
         let (d1, d2) = self.rod_rates();
-        Jet { value: (self.mechanism.xi * self.sin).asin(), d1, d2 }
+        Jet { value: libm::asin(self.mechanism.xi * self.sin), d1, d2 }
     }
 
     /// ψ_max = ρ/Λ (eq 2.14; ψ_min = −ψ_max, eq 2.15) for the dimensionless clearance ρ = Δ/l.
@@ -228,7 +228,7 @@ mod tests {
         let sc = thesis(forcing);
         let lambda = 0.05;
         for &eps in &[0.0, 1e-3] {
-            let path = move |t: f64| [eps * (1.7 * t + 0.3).sin(), 1.7 * eps * (1.7 * t + 0.3).cos()];
+            let path = move |t: f64| [eps * libm::sin(1.7 * t + 0.3), 1.7 * eps * libm::cos(1.7 * t + 0.3)];
             for k in 0..24 {
                 let t = 2.0 * PI * k as f64 / 24.0 + 0.1;
                 let [p, dp] = path(t);
@@ -266,7 +266,7 @@ mod tests {
     fn assert_forcing_is(sc: RollerMechanism, lambda: f64, formula: impl Fn(f64, f64, f64, f64, f64, f64) -> f64) {
         for k in 0..16 {
             let t = k as f64 * 0.41;
-            let big = (1.0 - sc.xi * sc.xi * t.sin().powi(2)).sqrt();
+            let big = (1.0 - sc.xi * sc.xi * libm::sin(t).powi(2)).sqrt();
             assert!((sc.at(t).forcing(lambda) - formula(sc.xi, sc.alpha, sc.beta, lambda, t, big)).abs() < 1e-14);
         }
     }
@@ -275,11 +275,11 @@ mod tests {
     #[test]
     fn printed_forcing_is_eq_2_13_verbatim() {
         assert_forcing_is(thesis(Forcing::Printed), 0.2, |xi, al, be, lam, t, big| {
-            (al / 4.0 + 1.0 - be) * (xi.powi(3) - xi) * t.sin() / big.powi(3)
-                + (xi * big + 0.5 * al * xi * big) * t.sin()
-                + (0.5 * xi * xi + 0.25 * xi * xi * al) * (2.0 * t).sin()
+            (al / 4.0 + 1.0 - be) * (xi.powi(3) - xi) * libm::sin(t) / big.powi(3)
+                + (xi * big + 0.5 * al * xi * big) * libm::sin(t)
+                + (0.5 * xi * xi + 0.25 * xi * xi * al) * libm::sin(2.0 * t)
                 + lam
-                + lam * xi * t.cos() / big
+                + lam * xi * libm::cos(t) / big
         });
     }
 
@@ -287,9 +287,9 @@ mod tests {
     #[test]
     fn corrected_forcing_matches_design_form() {
         assert_forcing_is(thesis(Forcing::Corrected), 0.07, |xi, al, be, lam, t, big| {
-            let (s, c) = t.sin_cos();
+            let (s, c) = libm::sincos(t);
             (1.0 + al / 4.0 + be) * xi.powi(3) * s * c * c / big.powi(3) - xi * s * ((1.0 + al / 4.0) * xi * xi * s * s + be) / big
-                + (0.5 + al / 4.0) * xi * xi * (2.0 * t).sin()
+                + (0.5 + al / 4.0) * xi * xi * libm::sin(2.0 * t)
                 + al / 4.0 * xi * big * s
                 + lam
                 + lam * xi * c / big
@@ -305,11 +305,11 @@ mod tests {
         for k in 0..16 {
             let t = k as f64 * 0.4;
             let phi = sc.at(t).rod_angle().value;
-            let exact = phi - (phi.sin() - rho).asin();
+            let exact = phi - libm::asin(libm::sin(phi) - rho);
             let jet = sc.at(t).psi_max(rho);
             assert!((jet.value - exact).abs() < rho * rho);
             let big = sc.at(t).cos_phi.value;
-            assert!((jet.d1 - jet.value * sc.xi * sc.xi * t.sin() * t.cos() / (big * big)).abs() < 1e-15);
+            assert!((jet.d1 - jet.value * sc.xi * sc.xi * libm::sin(t) * libm::cos(t) / (big * big)).abs() < 1e-15);
             let h = 1e-4;
             let d2 = (sc.at(t + h).psi_max(rho).value - 2.0 * jet.value + sc.at(t - h).psi_max(rho).value) / (h * h);
             assert!((jet.d2 - d2).abs() < 1e-8);
@@ -378,7 +378,7 @@ mod tests {
     #[test]
     fn drive_torque_of_a_massless_rod_is_the_piston_inertia_torque() {
         let sc = RollerMechanism { xi: 0.3030, alpha: 0.0, beta: 0.0, forcing: Forcing::Corrected };
-        let x = |t: f64| sc.xi * t.cos() + sc.at(t).cos_phi.value;
+        let x = |t: f64| sc.xi * libm::cos(t) + sc.at(t).cos_phi.value;
         let h = 1e-4;
         for k in 0..24 {
             let t = k as f64 * 0.27;
@@ -426,7 +426,7 @@ mod tests {
                 let (fu, fl) = sc.constraint_forces(t, 0.0, 0.0);
                 assert!((fu + fl).abs() < 1e-12);
                 assert!((sc.constraint_forces(-t, 0.0, 0.0).0 + fu).abs() < 1e-12);
-                assert!((sc.constraint_forces(t + PI, 0.0, 0.0).0 + fu).abs() > 1e-3 || t.sin().abs() < 0.1);
+                assert!((sc.constraint_forces(t + PI, 0.0, 0.0).0 + fu).abs() > 1e-3 || libm::sin(t).abs() < 0.1);
             }
         }
     }

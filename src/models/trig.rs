@@ -41,7 +41,7 @@ fn series(x: f64, sin: &[f64], cos: &[f64]) -> (f64, f64) {
     (x + x * y * horner(y, sin), 1.0 + y * horner(y, cos))
 }
 
-/// `x.sin_cos()` within an ulp or so, by polynomials for |x| ≤ [`LIMIT`], by libm otherwise
+/// `libm::sincos(x)` within an ulp or so, by polynomials for |x| ≤ [`LIMIT`], by libm otherwise
 /// (NaN and infinities included).
 #[inline]
 pub(crate) fn small_sin_cos(x: f64) -> (f64, f64) {
@@ -50,7 +50,7 @@ pub(crate) fn small_sin_cos(x: f64) -> (f64, f64) {
     } else if x.abs() <= LIMIT {
         series(x, &SIN[..6], &COS[..7])
     } else {
-        x.sin_cos()
+        libm::sincos(x)
     }
 }
 
@@ -64,12 +64,12 @@ const HALF_PI: [f64; 3] = [1.570_796_326_734_125_6, 6.077_100_506_303_966e-11, 2
 /// its crank angle within a cycle, 4π, the roller within 2048 turns).
 const REDUCIBLE: f64 = 16384.0 * std::f64::consts::FRAC_PI_2;
 
-/// `x.sin_cos()` of any angle, within 2 ulp of libm up to [`REDUCIBLE`]: x = k π/2 + r with
+/// `libm::sincos(x)` of any angle, within 2 ulp of libm up to [`REDUCIBLE`]: x = k π/2 + r with
 /// |r| ≤ π/4, then the polynomials on r. libm's reduction makes its call ≈ 150 instructions;
 /// this one takes ≈ 70.
 pub(crate) fn sin_cos(x: f64) -> (f64, f64) {
     if x.abs() > REDUCIBLE || x.is_nan() {
-        return x.sin_cos();
+        return libm::sincos(x);
     }
     // k = round(2x/π) by the 1.5·2⁵² shifter: `round` is a call on baseline x86-64.
     let shifter = 6_755_399_441_055_744.0;
@@ -91,7 +91,7 @@ mod tests {
 
     /// Relative error in sin and absolute error in cos against libm, or both bit-identical.
     fn check_small(x: f64) {
-        let ((s, c), (sr, cr)) = (small_sin_cos(x), x.sin_cos());
+        let ((s, c), (sr, cr)) = (small_sin_cos(x), libm::sincos(x));
         let same = |a: f64, b: f64| a.to_bits() == b.to_bits();
         assert!(same(s, sr) || (s - sr).abs() <= 4e-16 * sr.abs(), "sin {x:e}: {s:e} vs {sr:e}");
         assert!(same(c, cr) || (c - cr).abs() <= 2e-16, "cos {x:e}: {c:e} vs {cr:e}");
@@ -99,7 +99,7 @@ mod tests {
 
     /// Both within 2 ulp of libm's.
     fn check_any(x: f64) {
-        let ((s, c), (sr, cr)) = (sin_cos(x), x.sin_cos());
+        let ((s, c), (sr, cr)) = (sin_cos(x), libm::sincos(x));
         let ulp = |v: f64| v.abs().next_up() - v.abs();
         assert!((s - sr).abs() <= 2.0 * ulp(sr), "sin {x:e}: {s:e} vs {sr:e}");
         assert!((c - cr).abs() <= 2.0 * ulp(cr), "cos {x:e}: {c:e} vs {cr:e}");

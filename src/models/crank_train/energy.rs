@@ -42,8 +42,9 @@ impl EnergyBalance for CrankTrain {
         let engine = self.engine();
         // The gas force (0, −F) acts at O3 − a n(φ3), whose height is l1 cos φ1 + l2 cos φ2 − a sin φ3.
         let g = &self.geometry;
-        let height_rate =
-            -g.crank_radius * phi[0].sin() * phid[0] - g.rod_length * phi[1].sin() * phid[1] - g.pin_offset * phi[2].cos() * phid[2];
+        let height_rate = -g.crank_radius * libm::sin(phi[0]) * phid[0]
+            - g.rod_length * libm::sin(phi[1]) * phid[1]
+            - g.pin_offset * libm::cos(phi[2]) * phid[2];
         // Damping is the part of the generalized force odd in φ̇ (gyroscopic terms are even).
         let bare = Loads { gas_force: 0.0, load_torque: 0.0 };
         let odd = engine.linkage.evaluate(&phi, &phid, bare).force - engine.linkage.evaluate(&phi, &-phid, bare).force;

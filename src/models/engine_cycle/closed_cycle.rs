@@ -91,8 +91,8 @@ pub fn wiebe(parameters: &EngineCycleParameters, theta: f64) -> (f64, f64) {
     }
     let (a, m) = (p.wiebe_efficiency, p.wiebe_form);
     let xm = x.powi(m);
-    let rate = a * f64::from(m + 1) / p.burn_duration * xm * (-a * xm * x).exp();
-    (1.0 - (-a * xm * x).exp(), rate)
+    let rate = a * f64::from(m + 1) / p.burn_duration * xm * libm::exp(-a * xm * x);
+    (1.0 - libm::exp(-a * xm * x), rate)
 }
 
 impl Dynamics<'_> {

@@ -84,7 +84,7 @@ impl EngineCycle {
         } else if theta <= PI {
             let p_evo = self.closed.state(evo).p;
             let phase = FRAC_PI_2 * (theta - evo) / (PI - evo);
-            let (sin, cos) = phase.sin_cos();
+            let (sin, cos) = libm::sincos(phase);
             let excess = p_evo - p.exhaust_pressure;
             (p.exhaust_pressure + excess * cos * cos, -excess * 2.0 * sin * cos * FRAC_PI_2 / (PI - evo))
         } else if theta < 2.0 * PI {

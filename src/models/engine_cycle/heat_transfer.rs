@@ -82,20 +82,20 @@ impl WallHeat {
             Correlation::Woschni => {
                 let r = &self.reference;
                 let combustion = if theta >= self.burn_start {
-                    let motored = r.pressure * (r.volume / v).powf(r.gamma);
+                    let motored = r.pressure * libm::pow(r.volume / v, r.gamma);
                     WOSCHNI_C2 * self.displacement * r.temperature / (r.pressure * r.volume) * (p - motored).max(0.0)
                 } else {
                     0.0
                 };
                 let w = WOSCHNI_C1 * self.mean_piston_speed + combustion;
-                WOSCHNI_CONSTANT * self.bore.powf(-0.2) * (1e-3 * p).powf(0.8) * t.powf(-0.55) * w.powf(0.8)
+                WOSCHNI_CONSTANT * libm::pow(self.bore, -0.2) * libm::pow(1e-3 * p, 0.8) * libm::pow(t, -0.55) * libm::pow(w, 0.8)
             }
             Correlation::Hohenberg => {
                 HOHENBERG_CONSTANT
-                    * v.powf(-0.06)
-                    * (1e-5 * p).powf(0.8)
-                    * t.powf(-0.4)
-                    * (self.mean_piston_speed + HOHENBERG_SPEED_OFFSET).powf(0.8)
+                    * libm::pow(v, -0.06)
+                    * libm::pow(1e-5 * p, 0.8)
+                    * libm::pow(t, -0.4)
+                    * libm::pow(self.mean_piston_speed + HOHENBERG_SPEED_OFFSET, 0.8)
             }
         }
     }

@@ -136,7 +136,7 @@ impl EngineCycleParameters {
     /// The slider-crank volume at crank angle `theta` (Heywood eq 2.6).
     pub fn volume(&self, theta: f64) -> Volume {
         let (r, l, area) = (0.5 * self.stroke, self.rod_length, self.area());
-        let (sin, cos) = theta.sin_cos();
+        let (sin, cos) = libm::sincos(theta);
         let root = (l * l - r * r * sin * sin).sqrt();
         let s = r + l - r * cos - root;
         let ds = r * sin + r * r * sin * cos / root;
