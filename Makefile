@@ -14,7 +14,7 @@ CROSS_CACHE ?= $(or $(XDG_CACHE_HOME),$(HOME)/.cache)/pistonslap
 # Plots render without a display.
 export MPLBACKEND := Agg
 
-.PHONY: toolchain fmu venv demo coupled test thesis bench soak clean
+.PHONY: designs toolchain fmu venv demo coupled test thesis bench soak clean
 
 # The cross compilers of win64 and of the glibc 2.28 baseline (Debian's rustc-web, MinGW-w64, Wine, cargo-zigbuild),
 # pinned; installs what is missing (apt needs root), otherwise only checks.
@@ -72,6 +72,11 @@ bench:
 # Long runs in release mode, not part of `test`: 10⁴ crank-train cycles (prescribed and free crank)
 # and 10⁶ roller revolutions (in a second thread), the energy balance checked every cycle and
 # revolution (about 10 minutes on the 2-CPU machine, the roller being the longest).
+# 10⁴ random designs of the declared space (tests/common/designs.rs `declared`), every output checked at every
+# step: the failures and the count (about 15 minutes on the 2-CPU machine).
+designs:
+	cargo run --release --example random_designs -- 10000 0 declared
+
 soak:
 	cargo run --release --example soak -- 10000 1000000
 

@@ -61,7 +61,7 @@ if [ ${#missing[@]} -gt 0 ]; then
     apt_update
     check_offered "${missing[@]}"
     say "installing ${missing[*]}"
-    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+    as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq "${missing[@]}" >/dev/null
 fi
 
 # 2. The private Rust compiler for win64.
@@ -72,7 +72,7 @@ if [ ! -x "$rustc_dir/bin/rustc" ]; then
     say "unpacking rustc-web $RUST_WEB into $rustc_dir"
     work=$(mktemp -d)
     trap 'rm -rf "$work"' EXIT
-    (cd "$work" && apt-get download -qq "${RUSTC_PACKAGES[@]}" 2>/dev/null)
+    (cd "$work" && apt-get download -qq "${RUSTC_PACKAGES[@]}" 2>/dev/null) || die "apt-get download ${RUSTC_PACKAGES[*]} failed"
     mkdir -p "$work/root"
     for deb in "$work"/*.deb; do dpkg-deb -x "$deb" "$work/root"; done
     mkdir -p "$work/root/bin"

@@ -1,24 +1,26 @@
 //! Runs N seeded random designs of each family (`tests/common/designs.rs`) and reports every one
 //! that fails, and the sliders' worst energy balance: the sweep behind the suite's smaller
 //! random-design test.
-//! `cargo run --release --example random_designs -- 2000 [first_seed]`
+//! `cargo run --release --example random_designs -- 2000 [first_seed [family]]`
 
 #[path = "../tests/common/designs.rs"]
 mod designs;
 
-use designs::{engine, rubbing_engine, rubbing_slider, run, slider, Random};
+use designs::{declared, engine, rubbing_engine, rubbing_slider, run, slider, Random};
 use std::time::Instant;
 
 fn main() {
-    let args: Vec<u64> = std::env::args().skip(1).map(|a| a.parse().expect("a whole number")).collect();
+    let only = std::env::args().nth(3);
+    let args: Vec<u64> = std::env::args().skip(1).take(2).map(|a| a.parse().expect("a whole number")).collect();
     let (n, first) = (args.first().copied().unwrap_or(1000), args.get(1).copied().unwrap_or(0));
     let families = [
         ("engine", engine as fn(&mut Random) -> designs::Design),
         ("slider", slider),
         ("rubbing engine", rubbing_engine),
         ("rubbing slider", rubbing_slider),
+        ("declared", declared),
     ];
-    for (family, make) in families {
+    for (family, make) in families.into_iter().filter(|(family, _)| only.as_deref().is_none_or(|o| o == *family)) {
         let (start, mut failed, mut events, mut worst) = (Instant::now(), 0, 0, 0.0_f64);
         for seed in first..first + n {
             let design = make(&mut Random::new(seed));

@@ -32,15 +32,22 @@ pub(super) struct Sample<const N: usize, const M: usize> {
 }
 
 impl<const N: usize, const M: usize> Sample<N, M> {
-    /// The power friction dissipates, `−λ_T · γ` (≥ 0: a slipping constraint's force opposes γ).
+    /// The power friction dissipates, `μ λ_N |γ|` summed: `|λ_T γ|` per constraint (a slipping
+    /// constraint's force opposes γ; `−λ_T · γ` would carry γ's round-off around a slip reversal
+    /// and a stick, −1e-9 W, as if friction did work).
     pub(super) fn friction_power(&self) -> f64 {
-        -self.friction.dot(&self.slip)
+        dissipated(&self.friction, &self.slip)
     }
 
     /// This sample, continuing the friction work of `from`.
     pub(super) fn after(self, from: &Sample<N, M>) -> Self {
         Self { friction_work: from.friction_work, ..self }
     }
+}
+
+/// The power tangential forces `λ_T` dissipate at slip velocities `γ`, W (see `Sample::friction_power`).
+fn dissipated<const M: usize>(friction: &SVector<f64, M>, slip: &SVector<f64, M>) -> f64 {
+    friction.zip_fold(slip, 0.0, |sum, f, g| sum + (f * g).abs())
 }
 
 /// A sample with the system's evaluation there (the impact and sliding laws and the drift
@@ -222,7 +229,7 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
         let rubbing = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let m = motion(sys, &sys.evaluate(t, q, v), (t, q, v), contacts)?;
             stage += 1;
-            powers[stage] = -m.friction.dot(&m.slip);
+            powers[stage] = dissipated(&m.friction, &m.slip);
             Ok(m.acc)
         };
         let step = rk4::step(rubbing, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;

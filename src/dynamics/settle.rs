@@ -247,8 +247,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let (_, jump) = coulomb.enumerate(&choices, (&b.0, &b.1), scale).ok_or(refused)?;
         let v_plus = coulomb.motion(v, &jump);
         let hd_plus = ev.gap_jacobian * v_plus + ev.gap_time_rate;
-        let friction_lost = impact::energy_lost(&jump.tangent, &slip, &tangents.slip(&v_plus));
-        let lost = impact::energy_lost(&jump.normal, &hd, &hd_plus) + friction_lost;
+        let lost = impact::energy_lost(&jump.normal, &hd, &hd_plus) + impact::energy_lost(&jump.tangent, &slip, &tangents.slip(&v_plus));
+        // Friction's share: −Λ_T ξ_T / (1 + ε) = μ Λ_N |ξ_T| / (1 + ε) ≥ 0, the term the Coulomb
+        // law contributes to ΔT (friction.rs); the work of Λ_T on the mean slip, −Λ_T (γ⁻ + γ⁺)/2,
+        // can be negative where the impulses couple the normal and tangential motion.
+        let xi = tangents.slip(&v_plus) + eps.component_mul(&slip);
+        let friction_lost = SVector::<f64, M>::from_fn(|i, _| -jump.tangent[i] * xi[i] / (1.0 + eps[i]));
         Ok(Jump { normal: jump.normal, tangent: jump.tangent, v: v_plus, hd: hd_plus, lost, friction_lost })
     }
 
@@ -281,20 +285,17 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let contacts = loop {
             if approaching != 0 {
                 let jump = self.impact((t, &q, &v), &ev, &frame, closed)?;
-                // Recorded: every approaching constraint, and any other not held in contact that
-                // took a real impulse (one that changes its own ḣ by more than ε_ḣ). A held one
-                // pushed harder keeps ḣ = 0 on both sides: a reaction that dissipates nothing, not
-                // an impact (counting it would inflate the impact statistics with zero speeds).
-                let pushed = !was_active & select::<M>(|i| jump.normal[i] * frame.w[(i, i)] > opts.velocity_tolerance);
-                let recorded = closed & (approaching | pushed);
-                // With friction a held constraint's reaction slips and dissipates: its share goes
-                // to the first recorded event, so that the record's losses add up.
+                // Recorded: the approaching constraints. Another closed one that takes an impulse
+                // (held, at rest, or moving off the liner) is pushed, not struck: its share of the
+                // losses, −Λᵢ (ḣ⁻ᵢ + ḣ⁺ᵢ)/2 ≤ 0 as it leaves faster, goes with its friction share to
+                // the first recorded event, so that the record's losses add up and each is ≥ 0.
+                let recorded = approaching;
                 let (mut lost, mut friction_lost) = (jump.lost, jump.friction_lost);
-                if jump.friction_lost != SVector::<f64, M>::zeros() {
-                    let (first, unrecorded) = (recorded.trailing_zeros() as usize, closed & !recorded);
-                    for i in members::<M>(unrecorded) {
-                        (lost[first], friction_lost[first]) = (lost[first] + lost[i], friction_lost[first] + friction_lost[i]);
-                    }
+                let (first, unrecorded) = (recorded.trailing_zeros() as usize, closed & !recorded);
+                // (A held one's normal share is round-off of ḣ = 0, left out without friction.)
+                let moved = if jump.friction_lost == SVector::<f64, M>::zeros() { unrecorded & !was_active } else { unrecorded };
+                for i in members::<M>(moved) {
+                    (lost[first], friction_lost[first]) = (lost[first] + lost[i], friction_lost[first] + friction_lost[i]);
                 }
                 self.record(EventKind::Impact, recorded, (&hd, &jump.hd), (&lost, &friction_lost), (jump.normal, jump.tangent));
                 (v, hd) = (jump.v, jump.hd);

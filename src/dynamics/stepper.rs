@@ -357,7 +357,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// size follows from this step's error (the usual `(tol/err)^¼` rule, bounded growth).
     /// `beyond`: the step may end past `t_end` (it is then not cut short there).
     fn trial_step(&mut self, t_end: f64, beyond: bool) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
-        let (t0, max, tol) = (self.state.t, self.options.step, self.options.local_error);
+        let (t0, max, tol) = (self.state.t, self.options.step.min(self.system.largest_step(self.state.t)), self.options.local_error);
         let min = max * MIN_STEP_FRACTION;
         loop {
             // Also repairs a size restored from bytes.
@@ -447,13 +447,20 @@ fn between<S: System<N, M>, const N: usize, const M: usize>(
     let (q, v) = dense.at(t);
     let mut s = sample_of(system, &system.evaluate_point(t, &q, &v), t, q, v, contacts)?;
     if end.friction_work != s0.friction_work {
-        // The friction work by the cubic Hermite of its values and rates (the powers) at the ends.
+        // The friction work by the cubic Hermite of its values and rates (the powers) at the ends,
+        // the rates scaled down where they would make it fall or overshoot (Fritsch–Carlson:
+        // monotone where (h p₀)² + (h p₁)² ≤ 9 (w₁ − w₀)²), so that it never decreases.
         let (h, x) = (end.t - s0.t, (t - s0.t) / (end.t - s0.t));
         let (x2, x3) = (x * x, x * x * x);
+        let (rise, mut slopes) = (end.friction_work - s0.friction_work, [h * s0.friction_power(), h * end.friction_power()]);
+        let norm = libm::hypot(slopes[0], slopes[1]);
+        if norm > 3.0 * rise {
+            slopes = slopes.map(|m| m * (3.0 * rise).max(0.0) / norm);
+        }
         s.friction_work = (2.0 * x3 - 3.0 * x2 + 1.0) * s0.friction_work
-            + (x3 - 2.0 * x2 + x) * h * s0.friction_power()
+            + (x3 - 2.0 * x2 + x) * slopes[0]
             + (3.0 * x2 - 2.0 * x3) * end.friction_work
-            + (x3 - x2) * h * end.friction_power();
+            + (x3 - x2) * slopes[1];
     } else {
         s.friction_work = s0.friction_work;
     }

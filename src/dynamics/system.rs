@@ -71,6 +71,14 @@ pub trait System<const N: usize, const M: usize> {
         SVector::zeros()
     }
 
+    /// The largest RK4 step the motion allows at `t`, s (the stepper takes the smaller of this and
+    /// `StepperOptions::step`). A system driven by a prescribed motion the error control cannot see,
+    /// being no coordinate, bounds it here so that the steps and their dense output follow that
+    /// motion. Infinite, the default: no bound of the system's own.
+    fn largest_step(&self, _t: f64) -> f64 {
+        f64::INFINITY
+    }
+
     /// Newton restitution coefficient `e_i ∈ [0, 1]` of constraint `i`.
     fn restitution(&self, constraint: usize) -> f64;
 

@@ -8,6 +8,7 @@
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
 use super::crank_linkage::{Linkage, Loads, Trig};
+use super::crank_train::MAX_STEP_ANGLE;
 use super::last_value::LastValue;
 use super::pressure::FourStrokePressure;
 use super::pressure_trace::PressureTrace;
@@ -335,6 +336,14 @@ impl System<2, 4> for PrescribedCrank {
     fn coordinate_lengths(&self) -> Vector2<f64> {
         let lengths = self.engine.linkage.lengths();
         Vector2::new(lengths[1], lengths[2])
+    }
+
+    /// A step turns the crank by at most `MAX_STEP_ANGLE`. With two corners held the piston has no
+    /// freedom left, the error control nothing to measure, and the step would grow to `MAX_STEP`
+    /// whatever the speed: the quintic dense output of φ2 between such steps errs by ≈ (ω h)⁶, which
+    /// put the corners of `piston_lateral` 3.6e-7 m outside the bore at 8000 rpm.
+    fn largest_step(&self, t: f64) -> f64 {
+        MAX_STEP_ANGLE / self.speed.at(t).abs()
     }
 
     fn restitution(&self, _constraint: usize) -> f64 {

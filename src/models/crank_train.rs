@@ -10,7 +10,10 @@ use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
+mod design_space;
 mod energy;
+
+use design_space::validate;
 
 /// The adaptive RK4 step's largest size, s (7.2° of crank angle at 1200 rpm), and its bound on
 /// the local error of each step on the corner gaps, m. Event times and velocities do not depend
@@ -21,6 +24,9 @@ mod energy;
 /// speeds to 2.3e-4 relative, as a fixed 1e-4 s step does (4.5e-9 s, 2.8e-4) with 2.3×
 /// as many RK4 steps; 1e-10 m gives 3.0e-8 s and 8.7e-4.
 pub const MAX_STEP: f64 = 1e-3;
+/// The crank angle one step of the prescribed crank may span, rad (7.2°: `MAX_STEP` at 1200 rpm, so
+/// that slower cranks keep `MAX_STEP`); see `PrescribedCrank::largest_step`.
+pub const MAX_STEP_ANGLE: f64 = 2.0 * PI / 50.0;
 pub const LOCAL_ERROR: f64 = 1e-11;
 
 /// The crank train in one of its two crank modes.
@@ -86,24 +92,6 @@ fn check(ok: bool, message: impl FnOnce() -> String) -> Result<(), ModelError> {
     }
 }
 
-/// Refuses parameters the crank train cannot run with, naming the parameter: the ranges every
-/// model needs (`Parameters::validate`), then what the corner geometry needs.
-fn validate(p: &Parameters) -> Result<(), ModelError> {
-    p.validate()?;
-    check(p.skirt_length > 0.0, || format!("skirt_length ({} m) must be positive: the corners K2, K4 lie at its end", p.skirt_length))?;
-    // The corner description (A&K eq 26) holds while the piston cannot turn across the bore.
-    let diagonal = libm::hypot(p.piston_diameter, p.skirt_length);
-    check(p.bore < diagonal, || {
-        format!("bore ({} m) must be below the piston diagonal √(piston_diameter² + skirt_length²) ({diagonal} m)", p.bore)
-    })?;
-    check(p.pin_offset.abs() < 0.5 * p.piston_diameter, || {
-        format!("pin_offset ({} m) must be smaller than piston_diameter/2 ({} m)", p.pin_offset, 0.5 * p.piston_diameter)
-    })?;
-    check(p.rod_length > p.crank_radius + p.pin_offset.abs(), || {
-        format!("rod_length ({} m) must exceed crank_radius + |pin_offset| ({} m)", p.rod_length, p.crank_radius + p.pin_offset.abs())
-    })
-}
-
 /// The core's error in the crank train's words: a violated constraint is a corner in the liner.
 fn dynamics_error(e: DynamicsError) -> ModelError {
     match e {
@@ -120,6 +108,7 @@ impl CrankTrain {
         validate(params)?;
         check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
         let engine = Engine::new(params)?;
+        design_space::consistent_friction(&engine.linkage, params)?;
         let geometry = SliderCrank { crank_radius: params.crank_radius, rod_length: params.rod_length, pin_offset: params.pin_offset };
         let start = StartOffset::of(params);
         let angle = params.crank_angle_start;
@@ -539,7 +528,7 @@ mod tests {
 
     #[test]
     fn refuses_parameters_naming_them() {
-        let cases: [(Parameters, &str); 9] = [
+        let cases: [(Parameters, &str); 13] = [
             // The generic ranges.
             (Parameters { bore: 0.079, ..Parameters::default() }, "bore = 0.079 m must exceed piston_diameter = 0.08 m"),
             (Parameters { restitution: 1.2, ..Parameters::default() }, "restitution"),
@@ -550,15 +539,37 @@ mod tests {
             (Parameters { skirt_length: 0.0, ..Parameters::default() }, "skirt_length (0 m) must be positive"),
             (Parameters { bore: 0.2, ..Parameters::default() }, "piston diagonal"),
             (Parameters { pin_offset: -0.041, ..Parameters::default() }, "pin_offset (-0.041 m) must be smaller"),
+            (Parameters { rod_length: 0.05, pin_offset: 0.02, ..Parameters::default() }, "rod_length (0.05 m) must be at least 1.5 ×"),
+            // The declared space: rod ratio, clearance, masses and inertias.
+            (Parameters { rod_length: 0.0899, pin_offset: 0.02, ..Parameters::default() }, "rod_length (0.0899 m) must be at least"),
             (
-                Parameters { rod_length: 0.05, pin_offset: 0.02, ..Parameters::default() },
-                "rod_length (0.05 m) must exceed crank_radius + |pin_offset|",
+                Parameters { bore: 0.08 + 1.9e-6, ..Parameters::default() },
+                "bore (0.0800019 m) must exceed piston_diameter (0.08 m) by 2 × 0.000001 m",
             ),
+            (Parameters { piston_mass: 0.0099, ..Parameters::default() }, "crank_mass (10 kg) and piston_mass (0.0099 kg)"),
+            (Parameters { rod_inertia: 1e-9, ..Parameters::default() }, "rod_inertia (0.000000001 kg·m²) gives the rod"),
         ];
         for (params, expected) in cases {
             let message = validate(&params).unwrap_err().0;
             assert!(message.contains(expected), "{message}");
         }
         assert!(validate(&Parameters::default()).is_ok());
+        // Exactly at the bounds: accepted.
+        let edges = Parameters { rod_length: 0.06, bore: 0.08 + 2e-6, piston_mass: 0.01, ..Parameters::default() };
+        assert!(validate(&edges).is_ok(), "{:?}", validate(&edges));
+    }
+
+    /// The critical friction coefficient is a property of the design: 1 for the defaults (accepted
+    /// just below, at the XML's maximum), 0.70 with a 6 cm skirt in either crank mode; above it the
+    /// start is refused, naming it.
+    #[test]
+    fn friction_above_the_critical_coefficient_is_refused_at_the_start() {
+        for mode in [1, 2] {
+            assert!(CrankTrain::new(&Parameters { crank_mode: mode, friction: 0.999, ..Parameters::default() }, 0.0).is_ok());
+            let p = |friction| Parameters { crank_mode: mode, friction, skirt_length: 0.06, ..Parameters::default() };
+            assert!(CrankTrain::new(&p(0.70), 0.0).is_ok());
+            let message = CrankTrain::new(&p(0.71), 0.0).unwrap_err().0;
+            assert!(message.contains("friction (0.71) exceeds this design's critical coefficient 0.70"), "{message}");
+        }
     }
 }

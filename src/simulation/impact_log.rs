@@ -3,7 +3,9 @@
 //!
 //! The file always holds the events of the trajectory the instance is on: the cursor (bytes written so
 //! far) is part of the saved state, and restoring a state cuts the file back to that cursor, so rows
-//! of an abandoned future (a host's rejected step) disappear.
+//! of an abandoned future (a host's rejected step) disappear. A digest of what the trajectory wrote
+//! is saved too: a state restored over a file another run wrote (a second instance logging to the
+//! same path) is refused, not continued below rows that are not its own.
 
 use crate::models::{EngineEvent, EngineEventKind, ModelError};
 use serde::{Deserialize, Serialize};
@@ -12,20 +14,29 @@ use std::io::Write;
 
 const HEADER: &str = "time,crank_angle,kind,corner,normal_velocity_before,normal_velocity_after,energy_lost,position,crank_angle_deg\n";
 
-/// An open log: its path and the length of what this trajectory has written.
+/// An open log: its path, the length of what this trajectory has written and its digest.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct ImpactLog {
     path: String,
     length: u64,
+    digest: u64,
 }
+
+/// FNV-1a over `bytes`, continuing from `digest`.
+fn fnv1a(digest: u64, bytes: &[u8]) -> u64 {
+    bytes.iter().fold(digest, |h, &b| (h ^ u64::from(b)).wrapping_mul(0x0000_0100_0000_01b3))
+}
+
+/// FNV-1a's offset basis: the digest of nothing.
+const EMPTY: u64 = 0xcbf2_9ce4_8422_2325;
 
 impl ImpactLog {
     /// Creates (or truncates) the file and writes the header.
     pub fn create(path: &str) -> Result<Self, ModelError> {
-        let mut log = Self { path: path.to_string(), length: 0 };
+        let mut log = Self { path: path.to_string(), length: 0, digest: EMPTY };
         let mut file = File::create(path).map_err(|e| log.error("cannot create", e))?;
         file.write_all(HEADER.as_bytes()).map_err(|e| log.error("cannot write", e))?;
-        log.length = HEADER.len() as u64;
+        (log.length, log.digest) = (HEADER.len() as u64, fnv1a(EMPTY, HEADER.as_bytes()));
         Ok(log)
     }
 
@@ -40,7 +51,7 @@ impl ImpactLog {
         let written = std::io::Seek::seek(&mut file, std::io::SeekFrom::Start(self.length)).and_then(|_| file.write_all(rows.as_bytes()));
         match written {
             Ok(()) => {
-                self.length += rows.len() as u64;
+                (self.length, self.digest) = (self.length + rows.len() as u64, fnv1a(self.digest, rows.as_bytes()));
                 Ok(())
             }
             Err(e) => {
@@ -55,15 +66,24 @@ impl ImpactLog {
         &self.path
     }
 
-    /// Cuts the file back to this cursor (after a state restore). A file shorter than the cursor was
-    /// changed by someone else: refused.
+    /// Cuts the file back to this cursor (after a state restore). A file shorter than the cursor, or
+    /// whose rows up to it are not the ones this trajectory wrote, was written by someone else: refused.
     pub fn rewind(&self) -> Result<(), ModelError> {
-        let file = OpenOptions::new().write(true).open(&self.path).map_err(|e| self.error("cannot open", e))?;
+        let mut file = OpenOptions::new().read(true).write(true).open(&self.path).map_err(|e| self.error("cannot open", e))?;
         let actual = file.metadata().map_err(|e| self.error("cannot inspect", e))?.len();
         if actual < self.length {
             return Err(ModelError(format!(
                 "impact_log {:?} holds {actual} bytes, fewer than the {} of the restored state",
                 self.path, self.length
+            )));
+        }
+        let mut written = Vec::new();
+        std::io::Read::read_to_end(&mut std::io::Read::take(&mut file, self.length), &mut written)
+            .map_err(|e| self.error("cannot read", e))?;
+        if fnv1a(EMPTY, &written) != self.digest {
+            return Err(ModelError(format!(
+                "impact_log {:?} does not hold the rows of the restored state (another run wrote it)",
+                self.path
             )));
         }
         file.set_len(self.length).map_err(|e| self.error("cannot truncate", e))

@@ -141,6 +141,29 @@ fn the_impact_log_holds_the_rows_of_the_trajectory() {
     assert!(saved.rewind_log().is_err(), "the file is gone");
 }
 
+/// Two runs (restitution 0.5 and 0.3) logging to one path: the second's file holds its own rows, so the first's state,
+/// restored over it, is refused (it would continue below rows that are not its own), and the file
+/// is left as it was; the second's own state restores.
+#[test]
+fn a_state_restored_over_another_runs_log_is_refused() {
+    let path = temp_path("shared_log");
+    let p = Parameters { impact_log: path.to_str().unwrap().into(), ..Parameters::default() };
+    let mut first = Sim::start(&p, 0.0).unwrap();
+    run(&mut first, &Inputs::default(), 0.01, 1e-3);
+    let mut second = Sim::start(&Parameters { restitution: 0.3, ..p }, 0.0).unwrap();
+    run(&mut second, &Inputs::default(), 0.06, 2e-3);
+    let own = second.clone();
+    run(&mut second, &Inputs::default(), 0.1, 2e-3);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let err = first.rewind_log().unwrap_err();
+    assert!(err.0.contains("does not hold the rows of the restored state"), "{err}");
+    assert_eq!(std::fs::read_to_string(&path).unwrap(), text);
+    own.rewind_log().unwrap();
+    let restored = std::fs::read_to_string(&path).unwrap();
+    assert!(text.starts_with(&restored) && restored.lines().count() > 1, "{restored}");
+    std::fs::remove_file(&path).unwrap();
+}
+
 #[test]
 fn an_unwritable_log_path_is_an_error_at_start() {
     let p = Parameters { impact_log: "/nonexistent-dir/pistonslap/log.csv".into(), ..Parameters::default() };

@@ -3,7 +3,7 @@
 //! damping, gas or gravity, so their energy balance closes too: T(0) = T(end) + what the impacts
 //! and sliding starts dissipated. `examples/random_designs` runs the same families by the thousand.
 
-use crate::common::designs::{engine, rubbing_engine, rubbing_slider, run, slider, Design, Finished, Random};
+use crate::common::designs::{declared, engine, rubbing_engine, rubbing_slider, run, slider, Design, Finished, Random};
 
 const DESIGNS: u64 = 250;
 
@@ -59,6 +59,27 @@ fn random_rubbing_engines_all_run() {
 fn random_rubbing_sliders_all_run_and_balance_their_energy() {
     let failed = failures(rubbing_slider, balanced);
     assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
+}
+
+/// Designs of the declared space that still break a per-step check (issue 34, open): a corner
+/// 1.1e-9–3.9e-9 m outside the bore at a communication point (seed 122 prescribed, 140 and 199 free
+/// crank, 227). Asserted exactly, so that a fix or a new failure shows.
+const DECLARED_OPEN: [u64; 4] = [122, 140, 199, 227];
+
+/// Designs drawn from the whole declared space (`designs::declared`), every output checked at
+/// every step: all run, none but `DECLARED_OPEN` contradicts the model.
+#[test]
+fn random_designs_of_the_declared_space_run_and_agree_with_the_model() {
+    let (mut failed, mut errors) = (Vec::new(), Vec::new());
+    for seed in 0..DESIGNS {
+        match run(&declared(&mut Random::new(seed))) {
+            Ok(_) => {}
+            Err(e) if e.contains("outside the bore") => failed.push(seed),
+            Err(e) => errors.push(format!("seed {seed}: {e}")),
+        }
+    }
+    assert!(errors.is_empty(), "{}", errors.join("\n"));
+    assert_eq!(failed, DECLARED_OPEN);
 }
 
 /// The speed of the fastest impact of a run, m/s.

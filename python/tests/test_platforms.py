@@ -1,0 +1,169 @@
+"""Every platform the FMUs carry, run for real: the win64 DLL under Wine and the linux64 binary natively, driven by
+the same C host (tests/c_host/trace.c, which prints every output's bits after every step), give bit-identical
+outputs in every scenario, and an FMU state saved on one platform continues on the other. The binaries' symbol
+tables: exactly the fmi2 functions exported, no glibc symbol newer than the 2.28 baseline, only system DLLs
+imported. `make test` installs the cross toolchain (`make toolchain`); a missing piece fails these tests."""
+
+import os
+import re
+import shutil
+import subprocess
+import zipfile
+from pathlib import Path
+
+import fmpy
+import pytest
+
+ROOT = Path(__file__).resolve().parents[2]
+ENGINE_FMU = Path(__file__).resolve().parents[1] / "pistonslap" / "fmu" / "EngineCycle.fmu"
+
+#: The oldest glibc the linux64 binary may need: RHEL/Rocky 8, Ubuntu 20.04 and SLES 15 have it or newer.
+GLIBC_BASELINE = (2, 28)
+
+#: DLLs every Windows 10 and later has; the win64 binary may import nothing else (no MinGW runtime).
+SYSTEM_DLLS = {"kernel32.dll", "ntdll.dll", "msvcrt.dll", "userenv.dll", "ws2_32.dll", "bcryptprimitives.dll",
+               "api-ms-win-core-synch-l1-2-0.dll"}
+
+STEPS, STEP = 2000, 1e-4
+
+#: name: (FMU, parameters as (kind, variable name, value)); kind r, i or s as the host's options take them.
+SCENARIOS = {
+    "default": ("PistonSlap", []),
+    # a trace from resources/, found through the resource URI Windows hosts pass (file:///Z:/...)
+    "pressure_trace": ("PistonSlap", [("i", "pressure_source", 3), ("s", "pressure_trace", "full_load.csv")]),
+    "friction_free_crank": ("PistonSlap", [("r", "friction", 0.1), ("i", "crank_mode", 2)]),
+    "engine_cycle": ("EngineCycle", []),
+}
+
+
+def tool(name):
+    path = shutil.which(name)
+    if path is None:
+        pytest.fail(f"{name} not found: `make toolchain` installs it")
+    return path
+
+
+@pytest.fixture(scope="module")
+def build(tmp_path_factory, fmu_file):
+    """The unpacked FMUs and the host, native and win64 (with the Wine-only stand-in DLL beside it)."""
+    out = tmp_path_factory.mktemp("platforms")
+    fmus = {}
+    for name, path in [("PistonSlap", fmu_file), ("EngineCycle", str(ENGINE_FMU))]:
+        fmus[name] = (Path(fmpy.extract(path, unzipdir=out / name)), fmpy.read_model_description(path))
+        for binary in (f"binaries/linux64/{name}.so", f"binaries/win64/{name}.dll"):
+            assert (fmus[name][0] / binary).is_file(), f"{name}.fmu carries no {binary} (`make toolchain fmu`)"
+    source, headers = ROOT / "tests" / "c_host" / "trace.c", ROOT / "fmi_headers"
+    flags = ["-std=c99", "-O1", "-Wall", "-Wextra", "-Werror", "-I", str(headers)]
+    subprocess.run([tool("gcc"), *flags, "-o", out / "trace", source, "-ldl"], check=True)
+    win = out / "win64"
+    win.mkdir()
+    mingw = tool("x86_64-w64-mingw32-gcc")
+    subprocess.run([mingw, *flags, "-o", win / "trace.exe", source], check=True)
+    shim = ROOT / "tests" / "c_host" / "wine" / "bcryptprimitives.c"
+    subprocess.run([mingw, "-O1", "-shared", "-o", win / "bcryptprimitives.dll", shim, "-ladvapi32"], check=True)
+    for name, (unzipdir, _) in fmus.items():
+        shutil.copy(unzipdir / "binaries" / "win64" / f"{name}.dll", win)
+    return out, fmus
+
+
+def wine_env(out):
+    # One prefix for the whole session (Wine takes ~15 s to create one); no Mono or Gecko installers.
+    return dict(os.environ, WINEPREFIX=str(out / "wineprefix"), WINEDEBUG="-all", WINEDLLOVERRIDES="mscoree,mshtml=")
+
+
+def windows_path(path):
+    """What Wine's Z: drive calls a Linux path."""
+    return "Z:" + str(path).replace("/", "\\")
+
+
+def run(build, scenario, platform, *extra):
+    """The host's lines (step, output bits) for a scenario on linux64 or win64."""
+    out, fmus = build
+    name, parameters = SCENARIOS[scenario]
+    unzipdir, md = fmus[name]
+    by_name = {v.name: v for v in md.modelVariables}
+    outputs = [v for v in md.modelVariables if v.causality == "output"]
+    reals = ",".join(str(v.valueReference) for v in outputs if v.type == "Real")
+    integers = ",".join(str(v.valueReference) for v in outputs if v.type != "Real")
+    options = [f"{kind}:{by_name[var].valueReference}={value}" for kind, var, value in parameters]
+    resources = (unzipdir / "resources").as_posix()
+    if platform == "linux64":
+        command = [str(out / "trace"), str(unzipdir / "binaries" / "linux64" / f"{name}.so"), md.guid,
+                   "file://" + resources]
+        env = None
+    else:
+        command = [tool("wine"), str(out / "win64" / "trace.exe"), f"{name}.dll", md.guid, "file:///Z:" + resources]
+        env = wine_env(out)
+        extra = [re.sub(r"(save|load):(\d+):(.*)", lambda m: f"{m[1]}:{m[2]}:{windows_path(m[3])}", e) for e in extra]
+    done = subprocess.run([*command, str(STEPS), repr(STEP), reals, integers, *options, *extra], capture_output=True,
+                          text=True, env=env, cwd=out / "win64", timeout=600)
+    assert done.returncode == 0, f"{platform} {scenario}: exit {done.returncode}\n{done.stderr[-2000:]}"
+    lines = done.stdout.splitlines()
+    assert lines, f"{platform} {scenario}: no output"
+    return [line.rstrip("\r") for line in lines]
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_win64_outputs_equal_linux64_bit_for_bit(build, scenario):
+    linux, windows = run(build, scenario, "linux64"), run(build, scenario, "win64")
+    assert len(linux) == STEPS == len(windows)
+    different = [(a, b) for a, b in zip(linux, windows) if a != b]
+    assert not different, f"{len(different)} of {STEPS} steps differ, first:\n{different[0][0]}\n{different[0][1]}"
+
+
+@pytest.mark.parametrize("saved_on, restored_on", [("linux64", "win64"), ("win64", "linux64")])
+def test_a_state_saved_on_one_platform_continues_on_the_other(build, tmp_path, saved_on, restored_on):
+    state = tmp_path / "state.bin"
+    straight = run(build, "friction_free_crank", saved_on, f"save:{STEPS // 2}:{state}")
+    assert state.stat().st_size > 0
+    continued = run(build, "friction_free_crank", restored_on, f"load:{STEPS // 2}:{state}")
+    assert continued == straight[STEPS // 2:]
+
+
+def objdump(binary, *flags):
+    program = "x86_64-w64-mingw32-objdump" if str(binary).endswith(".dll") else "objdump"
+    return subprocess.run([tool(program), *flags, str(binary)], capture_output=True, text=True, check=True).stdout
+
+
+def fmi2_functions():
+    """The functions a Co-Simulation FMU exports: the header's common and Co-Simulation sections."""
+    text = (ROOT / "fmi_headers" / "fmi2FunctionTypes.h").read_text()
+    model_exchange = text[text.index("/* Model Exchange only"):text.index("/* Co-Simulation only")]
+    return set(re.findall(r"(fmi2\w+)TYPE\s*\(", text.replace(model_exchange, "")))
+
+
+FMI2_FUNCTIONS = fmi2_functions()
+
+
+def test_the_header_lists_the_34_co_simulation_functions():
+    assert len(FMI2_FUNCTIONS) == 34 and {"fmi2DoStep", "fmi2Instantiate"} <= FMI2_FUNCTIONS
+
+
+@pytest.mark.parametrize("name", ["PistonSlap", "EngineCycle"])
+def test_linux64_exports_only_fmi2_and_needs_glibc_2_28(build, name):
+    _, fmus = build
+    so = fmus[name][0] / "binaries" / "linux64" / f"{name}.so"
+    table = objdump(so, "-T")
+    defined = {line.split()[-1] for line in table.splitlines() if re.match(r"[0-9a-f]+ g ", line) and "*UND*" not in line}
+    assert defined == FMI2_FUNCTIONS, defined ^ FMI2_FUNCTIONS
+    versions = {tuple(int(p) for p in v.split(".")) for v in re.findall(r"GLIBC_([0-9.]+)", table)}
+    assert versions and max(versions) <= GLIBC_BASELINE, sorted(versions)[-3:]
+    needed = set(re.findall(r"NEEDED\s+(\S+)", objdump(so, "-p")))
+    assert needed <= {"libc.so.6", "ld-linux-x86-64.so.2", "libpthread.so.0", "libdl.so.2", "libgcc_s.so.1"}, needed
+
+
+@pytest.mark.parametrize("name", ["PistonSlap", "EngineCycle"])
+def test_win64_exports_only_fmi2_and_imports_only_system_dlls(build, name):
+    _, fmus = build
+    headers = objdump(fmus[name][0] / "binaries" / "win64" / f"{name}.dll", "-p")
+    exports = headers.split("[Ordinal/Name Pointer] Table")[-1]
+    assert set(re.findall(r"\]\s+(fmi2\w+)", exports)) == FMI2_FUNCTIONS
+    assert len(re.findall(r"^\s+\[\s*\d+\]\s+\w+$", exports, re.M)) == len(FMI2_FUNCTIONS)
+    imported = {d.lower() for d in re.findall(r"DLL Name: (\S+)", headers)}
+    assert imported <= SYSTEM_DLLS, imported - SYSTEM_DLLS
+
+
+def test_the_scenarios_differ(build):
+    """Each scenario runs what it names: the trace, friction and the free crank change the outputs."""
+    last = {s: run(build, s, "linux64")[-1] for s in ("default", "pressure_trace", "friction_free_crank")}
+    assert len(set(last.values())) == 3
