@@ -44,9 +44,11 @@ demo: fmu venv
 	$(PISTONSLAP) demo --out out
 
 # PistonSlap driven by the EngineCycle FMU through the Python master (fmpy), the engine's output derivatives
-# passed on as input derivatives: CSV and plots in out/coupled.
+# passed on as input derivatives: CSV and plots in out/coupled (EngineCycle's defaults) and out/coupled/<preset>
+# for each EngineCycle preset (python/pistonslap/engine_cycle_presets.py).
 coupled: fmu venv
 	$(PISTONSLAP) coupled --out out/coupled
+	for preset in $$($(VENV_PYTHON) -c "from pistonslap.engine_cycle_presets import PRESETS; print(*PRESETS)"); do $(PISTONSLAP) coupled --engine $$preset --out out/coupled/$$preset || exit 1; done
 
 # The style gate (rustfmt, clippy with warnings as errors), the Rust tests, then the fmpy tests
 # against the packaged FMU, its win64 binary under Wine among them; fails if any fails.

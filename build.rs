@@ -87,6 +87,8 @@ struct Unit {
     s: Option<String>,
     #[serde(rename = "@rad")]
     rad: Option<String>,
+    #[serde(rename = "@K")]
+    kelvin: Option<String>,
     #[serde(rename = "DisplayUnit", default)]
     display: Vec<DisplayUnit>,
 }

@@ -108,7 +108,7 @@ fn write_units_and_types(w: &mut Xml, table: &Table) -> io::Result<()> {
     parent(w, "UnitDefinitions", [], |w| {
         table.units.items.iter().try_for_each(|u| {
             parent(w, "Unit", [("name", u.name.as_str())], |w| {
-                empty(w, "BaseUnit", present(&[("kg", &u.kg), ("m", &u.m), ("s", &u.s), ("rad", &u.rad)]))?;
+                empty(w, "BaseUnit", present(&[("kg", &u.kg), ("m", &u.m), ("s", &u.s), ("K", &u.kelvin), ("rad", &u.rad)]))?;
                 u.display.iter().try_for_each(|d| empty(w, "DisplayUnit", [("name", d.name.as_str()), ("factor", d.factor.as_str())]))
             })
         })

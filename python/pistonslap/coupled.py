@@ -204,27 +204,35 @@ def write(rows, out, origin=CENTRED):
 
 
 def main(argv=None):
+    from .engine_cycle_presets import PRESETS, slap_geometry
+
     parser = Parser(prog="pistonslap coupled", description=__doc__.split("\n\n")[0])
     parser.add_argument("--out", default="out/coupled")
     parser.add_argument("--cycles", type=int, default=20,
-                        help="engine cycles at the constant default speed, at least 3 (default 20)")
+                        help="engine cycles at the engine's constant speed, at least 3 (default 20)")
     parser.add_argument("--step", type=float, default=1e-3,
                         help=f"communication step, s (default 0.001; at most {MAX_STEP_DEG:g}° of crank angle)")
     parser.add_argument("--held", action="store_true", help="hold the inputs over each step (no derivatives)")
+    parser.add_argument("--engine", help=f"EngineCycle preset: {', '.join(PRESETS)} (default: the FMU's defaults)")
     parser.add_argument("--crank-0-720", action="store_true",
                         help="draw the crank angle from 0 to 720° (default -360 to 360°; 0 = firing TDC either way)")
     args = parser.parse_args(argv)
+    if args.engine is not None and args.engine not in PRESETS:
+        raise Refusal(f"unknown --engine {args.engine!r} (presets: {', '.join(PRESETS)})")
     if args.cycles < 3:
         raise Refusal(f"--cycles = {args.cycles}: give at least 3 (the energy per cycle is counted after two)")
-    largest = np.radians(MAX_STEP_DEG) / SPEED
+    engine = PRESETS[args.engine]["engine"] if args.engine else {}
+    slap = slap_geometry(engine) if args.engine else {}
+    speed = engine.get("speed_start", SPEED)
+    largest = np.radians(MAX_STEP_DEG) / speed
     number(args.step, "--step", low=0, low_open=True, unit=" s", meaning="the communication step")
     if args.step > largest:
-        raise Refusal(f"--step = {args.step:g} s is {np.degrees(args.step * SPEED):.3g}° of crank angle at "
-                      f"{SPEED * 30 / np.pi:.0f} rpm: give at most {largest:.3g} s ({MAX_STEP_DEG:g}°), since over a "
+        raise Refusal(f"--step = {args.step:g} s is {np.degrees(args.step * speed):.3g}° of crank angle at "
+                      f"{speed * 30 / np.pi:.0f} rpm: give at most {largest:.3g} s ({MAX_STEP_DEG:g}°), since over a "
                       "step the gas pressure only follows its value and slope at the step's start")
-    period = CYCLE / SPEED
+    period = CYCLE / speed
     stop = round(args.cycles * period / args.step) * args.step
-    rows = run(stop, args.step, derivatives=not args.held)
+    rows = run(stop, args.step, engine_values=engine, slap_values=slap, derivatives=not args.held)
     write(rows, args.out, FROM_FIRING_TDC if args.crank_0_720 else CENTRED)
     print(f"{args.out}: {len(rows) - 1} steps, {int(rows['impact_count'][-1])} impacts, "
           f"{energy_per_cycle(rows, 2, args.cycles):.4g} J per cycle after "

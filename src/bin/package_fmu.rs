@@ -1,15 +1,17 @@
 //! Packs the FMUs: `cargo run --release --bin package_fmu [-- [--linux64 <.so>] [--win64 <.dll>] [--out <directory>]]`.
 //!
 //! Defaults: the linux64 cdylib next to this executable (the same cargo profile directory), no win64 binary,
-//! and `<target>/fmu/`. The one binary of each platform serves both FMUs (it makes an instance of the model
-//! whose GUID it gets):
+//! and `<target>/fmu/`. The one binary of each platform serves both FMUs, each FMU's copy stamped with its model
+//! (`pistonslap::fmi::identity`) so that it refuses the other FMU's GUID:
 //! - `PistonSlap.fmu`: `modelDescription.xml` and the documentation's variable table, both generated from
 //!   `modelDescription/variables.xml`, the binaries as `binaries/<platform>/PistonSlap.{so,dll}`, and
 //!   `resources/`;
-//! - `EngineCycle.fmu`: its `modelDescription.xml` (from `modelDescription/variables_engine_cycle.xml`) and the
-//!   binaries as `binaries/<platform>/EngineCycle.{so,dll}`.
+//! - `EngineCycle.fmu`: its `modelDescription.xml` (from `modelDescription/variables_engine_cycle.xml`), its
+//!   documentation (`documentation/engine_cycle.html` with the variable table) and the binaries as
+//!   `binaries/<platform>/EngineCycle.{so,dll}`.
 
-use pistonslap::fmi::description::{engine_cycle, Causality, Kind, MODEL_DESCRIPTION_XML, VARIABLES};
+use pistonslap::fmi::description::{engine_cycle, Causality, Kind, Variable, MODEL_DESCRIPTION_XML, VARIABLES};
+use pistonslap::fmi::identity::{stamp, Identity};
 use std::fs::File;
 use std::io::Write;
 use std::path::{Path, PathBuf};
@@ -53,25 +55,39 @@ fn run() -> Result<(), String> {
         })
         .collect::<Result<Vec<_>, _>>()?;
     std::fs::create_dir_all(&out_dir).map_err(|e| format!("cannot create {}: {e}", out_dir.display()))?;
-    let documentation = documentation();
-    let binaries_of = |model: &str| -> Vec<(String, &[u8], bool)> {
-        binaries.iter().map(|((_, folder, ext), bytes)| (format!("binaries/{folder}/{model}.{ext}"), &bytes[..], true)).collect()
+    let slap_documentation = documentation(DOCUMENTATION, &VARIABLES);
+    let engine_documentation = documentation(ENGINE_DOCUMENTATION, &engine_cycle::VARIABLES);
+    // Each model's copies of the binaries, stamped with its identity.
+    let binaries_of = |model: &str, identity: Identity| -> Result<Vec<(String, Vec<u8>, bool)>, String> {
+        binaries
+            .iter()
+            .map(|((_, folder, ext), bytes)| {
+                let mut copy = bytes.clone();
+                stamp(&mut copy, identity).map_err(|e| format!("the {folder} binary: {e}"))?;
+                Ok((format!("binaries/{folder}/{model}.{ext}"), copy, true))
+            })
+            .collect()
     };
     let piston_slap_files: [(&str, &[u8]); 6] = [
         ("modelDescription.xml", MODEL_DESCRIPTION_XML.as_bytes()),
-        ("documentation/index.html", documentation.as_bytes()),
+        ("documentation/index.html", slap_documentation.as_bytes()),
         ("documentation/geometry.svg", GEOMETRY_SVG.as_bytes()),
         ("resources/README.txt", RESOURCES_README.as_bytes()),
         ("resources/full_load.csv", FULL_LOAD_TRACE.as_bytes()),
         ("resources/motored.csv", MOTORED_TRACE.as_bytes()),
     ];
-    let engine_cycle_files: [(&str, &[u8]); 1] = [("modelDescription.xml", engine_cycle::MODEL_DESCRIPTION_XML.as_bytes())];
+    let engine_cycle_files: [(&str, &[u8]); 2] = [
+        ("modelDescription.xml", engine_cycle::MODEL_DESCRIPTION_XML.as_bytes()),
+        ("documentation/index.html", engine_documentation.as_bytes()),
+    ];
     let platforms: Vec<&str> = binaries.iter().map(|((_, folder, _), _)| *folder).collect();
-    for (name, files, variables) in
-        [("PistonSlap", &piston_slap_files[..], VARIABLES.len()), ("EngineCycle", &engine_cycle_files[..], engine_cycle::VARIABLES.len())]
-    {
+    for (name, identity, files, variables) in [
+        ("PistonSlap", Identity::PistonSlap, &piston_slap_files[..], VARIABLES.len()),
+        ("EngineCycle", Identity::EngineCycle, &engine_cycle_files[..], engine_cycle::VARIABLES.len()),
+    ] {
+        let stamped = binaries_of(name, identity)?;
         let mut entries: Vec<(String, &[u8], bool)> = files.iter().map(|&(path, bytes)| (path.to_string(), bytes, false)).collect();
-        entries.extend(binaries_of(name));
+        entries.extend(stamped.iter().map(|(path, bytes, executable)| (path.clone(), &bytes[..], *executable)));
         let out = out_dir.join(format!("{name}.fmu"));
         write_fmu(&out, &entries).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
         println!("wrote {} ({variables} variables, binaries {})", out.display(), platforms.join(" and "));
@@ -100,16 +116,17 @@ fn escape(s: &str) -> String {
     s.replace('&', "&amp;").replace('<', "&lt;").replace('>', "&gt;")
 }
 
-/// The FMU's documentation page (`documentation/index.html` of the sources, placeholders `{{…}}`) and the
-/// geometry sketch it shows.
+/// The FMUs' documentation pages (`documentation/index.html` and `documentation/engine_cycle.html` of the sources,
+/// placeholders `{{…}}`) and the geometry sketch PistonSlap's shows.
 const DOCUMENTATION: &str = include_str!("../../documentation/index.html");
+const ENGINE_DOCUMENTATION: &str = include_str!("../../documentation/engine_cycle.html");
 const GEOMETRY_SVG: &str = include_str!("../../documentation/geometry.svg");
 
-/// documentation/index.html: what the model is, its conventions, its variables (from the same table as
-/// the XML), its assumptions and references.
-fn documentation() -> String {
+/// documentation/index.html of `template`: what the model is, its conventions, its variables (from the same
+/// table as the XML), its assumptions and references.
+fn documentation(template: &str, variables: &[Variable]) -> String {
     let mut rows = String::new();
-    for (vr, v) in VARIABLES.iter().enumerate() {
+    for (vr, v) in variables.iter().enumerate() {
         let causality = match v.causality {
             Causality::Input => "input",
             Causality::Output => "output",
@@ -129,5 +146,5 @@ fn documentation() -> String {
             escape(v.description)
         ));
     }
-    DOCUMENTATION.replace("{{version}}", env!("CARGO_PKG_VERSION")).replace("{{variables}}", &rows)
+    template.replace("{{version}}", env!("CARGO_PKG_VERSION")).replace("{{variables}}", &rows)
 }

@@ -1,11 +1,13 @@
 //! The exported C symbols of `fmi_headers/fmi2Functions.h`: the common and Co-Simulation functions,
-//! each a call of its generic body in `functions.rs`. One binary serves both FMUs of the crate: an
-//! instance is made for the model whose GUID fmi2Instantiate gets (EngineCycle's, else PistonSlap's
-//! [`ModelVariant`], which refuses a wrong GUID), and every later call goes to the model whose tag the
-//! instance carries (PistonSlap's when none matches: its body then refuses the pointer).
+//! each a call of its generic body in `functions.rs`. One binary serves both FMUs of the crate: a copy the
+//! packer stamped ([`identity`]) makes instances of its own model only, refusing any other GUID; an unstamped
+//! library makes an instance for the model whose GUID fmi2Instantiate gets (EngineCycle's, else PistonSlap's
+//! [`ModelVariant`], which refuses a wrong GUID). Every later call goes to the model whose tag the instance
+//! carries (PistonSlap's when none matches: its body then refuses the pointer).
 #![allow(unsafe_code, non_snake_case, clippy::missing_safety_doc)]
 
 use super::functions;
+use super::identity::{self, Identity};
 use super::instance::Model;
 use super::types::*;
 use crate::models::EngineCycle;
@@ -51,7 +53,12 @@ pub unsafe extern "C" fn fmi2Instantiate(
 ) -> fmi2Component {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
     unsafe {
-        if functions::has_guid::<EngineCycle>(guid) {
+        let engine_cycle = match identity::stamped() {
+            Identity::EngineCycle => true,
+            Identity::PistonSlap => false,
+            Identity::Both => functions::has_guid::<EngineCycle>(guid),
+        };
+        if engine_cycle {
             functions::instantiate::<EngineCycle>(name, fmu_type, guid, resource_location, functions, logging_on)
         } else {
             functions::instantiate::<ModelVariant>(name, fmu_type, guid, resource_location, functions, logging_on)

@@ -145,7 +145,12 @@ pub unsafe fn instantiate<E: Model>(
                 )));
             }
             if guid != E::DESCRIPTION.guid {
-                return Err(Refusal::error(format!("fmuGUID {guid} does not match this binary's {}", E::DESCRIPTION.guid)));
+                return Err(Refusal::error(format!(
+                    "fmuGUID {guid} does not match this binary's {}: it instantiates {} only (each FMU of this crate \
+                     carries its own copy)",
+                    E::DESCRIPTION.guid,
+                    E::NAME
+                )));
             }
             if !resources.starts_with("file:") {
                 return Err(Refusal::error(format!("fmuResourceLocation {resources:?} is not a file URI")));

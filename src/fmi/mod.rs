@@ -5,6 +5,7 @@
 //!   machine's check, `catch_unwind`, logging out;
 //! - `state_machine`: the states and the one table of the states each function is allowed in;
 //! - `reentry`: refuses a call into an instance from inside its own call (its logger calling back);
+//! - `identity`: which FMU a copy of the binary belongs to (stamped by the packer);
 //! - `model`: what the layer needs of a model, and its two FMUs: PistonSlap and EngineCycle;
 //! - `instance`: what each function does, in safe code;
 //! - `resources`: the FMU's resources directory and the lookup of bare file names in it;
@@ -14,6 +15,7 @@
 pub mod description;
 pub mod exports;
 mod functions;
+pub mod identity;
 mod instance;
 mod logger;
 mod model;

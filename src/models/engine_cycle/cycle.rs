@@ -1,0 +1,236 @@
+//! The engine cycle as a function of time: the crank angle of the prescribed speed, the pressure of the
+//! closed part ([`super::closed_cycle`]) and of the gas exchange, the outputs and their time derivatives.
+//!
+//! With ϑ the crank angle reduced to [−π, 3π) about firing top dead centre (ϑ = 0 at crank angle 0 mod 4π):
+//! - ϑ ∈ [−π, ϑ_EVO]: the closed cycle, intake valve closing at bottom dead centre with `p(−π) = p_intake`;
+//! - blowdown, ϑ ∈ (ϑ_EVO, π]: `p = p_exhaust + (p(ϑ_EVO) − p_exhaust) cos²(π/2 (ϑ − ϑ_EVO)/(π − ϑ_EVO))`,
+//!   continuous with zero slope at bottom dead centre;
+//! - exhaust stroke, ϑ ∈ (π, 2π): `p_exhaust`; intake stroke, ϑ ∈ [2π, 3π): `p_intake`.
+//!
+//! The indicated torque is `(p − p_crankcase) dV/dϑ` (the work of the gas on the crank per radian), whose
+//! integral over a cycle is IMEP · V_d. Heat flows to the walls over the closed part only: `wall_heat_total` is
+//! the closed parts' wall heat since the start time, `wall_heat_flux` its time derivative `dQ_w/dϑ · ω`.
+
+use super::super::{ModelError, CYCLE};
+use super::closed_cycle::{ClosedCycle, ClosedState};
+use super::parameters::{EngineCycleParameters, Volume};
+use serde::{Deserialize, Serialize};
+use std::f64::consts::{FRAC_PI_2, PI};
+
+/// EngineCycle has no inputs: its speed comes from the parameters.
+#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct EngineCycleInputs {}
+
+/// The values a host reads, with their time derivatives.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct EngineCycleOutputs {
+    /// rad, accumulated.
+    pub crank_angle: f64,
+    /// rad/s.
+    pub crank_speed: f64,
+    /// Pa, absolute.
+    pub cylinder_pressure: f64,
+    /// Pa, cylinder minus crankcase.
+    pub gas_pressure: f64,
+    /// N·m.
+    pub indicated_torque: f64,
+    /// W, heat flowing from the charge to the walls.
+    pub wall_heat_flux: f64,
+    /// J, heat to the walls since the start time.
+    pub wall_heat_total: f64,
+}
+
+/// The single-zone cycle: the parameters and the closed cycle.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct EngineCycle {
+    parameters: EngineCycleParameters,
+    start_time: f64,
+    closed: ClosedCycle,
+}
+
+impl EngineCycle {
+    /// Validates the parameters and integrates the closed part of the cycle (refusing an implausible one).
+    pub fn new(parameters: &EngineCycleParameters, start_time: f64) -> Result<Self, ModelError> {
+        parameters.validate()?;
+        if !start_time.is_finite() {
+            return Err(ModelError(format!("start time {start_time} s is not finite")));
+        }
+        let closed = ClosedCycle::new(parameters)?;
+        Ok(Self { parameters: parameters.clone(), start_time, closed })
+    }
+
+    pub fn parameters(&self) -> &EngineCycleParameters {
+        &self.parameters
+    }
+
+    /// The closed cycle: its charge and table.
+    pub fn closed(&self) -> &ClosedCycle {
+        &self.closed
+    }
+
+    /// The slider-crank volume at crank angle `theta`.
+    pub fn volume(&self, theta: f64) -> Volume {
+        self.parameters.volume(theta)
+    }
+
+    /// Absolute cylinder pressure p and dp/dϑ at crank angle `crank_angle` (any value; period 4π).
+    pub fn pressure(&self, crank_angle: f64) -> (f64, f64) {
+        let p = &self.parameters;
+        let theta = (crank_angle + PI).rem_euclid(CYCLE) - PI;
+        let evo = p.exhaust_valve_opening;
+        if theta <= evo {
+            let state = self.closed.state(theta);
+            (state.p, state.dp)
+        } else if theta <= PI {
+            let p_evo = self.closed.state(evo).p;
+            let phase = FRAC_PI_2 * (theta - evo) / (PI - evo);
+            let (sin, cos) = libm::sincos(phase);
+            let excess = p_evo - p.exhaust_pressure;
+            (p.exhaust_pressure + excess * cos * cos, -excess * 2.0 * sin * cos * FRAC_PI_2 / (PI - evo))
+        } else if theta < 2.0 * PI {
+            (p.exhaust_pressure, 0.0)
+        } else {
+            (p.intake_pressure, 0.0)
+        }
+    }
+
+    /// The wall heat since inlet valve closing of the cycle `crank_angle` lies in, J, with its first two
+    /// crank-angle derivatives, plus the whole cycles' wall heat before it: a continuous function of the
+    /// accumulated crank angle.
+    fn wall_heat(&self, crank_angle: f64) -> (f64, f64, f64) {
+        let evo = self.parameters.exhaust_valve_opening;
+        let cycles = ((crank_angle + PI) / CYCLE).floor();
+        let theta = crank_angle - cycles * CYCLE;
+        let per_cycle = self.closed.state(evo).q;
+        let (q, dq, d2q) = if theta <= evo {
+            let ClosedState { q, dq, d2q, .. } = self.closed.state(theta);
+            (q, dq, d2q)
+        } else {
+            (per_cycle, 0.0, 0.0)
+        };
+        (cycles * per_cycle + q, dq, d2q)
+    }
+
+    /// rad/s and rad/s²: the prescribed speed (constant, or the linear ramp) at time `t`.
+    pub fn speed(&self, t: f64) -> (f64, f64) {
+        let p = &self.parameters;
+        let elapsed = t - self.start_time;
+        if p.ramp_time > 0.0 && elapsed < p.ramp_time {
+            let slope = (p.speed_end - p.speed_start) / p.ramp_time;
+            (p.speed_start + slope * elapsed.max(0.0), if elapsed >= 0.0 { slope } else { 0.0 })
+        } else if p.ramp_time > 0.0 {
+            (p.speed_end, 0.0)
+        } else {
+            (p.speed_start, 0.0)
+        }
+    }
+
+    /// rad, the crank angle at time `t`: the exact integral of [`Self::speed`].
+    pub fn crank_angle(&self, t: f64) -> f64 {
+        let p = &self.parameters;
+        let elapsed = (t - self.start_time).max(0.0);
+        if p.ramp_time > 0.0 {
+            let ramp = elapsed.min(p.ramp_time);
+            let slope = (p.speed_end - p.speed_start) / p.ramp_time;
+            p.crank_angle_start + p.speed_start * ramp + 0.5 * slope * ramp * ramp + p.speed_end * (elapsed - ramp)
+        } else {
+            p.crank_angle_start + p.speed_start * elapsed
+        }
+    }
+
+    /// The outputs at time `t` and their first time derivatives.
+    pub fn outputs(&self, t: f64) -> (EngineCycleOutputs, EngineCycleOutputs) {
+        let crank_angle = self.crank_angle(t);
+        let (speed, acceleration) = self.speed(t);
+        let (pressure, slope) = self.pressure(crank_angle);
+        let vol = self.volume(crank_angle);
+        let gauge = pressure - self.parameters.crankcase_pressure;
+        let (q, dq, d2q) = self.wall_heat(crank_angle);
+        let q_start = self.wall_heat(self.parameters.crank_angle_start).0;
+        let value = EngineCycleOutputs {
+            crank_angle,
+            crank_speed: speed,
+            cylinder_pressure: pressure,
+            gas_pressure: gauge,
+            indicated_torque: gauge * vol.dv,
+            wall_heat_flux: dq * speed,
+            wall_heat_total: q - q_start,
+        };
+        let rate = EngineCycleOutputs {
+            crank_angle: speed,
+            crank_speed: acceleration,
+            cylinder_pressure: slope * speed,
+            gas_pressure: slope * speed,
+            indicated_torque: (slope * vol.dv + gauge * vol.d2v) * speed,
+            wall_heat_flux: d2q * speed * speed + dq * acceleration,
+            wall_heat_total: dq * speed,
+        };
+        (value, rate)
+    }
+
+    /// Pa, indicated mean effective pressure ∮ p dV / V_d over one cycle, by the trapezoidal rule on
+    /// `samples` equal crank-angle intervals.
+    pub fn imep(&self, samples: usize) -> f64 {
+        let h = CYCLE / samples as f64;
+        let torque = |k: usize| {
+            let theta = -PI + k as f64 * h;
+            (self.pressure(theta).0 - self.parameters.crankcase_pressure) * self.volume(theta).dv
+        };
+        let work: f64 = (0..samples).map(|k| 0.5 * h * (torque(k) + torque(k + 1))).sum();
+        work / self.parameters.displacement()
+    }
+}
+
+/// The engine cycle advancing in time as a co-simulation slave: the model, the time and the outputs
+/// with their time derivatives at that time.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct EngineCycleRun {
+    model: EngineCycle,
+    time: f64,
+    outputs: EngineCycleOutputs,
+    rates: EngineCycleOutputs,
+}
+
+impl EngineCycleRun {
+    /// At `start_time`, with the parameters validated.
+    pub fn new(parameters: &EngineCycleParameters, start_time: f64) -> Result<Self, ModelError> {
+        let model = EngineCycle::new(parameters, start_time)?;
+        let (outputs, rates) = model.outputs(start_time);
+        Ok(Self { model, time: start_time, outputs, rates })
+    }
+
+    /// To `t_end` (> the current time): the outputs are closed-form functions of time.
+    pub fn step(&mut self, t_end: f64) -> Result<(), ModelError> {
+        if !(t_end.is_finite() && t_end > self.time) {
+            return Err(ModelError(format!("cannot step from {} s to {t_end} s", self.time)));
+        }
+        (self.outputs, self.rates) = self.model.outputs(t_end);
+        self.time = t_end;
+        Ok(())
+    }
+
+    pub fn time(&self) -> f64 {
+        self.time
+    }
+
+    pub fn outputs(&self) -> &EngineCycleOutputs {
+        &self.outputs
+    }
+
+    /// The outputs' first time derivatives.
+    pub fn rates(&self) -> &EngineCycleOutputs {
+        &self.rates
+    }
+
+    /// A restored run is consistent: the model its parameters make, a finite time, the outputs of that time.
+    pub fn check(&self) -> Result<(), ModelError> {
+        if EngineCycle::new(&self.model.parameters, self.model.start_time)? != self.model {
+            return Err(ModelError("engine cycle state: the closed-cycle table is not the parameters' one".into()));
+        }
+        let (outputs, rates) = self.model.outputs(self.time);
+        if !self.time.is_finite() || outputs != self.outputs || rates != self.rates {
+            return Err(ModelError(format!("engine cycle state at {} s is inconsistent", self.time)));
+        }
+        Ok(())
+    }
+}
