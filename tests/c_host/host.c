@@ -7,33 +7,10 @@
  * free: what a memory checker must see released). Prints "crank_angle=… impact_count=…
  * straight_crank_angle=… straight_impact_count=… errors=<refused misuses> logged=<messages>" and
  * exits 0 on success. */
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include "fmi2Functions.h"
-
-static int logged = 0;
-
-static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status, fmi2String category,
-                   fmi2String message, ...) {
-    va_list args;
-    (void)env;
-    va_start(args, message);
-    fprintf(stderr, "[%s %d %s] ", name, (int)status, category);
-    vfprintf(stderr, message, args);
-    fprintf(stderr, "\n");
-    va_end(args);
-    logged++;
-}
-
-#define CHECK(call)                                                   \
-    do {                                                              \
-        fmi2Status s_ = (call);                                       \
-        if (s_ != fmi2OK) {                                           \
-            fprintf(stderr, "%s returned %d\n", #call, (int)s_);      \
-            return 1;                                                 \
-        }                                                             \
-    } while (0)
+#include "host_common.h"
 
 #define REFUSED(call)                                                 \
     do {                                                              \

@@ -9,11 +9,11 @@
  *   save:K:FILE                          after step K, the serialized FMU state written to FILE
  *   load:K:FILE                          after initialization, the state read from FILE, then steps K+1..
  * Each printed line: the step number, then the reals, then the integers. Exit status 0 on success. */
-#include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "fmi2FunctionTypes.h"
+#include "host_common.h"
 
 #ifdef _WIN32
 #define WIN32_LEAN_AND_MEAN
@@ -27,17 +27,6 @@
 #endif
 
 #define MAX_VARS 256
-
-static void logger(fmi2ComponentEnvironment env, fmi2String name, fmi2Status status, fmi2String category,
-                   fmi2String message, ...) {
-    va_list args;
-    (void)env;
-    va_start(args, message);
-    fprintf(stderr, "[%s %d %s] ", name, (int)status, category);
-    vfprintf(stderr, message, args);
-    fprintf(stderr, "\n");
-    va_end(args);
-}
 
 /* The FMI functions this host calls, looked up by name. */
 static struct {
@@ -79,15 +68,6 @@ static int bind_functions(void *lib) {
     }
     return 0;
 }
-
-#define CHECK(call)                                                   \
-    do {                                                              \
-        fmi2Status s_ = (call);                                       \
-        if (s_ != fmi2OK) {                                           \
-            fprintf(stderr, "%s returned %d\n", #call, (int)s_);      \
-            return 1;                                                 \
-        }                                                             \
-    } while (0)
 
 /* A comma-separated list of value references; returns their count. */
 static size_t parse_vrs(const char *text, fmi2ValueReference *vrs) {
