@@ -1,5 +1,5 @@
 """Every refusal class of the `pistonslap` commands: exit status 2, exactly one line on stderr naming the cause,
-no traceback; `--debug` shows the traceback instead. The cases are the ones a new user tried (issue 30)."""
+no traceback; `--debug` shows the traceback instead. The cases are the ones a new user tried."""
 
 import os
 import subprocess

@@ -1,4 +1,4 @@
-"""The declared space (issue 34): every design fmi2ExitInitializationMode accepts runs, and its outputs agree with
+"""The declared space: every design fmi2ExitInitializationMode accepts runs, and its outputs agree with
 the model at every communication point; what lies outside is refused there, naming the parameter and the reason.
 The designs are the issue's reproducers (parameters as start values, constant inputs, stop time, fixed step)."""
 
@@ -139,7 +139,7 @@ def test_issue_reproducer_runs_or_is_refused_at_initialization(unpacked_fmu, par
 
 
 @pytest.mark.xfail(strict=True, reason="free crank stalling at BDC: simultaneous slip reversals of K1 and K4 "
-                                       "accumulate (issue 34, open)")
+                                       "accumulate (an open defect)")
 def test_stalling_free_crank_with_little_friction_runs(unpacked_fmu):
     inputs = {"gas_pressure": 2794570.0, "crank_speed": 32.3232, "load_torque": 0.0}
     assert run(unpacked_fmu, STALLING_FREE_CRANK, inputs, 0.388773, 1e-4) is None

@@ -61,7 +61,7 @@ fn random_rubbing_sliders_all_run_and_balance_their_energy() {
     assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
-/// Designs of the declared space that still break a per-step check (issue 34, open): a corner
+/// Designs of the declared space that still break a per-step check (an open defect): a corner
 /// 1.1e-9–3.9e-9 m outside the bore at a communication point (seed 122 prescribed, 140 and 199 free
 /// crank, 227). Asserted exactly, so that a fix or a new failure shows.
 const DECLARED_OPEN: [u64; 4] = [122, 140, 199, 227];
