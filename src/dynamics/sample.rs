@@ -32,6 +32,12 @@ pub(super) struct Sample<const N: usize, const M: usize> {
     /// ∫ λ dt per constraint since the start, N·s: the persistent contact forces' impulse, by the
     /// same quadrature as `friction_work` (impacts record their own, `Event::impulses`).
     pub(super) contact_impulse: SVector<f64, M>,
+    /// The power the system's own forces take from the motion here (`System::absorbed_power`), W,
+    /// and their work since the start, J, integrated like `friction_work` and carried alike, with
+    /// the jumps' shares (`System::absorbed_by_jump`) added where they happen. Zero where the
+    /// system does not absorb.
+    pub(super) absorbed_power: f64,
+    pub(super) absorbed_work: f64,
 }
 
 impl<const N: usize, const M: usize> Sample<N, M> {
@@ -44,7 +50,7 @@ impl<const N: usize, const M: usize> Sample<N, M> {
 
     /// This sample, continuing the friction work of `from`.
     pub(super) fn after(self, from: &Sample<N, M>) -> Self {
-        Self { friction_work: from.friction_work, contact_impulse: from.contact_impulse, ..self }
+        Self { friction_work: from.friction_work, contact_impulse: from.contact_impulse, absorbed_work: from.absorbed_work, ..self }
     }
 }
 
@@ -182,9 +188,25 @@ pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
     let Motion { acc, lambda, friction, slip } = motion(sys, ev, (t, &q, &v), contacts)?;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let hdd = ev.gap_jacobian * acc + ev.gap_bias;
-    let s = Sample { t, q, v, acc, lambda, gap: ev.gap, hd, hdd, slip, friction, friction_work: 0.0, contact_impulse: SVector::zeros() };
+    let absorbed_power = if sys.absorbs() { sys.absorbed_power(t, &q, &v, &acc) } else { 0.0 };
+    let s = Sample {
+        t,
+        q,
+        v,
+        acc,
+        lambda,
+        gap: ev.gap,
+        hd,
+        hdd,
+        slip,
+        friction,
+        friction_work: 0.0,
+        contact_impulse: SVector::zeros(),
+        absorbed_power,
+        absorbed_work: 0.0,
+    };
     // One sum clears every number (x · 0 is NaN exactly for an infinite or NaN x).
-    let coordinates = (s.q * 0.0 + s.v * 0.0 + s.acc * 0.0).sum();
+    let coordinates = (s.q * 0.0 + s.v * 0.0 + s.acc * 0.0).sum() + s.absorbed_power * 0.0;
     let constraints = (s.lambda * 0.0 + s.gap * 0.0 + s.hd * 0.0 + s.hdd * 0.0 + s.slip * 0.0 + s.friction * 0.0).sum();
     if coordinates + constraints == 0.0 {
         Ok(s)
@@ -221,16 +243,27 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     // Held stages also keep λ at stages 2–4 for the contact impulse, by the same weights.
     let by_weights = |first: SVector<f64, M>, [_, a, b, c]: [SVector<f64, M>; 4]| (first + (a + b) * 2.0 + c) * (dt / 6.0);
     let mut lambdas = [SVector::<f64, M>::zeros(); 4];
+    // The system's own absorbed power at stages 2–4, by the same weights, where it absorbs.
+    let (absorbs, mut absorbed, mut absorbing_stage) = (sys.absorbs(), [0.0; 4], 0);
+    let mut absorb = |t, q: &SVector<f64, N>, v: &SVector<f64, N>, acc: &SVector<f64, N>| {
+        if absorbs {
+            absorbing_stage += 1;
+            absorbed[absorbing_stage] = sys.absorbed_power(t, q, v, acc);
+        }
+    };
     let (step, work, impulse) = if contacts.held == 0 {
         let flight = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let (mass, force) = sys.inertia_and_force(t, q, v);
-            Ok(free_motion(&mass, &force, t)?.1)
+            let acc = free_motion(&mass, &force, t)?.1;
+            absorb(t, q, v, &acc);
+            Ok(acc)
         };
         (rk4::step(flight, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work, s0.contact_impulse)
     } else if friction_of(sys).is_none() {
         let mut stage = 0;
         let held = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let (acc, lambda) = acceleration(&sys.evaluate(t, q, v), t, contacts.held)?;
+            absorb(t, q, v, &acc);
             stage += 1;
             lambdas[stage] = lambda;
             Ok(acc)
@@ -241,6 +274,7 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
         let (mut powers, mut stage) = ([0.0; 4], 0);
         let rubbing = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let m = motion(sys, &sys.evaluate(t, q, v), (t, q, v), contacts)?;
+            absorb(t, q, v, &m.acc);
             stage += 1;
             powers[stage] = dissipated(&m.friction, &m.slip);
             lambdas[stage] = m.lambda;
@@ -253,6 +287,10 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     let ev = sys.evaluate(t, &step.q, &step.v);
     let mut s = sample_of(sys, &ev, t, step.q, step.v, contacts)?;
     (s.friction_work, s.contact_impulse) = (work, impulse);
+    s.absorbed_work = s0.absorbed_work;
+    if absorbs {
+        s.absorbed_work += (s0.absorbed_power + 2.0 * (absorbed[1] + absorbed[2]) + absorbed[3]) * (dt / 6.0);
+    }
     Ok((s, ev, step.last_slopes))
 }
 

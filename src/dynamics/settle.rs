@@ -56,10 +56,21 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let (q, ev, frame) = self.onto_contacts(t, s.q, &v, active, frame_at(&self.system, t, &s.q, &v, ev)?)?;
         let hd = ev.gap_jacobian * v + ev.gap_time_rate;
         let dependent = DynamicsError::DependentContacts { time: t, constraints: active };
-        let v = v + frame.projection(&hd, active).ok_or(dependent)?.0;
+        let (before, v) = (v, v + frame.projection(&hd, active).ok_or(dependent)?.0);
         let ev = self.system.evaluate(t, &q, &v);
+        let absorbed = self.absorbed_by_jump(t, &q, &before, &v);
         self.state = sample_of(&self.system, &ev, t, q, v, self.contacts)?.after(&self.state);
+        self.state.absorbed_work += absorbed;
         Ok(Some(ev))
+    }
+
+    /// The work the system's own forces take from the jump `before → after` at `(t, q)`, J.
+    fn absorbed_by_jump(&self, t: f64, q: &SVector<f64, N>, before: &SVector<f64, N>, after: &SVector<f64, N>) -> f64 {
+        if self.system.absorbs() {
+            self.system.absorbed_by_jump(t, q, before, after)
+        } else {
+            0.0
+        }
     }
 
     /// `q` moved onto `h_S = 0` by Newton steps in the metric of `M` until every gap of `set` is
@@ -280,6 +291,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let mut hd = ev.gap_jacobian * v + ev.gap_time_rate;
 
         let mut approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
+        let mut absorbed = 0.0;
         let mut impacted: Set = 0;
         let zeno_apex = ZENO_APEX_FACTOR * opts.gap_tolerance;
         let contacts = loop {
@@ -298,6 +310,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     (lost[first], friction_lost[first]) = (lost[first] + lost[i], friction_lost[first] + friction_lost[i]);
                 }
                 self.record(EventKind::Impact, recorded, (&hd, &jump.hd), (&lost, &friction_lost), (jump.normal, jump.tangent));
+                absorbed += self.absorbed_by_jump(t, &q, &v, &jump.v);
                 (v, hd) = (jump.v, jump.hd);
                 (ev, frame) = frame_at(&self.system, t, &q, &v, None)?;
                 impacted |= approaching;
@@ -349,6 +362,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             let hd_after = hd + frame.w * impulse;
             let lost = impact::energy_lost(&impulse, &hd, &hd_after);
             self.record(EventKind::Slide, support & !was_active, (&hd, &hd_after), (&lost, &SVector::zeros()), (impulse, SVector::zeros()));
+            absorbed += self.absorbed_by_jump(t, &q, &v, &(v + dv));
             sample(&self.system, t, q, v + dv, contacts)?
         };
         let none = SVector::zeros();
@@ -361,6 +375,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.record(EventKind::Slip, slipping, (&hd, &hd), (&none, &none), (none, none));
         self.contacts = contacts;
         self.state = state.after(&self.state);
+        self.state.absorbed_work += absorbed;
         Ok(())
     }
 }

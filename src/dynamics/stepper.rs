@@ -255,6 +255,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let s = self.current();
         (s.friction_power(), s.friction_work)
     }
+    /// The power the system's own forces take from the motion now, W, and their work since the
+    /// start, J (`System::absorbed_power`, `System::absorbed_by_jump`; zero where it does not absorb).
+    pub fn absorbed(&self) -> (f64, f64) {
+        let s = self.current();
+        (s.absorbed_power, s.absorbed_work)
+    }
     /// ∫ λ dt per constraint since the start, N·s: the impulse of the persistent contact forces
     /// (impacts: `Event::impulses`).
     pub fn contact_impulses(&self) -> SVector<f64, M> {
@@ -469,16 +475,24 @@ fn between<S: System<N, M>, const N: usize, const M: usize>(
     } else {
         s.friction_work = s0.friction_work;
     }
-    // The contact impulse by the cubic Hermite of its values and rates (the forces) at the ends.
-    s.contact_impulse = if end.contact_impulse != s0.contact_impulse {
-        let (h, x) = (end.t - s0.t, (t - s0.t) / (end.t - s0.t));
+    // The contact impulse and the absorbed work by the cubic Hermite of their values and rates
+    // (the forces, the powers) at the ends.
+    let weights = |h: f64| {
+        let x = (t - s0.t) / h;
         let (x2, x3) = (x * x, x * x * x);
-        s0.contact_impulse * (2.0 * x3 - 3.0 * x2 + 1.0)
-            + s0.lambda * ((x3 - 2.0 * x2 + x) * h)
-            + end.contact_impulse * (3.0 * x2 - 2.0 * x3)
-            + end.lambda * ((x3 - x2) * h)
+        [2.0 * x3 - 3.0 * x2 + 1.0, (x3 - 2.0 * x2 + x) * h, 3.0 * x2 - 2.0 * x3, (x3 - x2) * h]
+    };
+    s.contact_impulse = if end.contact_impulse != s0.contact_impulse {
+        let [a, b, c, d] = weights(end.t - s0.t);
+        s0.contact_impulse * a + s0.lambda * b + end.contact_impulse * c + end.lambda * d
     } else {
         s0.contact_impulse
+    };
+    s.absorbed_work = if end.absorbed_work != s0.absorbed_work {
+        let [a, b, c, d] = weights(end.t - s0.t);
+        s0.absorbed_work * a + s0.absorbed_power * b + end.absorbed_work * c + end.absorbed_power * d
+    } else {
+        s0.absorbed_work
     };
     Ok(s)
 }

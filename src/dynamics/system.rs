@@ -79,6 +79,29 @@ pub trait System<const N: usize, const M: usize> {
         f64::INFINITY
     }
 
+    /// Whether the system has forces of its own that take energy from the motion beyond what its
+    /// mechanical energy holds (`absorbed_power`), such as a lubricating film's. False, the
+    /// default: the core never asks for their power, and takes its paths as without them.
+    fn absorbs(&self) -> bool {
+        false
+    }
+
+    /// The power those forces take from the motion at `(t, q, q̇)` with the acceleration `q̈`, W.
+    /// `q̈` is given because a force made linearly implicit through `M` (a stiff damper `−D q̇`
+    /// applied as `−D (q̇ + τ q̈)`, its `τ D` added to the inertia) does work through it. The
+    /// stepper integrates it along each step with the step's own weights; asked for only where
+    /// [`Self::absorbs`].
+    fn absorbed_power(&self, _t: f64, _q: &SVector<f64, N>, _qd: &SVector<f64, N>, _qdd: &SVector<f64, N>) -> f64 {
+        0.0
+    }
+
+    /// The work those forces take from a velocity jump `q̇⁻ → q̇⁺` at `(t, q)` (an impact, a
+    /// projection onto held contacts), J: a force implicit in `q̈` takes an impulse at a jump.
+    /// Asked for only where [`Self::absorbs`].
+    fn absorbed_by_jump(&self, _t: f64, _q: &SVector<f64, N>, _before: &SVector<f64, N>, _after: &SVector<f64, N>) -> f64 {
+        0.0
+    }
+
     /// Newton restitution coefficient `e_i ∈ [0, 1]` of constraint `i`.
     fn restitution(&self, constraint: usize) -> f64;
 

@@ -92,6 +92,42 @@ impl System<1, 1> for Ball {
     }
 }
 
+/// A [`Ball`] with a viscous damper to the ground, `−c ẏ`, made linearly implicit over the time
+/// `relaxation` τ as a stiff film is: `M = m + τ c` and `f = −m g − c ẏ`, so that the damper acts
+/// as `−c (ẏ + τ ÿ)` and its mode relaxes over ≈ τ whatever c. The damper's work, through `ÿ` and
+/// at jumps, is absorbed (`System::absorbed_power`); steps are bounded by τ. With c = 0 it is the
+/// `Ball`, bit for bit.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct DampedBall {
+    pub ball: Ball,
+    pub damping: f64,
+    pub relaxation: f64,
+}
+
+impl System<1, 1> for DampedBall {
+    fn evaluate(&self, t: f64, q: &Vector1<f64>, qd: &Vector1<f64>) -> Evaluation<1, 1> {
+        let mut ev = self.ball.evaluate(t, q, qd);
+        ev.mass[0] += self.relaxation * self.damping;
+        ev.force[0] -= self.damping * qd[0];
+        ev
+    }
+    fn largest_step(&self, _t: f64) -> f64 {
+        self.relaxation
+    }
+    fn absorbs(&self) -> bool {
+        true
+    }
+    fn absorbed_power(&self, _t: f64, _q: &Vector1<f64>, qd: &Vector1<f64>, qdd: &Vector1<f64>) -> f64 {
+        self.damping * (qd[0] + self.relaxation * qdd[0]) * qd[0]
+    }
+    fn absorbed_by_jump(&self, _t: f64, _q: &Vector1<f64>, before: &Vector1<f64>, after: &Vector1<f64>) -> f64 {
+        self.relaxation * self.damping * (after[0] - before[0]) * 0.5 * (after[0] + before[0])
+    }
+    fn restitution(&self, _: usize) -> f64 {
+        self.ball.restitution
+    }
+}
+
 /// A uniform planar rod (mass `m`, length `L`) above a horizontal floor at height `y_f(t)` under
 /// gravity, `q = (x, y, θ)` of its centre; constraint `i` keeps end `i` above the floor:
 /// `h₀ = y − y_f − (L/2) sin θ`, `h₁ = y − y_f + (L/2) sin θ`. The ends couple translation and

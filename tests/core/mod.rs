@@ -1,5 +1,6 @@
 //! The nonsmooth core on the closed-form systems of `dynamics::testbeds`.
 
+mod absorbing;
 mod adaptive;
 mod ball;
 mod communication_points;

@@ -1,0 +1,85 @@
+//! Forces a system absorbs (`System::absorbed_power`), on a ball with a stiff damper made linearly
+//! implicit: the stiff mode relaxes over the step bound instead of m/c, the motion keeps the slow
+//! (terminal) velocity, and the absorbed work closes the energy books with the impacts.
+
+use nalgebra::Vector1;
+use pistonslap::dynamics::testbeds::{Ball, DampedBall, Floor};
+use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
+
+const G: f64 = 9.81;
+
+fn ball(restitution: f64) -> Ball {
+    Ball { mass: 2.0, gravity: G, restitution, floor: Floor::Fixed }
+}
+
+fn energy(s: &Stepper<DampedBall, 1, 1>) -> f64 {
+    let m = s.system().ball.mass;
+    0.5 * m * s.velocity()[0] * s.velocity()[0] + m * G * s.position()[0]
+}
+
+/// With c = 0 nothing is added: the damped ball is the ball, event for event and bit for bit.
+#[test]
+fn without_damping_it_is_the_ball_to_the_bit() {
+    let options = StepperOptions { step: 1e-3, ..Default::default() };
+    let start = (Vector1::new(1.0), Vector1::new(0.0));
+    let mut plain = Stepper::new(ball(0.5), 0.0, start.0, start.1, options.clone()).unwrap();
+    let damped = DampedBall { ball: ball(0.5), damping: 0.0, relaxation: 1e-3 };
+    let mut damped = Stepper::new(damped, 0.0, start.0, start.1, options).unwrap();
+    plain.advance(2.0).unwrap();
+    damped.advance(2.0).unwrap();
+    assert!(plain.events().len() > 10);
+    assert_eq!(plain.events(), damped.events());
+    assert_eq!((plain.position(), plain.velocity()), (damped.position(), damped.velocity()));
+    assert_eq!(damped.absorbed(), (0.0, 0.0));
+}
+
+/// c/m = 1e8 (a time constant of 1e-8 s) under steps of τ/k, τ = 1e-4 s: RK4 alone is unstable
+/// above 2.8e-8 s. Implicit, the thrown ball's velocity relaxes to the terminal −m g / c (to 1e-9
+/// of it after 50 τ at k = 1: RK4's factor per step at λh = −1 is 0.375), in k steps per τ. The
+/// energy the transient loses is the absorbed work up to RK4's error on the fast mode, which the
+/// scheme does not resolve at λh = −1/k: measured 4.2e-2, 1.8e-3, 9.6e-5, 5.5e-6 of it at
+/// k = 1, 2, 4, 8 (≈ k^−4.4).
+#[test]
+fn a_stiff_damper_relaxes_over_the_step_bound_to_the_terminal_velocity() {
+    let (c, tau) = (2e8, 1e-4);
+    let sys = DampedBall { ball: ball(0.5), damping: c, relaxation: tau };
+    let terminal = -2.0 * G / c;
+    let mut errors = Vec::new();
+    for k in [1.0, 4.0, 8.0] {
+        let options = StepperOptions { step: tau / k, ..Default::default() };
+        let mut s = Stepper::new(sys.clone(), 0.0, Vector1::new(0.01), Vector1::new(-1.0), options).unwrap();
+        let start = energy(&s);
+        s.advance(50.0 * tau).unwrap();
+        assert!((s.velocity()[0] - terminal).abs() < 1e-9 * terminal.abs(), "{} vs {terminal}", s.velocity()[0]);
+        assert!(s.counts().accepted <= 50 * k as u64 + 1, "{:?}", s.counts());
+        // The transient carried the ball (v₀ − v_t)(m/c + τ) down (τ-sized: the scheme's lag) and
+        // the terminal velocity the rest of the way.
+        let fallen = 0.01 - s.position()[0];
+        let expected = (1.0 + terminal) * (2.0 / c + tau) - terminal * 50.0 * tau;
+        assert!((fallen - expected).abs() < 0.3 * expected, "k = {k}: fell {fallen} m, {expected} m expected");
+        let lost = start - energy(&s);
+        errors.push((lost - s.absorbed().1).abs() / lost);
+    }
+    assert!(errors[0] < 0.05 && errors[1] < 2e-4 && errors[2] < 1e-5, "{errors:?}");
+}
+
+/// A ball dropped from 1 m with a moderate damper (c/m = 0.5 /s) bounces on the floor: the
+/// mechanical energy lost equals the impacts' losses plus the absorbed work, through the smooth
+/// flight (stage quadrature), the impacts (jumps) and the resting contact at the end.
+#[test]
+fn absorbed_work_and_impact_losses_close_the_energy_books() {
+    for tau in [1e-4, 1e-3, 1e-2] {
+        let sys = DampedBall { ball: ball(0.5), damping: 1.0, relaxation: tau };
+        let options = StepperOptions { step: 1e-3, local_error: Some(1e-10), ..Default::default() };
+        let mut s = Stepper::new(sys, 0.0, Vector1::new(1.0), Vector1::new(0.0), options).unwrap();
+        let start = energy(&s);
+        s.advance(3.0).unwrap();
+        let impacts = s.events().iter().filter(|e| e.kind == EventKind::Impact).count();
+        let lost: f64 = s.events().iter().map(|e| e.energy_lost).sum();
+        let (_, absorbed) = s.absorbed();
+        let balance = start - energy(&s) - lost - absorbed;
+        eprintln!("τ = {tau}: {impacts} impacts, impacts {lost:.6} J, absorbed {absorbed:.6} J, residual {balance:.2e} J");
+        assert!(impacts > 5 && absorbed > 0.05 * start, "{impacts} {absorbed}");
+        assert!(balance.abs() < 1e-8 * start, "residual {balance} J of {start} J");
+    }
+}
