@@ -46,4 +46,4 @@ pub use options::{StepperOptions, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
 pub use record::{Event, EventKind, StepCounts};
 pub use settle::ZENO_APEX_FACTOR;
 pub use stepper::Stepper;
-pub use system::{Evaluation, System, Tangents};
+pub use system::{Absorbed, Evaluation, System, Tangents};

@@ -4,7 +4,7 @@
 use super::contact::{held_acceleration, Frame, Set};
 use super::friction::{Contacts, Tangential};
 use super::inertia::Inertia;
-use super::{rk4, DynamicsError, Evaluation, System};
+use super::{rk4, Absorbed, DynamicsError, Evaluation, System};
 use nalgebra::{SMatrix, SVector};
 use serde::{Deserialize, Serialize};
 
@@ -36,8 +36,8 @@ pub(super) struct Sample<const N: usize, const M: usize> {
     /// and their work since the start, J, integrated like `friction_work` and carried alike, with
     /// the jumps' shares (`System::absorbed_by_jump`) added where they happen. Zero where the
     /// system does not absorb.
-    pub(super) absorbed_power: f64,
-    pub(super) absorbed_work: f64,
+    pub(super) absorbed_power: Absorbed,
+    pub(super) absorbed_work: Absorbed,
 }
 
 impl<const N: usize, const M: usize> Sample<N, M> {
@@ -188,7 +188,7 @@ pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
     let Motion { acc, lambda, friction, slip } = motion(sys, ev, (t, &q, &v), contacts)?;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let hdd = ev.gap_jacobian * acc + ev.gap_bias;
-    let absorbed_power = if sys.absorbs() { sys.absorbed_power(t, &q, &v, &acc) } else { 0.0 };
+    let absorbed_power = if sys.absorbs() { sys.absorbed_power(t, &q, &v, &acc) } else { Absorbed::zeros() };
     let s = Sample {
         t,
         q,
@@ -203,10 +203,10 @@ pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
         friction_work: 0.0,
         contact_impulse: SVector::zeros(),
         absorbed_power,
-        absorbed_work: 0.0,
+        absorbed_work: Absorbed::zeros(),
     };
     // One sum clears every number (x · 0 is NaN exactly for an infinite or NaN x).
-    let coordinates = (s.q * 0.0 + s.v * 0.0 + s.acc * 0.0).sum() + s.absorbed_power * 0.0;
+    let coordinates = (s.q * 0.0 + s.v * 0.0 + s.acc * 0.0).sum() + (s.absorbed_power * 0.0).sum();
     let constraints = (s.lambda * 0.0 + s.gap * 0.0 + s.hd * 0.0 + s.hdd * 0.0 + s.slip * 0.0 + s.friction * 0.0).sum();
     if coordinates + constraints == 0.0 {
         Ok(s)
@@ -244,7 +244,7 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     let by_weights = |first: SVector<f64, M>, [_, a, b, c]: [SVector<f64, M>; 4]| (first + (a + b) * 2.0 + c) * (dt / 6.0);
     let mut lambdas = [SVector::<f64, M>::zeros(); 4];
     // The system's own absorbed power at stages 2–4, by the same weights, where it absorbs.
-    let (absorbs, mut absorbed, mut absorbing_stage) = (sys.absorbs(), [0.0; 4], 0);
+    let (absorbs, mut absorbed, mut absorbing_stage) = (sys.absorbs(), [Absorbed::zeros(); 4], 0);
     let mut absorb = |t, q: &SVector<f64, N>, v: &SVector<f64, N>, acc: &SVector<f64, N>| {
         if absorbs {
             absorbing_stage += 1;
@@ -289,7 +289,7 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     (s.friction_work, s.contact_impulse) = (work, impulse);
     s.absorbed_work = s0.absorbed_work;
     if absorbs {
-        s.absorbed_work += (s0.absorbed_power + 2.0 * (absorbed[1] + absorbed[2]) + absorbed[3]) * (dt / 6.0);
+        s.absorbed_work += (s0.absorbed_power + (absorbed[1] + absorbed[2]) * 2.0 + absorbed[3]) * (dt / 6.0);
     }
     Ok((s, ev, step.last_slopes))
 }

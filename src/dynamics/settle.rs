@@ -5,7 +5,7 @@ use super::contact::{contains, members, select, solve_on, ties, Frame, Set};
 use super::friction::{Choice, Contacts, Mode, Tangential};
 use super::inertia::Inertia;
 use super::sample::{frame_at, friction_of, rk4_to, sample, sample_of, Sample};
-use super::{impact, DynamicsError, Evaluation, Event, EventKind, Stepper, System};
+use super::{impact, Absorbed, DynamicsError, Evaluation, Event, EventKind, Stepper, System};
 use nalgebra::SVector;
 
 /// Zeno guard: after an impact a closed constraint whose free flight would rise no higher than
@@ -65,11 +65,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
 
     /// The work the system's own forces take from the jump `before → after` at `(t, q)`, J.
-    fn absorbed_by_jump(&self, t: f64, q: &SVector<f64, N>, before: &SVector<f64, N>, after: &SVector<f64, N>) -> f64 {
+    fn absorbed_by_jump(&self, t: f64, q: &SVector<f64, N>, before: &SVector<f64, N>, after: &SVector<f64, N>) -> Absorbed {
         if self.system.absorbs() {
             self.system.absorbed_by_jump(t, q, before, after)
         } else {
-            0.0
+            Absorbed::zeros()
         }
     }
 
@@ -291,7 +291,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let mut hd = ev.gap_jacobian * v + ev.gap_time_rate;
 
         let mut approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
-        let mut absorbed = 0.0;
+        let mut absorbed = Absorbed::zeros();
         let mut impacted: Set = 0;
         let zeno_apex = ZENO_APEX_FACTOR * opts.gap_tolerance;
         let contacts = loop {

@@ -8,7 +8,7 @@ use super::friction::Contacts;
 use super::options::{MAX_STEPS_PER_ADVANCE, PENETRATION_FACTOR, TOO_MANY_STEPS};
 use super::rk4::Hermite5;
 use super::sample::{local_error, rk4_step, rk4_to, sample, sample_of, Evaluated, Sample};
-use super::{DynamicsError, Evaluation, Event, StepCounts, StepperOptions, System, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
+use super::{Absorbed, DynamicsError, Evaluation, Event, StepCounts, StepperOptions, System, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
 use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
@@ -257,7 +257,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
     /// The power the system's own forces take from the motion now, W, and their work since the
     /// start, J (`System::absorbed_power`, `System::absorbed_by_jump`; zero where it does not absorb).
-    pub fn absorbed(&self) -> (f64, f64) {
+    pub fn absorbed(&self) -> (Absorbed, Absorbed) {
         let s = self.current();
         (s.absorbed_power, s.absorbed_work)
     }

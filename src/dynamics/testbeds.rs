@@ -2,7 +2,7 @@
 //! and the benchmark (`benches/core.rs`). Public because a bench cannot see `cfg(test)` code;
 //! the engine models do not use them.
 
-use super::{Evaluation, System, Tangents};
+use super::{Absorbed, Evaluation, System, Tangents};
 use nalgebra::{Matrix1, Matrix2, Matrix3, RowVector2, SMatrix, SVector, Vector1, Vector2, Vector3};
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
@@ -117,11 +117,12 @@ impl System<1, 1> for DampedBall {
     fn absorbs(&self) -> bool {
         true
     }
-    fn absorbed_power(&self, _t: f64, _q: &Vector1<f64>, qd: &Vector1<f64>, qdd: &Vector1<f64>) -> f64 {
-        self.damping * (qd[0] + self.relaxation * qdd[0]) * qd[0]
+    /// All of it in both channels.
+    fn absorbed_power(&self, _t: f64, _q: &Vector1<f64>, qd: &Vector1<f64>, qdd: &Vector1<f64>) -> Absorbed {
+        Absorbed::repeat(self.damping * (qd[0] + self.relaxation * qdd[0]) * qd[0])
     }
-    fn absorbed_by_jump(&self, _t: f64, _q: &Vector1<f64>, before: &Vector1<f64>, after: &Vector1<f64>) -> f64 {
-        self.relaxation * self.damping * (after[0] - before[0]) * 0.5 * (after[0] + before[0])
+    fn absorbed_by_jump(&self, _t: f64, _q: &Vector1<f64>, before: &Vector1<f64>, after: &Vector1<f64>) -> Absorbed {
+        Absorbed::repeat(self.relaxation * self.damping * (after[0] - before[0]) * 0.5 * (after[0] + before[0]))
     }
     fn restitution(&self, _: usize) -> f64 {
         self.ball.restitution
