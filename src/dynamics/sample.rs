@@ -235,6 +235,22 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     t: f64,
     contacts: Contacts,
 ) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
+    // A system that absorbs nothing gets a step without a trace of the absorbed power.
+    if sys.absorbs() {
+        rk4_step_of::<S, N, M, true>(sys, s0, t, contacts)
+    } else {
+        rk4_step_of::<S, N, M, false>(sys, s0, t, contacts)
+    }
+}
+
+#[allow(clippy::type_complexity)]
+#[inline(always)]
+fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: bool>(
+    sys: &S,
+    s0: &Sample<N, M>,
+    t: f64,
+    contacts: Contacts,
+) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
     let dt = t - s0.t;
     // Three monomorphizations of the step: a flight's stages need `M` and `f` alone, and
     // frictionless held stages the normal forces alone, neither adding friction work; rubbing
@@ -244,9 +260,9 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     let by_weights = |first: SVector<f64, M>, [_, a, b, c]: [SVector<f64, M>; 4]| (first + (a + b) * 2.0 + c) * (dt / 6.0);
     let mut lambdas = [SVector::<f64, M>::zeros(); 4];
     // The system's own absorbed power at stages 2–4, by the same weights, where it absorbs.
-    let (absorbs, mut absorbed, mut absorbing_stage) = (sys.absorbs(), [Absorbed::zeros(); 4], 0);
+    let (mut absorbed, mut absorbing_stage) = ([Absorbed::zeros(); 4], 0);
     let mut absorb = |t, q: &SVector<f64, N>, v: &SVector<f64, N>, acc: &SVector<f64, N>| {
-        if absorbs {
+        if ABSORBS {
             absorbing_stage += 1;
             absorbed[absorbing_stage] = sys.absorbed_power(t, q, v, acc);
         }
@@ -288,7 +304,7 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     let mut s = sample_of(sys, &ev, t, step.q, step.v, contacts)?;
     (s.friction_work, s.contact_impulse) = (work, impulse);
     s.absorbed_work = s0.absorbed_work;
-    if absorbs {
+    if ABSORBS {
         s.absorbed_work += (s0.absorbed_power + (absorbed[1] + absorbed[2]) * 2.0 + absorbed[3]) * (dt / 6.0);
     }
     Ok((s, ev, step.last_slopes))
