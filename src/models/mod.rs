@@ -15,6 +15,7 @@ pub mod pressure;
 pub mod pressure_trace;
 mod roller;
 mod roller_forcing;
+pub mod skirt;
 mod trig;
 
 pub use crank_efficiency::{EfficiencyCalibration, EfficiencyTarget};
