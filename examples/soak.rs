@@ -65,7 +65,7 @@ type Powers = [f64; 5];
 
 fn powers(model: &impl EnergyBalance) -> Powers {
     let p = model.power_flows();
-    [p.drive, p.gas, p.damping, p.friction, p.drive.abs() + p.gas.abs() + p.damping + p.friction]
+    [p.drive, p.gas, p.damping, p.friction + p.film, p.drive.abs() + p.gas.abs() + p.damping + p.friction + p.film]
 }
 
 fn add(total: &mut Powers, part: Powers) {

@@ -60,7 +60,11 @@ impl<E: EngineModel> Simulation<E> {
             model,
             time: start_time,
             outputs: Outputs::default(),
-            statistics: ImpactStatistics::starting_at(params.crank_angle_start, params.slap_threshold),
+            statistics: ImpactStatistics::starting_at(
+                params.crank_angle_start,
+                params.slap_threshold,
+                std::f64::consts::PI * 0.5 * params.piston_diameter * params.piston_diameter * params.crank_radius,
+            ),
             step_events: Vec::new(),
             log: None,
             spare_events: Scratch::default(),
@@ -210,10 +214,10 @@ impl<E: EngineModel> Simulation<E> {
         // The engine's sign: what the crank train delivers to the drive or load.
         outputs.engine_torque = -outputs.crank_torque;
         if let Some(events) = events {
-            statistics.record_step(events, outputs.crank_angle);
+            statistics.record_step(events, outputs.crank_angle, outputs.liner_friction_work);
         }
         statistics.write(outputs);
-        outputs.dissipated_energy_total = outputs.impact_energy_total + outputs.friction_energy_total;
+        outputs.dissipated_energy_total = outputs.impact_energy_total + outputs.friction_energy_total + outputs.film_energy_total;
     }
 }
 

@@ -37,6 +37,8 @@ pub struct Event<const N: usize, const M: usize> {
     pub friction_energy: f64,
     /// Configuration at the event.
     pub q: SVector<f64, N>,
+    /// Velocity q̇ before the event's impulses (an inertia that depends on q̇ is taken there).
+    pub v: SVector<f64, N>,
     /// The impulses Λ on every constraint of the impact or velocity projection that recorded this
     /// event, constraints held in contact included (they take reactions without an event of their
     /// own). One impact or projection may record several events: it carries its impulses on the

@@ -101,7 +101,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// the normal and tangential `impulses` (see `Event::impulses`).
     fn record(
         &mut self,
-        kind: EventKind,
+        (kind, v): (EventKind, &SVector<f64, N>),
         set: Set,
         (hd, hd_after): (&SVector<f64, M>, &SVector<f64, M>),
         (lost, friction_lost): (&SVector<f64, M>, &SVector<f64, M>),
@@ -121,6 +121,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 energy_lost,
                 friction_energy,
                 q,
+                v: *v,
                 impulses,
                 friction_impulses,
             };
@@ -309,7 +310,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 for i in members::<M>(moved) {
                     (lost[first], friction_lost[first]) = (lost[first] + lost[i], friction_lost[first] + friction_lost[i]);
                 }
-                self.record(EventKind::Impact, recorded, (&hd, &jump.hd), (&lost, &friction_lost), (jump.normal, jump.tangent));
+                self.record((EventKind::Impact, &v), recorded, (&hd, &jump.hd), (&lost, &friction_lost), (jump.normal, jump.tangent));
                 absorbed += self.absorbed_by_jump(t, &q, &v, &jump.v);
                 (v, hd) = (jump.v, jump.hd);
                 (ev, frame) = frame_at(&self.system, t, &q, &v, None)?;
@@ -361,18 +362,24 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             let (dv, impulse) = frame.projection(&hd, support).ok_or(DynamicsError::DependentContacts { time: t, constraints: support })?;
             let hd_after = hd + frame.w * impulse;
             let lost = impact::energy_lost(&impulse, &hd, &hd_after);
-            self.record(EventKind::Slide, support & !was_active, (&hd, &hd_after), (&lost, &SVector::zeros()), (impulse, SVector::zeros()));
+            self.record(
+                (EventKind::Slide, &v),
+                support & !was_active,
+                (&hd, &hd_after),
+                (&lost, &SVector::zeros()),
+                (impulse, SVector::zeros()),
+            );
             absorbed += self.absorbed_by_jump(t, &q, &v, &(v + dv));
             sample(&self.system, t, q, v + dv, contacts)?
         };
         let none = SVector::zeros();
-        self.record(EventKind::Release, was_active & !support, (&hd, &hd), (&none, &none), (none, none));
+        self.record((EventKind::Release, &v), was_active & !support, (&hd, &hd), (&none, &none), (none, none));
         // With friction: constraints held before and after that came to stick, or started to slip.
         let kept = was_active & support;
         let (stuck, slipping) =
             (kept & contacts.stick & !before.stick, kept & !contacts.stick & (before.stick | (before.back ^ contacts.back)));
-        self.record(EventKind::Stick, stuck, (&hd, &hd), (&none, &none), (none, none));
-        self.record(EventKind::Slip, slipping, (&hd, &hd), (&none, &none), (none, none));
+        self.record((EventKind::Stick, &v), stuck, (&hd, &hd), (&none, &none), (none, none));
+        self.record((EventKind::Slip, &v), slipping, (&hd, &hd), (&none, &none), (none, none));
         self.contacts = contacts;
         self.state = state.after(&self.state);
         self.state.absorbed_work += absorbed;

@@ -16,7 +16,7 @@ use serde::{de::DeserializeOwned, Serialize};
 
 const MAGIC: &[u8; 8] = b"PSLAPFMU";
 /// Bump when the layout of the saved state changes.
-pub const FORMAT_VERSION: u32 = 3;
+pub const FORMAT_VERSION: u32 = 4;
 
 /// The state in its envelope, the payload encoded once, straight after the header.
 pub fn encode<T: Serialize>(state: &T, guid: &str) -> Result<Vec<u8>, String> {

@@ -24,6 +24,42 @@ pub struct ImpactStatistics {
     /// The figures of the last completed cycle and how many cycles have completed.
     completed: CycleMetrics,
     cycle_count: i32,
+    friction: FrictionCycle,
+}
+
+/// The piston–liner friction work per cycle (`cycle_skirt_fmep`): the work at the last point, and
+/// at the start of the cycle in progress where the run has seen it, the work at a cycle boundary
+/// taken linearly in crank angle between the points around it.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+struct FrictionCycle {
+    /// Displaced volume π d²/4 · 2 l1, m³.
+    volume: f64,
+    /// rad (accumulated) and J at the last point.
+    angle: f64,
+    work: f64,
+    /// J at the start of the cycle in progress.
+    start: Option<f64>,
+    /// Pa, of the last completed cycle.
+    fmep: f64,
+}
+
+impl FrictionCycle {
+    fn record(&mut self, angle: f64, work: f64) {
+        let (from, to) = (cycle_of(self.angle), cycle_of(angle));
+        // Only the last two boundaries matter; a step past more has no cycle start to go by.
+        if to > from + 2 {
+            self.start = None;
+        }
+        for c in (from + 1).max(to - 1)..=to {
+            let boundary = c as f64 * CYCLE;
+            let at = self.work + (work - self.work) * (boundary - self.angle) / (angle - self.angle);
+            if let Some(start) = self.start {
+                self.fmep = (at - start) / self.volume;
+            }
+            self.start = Some(at);
+        }
+        (self.angle, self.work) = (angle, work);
+    }
 }
 
 /// What one engine cycle's impacts amount to: all of them, and the slaps among them.
@@ -78,9 +114,12 @@ pub fn cycle_of(crank_angle: f64) -> i64 {
 }
 
 impl ImpactStatistics {
-    /// No impacts yet; the first cycle is the one `crank_angle` (rad, accumulated) lies in.
-    pub fn starting_at(crank_angle: f64, slap_threshold: f64) -> Self {
-        Self { cycle: cycle_of(crank_angle), slap_threshold, ..Self::default() }
+    /// No impacts yet; the first cycle is the one `crank_angle` (rad, accumulated) lies in, and
+    /// counts for the friction work per displaced volume `volume` (m³) if it starts there.
+    pub fn starting_at(crank_angle: f64, slap_threshold: f64, volume: f64) -> Self {
+        let start = (crank_angle.rem_euclid(CYCLE) == 0.0).then_some(0.0);
+        let friction = FrictionCycle { volume, angle: crank_angle, start, ..FrictionCycle::default() };
+        Self { cycle: cycle_of(crank_angle), slap_threshold, friction, ..Self::default() }
     }
 
     /// Takes in the events of one step, after which the crank angle is `crank_angle` (rad,
@@ -89,8 +128,10 @@ impl ImpactStatistics {
     /// impact on the same wall is no slap. A slap is an impact landing the piston on the other wall
     /// than the last landing's (a side change; the first landing is none), faster than
     /// `slap_threshold`. A cycle is complete once an event or the step's end lies in a later one;
-    /// cycles without impacts complete with zero figures.
-    pub fn record_step(&mut self, events: &[EngineEvent], crank_angle: f64) {
+    /// cycles without impacts complete with zero figures. `friction_work`: the piston–liner friction
+    /// work since the start then, J.
+    pub fn record_step(&mut self, events: &[EngineEvent], crank_angle: f64, friction_work: f64) {
+        self.friction.record(crank_angle, friction_work);
         self.impacts_in_step = 0;
         self.max_impact_velocity_in_step = 0.0;
         self.impact_energy_in_step = 0.0;
@@ -137,6 +178,7 @@ impl ImpactStatistics {
         out.last_impact_corner = self.last_impact_corner;
         out.last_impact_crank_angle = self.last_impact_crank_angle;
         out.cycle_count = self.cycle_count;
+        out.cycle_skirt_fmep = self.friction.fmep;
         let c = &self.completed;
         out.cycle_slap_events = c.slaps[0].saturating_add(c.slaps[1]);
         out.cycle_impacts = c.impacts;

@@ -8,8 +8,9 @@
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
 use super::linkage::{Linkage, Loads, Trig};
+use super::lubrication::Lubrication;
 use super::model::MAX_STEP_ANGLE;
-use crate::dynamics::{Evaluation, System, Tangents};
+use crate::dynamics::{Absorbed, Evaluation, System, Tangents};
 use crate::models::gas::GasPressure;
 use crate::models::numerics::{trig, LastValue};
 use crate::models::{InputPolynomial, ModelError, Parameters};
@@ -27,6 +28,8 @@ pub struct Engine {
     pub restitution: f64,
     /// Coulomb friction coefficient μ of the corners on the liner.
     pub friction: f64,
+    /// The lubricated skirt (`skirt_model = 2`); none: the dry corners alone.
+    pub lubrication: Option<Lubrication>,
 }
 
 /// What an evaluation needs of the crank angle alone.
@@ -48,6 +51,7 @@ impl Engine {
             crown_area: 0.25 * std::f64::consts::PI * params.piston_diameter * params.piston_diameter,
             restitution: params.restitution,
             friction: params.friction,
+            lubrication: Lubrication::of(params)?,
         })
     }
 
@@ -95,7 +99,11 @@ impl Engine {
     #[inline(always)]
     fn evaluate(&self, t: f64, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> Evaluation<3, 4> {
         let (trig, loads) = self.trig_and_loads(t, phi, load_torque, &crank);
-        self.linkage.evaluate_with(&trig, phid, loads)
+        let mut ev = self.linkage.evaluate_with(&trig, phid, loads);
+        if let Some(lubrication) = &self.lubrication {
+            lubrication.apply((phi, &trig), phid, (&mut ev.mass, &mut ev.force));
+        }
+        ev
     }
 
     /// M and f of [`Self::evaluate`] alone.
@@ -109,7 +117,26 @@ impl Engine {
         crank: Crank,
     ) -> (Matrix3<f64>, Vector3<f64>) {
         let (trig, loads) = self.trig_and_loads(t, phi, load_torque, &crank);
-        self.linkage.inertia_and_force_with(&trig, phid, loads)
+        let (mut mass, mut force) = self.linkage.inertia_and_force_with(&trig, phid, loads);
+        if let Some(lubrication) = &self.lubrication {
+            lubrication.apply((phi, &trig), phid, (&mut mass, &mut force));
+        }
+        (mass, force)
+    }
+
+    /// The largest step the lubricated skirt allows (infinite without one), s.
+    fn largest_step(&self) -> f64 {
+        self.lubrication.as_ref().map_or(f64::INFINITY, Lubrication::largest_step)
+    }
+
+    /// What the lubricated skirt takes from the motion at (φ, φ̇, φ̈), W (`Lubrication::absorbed_power`).
+    fn absorbed_power(&self, phi: &Vector3<f64>, trig: &Trig, phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
+        self.lubrication.as_ref().map_or(Absorbed::zeros(), |l| l.absorbed_power((phi, trig), phid, phidd))
+    }
+
+    /// What the lubricated skirt takes from a velocity jump at φ, J (`Lubrication::absorbed_by_jump`).
+    fn absorbed_by_jump(&self, phi: &Vector3<f64>, trig: &Trig, before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
+        self.lubrication.as_ref().map_or(Absorbed::zeros(), |l| l.absorbed_by_jump((phi, trig), before, after))
     }
 
     #[inline(always)]
@@ -316,7 +343,24 @@ impl System<2, 4> for PrescribedCrank {
     /// whatever the speed: the quintic dense output of φ2 between such steps errs by ≈ (ω h)⁶, which
     /// put the corners of `piston_lateral` 3.6e-7 m outside the bore at 8000 rpm.
     fn largest_step(&self, t: f64) -> f64 {
-        MAX_STEP_ANGLE / self.speed.at(t).abs()
+        (MAX_STEP_ANGLE / self.speed.at(t).abs()).min(self.engine.largest_step())
+    }
+
+    fn absorbs(&self) -> bool {
+        self.engine.lubrication.is_some()
+    }
+
+    fn absorbed_power(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>, qdd: &Vector2<f64>) -> Absorbed {
+        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
+        let phidd = Vector3::new(self.acceleration(t), qdd[0], qdd[1]);
+        self.engine.absorbed_power(&phi, &Trig::with_crank((crank.sin, crank.cos), &phi), &phid, &phidd)
+    }
+
+    /// The crank keeps its speed through a jump.
+    fn absorbed_by_jump(&self, t: f64, q: &Vector2<f64>, before: &Vector2<f64>, after: &Vector2<f64>) -> Absorbed {
+        let (phi, before, crank) = self.full_state_and_crank(t, q, before);
+        let after = Vector3::new(before[0], after[0], after[1]);
+        self.engine.absorbed_by_jump(&phi, &Trig::with_crank((crank.sin, crank.cos), &phi), &before, &after)
     }
 
     fn restitution(&self, _constraint: usize) -> f64 {
@@ -366,6 +410,22 @@ impl System<3, 4> for FreeCrank {
 
     fn coordinate_lengths(&self) -> Vector3<f64> {
         self.engine.linkage.lengths()
+    }
+
+    fn largest_step(&self, _t: f64) -> f64 {
+        self.engine.largest_step()
+    }
+
+    fn absorbs(&self) -> bool {
+        self.engine.lubrication.is_some()
+    }
+
+    fn absorbed_power(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>, qdd: &Vector3<f64>) -> Absorbed {
+        self.engine.absorbed_power(q, &Trig::new(q), qd, qdd)
+    }
+
+    fn absorbed_by_jump(&self, _t: f64, q: &Vector3<f64>, before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
+        self.engine.absorbed_by_jump(q, &Trig::new(q), before, after)
     }
 
     fn restitution(&self, _constraint: usize) -> f64 {

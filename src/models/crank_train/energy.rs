@@ -13,10 +13,16 @@ use crate::models::{EnergyBalance, PowerFlows};
 use nalgebra::{Vector2, Vector4};
 
 impl PrescribedCrank {
-    /// Work the drive does through the corner impulses of one impact at `(t, q)`, normal and
-    /// tangential (friction), J; `None` if the rod and piston inertia is not positive definite there.
-    pub fn impulse_work(&self, t: f64, q: &Vector2<f64>, (normal, friction): (&Vector4<f64>, &Vector4<f64>)) -> Option<f64> {
-        let full = self.evaluate_full(t, q, &Vector2::zeros());
+    /// Work the drive does through the corner impulses of one impact at `(t, q)` with the velocity
+    /// `v` before it (the lubricated skirt's inertia depends on it), normal and tangential
+    /// (friction), J; `None` if the rod and piston inertia is not positive definite there.
+    pub fn impulse_work(
+        &self,
+        t: f64,
+        (q, v): (&Vector2<f64>, &Vector2<f64>),
+        (normal, friction): (&Vector4<f64>, &Vector4<f64>),
+    ) -> Option<f64> {
+        let full = self.evaluate_full(t, q, v);
         let rows = full.mass.fixed_view::<2, 2>(1, 1).into_owned();
         let mut generalized = full.gap_jacobian.transpose() * normal;
         if *friction != Vector4::zeros() {
@@ -72,7 +78,7 @@ impl EnergyBalance for CrankTrain {
             Drive::Free(s) => -s.system().load_torque.at(s.time()) * phid[0],
         };
         let gas = -engine.gas_force(self.time(), phi[0]) * height_rate;
-        PowerFlows { drive, gas, damping: -0.5 * odd.dot(&phid), friction: friction_power }
+        PowerFlows { drive, gas, damping: -0.5 * odd.dot(&phid), friction: friction_power, film: self.absorbed().0[0] }
     }
 
     fn impulse_work(&self) -> f64 {
@@ -98,7 +104,7 @@ mod tests {
         let sys = PrescribedCrank::new(engine, 0.7, 0.0, 125.66);
         let (t, q, qd) = (0.003, Vector2::new(-0.12, 4e-4), Vector2::new(-25.0, 3.0));
         let impulses = Vector4::new(0.02, 0.0, 0.0, 0.013);
-        let work = sys.impulse_work(t, &q, (&impulses, &Vector4::zeros())).unwrap();
+        let work = sys.impulse_work(t, (&q, &Vector2::zeros()), (&impulses, &Vector4::zeros())).unwrap();
 
         let (phi, phid) = sys.full_state(t, &q, &qd);
         let full = sys.evaluate_full(t, &q, &qd);

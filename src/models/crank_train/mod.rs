@@ -8,7 +8,9 @@ pub mod efficiency;
 mod energy;
 pub mod kinematics;
 pub mod linkage;
+pub mod lubrication;
 mod model;
+mod skirt_outputs;
 
 pub use efficiency::{EfficiencyCalibration, EfficiencyTarget};
 pub use model::{CrankTrain, LOCAL_ERROR, MAX_STEP, MAX_STEP_ANGLE};

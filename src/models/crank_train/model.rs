@@ -379,7 +379,7 @@ impl EngineModel for CrankTrain {
                 let sys = s.system();
                 self.log(s.events(), |e| Vector3::new(sys.crank_angle(e.time), e.q[0], e.q[1]), events);
                 for e in s.events().iter().filter(|e| e.impulses != Vector4::zeros()) {
-                    let work = sys.impulse_work(e.time, &e.q, (&e.impulses, &e.friction_impulses));
+                    let work = sys.impulse_work(e.time, (&e.q, &e.v), (&e.impulses, &e.friction_impulses));
                     self.impulse_work += work
                         .ok_or_else(|| ModelError(format!("crank train: at t = {} s: the rod and piston inertia is singular", e.time)))?;
                 }
@@ -459,8 +459,6 @@ impl EngineModel for CrankTrain {
         };
         [out.contact_state_1, out.contact_state_2, out.contact_state_3, out.contact_state_4] = in_contact.map(i32::from);
         [out.contact_force_1, out.contact_force_2, out.contact_force_3, out.contact_force_4] = [forces[0], forces[1], forces[2], forces[3]];
-        // K1, K2 touch the −D/2 wall (push toward +x), K3, K4 the +D/2 wall.
-        out.side_force = forces[0] + forces[1] - forces[2] - forces[3];
         out.crank_speed_actual = match &self.drive {
             Drive::Prescribed(s) => s.system().speed(s.time()),
             Drive::Free(_) => phid[0],
@@ -470,6 +468,7 @@ impl EngineModel for CrankTrain {
         out.liner_impulse_total = std::array::from_fn(|w| contact[w] + self.impact_impulse[w]);
         [out.friction_force_1, out.friction_force_2, out.friction_force_3, out.friction_force_4] = friction.into();
         (out.friction_power, out.friction_energy_total) = (friction_power, friction_energy);
+        self.write_skirt((&phi, &trig, &phid), &gaps, &forces, out);
     }
 }
 

@@ -1,7 +1,7 @@
 //! What a model tells about its energy, so that a long run can check, window by window,
 //!   ΔE = ∫ (P_drive + P_gas − D − F) dt − Σ impact dissipation + Σ impulsive drive work,
-//! E the mechanical energy, D the joint damping's and F the liner friction's dissipation rate
-//! (`examples/soak.rs`).
+//! E the mechanical energy, D the joint damping's and F the liner friction's dissipation rate (the
+//! lubricated skirt's absorbed power with it) (`examples/soak.rs`).
 
 /// Rates of work on the moving parts at one instant, W.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -15,6 +15,8 @@ pub struct PowerFlows {
     pub damping: f64,
     /// Dissipation rate of liner friction in persistent contact, ≥ 0.
     pub friction: f64,
+    /// The power the lubricated skirt takes from the motion (film, asperities, their friction).
+    pub film: f64,
 }
 
 /// The terms of the energy balance a model can state about itself.

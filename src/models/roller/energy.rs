@@ -37,7 +37,13 @@ impl EnergyBalance for Roller {
         let walls = s.multipliers()[LOWER] - s.multipliers()[UPPER];
         // Rates per radian of crank angle, times Ω for per second.
         let watts = self.energy_scale() * self.crank_speed;
-        PowerFlows { drive: (forcing + walls) * rate * watts, gas: 0.0, damping: sys.lambda * rate * rate * watts, friction: 0.0 }
+        PowerFlows {
+            drive: (forcing + walls) * rate * watts,
+            gas: 0.0,
+            damping: sys.lambda * rate * rate * watts,
+            friction: 0.0,
+            film: 0.0,
+        }
     }
 
     fn impulse_work(&self) -> f64 {

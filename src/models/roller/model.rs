@@ -249,6 +249,7 @@ impl EngineModel for Roller {
         let clearance = (p.bore - p.piston_diameter) / 2.0;
         p.validate().map_err(|e| ModelError(format!("model_variant 2: {e}")))?;
         require(p.crank_mode == 1, "crank_mode", "1 (the thesis's crank turns at a prescribed speed)")?;
+        require(p.skirt_model == 1, "skirt_model", "1 (the roller has no skirt to lubricate)")?;
         // The model is linear in ψ ≤ ρ/Λ: beyond a few degrees it no longer describes the mechanism.
         require(clearance <= 0.05 * p.rod_length, "bore", "larger than piston_diameter by at most 10 % of rod_length")?;
         for (name, value) in [

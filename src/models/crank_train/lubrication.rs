@@ -1,0 +1,204 @@
+//! The lubricated skirt (`skirt_model = 2`) on the crank train: the film and asperity loads of
+//! [`crate::models::skirt`] as generalized forces on φ = (φ1, φ2, φ3), their damping made linearly
+//! implicit through the inertia matrix (`docs/lubricated_skirt.md` gives the reasoning and the
+//! measurements).
+//!
+//! The skirt sees the pin's lateral position `x = −l1 sin φ1 − l2 sin φ2`, the tilt φ3 and the pin's
+//! axial velocity `ẏ = −l1 sin φ1 φ̇1 − l2 sin φ2 φ̇2`. With `G = ∂(x, φ3)/∂φ`, rows
+//! `(−l1 cos φ1, −l2 cos φ2, 0)` and `(0, 0, 1)`, and `g = ∂y/∂φ = (−l1 sin φ1, −l2 sin φ2, 0)`, the
+//! loads (lateral force F, moment M, axial force F_a and its moment M_a) act as
+//! `Q = Gᵀ (F, M + M_a) + g F_a`: through the rod angle on the crank, so that the prescribed drive
+//! supplies the skirt's friction and a free crank is slowed by it.
+//!
+//! Stiffness: `D = −∂(F, M)/∂(ẋ, φ̇3)` makes the lateral and tilt motion relax over m/|D| ≈ 1e-8 s.
+//! The film acts instead as `Q − τ Gᵀ D G φ̈` (its force at the rates a time τ later, to first
+//! order): the evaluation returns `M + τ Gᵀ D G` and `f + Q`. A mode `m v̇ = −c v` then relaxes at
+//! `λ = −c/(m + τ c) ≥ −1/τ`, inside RK4's stability region for steps up to τ whatever the film;
+//! with D → 0 the dry equations come back exactly. What the skirt takes from the motion,
+//! `−(Q − τ Gᵀ D G φ̈)·φ̇`, and at a velocity jump Δφ̇ the impulse `−τ Gᵀ D G Δφ̇`'s share, is
+//! booked by the core as the absorbed work (`System::absorbed_power`).
+
+use super::linkage::Trig;
+use crate::dynamics::Absorbed;
+use crate::models::numerics::LastValue;
+use crate::models::skirt::{Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
+use crate::models::{ModelError, Parameters};
+use nalgebra::{Matrix2x3, Matrix3, Vector2, Vector3};
+use serde::{Deserialize, Serialize};
+
+/// RK4 steps per relaxation time τ: the fast mode then sees λh ≥ −1/2, where the books of its
+/// transients close to ≈ 2e-3 of their energy (`tests/core/absorbing.rs`).
+pub const STEPS_PER_RELAXATION: f64 = 2.0;
+
+/// The skirt on the linkage: its film solver, the crank and rod lengths that place it, and τ.
+#[derive(Clone, Debug, Serialize, Deserialize)]
+#[serde(try_from = "Design", into = "Design")]
+pub struct Lubrication {
+    design: Design,
+    skirt: Skirt,
+    /// The loads at the last motion solved: an RK4 stage's absorbed power reads its evaluation's.
+    last: LastValue<SkirtLoads, 5>,
+}
+
+/// What a lubricated skirt is built from (and saved as), SI.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+struct Design {
+    /// (l1, l2).
+    links: [f64; 2],
+    /// τ, s.
+    relaxation: f64,
+    /// D/2, d/2, s, h, a.
+    geometry: [f64; 5],
+    viscosity: f64,
+    arc: f64,
+    profile: String,
+    ovality: f64,
+    /// σ, η, β, E'.
+    roughness: [f64; 4],
+    boundary_friction: f64,
+    grid: (usize, usize),
+}
+
+impl PartialEq for Lubrication {
+    fn eq(&self, other: &Self) -> bool {
+        self.design == other.design
+    }
+}
+
+impl From<Lubrication> for Design {
+    fn from(lubrication: Lubrication) -> Self {
+        lubrication.design
+    }
+}
+
+impl TryFrom<Design> for Lubrication {
+    type Error = ModelError;
+
+    fn try_from(design: Design) -> Result<Self, ModelError> {
+        let [radius_bore, radius_piston, length, pin_from_top, pin_offset] = design.geometry;
+        let [sigma, density, radius, modulus] = design.roughness;
+        let film = SkirtDesign {
+            profile: design.profile.parse::<SkirtProfile>()?,
+            ovality: design.ovality,
+            roughness: Roughness { sigma, density, radius, modulus },
+            boundary_friction: design.boundary_friction,
+            grid: design.grid,
+            ..SkirtDesign::new(radius_bore, radius_piston, length, pin_from_top, pin_offset, design.arc, design.viscosity)
+        };
+        let skirt = Skirt::new(film)?;
+        Ok(Self { design, skirt, last: LastValue::default() })
+    }
+}
+
+/// The skirt's motion and how it moves with φ.
+struct Kinematics {
+    motion: SkirtMotion,
+    /// `G = ∂(x, φ3)/∂φ`.
+    lateral: Matrix2x3<f64>,
+    /// `g = ∂y/∂φ`.
+    axial: Vector3<f64>,
+}
+
+impl Lubrication {
+    /// The lubricated skirt of validated parameters with `skirt_model = 2`, or none; a design the
+    /// film cannot be solved on is refused, naming the parameter.
+    pub fn of(p: &Parameters) -> Result<Option<Self>, ModelError> {
+        if p.skirt_model != 2 {
+            return Ok(None);
+        }
+        if p.skirt_arc > std::f64::consts::PI {
+            return Err(ModelError(format!("skirt_arc = {} rad must be at most π: each side is at most a half circle", p.skirt_arc)));
+        }
+        let grid = |name: &str, n: i32| usize::try_from(n).map_err(|_| ModelError(format!("{name} = {n} must be positive")));
+        let design = Design {
+            links: [p.crank_radius, p.rod_length],
+            relaxation: p.film_relaxation,
+            geometry: [0.5 * p.bore, 0.5 * p.piston_diameter, p.skirt_length, p.pin_height, p.pin_offset],
+            viscosity: p.oil_viscosity,
+            arc: p.skirt_arc,
+            profile: p.skirt_profile.clone(),
+            ovality: p.skirt_ovality,
+            roughness: [p.skirt_roughness, p.asperity_density, p.asperity_radius, p.composite_modulus],
+            boundary_friction: p.boundary_friction,
+            grid: (grid("skirt_grid_circumferential", p.skirt_grid_circumferential)?, grid("skirt_grid_axial", p.skirt_grid_axial)?),
+        };
+        Self::try_from(design).map(Some)
+    }
+
+    /// The largest RK4 step, s: τ / [`STEPS_PER_RELAXATION`].
+    pub fn largest_step(&self) -> f64 {
+        self.design.relaxation / STEPS_PER_RELAXATION
+    }
+
+    /// At (φ, φ̇), `trig` the angles' sines and cosines.
+    fn kinematics(&self, (phi, trig): (&Vector3<f64>, &Trig), phid: &Vector3<f64>) -> Kinematics {
+        let ([s1, s2, _], [c1, c2, _]) = (trig.sin, trig.cos);
+        let [l1, l2] = self.design.links;
+        let lateral = Matrix2x3::new(-l1 * c1, -l2 * c2, 0.0, 0.0, 0.0, 1.0);
+        let axial = Vector3::new(-l1 * s1, -l2 * s2, 0.0);
+        let rates = lateral * phid;
+        let motion = SkirtMotion {
+            lateral: -l1 * s1 - l2 * s2,
+            tilt: phi[2],
+            lateral_rate: rates[0],
+            tilt_rate: rates[1],
+            sliding_speed: axial.dot(phid),
+        };
+        Kinematics { motion, lateral, axial }
+    }
+
+    /// The film's loads at `motion`, solved once per motion.
+    fn loads(&self, motion: &SkirtMotion) -> SkirtLoads {
+        let key = [motion.lateral, motion.tilt, motion.lateral_rate, motion.tilt_rate, motion.sliding_speed];
+        self.last.get_or(key, || self.skirt.loads(motion))
+    }
+
+    /// The film's generalized force `Q` and its implicit inertia `τ Gᵀ D G` at (φ, φ̇), added to the
+    /// linkage's `M` and `f`.
+    #[inline(always)]
+    pub fn apply(&self, at: (&Vector3<f64>, &Trig), phid: &Vector3<f64>, (mass, force): (&mut Matrix3<f64>, &mut Vector3<f64>)) {
+        let k = self.kinematics(at, phid);
+        let loads = self.loads(&k.motion);
+        *force += generalized(&k, &loads);
+        *mass += k.lateral.transpose() * (loads.damping * self.design.relaxation) * k.lateral;
+    }
+
+    /// The loads at (φ, φ̇), for the outputs.
+    pub fn loads_at(&self, at: (&Vector3<f64>, &Trig), phid: &Vector3<f64>) -> SkirtLoads {
+        self.loads(&self.kinematics(at, phid).motion)
+    }
+
+    /// What the skirt takes from the motion at (φ, φ̇, φ̈), W: all of it, `−(Q − τ Gᵀ D G φ̈)·φ̇`, and
+    /// the axial friction's share, `−(F_a ẏ + M_a φ̇3)`.
+    pub fn absorbed_power(&self, at: (&Vector3<f64>, &Trig), phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
+        let k = self.kinematics(at, phid);
+        let loads = self.loads(&k.motion);
+        let implicit = (k.lateral * phid).dot(&(loads.damping * (k.lateral * phidd))) * self.design.relaxation;
+        Absorbed::new(implicit - generalized(&k, &loads).dot(phid), -friction_power(&k, &loads))
+    }
+
+    /// What the implicit film impulse `−τ Gᵀ D G Δφ̇` of a jump `before → after` at φ takes, J:
+    /// the negative of its work on the mean velocity (D at the velocity before).
+    pub fn absorbed_by_jump(&self, at: (&Vector3<f64>, &Trig), before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
+        let k = self.kinematics(at, before);
+        let damping = self.loads(&k.motion).damping * self.design.relaxation;
+        let mean = (before + after) * 0.5;
+        Absorbed::new((k.lateral * mean).dot(&(damping * (k.lateral * (after - before)))), 0.0)
+    }
+
+    /// The axial friction's power at (φ, φ̇), W (≥ 0 where it opposes the sliding).
+    pub fn friction_power(&self, at: (&Vector3<f64>, &Trig), phid: &Vector3<f64>) -> f64 {
+        let k = self.kinematics(at, phid);
+        -friction_power(&k, &self.loads(&k.motion))
+    }
+}
+
+/// `Q = Gᵀ (F, M + M_a) + g F_a`.
+fn generalized(k: &Kinematics, loads: &SkirtLoads) -> Vector3<f64> {
+    k.lateral.transpose() * Vector2::new(loads.lateral_force, loads.moment + loads.friction_moment) + k.axial * loads.friction_force
+}
+
+/// The axial force's work rate on the skirt, `F_a ẏ + M_a φ̇3`, W.
+fn friction_power(k: &Kinematics, loads: &SkirtLoads) -> f64 {
+    loads.friction_force * k.motion.sliding_speed + loads.friction_moment * k.motion.tilt_rate
+}

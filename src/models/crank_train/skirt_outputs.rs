@@ -1,0 +1,47 @@
+//! The outputs of the piston's skirt against the liner: with the lubricated skirt its film,
+//! asperity and friction loads and the work it absorbed; dry, the corners' gaps as the film
+//! thickness and zero loads. The side force is the liner's net lateral force in either case.
+
+use super::linkage::Trig;
+use super::model::{CrankTrain, Drive};
+use crate::dynamics::Absorbed;
+use crate::models::Outputs;
+use nalgebra::{Vector3, Vector4};
+
+impl CrankTrain {
+    /// What the skirt has absorbed: power now and work since the start, [all, friction] (zero dry).
+    pub(super) fn absorbed(&self) -> (Absorbed, Absorbed) {
+        match &self.drive {
+            Drive::Prescribed(s) => s.absorbed(),
+            Drive::Free(s) => s.absorbed(),
+        }
+    }
+
+    /// Writes the skirt's outputs and `side_force` at (φ, φ̇), the corners' gaps `gaps` and contact
+    /// forces `forces` (K1, K2 on the −D/2 wall push toward +x, K3, K4 toward −x); after the
+    /// corners' friction outputs, which `liner_friction_work` adds to.
+    pub(super) fn write_skirt(
+        &self,
+        (phi, trig, phid): (&Vector3<f64>, &Trig, &Vector3<f64>),
+        gaps: &Vector4<f64>,
+        forces: &Vector4<f64>,
+        out: &mut Outputs,
+    ) {
+        let corners = forces[0] + forces[1] - forces[2] - forces[3];
+        let Some(lubrication) = &self.engine().lubrication else {
+            out.side_force = corners;
+            [out.min_film_thickness_thrust, out.min_film_thickness_antithrust] = [gaps[2].min(gaps[3]), gaps[0].min(gaps[1])];
+            out.liner_friction_work = out.friction_energy_total;
+            return;
+        };
+        let loads = lubrication.loads_at((phi, trig), phid);
+        let (_, work) = self.absorbed();
+        out.side_force = corners + loads.lateral_force;
+        [out.min_film_thickness_thrust, out.min_film_thickness_antithrust] = loads.min_film;
+        (out.film_force, out.asperity_force) = (loads.film_force, loads.asperity_force);
+        out.skirt_friction_force = loads.friction_force;
+        out.skirt_friction_power = lubrication.friction_power((phi, trig), phid);
+        out.film_energy_total = work[0];
+        out.liner_friction_work = out.friction_energy_total + work[1];
+    }
+}
