@@ -4,10 +4,16 @@
 //! put on the piston. Pure numerics: nothing here knows the crank train's state or the FMU.
 
 mod asperity;
+mod band;
 mod design;
 mod loads;
 mod profile;
+mod reynolds;
+#[cfg(test)]
+mod reynolds_tests;
 mod surface;
+#[cfg(test)]
+mod surface_tests;
 
 pub use asperity::Roughness;
 pub use design::SkirtDesign;
