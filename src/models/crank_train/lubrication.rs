@@ -11,11 +11,13 @@
 //! supplies the skirt's friction and a free crank is slowed by it.
 //!
 //! Stiffness: `D = −∂(F, M)/∂(ẋ, φ̇3)` makes the lateral and tilt motion relax over m/|D| ≈ 1e-8 s.
-//! The film acts instead as `Q − τ Gᵀ D G φ̈` (its force at the rates a time τ later, to first
-//! order): the evaluation returns `M + τ Gᵀ D G` and `f + Q`. A mode `m v̇ = −c v` then relaxes at
+//! The film acts instead as `Q − τ Gᵀ D (G φ̈ + Ġ φ̇)`, its force at the rates (ẋ, φ̇3) a time τ
+//! later to first order (`Ġ φ̇`, the rod's swing, is most of ẍ's terms: leaving it out pushes the
+//! piston into the film): the evaluation returns `M + τ Gᵀ D G` and `f + Q − τ Gᵀ D Ġ φ̇`. A mode
+//! `m v̇ = −c v` then relaxes at
 //! `λ = −c/(m + τ c) ≥ −1/τ`, inside RK4's stability region for steps up to τ whatever the film;
 //! with D → 0 the dry equations come back exactly. What the skirt takes from the motion,
-//! `−(Q − τ Gᵀ D G φ̈)·φ̇`, and at a velocity jump Δφ̇ the impulse `−τ Gᵀ D G Δφ̇`'s share, is
+//! `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and at a velocity jump Δφ̇ the impulse `−τ Gᵀ D G Δφ̇`'s share, is
 //! booked by the core as the absorbed work (`System::absorbed_power`).
 
 use super::linkage::Trig;
@@ -97,6 +99,8 @@ struct Kinematics {
     lateral: Matrix2x3<f64>,
     /// `g = ∂y/∂φ`.
     axial: Vector3<f64>,
+    /// `Ġ φ̇`: (ẍ, φ̈3) = G φ̈ + Ġ φ̇.
+    bias: Vector2<f64>,
 }
 
 impl Lubrication {
@@ -144,7 +148,8 @@ impl Lubrication {
             tilt_rate: rates[1],
             sliding_speed: axial.dot(phid),
         };
-        Kinematics { motion, lateral, axial }
+        let bias = Vector2::new(l1 * s1 * phid[0] * phid[0] + l2 * s2 * phid[1] * phid[1], 0.0);
+        Kinematics { motion, lateral, axial, bias }
     }
 
     /// The film's loads at `motion`, solved once per motion.
@@ -153,14 +158,15 @@ impl Lubrication {
         self.last.get_or(key, || self.skirt.loads(motion))
     }
 
-    /// The film's generalized force `Q` and its implicit inertia `τ Gᵀ D G` at (φ, φ̇), added to the
-    /// linkage's `M` and `f`.
+    /// The film's generalized force `Q − τ Gᵀ D Ġ φ̇` and its implicit inertia `τ Gᵀ D G` at (φ, φ̇),
+    /// added to the linkage's `M` and `f`.
     #[inline(always)]
     pub fn apply(&self, at: (&Vector3<f64>, &Trig), phid: &Vector3<f64>, (mass, force): (&mut Matrix3<f64>, &mut Vector3<f64>)) {
         let k = self.kinematics(at, phid);
         let loads = self.loads(&k.motion);
-        *force += generalized(&k, &loads);
-        *mass += k.lateral.transpose() * (loads.damping * self.design.relaxation) * k.lateral;
+        let damping = loads.damping * self.design.relaxation;
+        *force += generalized(&k, &loads) - k.lateral.transpose() * (damping * k.bias);
+        *mass += k.lateral.transpose() * damping * k.lateral;
     }
 
     /// The loads at (φ, φ̇), for the outputs.
@@ -168,12 +174,12 @@ impl Lubrication {
         self.loads(&self.kinematics(at, phid).motion)
     }
 
-    /// What the skirt takes from the motion at (φ, φ̇, φ̈), W: all of it, `−(Q − τ Gᵀ D G φ̈)·φ̇`, and
+    /// What the skirt takes from the motion at (φ, φ̇, φ̈), W: all of it, `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and
     /// the axial friction's share, `−(F_a ẏ + M_a φ̇3)`.
     pub fn absorbed_power(&self, at: (&Vector3<f64>, &Trig), phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
         let k = self.kinematics(at, phid);
         let loads = self.loads(&k.motion);
-        let implicit = (k.lateral * phid).dot(&(loads.damping * (k.lateral * phidd))) * self.design.relaxation;
+        let implicit = (k.lateral * phid).dot(&(loads.damping * (k.lateral * phidd + k.bias))) * self.design.relaxation;
         Absorbed::new(implicit - generalized(&k, &loads).dot(phid), -friction_power(&k, &loads))
     }
 
