@@ -2,7 +2,7 @@
 //! finite differences of the loads, the film's power balance, and its grid convergence.
 
 use super::{Skirt, SkirtDesign, SkirtMotion, SkirtProfile};
-use crate::models::crank_linkage::Linkage;
+use crate::models::crank_train::linkage::Linkage;
 use crate::models::Parameters;
 use nalgebra::Vector3;
 

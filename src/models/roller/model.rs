@@ -9,23 +9,21 @@
 //! is a normal speed of 0.005 l Λ Ω. The thesis's threshold serves roller_forcing = 1; the corrected
 //! model uses one proportional to the clearance (`SLIDING_THRESHOLD_PER_CLEARANCE`).
 //!
-//! The FMU's dimensional parameters map as DESIGN.md §4 says: ξ = r/l, α = m/M, β = J_r/(M l²),
+//! The FMU's dimensional parameters map as ARCHITECTURE.md §4 says: ξ = r/l, α = m/M, β = J_r/(M l²),
 //! ρ = Δ/l with Δ = (bore − piston_diameter)/2, λ = c₂/(M l² Ω) with Ω the `crank_speed` input. As in
 //! the thesis there is no gravity, no gas force and no piston-pin damping, and the crank speed is
 //! prescribed (crank_mode = 1 only). Lateral positions are linearized like the model: x = −l Λ ψ, so
-//! the walls are at x = ∓Δ exactly. The sign is variant 1's (DESIGN.md §4): with the crank pin at
+//! the walls are at x = ∓Δ exactly. The sign is variant 1's (ARCHITECTURE.md §4): with the crank pin at
 //! x = −r sin θ, the pin is at x = −r sin θ − l sin(ψ − φ) ≈ −l Λ ψ, so the thesis's upper wall
 //! (ψ = ψ_max) is the x = −D/2 wall of corners 1 and 2, and the lower wall that of corners 3 and 4.
 
-use super::last_value::LastValue;
-use super::roller_forcing::{AtAngle, Forcing, RollerMechanism};
-use super::{EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, CYCLE};
+use super::forcing::{AtAngle, Forcing, RollerMechanism};
 use crate::dynamics::{DynamicsError, Evaluation, Event, EventKind, Stepper, StepperOptions, System};
+use crate::models::numerics::LastValue;
+use crate::models::{EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, CYCLE};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
-
-mod energy;
 
 /// Turns the stepper's crank angle may reach before a block of them is taken off: its
 /// round-off there (ulp 2e-12 rad) is far below the event tolerance, and runs shorter than it (the
@@ -94,20 +92,20 @@ impl System<1, 2> for RollerSystem {
 /// The roller slider crank as the FMU drives it: SI in and out, the thesis's variables inside.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Roller {
-    stepper: Stepper<RollerSystem, 1, 2>,
+    pub(super) stepper: Stepper<RollerSystem, 1, 2>,
     options: StepperOptions,
     crank_radius: f64,
-    rod_length: f64,
-    piston_mass: f64,
+    pub(super) rod_length: f64,
+    pub(super) piston_mass: f64,
     damping: f64,
     /// The crank's moment of inertia about its axis, J1 + m1 ey1², kg·m² (for the kinetic energy).
     crank_inertia: f64,
     /// Held crank speed Ω, rad/s; 0 before the first step.
-    crank_speed: f64,
+    pub(super) crank_speed: f64,
     /// SI time at the stepper's current crank angle.
     time: f64,
     /// Work the moving walls have done through impulses since the start, J (`EnergyBalance`).
-    impulse_work: f64,
+    pub(super) impulse_work: f64,
     /// Whole turns (2π) taken off the stepper's crank angle (`keep_angle_bounded`).
     turns: f64,
     /// The time and crank angle before the last point served from the step ahead (`serve_again`).
