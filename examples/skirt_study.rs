@@ -5,8 +5,8 @@
 //! `docs/lubricated_skirt.md`:
 //! `cargo run --release --example skirt_study -- [rpm] [cycles] [film_relaxation] [step] [grid across] [grid along]`.
 
+use pistonslap::fmus::piston_slap::Simulation;
 use pistonslap::models::{Inputs, Parameters};
-use pistonslap::simulation::Simulation;
 use std::time::Instant;
 
 fn main() {

@@ -4,5 +4,6 @@
 mod angle;
 mod energy;
 mod flores_benchmark;
+mod lubricated;
 mod paper;
 mod random_designs;

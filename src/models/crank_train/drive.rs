@@ -7,7 +7,7 @@
 //!   yields the drive torque.
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
-use super::linkage::{Linkage, Loads, Trig};
+use super::linkage::{LinkAngles, Linkage, Loads};
 use super::lubrication::Lubrication;
 use super::model::MAX_STEP_ANGLE;
 use crate::dynamics::{Absorbed, Evaluation, System, Tangents};
@@ -130,18 +130,18 @@ impl Engine {
     }
 
     /// What the lubricated skirt takes from the motion at (φ, φ̇, φ̈), W (`Lubrication::absorbed_power`).
-    fn absorbed_power(&self, phi: &Vector3<f64>, trig: &Trig, phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
+    fn absorbed_power(&self, phi: &Vector3<f64>, trig: &LinkAngles, phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
         self.lubrication.as_ref().map_or(Absorbed::zeros(), |l| l.absorbed_power((phi, trig), phid, phidd))
     }
 
     /// What the lubricated skirt takes from a velocity jump at φ, J (`Lubrication::absorbed_by_jump`).
-    fn absorbed_by_jump(&self, phi: &Vector3<f64>, trig: &Trig, before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
+    fn absorbed_by_jump(&self, phi: &Vector3<f64>, trig: &LinkAngles, before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
         self.lubrication.as_ref().map_or(Absorbed::zeros(), |l| l.absorbed_by_jump((phi, trig), before, after))
     }
 
     #[inline(always)]
-    fn trig_and_loads(&self, t: f64, phi: &Vector3<f64>, load_torque: f64, crank: &Crank) -> (Trig, Loads) {
-        (Trig::with_crank((crank.sin, crank.cos), phi), Loads { gas_force: self.gas_force_at(t, crank), load_torque })
+    fn trig_and_loads(&self, t: f64, phi: &Vector3<f64>, load_torque: f64, crank: &Crank) -> (LinkAngles, Loads) {
+        (LinkAngles::with_crank((crank.sin, crank.cos), phi), Loads { gas_force: self.gas_force_at(t, crank), load_torque })
     }
 }
 
@@ -353,14 +353,14 @@ impl System<2, 4> for PrescribedCrank {
     fn absorbed_power(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>, qdd: &Vector2<f64>) -> Absorbed {
         let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
         let phidd = Vector3::new(self.acceleration(t), qdd[0], qdd[1]);
-        self.engine.absorbed_power(&phi, &Trig::with_crank((crank.sin, crank.cos), &phi), &phid, &phidd)
+        self.engine.absorbed_power(&phi, &LinkAngles::with_crank((crank.sin, crank.cos), &phi), &phid, &phidd)
     }
 
     /// The crank keeps its speed through a jump.
     fn absorbed_by_jump(&self, t: f64, q: &Vector2<f64>, before: &Vector2<f64>, after: &Vector2<f64>) -> Absorbed {
         let (phi, before, crank) = self.full_state_and_crank(t, q, before);
         let after = Vector3::new(before[0], after[0], after[1]);
-        self.engine.absorbed_by_jump(&phi, &Trig::with_crank((crank.sin, crank.cos), &phi), &before, &after)
+        self.engine.absorbed_by_jump(&phi, &LinkAngles::with_crank((crank.sin, crank.cos), &phi), &before, &after)
     }
 
     fn restitution(&self, _constraint: usize) -> f64 {
@@ -421,11 +421,11 @@ impl System<3, 4> for FreeCrank {
     }
 
     fn absorbed_power(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>, qdd: &Vector3<f64>) -> Absorbed {
-        self.engine.absorbed_power(q, &Trig::new(q), qd, qdd)
+        self.engine.absorbed_power(q, &LinkAngles::new(q), qd, qdd)
     }
 
     fn absorbed_by_jump(&self, _t: f64, q: &Vector3<f64>, before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
-        self.engine.absorbed_by_jump(q, &Trig::new(q), before, after)
+        self.engine.absorbed_by_jump(q, &LinkAngles::new(q), before, after)
     }
 
     fn restitution(&self, _constraint: usize) -> f64 {

@@ -20,7 +20,7 @@
 //! `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and at a velocity jump Δφ̇ the impulse `−τ Gᵀ D G Δφ̇`'s share, is
 //! booked by the core as the absorbed work (`System::absorbed_power`).
 
-use super::linkage::Trig;
+use super::linkage::LinkAngles;
 use crate::dynamics::Absorbed;
 use crate::models::numerics::LastValue;
 use crate::models::skirt::{Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
@@ -135,7 +135,7 @@ impl Lubrication {
     }
 
     /// At (φ, φ̇), `trig` the angles' sines and cosines.
-    fn kinematics(&self, (phi, trig): (&Vector3<f64>, &Trig), phid: &Vector3<f64>) -> Kinematics {
+    fn kinematics(&self, (phi, trig): (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>) -> Kinematics {
         let ([s1, s2, _], [c1, c2, _]) = (trig.sin, trig.cos);
         let [l1, l2] = self.design.links;
         let lateral = Matrix2x3::new(-l1 * c1, -l2 * c2, 0.0, 0.0, 0.0, 1.0);
@@ -161,7 +161,7 @@ impl Lubrication {
     /// The film's generalized force `Q − τ Gᵀ D Ġ φ̇` and its implicit inertia `τ Gᵀ D G` at (φ, φ̇),
     /// added to the linkage's `M` and `f`.
     #[inline(always)]
-    pub fn apply(&self, at: (&Vector3<f64>, &Trig), phid: &Vector3<f64>, (mass, force): (&mut Matrix3<f64>, &mut Vector3<f64>)) {
+    pub fn apply(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, (mass, force): (&mut Matrix3<f64>, &mut Vector3<f64>)) {
         let k = self.kinematics(at, phid);
         let loads = self.loads(&k.motion);
         let damping = loads.damping * self.design.relaxation;
@@ -170,13 +170,13 @@ impl Lubrication {
     }
 
     /// The loads at (φ, φ̇), for the outputs.
-    pub fn loads_at(&self, at: (&Vector3<f64>, &Trig), phid: &Vector3<f64>) -> SkirtLoads {
+    pub fn loads_at(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>) -> SkirtLoads {
         self.loads(&self.kinematics(at, phid).motion)
     }
 
     /// What the skirt takes from the motion at (φ, φ̇, φ̈), W: all of it, `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and
     /// the axial friction's share, `−(F_a ẏ + M_a φ̇3)`.
-    pub fn absorbed_power(&self, at: (&Vector3<f64>, &Trig), phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
+    pub fn absorbed_power(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
         let k = self.kinematics(at, phid);
         let loads = self.loads(&k.motion);
         let implicit = (k.lateral * phid).dot(&(loads.damping * (k.lateral * phidd + k.bias))) * self.design.relaxation;
@@ -185,7 +185,7 @@ impl Lubrication {
 
     /// What the implicit film impulse `−τ Gᵀ D G Δφ̇` of a jump `before → after` at φ takes, J:
     /// the negative of its work on the mean velocity (D at the velocity before).
-    pub fn absorbed_by_jump(&self, at: (&Vector3<f64>, &Trig), before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
+    pub fn absorbed_by_jump(&self, at: (&Vector3<f64>, &LinkAngles), before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
         let k = self.kinematics(at, before);
         let damping = self.loads(&k.motion).damping * self.design.relaxation;
         let mean = (before + after) * 0.5;
@@ -193,7 +193,7 @@ impl Lubrication {
     }
 
     /// The axial friction's power at (φ, φ̇), W (≥ 0 where it opposes the sliding).
-    pub fn friction_power(&self, at: (&Vector3<f64>, &Trig), phid: &Vector3<f64>) -> f64 {
+    pub fn friction_power(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>) -> f64 {
         let k = self.kinematics(at, phid);
         -friction_power(&k, &self.loads(&k.motion))
     }

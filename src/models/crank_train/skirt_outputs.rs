@@ -2,7 +2,7 @@
 //! asperity and friction loads and the work it absorbed; dry, the corners' gaps as the film
 //! thickness and zero loads. The side force is the liner's net lateral force in either case.
 
-use super::linkage::Trig;
+use super::linkage::LinkAngles;
 use super::model::{CrankTrain, Drive};
 use crate::dynamics::Absorbed;
 use crate::models::Outputs;
@@ -22,7 +22,7 @@ impl CrankTrain {
     /// corners' friction outputs, which `liner_friction_work` adds to.
     pub(super) fn write_skirt(
         &self,
-        (phi, trig, phid): (&Vector3<f64>, &Trig, &Vector3<f64>),
+        (phi, trig, phid): (&Vector3<f64>, &LinkAngles, &Vector3<f64>),
         gaps: &Vector4<f64>,
         forces: &Vector4<f64>,
         out: &mut Outputs,

@@ -29,17 +29,21 @@ impl Band {
     }
 
     /// Factorises into `L Lᵀ`; false if a pivot is not positive (the matrix is not positive definite).
-    pub(crate) fn factor(&mut self) -> bool {
+    /// Rows marked in `identity` must hold the identity (1 on the diagonal, 0 elsewhere): their work is
+    /// skipped, with the same result bit for bit (their rows of L are the identity's, and their columns
+    /// of L below them stay 0).
+    pub(crate) fn factor(&mut self, identity: &[bool]) -> bool {
         let (n, b, w) = (self.n, self.b, self.b + 1);
         for i in 0..n {
+            if identity[i] {
+                self.inverse_diagonal[i] = 1.0;
+                continue;
+            }
             let first = i.saturating_sub(b);
-            for j in first..=i {
+            for (j, _) in identity.iter().enumerate().take(i + 1).skip(first).filter(|(_, &skip)| !skip) {
                 let start = first.max(j.saturating_sub(b));
                 let (row_i, row_j) = (i * w + b - i, j * w + b - j);
-                let mut s = self.data[row_i + j];
-                for k in start..j {
-                    s -= self.data[row_i + k] * self.data[row_j + k];
-                }
+                let s = self.data[row_i + j] - dot(&self.data[row_i + start..row_i + j], &self.data[row_j + start..row_j + j]);
                 if j < i {
                     self.data[row_i + j] = s * self.inverse_diagonal[j];
                 } else {
@@ -60,7 +64,7 @@ impl Band {
         let (n, b, w) = (self.n, self.b, self.b + 1);
         for i in 0..n {
             let (row, first) = (i * w + b - i, i.saturating_sub(b));
-            let s = r[i] - self.data[row + first..row + i].iter().zip(&r[first..i]).fold(0.0, |acc, (l, x)| acc + l * x);
+            let s = r[i] - dot(&self.data[row + first..row + i], &r[first..i]);
             r[i] = s * self.inverse_diagonal[i];
         }
         for i in (0..n).rev() {
@@ -72,6 +76,22 @@ impl Band {
             }
         }
     }
+}
+
+/// Σ aₖ bₖ in four interleaved partial sums (a fixed order, so every platform gets the same bits, and
+/// one the compiler can keep in vector registers).
+#[inline]
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    let mut acc = [0.0; 4];
+    let (ca, cb) = (a.chunks_exact(4), b.chunks_exact(4));
+    let (ra, rb) = (ca.remainder(), cb.remainder());
+    for (x, y) in ca.zip(cb) {
+        for l in 0..4 {
+            acc[l] += x[l] * y[l];
+        }
+    }
+    let tail = ra.iter().zip(rb).fold(0.0, |s, (x, y)| s + x * y);
+    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
 }
 
 #[cfg(test)]
@@ -89,7 +109,7 @@ mod tests {
                 a.add(i, i - 1, -1.0);
             }
         }
-        assert!(a.factor());
+        assert!(a.factor(&[false; 9]));
         let mut r = vec![1.0; n];
         a.solve(&mut r);
         for (i, x) in r.iter().enumerate() {

@@ -5,7 +5,7 @@ use crate::models::ModelError;
 
 /// Design data of the skirt and its oil, SI.
 ///
-/// Geometry follows the crank train's corners (`crank_linkage.rs`): the piston axis lies `pin_offset`
+/// Geometry follows the crank train's corners (`crank_train/linkage.rs`): the piston axis lies `pin_offset`
 /// on the −x side of the pin O3; along the axis, the skirt spans from `pin_from_top` above the pin (its
 /// top edge, the corners K1, K3) to `pin_from_top − length` (its bottom edge, K2, K4). A point of the
 /// skirt at axial distance z above the pin and angle θ from +x has the film thickness

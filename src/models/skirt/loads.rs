@@ -50,6 +50,8 @@ pub struct SkirtLoads {
     pub asperity_friction_power: f64,
     /// Smallest film thickness per side, m: [thrust (+x), anti-thrust (−x)].
     pub min_film: [f64; 2],
+    /// Band Cholesky factorisations per side (active-set steps): the evaluation's cost.
+    pub factorisations: [usize; 2],
 }
 
 /// One side's pressure field on its grid, for plots.

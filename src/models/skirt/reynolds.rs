@@ -160,6 +160,8 @@ pub(crate) struct Reynolds {
     cx: Vec<f64>,
     cz: Vec<f64>,
     work: Vec<f64>,
+    /// Cavitated rows in band order (identity rows of the reduced matrix).
+    identity: Vec<bool>,
     /// The last solve's pressures, Pa, node order j·nx + i.
     pub pressure: Vec<f64>,
     /// The last solve's film nodes (false: cavitated, p = 0).
@@ -180,7 +182,7 @@ impl Reynolds {
         let n = grid.len();
         let matrix = Band::new(n, grid.band());
         let (cx, cz) = (vec![0.0; (grid.nx + 1) * grid.nz], vec![0.0; grid.nx * (grid.nz + 1)]);
-        Self { grid, matrix, cx, cz, work: vec![0.0; n], pressure: vec![0.0; n], free: vec![true; n] }
+        Self { grid, matrix, cx, cz, work: vec![0.0; n], identity: vec![false; n], pressure: vec![0.0; n], free: vec![true; n] }
     }
 
     /// Solves for the pressure (into `pressure`, node order j·nx + i) of `film` and right-hand side `b`,
@@ -212,7 +214,7 @@ impl Reynolds {
         loop {
             steps += 1;
             self.assemble(free);
-            if !self.matrix.factor() {
+            if !self.matrix.factor(&self.identity) {
                 // Only a non-finite film gets here (the callers keep h > 0): say so with NaN, never panic.
                 p.fill(f64::NAN);
                 return steps;
@@ -271,6 +273,7 @@ impl Reynolds {
             for i in 0..nx {
                 let k = j * nx + i;
                 let row = g.index(i, j);
+                self.identity[row] = !free[k];
                 if !free[k] {
                     self.matrix.add(row, row, 1.0);
                     continue;

@@ -156,7 +156,8 @@ impl Skirt {
                 }
             }
             s.film.add_wedge(&self.grid, (0.0, 0.5 * v), &mut s.rhs);
-            s.reynolds.solve(&s.film, mu, &s.rhs, Cavitation::Reynolds, &mut [&mut s.rate_x, &mut s.rate_tilt]);
+            out.factorisations[side_index] =
+                s.reynolds.solve(&s.film, mu, &s.rhs, Cavitation::Reynolds, &mut [&mut s.rate_x, &mut s.rate_tilt]);
             let (pressure, free) = (&s.reynolds.pressure, &s.reynolds.free);
             for (j, &(_, (alpha, beta), z, r)) in node_rows.iter().enumerate() {
                 for (i, &(c, _)) in side.nodes.iter().enumerate() {

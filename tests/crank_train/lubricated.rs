@@ -1,0 +1,127 @@
+//! The lubricated skirt (`skirt_model = 2`) on the crank train: the energy books with the film in
+//! both crank modes, the dry limit of a vanishing film, independence of the communication step, and
+//! the film's plausibility on the default engine. A coarse film grid keeps them fast: the coupling,
+//! not the Reynolds solver's accuracy, is under test here.
+
+use crate::common::*;
+use pistonslap::models::{CrankTrain, EnergyBalance, EngineModel, Inputs, Outputs, Parameters};
+
+fn lubricated(crank_mode: i32) -> Parameters {
+    Parameters { skirt_model: 2, crank_mode, skirt_grid_circumferential: 6, skirt_grid_axial: 8, ..Parameters::default() }
+}
+
+fn outputs(model: &CrankTrain) -> Outputs {
+    let mut out = Outputs::default();
+    model.write_outputs(&mut out);
+    out
+}
+
+/// Without gas, load and joint damping, thrown sideways at 0.1 m/s: the mechanical energy lost is
+/// what the film absorbed plus the impacts' and corner friction's losses and, with the crank held,
+/// less the drive's work (its torque integrated at the 20 µs points, impulses apart).
+#[test]
+fn the_film_closes_the_energy_books_in_both_crank_modes() {
+    for crank_mode in [1, 2] {
+        let params = Parameters {
+            pressure_source: 1,
+            damping_main: 0.0,
+            damping_crank_pin: 0.0,
+            damping_piston_pin: 0.0,
+            piston_lateral_velocity_start: 0.1,
+            ..lubricated(crank_mode)
+        };
+        let inputs = Inputs { gas_pressure: 0.0, load_torque: 0.0, ..Inputs::default() };
+        let mut model = CrankTrain::new(&params, 0.0).unwrap();
+        let mut events = Vec::new();
+        model.advance(&inputs, 1e-9, &mut events).unwrap();
+        let start = model.mechanical_energy();
+        let (dt, steps) = (2e-5, 1000);
+        let (mut drive, mut power) = (0.0, model.power_flows().drive);
+        for k in 1..=steps {
+            model.advance(&inputs, 1e-9 + k as f64 * dt, &mut events).unwrap();
+            let now = model.power_flows().drive;
+            drive += 0.5 * (power + now) * dt;
+            power = now;
+        }
+        let out = outputs(&model);
+        let impacts: f64 = events.iter().map(|e| e.energy_lost).sum();
+        let lost = start - model.mechanical_energy();
+        let booked = out.film_energy_total + impacts + out.friction_energy_total - drive - model.impulse_work();
+        eprintln!(
+            "crank_mode {crank_mode}: lost {lost:.6e} J, film {:.6e} J, impacts {impacts:.3e} J, drive {drive:.6e} J, residual {:.3e} J",
+            out.film_energy_total,
+            lost - booked
+        );
+        assert!(out.film_energy_total > 0.0);
+        assert!((lost - booked).abs() < 1e-3 * out.film_energy_total.abs().max(drive.abs()), "lost {lost} J, booked {booked} J");
+    }
+}
+
+/// Oil 1e6 times thinner than the default's and a roughness of 1 nm: the film's forces vanish
+/// against the corners' and the motion is the dry model's (the straight skirt meets the corners).
+#[test]
+fn a_vanishing_film_is_the_dry_model() {
+    let vanishing = Parameters { oil_viscosity: 8.8e-9, skirt_roughness: 1e-9, skirt_profile: "parabola 0 0".into(), ..lubricated(1) };
+    let [dry, wet] = [Parameters::default(), vanishing].map(|p| run(&p, &Inputs::default(), 0, 1, 100));
+    let first = |t: &Trace| impacts(&t.events).take(10).map(|e| (e.time, e.normal_velocity_before)).collect::<Vec<_>>();
+    let (a, b) = (first(&dry), first(&wet));
+    eprintln!("dry {a:?}\nwet {b:?}");
+    assert_eq!(a.len(), 10);
+    for ((ta, va), (tb, vb)) in a.iter().zip(&b) {
+        assert!((ta - tb).abs() < 1e-6 && (va - vb).abs() < 1e-3 * va.abs().max(1e-3), "dry ({ta}, {va}) vs film ({tb}, {vb})");
+    }
+}
+
+/// The same run at communication steps of 0.1 ms and 1 ms: the film's RK4 steps run past the points
+/// and serve them, so the outputs at the common points agree.
+#[test]
+fn results_do_not_depend_on_the_communication_step() {
+    let params = lubricated(1);
+    let [fine, coarse] = [1000, 100].map(|per_cycle| run(&params, &Inputs::default(), 0, 1, per_cycle));
+    let mut worst = [0.0_f64; 3];
+    for (k, c) in coarse.samples.iter().enumerate() {
+        let f = &fine.samples[10 * k + 9];
+        assert_eq!(f.crank_angle, c.crank_angle);
+        worst[0] = worst[0].max((f.piston_lateral - c.piston_lateral).abs());
+        worst[1] = worst[1].max((f.film_force - c.film_force).abs());
+        worst[2] = worst[2].max((f.film_energy_total - c.film_energy_total).abs());
+    }
+    eprintln!("lateral {:.3e} m, film force {:.3e} N, film energy {:.3e} J", worst[0], worst[1], worst[2]);
+    assert!(worst[0] < 1e-9 && worst[1] < 1.0 && worst[2] < 1e-6, "{worst:?}");
+}
+
+/// The default engine at 3000 rpm rides on the film: the thinnest film is microns, not zero; the
+/// film carries the rod's side force; the skirt's friction is tens of newtons; its FMEP tenths of
+/// a bar at most (a whole running engine's piston-to-liner friction is ≈ 0.3 bar).
+#[test]
+fn the_film_carries_the_default_engine_at_3000_rpm() {
+    let inputs = Inputs { crank_speed: 3000.0 * std::f64::consts::PI / 30.0, ..Inputs::default() };
+    let params = lubricated(1);
+    let mut model = CrankTrain::new(&params, 0.0).unwrap();
+    let (mut events, mut thinnest, mut friction, mut balance) = (Vec::new(), f64::INFINITY, 0.0_f64, (0.0_f64, 0.0_f64));
+    let cycle = 4.0 * std::f64::consts::PI / inputs.crank_speed;
+    let area = 0.25 * std::f64::consts::PI * params.piston_diameter * params.piston_diameter;
+    for k in 1..=400 {
+        model.advance(&inputs, k as f64 * cycle / 200.0, &mut events).unwrap();
+        if k <= 200 {
+            continue;
+        }
+        let out = outputs(&model);
+        thinnest = thinnest.min(out.min_film_thickness_thrust.min(out.min_film_thickness_antithrust));
+        friction = friction.max(out.skirt_friction_force.abs());
+        // The rod's side force on the piston near the firing peak: the gas force along the rod.
+        if out.gas_pressure_acting > 0.5 * params.peak_pressure {
+            let rod = out.gas_pressure_acting * area * libm::tan(-out.rod_angle);
+            balance = (balance.0.max((out.film_force + out.asperity_force.copysign(out.film_force) + rod).abs()), balance.1.max(rod.abs()));
+        }
+    }
+    eprintln!(
+        "thinnest {:.2} µm, friction up to {friction:.1} N, side balance off by {:.1} N of {:.1} N",
+        thinnest * 1e6,
+        balance.0,
+        balance.1
+    );
+    assert!(thinnest > 0.5e-6 && thinnest < 20e-6, "{thinnest}");
+    assert!(friction > 10.0 && friction < 300.0, "{friction}");
+    assert!(balance.0 < 0.2 * balance.1, "{balance:?}");
+}
