@@ -115,6 +115,22 @@ pub fn rubbing_engine(r: &mut Random) -> Design {
     Design { params, ..design }
 }
 
+/// An engine on a lubricated skirt: oil of 2–20 mPa·s, each side 50–90° of arc, a barrel dropping
+/// up to 30 µm at either edge; the Reynolds grid coarse (6 × 8) to keep the family fast.
+pub fn lubricated_engine(r: &mut Random) -> Design {
+    let design = engine(r);
+    let params = Parameters {
+        skirt_model: 2,
+        oil_viscosity: r.between(0.002, 0.02),
+        skirt_arc: r.between(50.0, 90.0).to_radians(),
+        skirt_profile: format!("parabola {:e} {:e}", r.between(0.0, 30e-6), r.between(0.0, 30e-6)),
+        skirt_grid_circumferential: 6,
+        skirt_grid_axial: 8,
+        ..design.params
+    };
+    Design { params, ..design }
+}
+
 /// A light slider with liner friction μ ∈ [0, 0.5] and a start tilting at up to ±1 rad/s.
 pub fn rubbing_slider(r: &mut Random) -> Design {
     let design = slider(r);

@@ -3,7 +3,7 @@
 //! damping, gas or gravity, so their energy balance closes too: T(0) = T(end) + what the impacts
 //! and sliding starts dissipated. `examples/random_designs` runs the same families by the thousand.
 
-use crate::common::designs::{declared, engine, rubbing_engine, rubbing_slider, run, slider, Design, Finished, Random};
+use crate::common::designs::{declared, engine, lubricated_engine, rubbing_engine, rubbing_slider, run, slider, Design, Finished, Random};
 
 const DESIGNS: u64 = 250;
 
@@ -30,6 +30,18 @@ fn failures(make: fn(&mut Random) -> Design, check: impl Fn(&Design, &Finished) 
 fn random_engines_all_run() {
     let failed = failures(engine, |_, _| Ok(()));
     assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
+}
+
+/// On a lubricated skirt (each design's film solved thousands of times a cycle: fewer of them).
+#[test]
+fn random_lubricated_engines_all_run() {
+    let failed: Vec<String> = (0..12)
+        .filter_map(|seed| {
+            let design = lubricated_engine(&mut Random::new(seed));
+            run(&design).err().map(|e| format!("seed {seed}: {e}\n  {design:?}"))
+        })
+        .collect();
+    assert!(failed.is_empty(), "{} of 12 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
 fn balanced(_: &Design, f: &Finished) -> Result<(), String> {
