@@ -13,7 +13,7 @@ FILM = ["min_film_thickness_thrust", "min_film_thickness_antithrust", "film_forc
 
 @pytest.mark.parametrize("rpm", [1200, 3000])
 def test_the_default_engine_rides_on_the_film(rpm):
-    """Two crank revolutions at 0.1 ms steps: films between 1 µm and the 40 µm radial clearance on both sides,
+    """Two crank revolutions at 0.1 ms steps: films between 1 µm and the 80 µm diametral clearance on both sides,
     the film pushing back (its side force of hundreds of newtons), a skirt friction of newtons to tens of
     newtons, and the film's absorbed work in the dissipation total."""
     omega = rpm * np.pi / 30
@@ -22,7 +22,7 @@ def test_the_default_engine_rides_on_the_film(rpm):
                                     "skirt_grid_circumferential": 6, "skirt_grid_axial": 8})
     for side in ("thrust", "antithrust"):
         film = result[f"min_film_thickness_{side}"]
-        assert np.all(film > 1e-6) and np.all(film < 40e-6)
+        assert np.all(film > 1e-6) and np.all(film < 80e-6)
     assert 100 < np.max(np.abs(result["film_force"])) < 1e4
     assert 1 < np.max(np.abs(result["skirt_friction_force"])) < 300
     total = result["impact_energy_total"] + result["friction_energy_total"] + result["film_energy_total"]
@@ -35,4 +35,5 @@ def test_dry_skirt_outputs_are_the_corner_gaps():
     result = simulate(stop_time=0.01, output_interval=1e-3, output=FILM)
     for name in ("film_force", "asperity_force", "skirt_friction_force", "film_energy_total"):
         assert np.all(result[name] == 0)
-    assert np.all(result["min_film_thickness_thrust"] >= 0) and np.all(result["min_film_thickness_thrust"] <= 80e-6)
+    # (a corner held on the liner sits within the event tolerance, 1e-12 m, of it)
+    assert np.all(result["min_film_thickness_thrust"] >= -1e-12) and np.all(result["min_film_thickness_thrust"] <= 80e-6)
