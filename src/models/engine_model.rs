@@ -81,7 +81,7 @@ pub trait EngineModel: Sized + Clone {
     }
 
     /// Reads the state at `t` again from the step already taken, after a point that
-    /// [`Self::serves`] gave beyond `t`: the model is then exactly as it was at `t`.
+    /// [`Self::serve`] gave beyond `t`: the model is then exactly as it was at `t`.
     fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {
         Err(ModelError(format!("no step taken past t = {t} s to read the state from")))
     }
