@@ -45,7 +45,7 @@ pub(crate) struct Step<const N: usize> {
 ///
 /// Its interpolation error is O(dt⁶), below the O(dt⁵) local error of the RK4 step itself, so
 /// event location on it is as accurate as the step; the stepper still confirms every located
-/// event on the RK4 map (see `events`).
+/// event on the RK4 map (see `search.rs`).
 #[derive(Clone, Debug)]
 pub(crate) struct Hermite5<const N: usize> {
     pub t0: f64,

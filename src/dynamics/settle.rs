@@ -1,5 +1,6 @@
-//! What happens at an event: the contact set decided and the state put on it (A&K Fig. 1 at a
-//! discontinuity point), and the drift of held contacts removed between events.
+//! What happens at an event: the contact set decided by the laws of `contact_laws.rs` and the
+//! state put on it, with the events recorded (A&K Fig. 1 at a discontinuity point); and the drift
+//! of held contacts removed between events.
 
 use super::complementarity::{members, select, Contacts, Frame, Set};
 use super::contact_laws::{energy_lost, impact, sliding_law, Tolerances};
