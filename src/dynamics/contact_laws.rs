@@ -1,5 +1,5 @@
 //! The contact decision at an event: the impact law (the generalized Newton law, A&K eqs 4–11
-//! generalized per DESIGN.md §6.4, or with friction Glocker's Newton–Coulomb law) and its energy
+//! generalized per ARCHITECTURE.md §6.4, or with friction Glocker's Newton–Coulomb law) and its energy
 //! balance (eqs 8–9), and the laws of persistent contact (the sliding law, or with friction the
 //! Coulomb law) with their tie rule. Each reduces to a complementarity problem
 //! (`complementarity.rs`, `coulomb.rs`); `settle.rs` applies them in turn.

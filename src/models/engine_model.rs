@@ -32,7 +32,7 @@ impl From<EventKind> for EngineEventKind {
     }
 }
 
-/// One row of the impact log (DESIGN.md §4), in SI units.
+/// One row of the impact log (ARCHITECTURE.md §4), in SI units.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct EngineEvent {
     pub time: f64,
@@ -57,7 +57,7 @@ pub struct EngineEvent {
 
 /// A model variant as the FMU drives it: built from parameters, advanced with held inputs.
 pub trait EngineModel: Sized + Clone {
-    /// Builds the model at `start_time` in the initial state of DESIGN.md §4, or refuses the
+    /// Builds the model at `start_time` in the initial state of ARCHITECTURE.md §4, or refuses the
     /// parameters with a message naming the offending one.
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError>;
 
