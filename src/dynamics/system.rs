@@ -1,3 +1,5 @@
+//! What the core integrates: the system's interface and the terms it evaluates.
+
 use nalgebra::{SMatrix, SVector, Vector2};
 
 /// Powers (W) or works (J) of the forces a system absorbs (`System::absorbed_power`), in two
@@ -92,11 +94,10 @@ pub trait System<const N: usize, const M: usize> {
     }
 
     /// The power those forces take from the motion at `(t, q, q̇)` with the acceleration `q̈`, W
-    /// (both channels of [`Absorbed`]).
-    /// `q̈` is given because a force made linearly implicit through `M` (a stiff damper `−D q̇`
-    /// applied as `−D (q̇ + τ q̈)`, its `τ D` added to the inertia) does work through it. The
-    /// stepper integrates it along each step with the step's own weights; asked for only where
-    /// [`Self::absorbs`].
+    /// (both channels of [`Absorbed`]). `q̈` is given because a force made linearly implicit
+    /// through `M` (a stiff damper `−D q̇` applied as `−D (q̇ + τ q̈)`, its `τ D` added to the
+    /// inertia) does work through it. The stepper integrates it along each step with the step's own
+    /// weights; asked for only where [`Self::absorbs`].
     fn absorbed_power(&self, _t: f64, _q: &SVector<f64, N>, _qd: &SVector<f64, N>, _qdd: &SVector<f64, N>) -> Absorbed {
         Absorbed::zeros()
     }
@@ -121,4 +122,12 @@ pub trait System<const N: usize, const M: usize> {
     fn tangents(&self, _t: f64, _q: &SVector<f64, N>, _qd: &SVector<f64, N>) -> Tangents<N, M> {
         Tangents { jacobian: SMatrix::zeros(), time_rate: SVector::zeros(), bias: SVector::zeros() }
     }
+}
+
+/// μ of each constraint, if any has friction: `None` keeps a frictionless system on the
+/// frictionless paths, to the bit.
+#[inline(always)]
+pub(super) fn friction_of<S: System<N, M>, const N: usize, const M: usize>(sys: &S) -> Option<SVector<f64, M>> {
+    let mu = SVector::<f64, M>::from_fn(|i, _| sys.friction(i));
+    mu.iter().any(|&m| m != 0.0).then_some(mu)
 }

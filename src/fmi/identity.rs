@@ -1,5 +1,5 @@
 //! Which FMU a copy of the binary belongs to. One cdylib serves every FMU of the crate; the packer stamps
-//! each FMU's copy with its name (`package_fmu` rewrites [`STAMP`]'s payload in the file), so that each
+//! each FMU's copy with its name (`package_fmu` rewrites `STAMP`'s payload in the file), so that each
 //! FMU's binary refuses the GUIDs of the others, as FMI 2.0 asks of fmi2Instantiate. An unstamped library
 //! (linked into tests and benches) serves every FMU by GUID.
 #![allow(unsafe_code)]

@@ -6,7 +6,7 @@ use crate::models::crank_train::linkage::Linkage;
 use crate::models::Parameters;
 use nalgebra::Vector3;
 
-/// The crank train's default geometry (DESIGN.md §4: D = 80.08 mm, d = 80 mm, skirt 80 mm, pin 40 mm
+/// The crank train's default geometry (the default parameters: D = 80.08 mm, d = 80 mm, skirt 80 mm, pin 40 mm
 /// below its top) with a 70° arc per side, hot oil of 10 mPa·s and a 20/10 µm barrel.
 fn design(grid: (usize, usize)) -> SkirtDesign {
     let mut d = SkirtDesign::new(0.04004, 0.04, 0.08, 0.04, 0.0, 70f64.to_radians(), 0.01);
