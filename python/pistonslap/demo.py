@@ -29,12 +29,22 @@ MAGNIFICATION = 200
 def _parser():
     parser = Parser(prog="pistonslap demo", description=__doc__.splitlines()[0])
     parser.add_argument("--engine", choices=PRESETS, help=f"engine preset: {help_text()}")
-    parser.add_argument("--params", type=Path, help="TOML file of parameters: name = SI number or \"number unit\"")
-    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
-                        help="any FMU parameter, SI or with a unit the FMU declares (crank_speed=3000rpm, "
-                             "peak_pressure=90bar, bore=80.08mm); repeatable")
-    parser.add_argument("--pressure-trace", type=Path,
-                        help="CSV trace (header: crank angle [deg], pressure [bar|Pa|kPa|MPa|psi] absolute|gauge)")
+    parser.add_argument("--params", type=Path, help='TOML file of parameters: name = SI number or "number unit"')
+    parser.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help=(
+            "any FMU parameter, SI or with a unit the FMU declares (crank_speed=3000rpm, "
+            "peak_pressure=90bar, bore=80.08mm); repeatable"
+        ),
+    )
+    parser.add_argument(
+        "--pressure-trace",
+        type=Path,
+        help="CSV trace (header: crank angle [deg], pressure [bar|Pa|kPa|MPa|psi] absolute|gauge)",
+    )
     parser.add_argument("--friction", type=float, help="Coulomb friction coefficient at the liner (default 0)")
     parser.add_argument("--out", type=Path, default=Path("out"), help="output folder (default: out)")
     parser.add_argument("--rpm", type=float, help="crank speed, rpm (default 1200)")
@@ -43,9 +53,14 @@ def _parser():
     parser.add_argument("--restitution", type=float, help="coefficient of restitution (default 0.5)")
     parser.add_argument("--pin-offset", type=float, help="pin offset toward the major-thrust side, mm (default 0)")
     parser.add_argument("--cycles", type=int, default=2, help="engine cycles (720° each) to simulate (default 2)")
-    parser.add_argument("--crank-0-720", action="store_true",
-                        help="draw the crank angle from 0 to 720° (default -360 to 360°; 0 = firing TDC either way)")
-    parser.add_argument("--slap-threshold", type=float, help="impacts faster than this count as slaps, mm/s (default 10)")
+    parser.add_argument(
+        "--crank-0-720",
+        action="store_true",
+        help="draw the crank angle from 0 to 720° (default -360 to 360°; 0 = firing TDC either way)",
+    )
+    parser.add_argument(
+        "--slap-threshold", type=float, help="impacts faster than this count as slaps, mm/s (default 10)"
+    )
     return parser
 
 
@@ -54,8 +69,14 @@ def check(args):
     if args.rpm is not None:
         number(args.rpm, "--rpm", low=0, high=30000, low_open=True, unit=" rpm", meaning="the crank speed")
     if args.clearance is not None:
-        number(args.clearance, "--clearance", low=0, low_open=True, unit=" µm",
-               meaning="the diametral clearance c = D − d (bore minus piston diameter)")
+        number(
+            args.clearance,
+            "--clearance",
+            low=0,
+            low_open=True,
+            unit=" µm",
+            meaning="the diametral clearance c = D − d (bore minus piston diameter)",
+        )
     if args.cycles < 1:
         raise Refusal(f"--cycles = {args.cycles}: give a whole number of engine cycles >= 1")
 
@@ -96,9 +117,11 @@ def start_values(args, defaults):
 
 def case_title(p):
     """The operating point in the words of an engine test sheet; `p` holds every parameter by name (SI)."""
-    return (f"{p['crank_speed'] * 30 / np.pi:.0f} rpm, peak pressure {p['peak_pressure'] * 1e-5:g} bar, "
-            f"clearance {(p['bore'] - p['piston_diameter']) * 1e6:g} µm, e = {p['restitution']:g}, "
-            f"pin offset {p['pin_offset'] * 1e3:g} mm, slap threshold {p['slap_threshold'] * 1e3:g} mm/s")
+    return (
+        f"{p['crank_speed'] * 30 / np.pi:.0f} rpm, peak pressure {p['peak_pressure'] * 1e-5:g} bar, "
+        f"clearance {(p['bore'] - p['piston_diameter']) * 1e6:g} µm, e = {p['restitution']:g}, "
+        f"pin offset {p['pin_offset'] * 1e3:g} mm, slap threshold {p['slap_threshold'] * 1e3:g} mm/s"
+    )
 
 
 def summary(last):
@@ -108,11 +131,14 @@ def summary(last):
     walls = "; ".join(
         f"{last[f'cycle_slaps_{side}']} on the {name} wall, {last[f'cycle_slap_energy_{side}'] * mj:.3g} mJ "
         f"(largest {last[f'cycle_max_slap_energy_{side}'] * mj:.3g} mJ)"
-        for side, name in (("thrust", "major-thrust"), ("antithrust", "anti-thrust")))
-    return (f"Last cycle: {last['cycle_slap_events']} slaps (landings on the other wall): {walls}. "
-            f"{last['cycle_impacts']} impacts (every bounce) dissipated {last['cycle_impact_energy'] * mj:.3g} mJ, "
-            f"the largest {last['cycle_max_impact_energy_thrust'] * mj:.3g} mJ on the major-thrust wall and "
-            f"{last['cycle_max_impact_energy_antithrust'] * mj:.3g} mJ on the anti-thrust wall.")
+        for side, name in (("thrust", "major-thrust"), ("antithrust", "anti-thrust"))
+    )
+    return (
+        f"Last cycle: {last['cycle_slap_events']} slaps (landings on the other wall): {walls}. "
+        f"{last['cycle_impacts']} impacts (every bounce) dissipated {last['cycle_impact_energy'] * mj:.3g} mJ, "
+        f"the largest {last['cycle_max_impact_energy_thrust'] * mj:.3g} mJ on the major-thrust wall and "
+        f"{last['cycle_max_impact_energy_antithrust'] * mj:.3g} mJ on the anti-thrust wall."
+    )
 
 
 def main(argv=None):
@@ -134,13 +160,17 @@ def main(argv=None):
     stop_time = (args.cycles * CYCLE - origin) / omega + interval
 
     args.out.mkdir(parents=True, exist_ok=True)
-    result, events = simulate_with_events(log_path=args.out / "impact_log.csv", start_values=values,
-                                          stop_time=stop_time, output_interval=interval)
+    result, events = simulate_with_events(
+        log_path=args.out / "impact_log.csv", start_values=values, stop_time=stop_time, output_interval=interval
+    )
     case = case_title(p)
     units = {v.name: v.unit or (v.declaredType.unit if v.declaredType else None) for v in md.modelVariables}
     units["time"] = "s"
-    written = [write_table(args.out / "demo.csv", result, units), args.out / "impact_log.csv",
-               write_table(args.out / "cycles.csv", *cycle_metrics(result))]
+    written = [
+        write_table(args.out / "demo.csv", result, units),
+        args.out / "impact_log.csv",
+        write_table(args.out / "cycles.csv", *cycle_metrics(result)),
+    ]
 
     cycle, angle = last_cycle(result["crank_angle"], origin=origin)
     times = result["time"][cycle]
@@ -150,16 +180,39 @@ def main(argv=None):
     half_clearance = (p["bore"] - p["piston_diameter"]) / 2
     written += [
         plots.piston_motion(angle[cycle], result[cycle], half_clearance, args.out / "piston_motion.png", case, origin),
-        plots.slap(in_cycle, slap_rows(events, p["slap_threshold"])[window], p["slap_threshold"], args.out / "slap.png",
-                   case, origin),
+        plots.slap(
+            in_cycle,
+            slap_rows(events, p["slap_threshold"])[window],
+            p["slap_threshold"],
+            args.out / "slap.png",
+            case,
+            origin,
+        ),
         plots.forces(angle[cycle], result[cycle], args.out / "forces.png", case, origin),
-        plots.piston_positions(angle[cycle], result[cycle], in_cycle, geometry, MAGNIFICATION,
-                               args.out / "piston_positions.png", case, origin=origin),
-        plots.piston_animation(angle[cycle], result[cycle], in_cycle, geometry, MAGNIFICATION,
-                               args.out / "piston_positions.gif", case, origin=origin),
+        plots.piston_positions(
+            angle[cycle],
+            result[cycle],
+            in_cycle,
+            geometry,
+            MAGNIFICATION,
+            args.out / "piston_positions.png",
+            case,
+            origin=origin,
+        ),
+        plots.piston_animation(
+            angle[cycle],
+            result[cycle],
+            in_cycle,
+            geometry,
+            MAGNIFICATION,
+            args.out / "piston_positions.gif",
+            case,
+            origin=origin,
+        ),
     ]
-    print(f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. "
-          + summary(result[-1]))
+    print(
+        f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. " + summary(result[-1])
+    )
     for path in written:
         print(f"wrote {path}")
 

@@ -35,14 +35,20 @@ CASES = {
 
 
 def _run(args, cwd):
-    return subprocess.run([str(PISTONSLAP), *args], cwd=cwd, env=dict(os.environ, MPLBACKEND="Agg"),
-                          capture_output=True, text=True, timeout=120)
+    return subprocess.run(
+        [str(PISTONSLAP), *args],
+        cwd=cwd,
+        env=dict(os.environ, MPLBACKEND="Agg"),
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
 
 
 @pytest.mark.parametrize("case", CASES)
 def test_refusal_is_one_line_and_exit_2(case, tmp_path):
     args, words = CASES[case]
-    done = _run(args + ["--out", str(tmp_path / "out")] if args[0] == "demo" else args, tmp_path)
+    done = _run([*args, "--out", str(tmp_path / "out")] if args[0] == "demo" else args, tmp_path)
     lines = done.stderr.splitlines()
     assert done.returncode == 2, (done.returncode, done.stderr)
     assert len(lines) == 1 and "Traceback" not in done.stderr, done.stderr
