@@ -1,8 +1,8 @@
 """Simulates one operating point of the FMU through fmpy and writes CSVs and plots of its last engine cycle.
 
     pistonslap demo [--engine NAME] [--params FILE.toml] [--set NAME=VALUE ...] [--pressure-trace FILE]
-                    [--friction MU] [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM] [--restitution E]
-                    [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S] [--crank-0-720]
+                    [--firing-tdc DEG] [--friction MU] [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM]
+                    [--restitution E] [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S] [--crank-0-720]
 
 Values apply in that order, a later one over an earlier one: the engine preset, the parameter file, then the options.
 What none sets keeps the FMU's default (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
@@ -18,6 +18,7 @@ from .presets import PRESETS, help_text
 from .refusal import Parser, Refusal, check_start_values, number
 from .settings import parse_set, read_params, to_fmu
 from .tables import cycle_metrics, slap_rows, write_table
+from .trace_tdc import place_firing_tdc
 
 #: Crank angle between samples (and communication points), deg: the FMU's default experiment samples every
 #: 5e-5 s, 0.36° at 1200 rpm.
@@ -44,6 +45,12 @@ def _parser():
         "--pressure-trace",
         type=Path,
         help="CSV trace (header: crank angle [deg], pressure [bar|Pa|kPa|MPa|psi] absolute|gauge)",
+    )
+    parser.add_argument(
+        "--firing-tdc",
+        type=float,
+        metavar="DEG",
+        help="firing TDC in the --pressure-trace's angles (default: the TDC, a multiple of 360°, nearest its peak)",
     )
     parser.add_argument("--friction", type=float, help="Coulomb friction coefficient at the liner (default 0)")
     parser.add_argument("--out", type=Path, default=Path("out"), help="output folder (default: out)")
@@ -79,22 +86,28 @@ def check(args):
         )
     if args.cycles < 1:
         raise Refusal(f"--cycles = {args.cycles}: give a whole number of engine cycles >= 1")
+    if args.firing_tdc is not None:
+        if args.pressure_trace is None:
+            raise Refusal("--firing-tdc places the firing TDC of a --pressure-trace: give the trace")
+        number(args.firing_tdc, "--firing-tdc", unit="°", meaning="firing TDC")
 
 
 def all_start_values(args, md, defaults):
-    """The start values (SI) of the preset, the parameter file, the options and --set, in that order."""
-    values = dict(PRESETS[args.engine].values) if args.engine else {}
+    """The start values (SI) of the preset, the parameter file, the options and --set, in that order, and what
+    was said of a --pressure-trace's firing TDC (or None)."""
+    values, placed = dict(PRESETS[args.engine].values) if args.engine else {}, None
     if args.params:
         values.update(read_params(args.params, md))
     values.update(start_values(args, dict(defaults, **values)))
     if args.pressure_trace is not None:
         if not args.pressure_trace.is_file():
             raise Refusal(f"--pressure-trace {args.pressure_trace}: no such file")
-        values.update(pressure_source=3, pressure_trace=str(args.pressure_trace.resolve()))
+        trace, placed = place_firing_tdc(args.pressure_trace, args.out, args.firing_tdc)
+        values.update(pressure_source=3, pressure_trace=str(Path(trace).resolve()))
     if args.friction is not None:
         values["friction"] = number(args.friction, "--friction", low=0, meaning="the friction coefficient")
     values.update(parse_set(args.set, md))
-    return to_fmu(values, defaults)
+    return to_fmu(values, defaults), placed
 
 
 def start_values(args, defaults):
@@ -117,8 +130,13 @@ def start_values(args, defaults):
 
 def case_title(p):
     """The operating point in the words of an engine test sheet; `p` holds every parameter by name (SI)."""
+    pressure = (
+        f"pressure trace {Path(p['pressure_trace']).name}"
+        if p.get("pressure_source") == 3
+        else f"peak pressure {p['peak_pressure'] * 1e-5:g} bar"
+    )
     return (
-        f"{p['crank_speed'] * 30 / np.pi:.0f} rpm, peak pressure {p['peak_pressure'] * 1e-5:g} bar, "
+        f"{p['crank_speed'] * 30 / np.pi:.0f} rpm, {pressure}, "
         f"clearance {(p['bore'] - p['piston_diameter']) * 1e6:g} µm, e = {p['restitution']:g}, "
         f"pin offset {p['pin_offset'] * 1e3:g} mm, slap threshold {p['slap_threshold'] * 1e3:g} mm/s"
     )
@@ -150,8 +168,10 @@ def main(argv=None):
         raise Refusal(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
     md = fmpy.read_model_description(str(fmu_path()))
     defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
-    values = all_start_values(args, md, defaults)
+    values, placed = all_start_values(args, md, defaults)
     check_start_values(values, fmu_path(), md)
+    if placed:
+        print(placed)
     p = dict(defaults, **values)
     omega, origin = p["crank_speed"], FROM_FIRING_TDC if args.crank_0_720 else CENTRED
     interval = np.radians(SAMPLE_DEG) / omega

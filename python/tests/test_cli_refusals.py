@@ -24,6 +24,7 @@ CASES = {
     "FMU refusal": (["demo", "--restitution", "1.5"], ["restitution", "[0, 1]"]),
     "FMU refusal of the pin offset": (["demo", "--pin-offset", "50"], ["pin_offset"]),
     "FMU refusal of the threshold": (["demo", "--slap-threshold", "-5"], ["slap_threshold"]),
+    "firing TDC without a trace": (["demo", "--firing-tdc", "360"], ["--firing-tdc", "--pressure-trace"]),
     "missing file": (["sweep", "nonexist.toml"], ["nonexist.toml"]),
     "zero step": (["coupled", "--step", "0"], ["--step"]),
     "negative step": (["coupled", "--step", "-0.001"], ["--step"]),
