@@ -183,7 +183,7 @@ def main(argv=None):
     result, events = simulate_with_events(
         log_path=args.out / "impact_log.csv", start_values=values, stop_time=stop_time, output_interval=interval
     )
-    case = case_title(p)
+    case = (f"{args.engine}: " if args.engine else "") + case_title(p)
     units = {v.name: v.unit or (v.declaredType.unit if v.declaredType else None) for v in md.modelVariables}
     units["time"] = "s"
     written = [

@@ -57,14 +57,19 @@ def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED):
         ("piston_lateral", "pin", ":"),
     ):
         lateral.plot(deg, result[name] * 1e6, style, label=label)
+    # the walls' names beyond the walls, where no curve can run
+    wall = half_clearance * 1e6
+    lateral.set_ylim(-1.4 * wall, 1.4 * wall)
     for sign, (label, _, colour) in zip((1, -1), SIDES, strict=True):
-        lateral.axhline(sign * half_clearance * 1e6, color=colour, lw=0.8, ls="--")
+        lateral.axhline(sign * wall, color=colour, lw=0.8, ls="--")
         lateral.annotate(
             label.split(" (")[0] + " wall",
-            (np.degrees(origin) + 5, sign * half_clearance * 1e6),
+            (np.degrees(origin) + 5, sign * wall),
+            xytext=(0, 2 * sign),
+            textcoords="offset points",
             color=colour,
             fontsize="x-small",
-            va="top" if sign > 0 else "bottom",
+            va="bottom" if sign > 0 else "top",
         )
     lateral.set_ylabel("eccentricity x [µm]\n(+ toward major thrust)")
     _legend(lateral, ncol=3)
@@ -108,12 +113,9 @@ def slap(events, is_slap, slap_threshold, path, case, origin=CENTRED):
                 clip_on=False,
                 label=f"{label}: {others.sum()} other impacts",
             )
-    speed.axhline(slap_threshold * 1e3, color="k", lw=0.8, ls="--")
-    speed.annotate(
-        f"slap threshold {slap_threshold * 1e3:g} mm/s",
-        (np.degrees(origin) + 5, slap_threshold * 1e3),
-        fontsize="x-small",
-        va="bottom",
+    # named in the legend: a label on the line would sit among the bounces that follow each slap
+    speed.axhline(
+        slap_threshold * 1e3, color="k", lw=0.8, ls="--", label=f"slap threshold {slap_threshold * 1e3:g} mm/s"
     )
     energy.set_ylabel("energy dissipated\nper impact [mJ]")
     speed.set_ylabel("impact speed [mm/s]")

@@ -14,6 +14,9 @@ class Preset:
     values: dict = field(default_factory=dict)
 
 
+#: Farahanchi's table is in US customary units: pound-force and inch, masses in lbf·s²/in, inertias in lbf·s²·in.
+_LBF, _INCH = 4.4482216152605, 0.0254
+
 PRESETS = {
     "awrejcewicz-kudra": Preset(
         summary="the FMU's default: the academic engine of the paper (1200 rpm, 80 bar, 80 µm)",
@@ -84,6 +87,26 @@ PRESETS = {
             "pin_height": 0.0373,
             "pin_offset": 0.0,
             "friction": 0.1,
+        },
+    ),
+    "ford-gasoline": Preset(
+        summary="a Ford four-cylinder gasoline car engine's slider crank (84 mm stroke, piston 0.368 kg, rod 0.699 kg)",
+        source=(
+            "F. Farahanchi, Chaotic and periodic dynamics of a slider crank mechanism with slider clearance, "
+            "M.S. thesis, Michigan State University, 1991, section 4.1: a Ford Motor Company automotive four-cylinder "
+            "gasoline engine (from H. H. Denman, Mechanism and Machine Theory 23 (1988) 435-439): crank radius "
+            "1.6535 in, rod 5.4570 in, rod mass 0.00399 and piston mass 0.00210 lbf s^2/in, rod inertia about its "
+            "centre of mass 0.0295 lbf s^2 in; the rod uniform (section 2.2), its centre of mass at mid-length. "
+            "Not in the source, so the FMU's defaults: the 80 mm piston, its skirt, pin height and inertia, the "
+            "80 µm clearance, 1200 rpm and the built-in pressure curve at 80 bar"
+        ),
+        values={
+            "crank_radius": 1.6535 * _INCH,
+            "rod_length": 5.4570 * _INCH,
+            "rod_com": 5.4570 * _INCH / 2,
+            "rod_mass": 0.00399 * _LBF / _INCH,
+            "piston_mass": 0.00210 * _LBF / _INCH,
+            "rod_inertia": 0.0295 * _LBF * _INCH,
         },
     ),
 }
