@@ -4,7 +4,7 @@
 //! - `variables.rs`: the GUID, the variable table and the value-reference dispatch onto the fields of
 //!   `Parameters`, `Inputs` and `Outputs` (included by `src/fmi/description.rs`);
 //! - `parameter_defaults.rs`: the defaults and range checks of `Parameters` and `Inputs`
-//!   (included by `src/models/parameters.rs` and `src/models/engine_cycle.rs`).
+//!   (included by `src/models/contract.rs` and `src/models/engine_cycle/parameters.rs`).
 //!
 //! Value references are the positions in the table (0, 1, …); ModelStructure indices are those plus one.
 

@@ -6,8 +6,8 @@
 
 use nalgebra::{SVector, Vector2, Vector3};
 use pistonslap::dynamics::System;
-use pistonslap::models::crank_drive::{Engine, FreeCrank, PrescribedCrank};
-use pistonslap::models::crank_kinematics::SliderCrank;
+use pistonslap::models::crank_train::drive::{Engine, FreeCrank, PrescribedCrank};
+use pistonslap::models::crank_train::kinematics::SliderCrank;
 use pistonslap::models::{CrankTrain, EngineModel, InputPolynomial, Inputs, Parameters};
 use std::hint::black_box;
 use std::time::Instant;

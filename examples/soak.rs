@@ -33,8 +33,8 @@
 //! ≈ 2e-3 (the roller's impulsive wall work ≈ 7e-4). Not counted: the O(h⁵) velocity projections
 //! that keep sliding contacts on their manifold.
 
-use pistonslap::models::crank_kinematics::SliderCrank;
-use pistonslap::models::pressure::FourStrokePressure;
+use pistonslap::models::crank_train::kinematics::SliderCrank;
+use pistonslap::models::gas::FourStrokePressure;
 use pistonslap::models::{CrankTrain, EfficiencyTarget, EnergyBalance, EngineEvent, EngineModel, Inputs, Parameters, Roller};
 use std::f64::consts::PI;
 use std::sync::atomic::{AtomicBool, Ordering};

@@ -3,9 +3,9 @@
 
 use crate::common::*;
 use nalgebra::Vector3;
-use pistonslap::models::crank_kinematics::SliderCrank;
-use pistonslap::models::crank_linkage::{Linkage, Loads};
-use pistonslap::models::pressure::FourStrokePressure;
+use pistonslap::models::crank_train::kinematics::SliderCrank;
+use pistonslap::models::crank_train::linkage::{Linkage, Loads};
+use pistonslap::models::gas::FourStrokePressure;
 use pistonslap::models::{CrankTrain, EfficiencyTarget, EnergyBalance, EngineModel, Inputs, Outputs, Parameters};
 use std::f64::consts::PI;
 

@@ -2,7 +2,7 @@
 //! four-stroke curve), prescribed crank speed.
 
 use crate::common::*;
-use pistonslap::models::pressure::FourStrokePressure;
+use pistonslap::models::gas::FourStrokePressure;
 use pistonslap::models::{Inputs, Parameters};
 
 fn paper(restitution: f64, bore: f64) -> Parameters {

@@ -1,9 +1,9 @@
 //! The crank train's declared space: the designs in which its model is well posed, refused outside
 //! with the parameter and the reason (the FMU documentation, "Declared space", states the same).
 
-use super::check;
-use crate::models::crank_kinematics::SliderCrank;
-use crate::models::crank_linkage::{Linkage, Loads};
+use super::kinematics::SliderCrank;
+use super::linkage::{Linkage, Loads};
+use super::model::check;
 use crate::models::{ModelError, Parameters};
 use nalgebra::{DMatrix, Vector3};
 use std::f64::consts::PI;

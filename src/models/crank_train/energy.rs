@@ -6,9 +6,9 @@
 //! `Δq̇ = M_rr⁻¹ J_rᵀ Λ` and from the crank row `P_d = M_1r Δq̇ − (∂h/∂φ1)ᵀ Λ`. The drive does the
 //! work `P_d ω`, and `ΔT = −(dissipation) + P_d ω` with dissipation `−Λᵀ(ḣ⁻ + ḣ⁺)/2`.
 
-use super::{CrankTrain, Drive};
-use crate::models::crank_drive::PrescribedCrank;
-use crate::models::crank_linkage::Loads;
+use super::drive::PrescribedCrank;
+use super::linkage::Loads;
+use super::model::{CrankTrain, Drive};
 use crate::models::{EnergyBalance, PowerFlows};
 use nalgebra::{Vector2, Vector4};
 
@@ -83,7 +83,7 @@ impl EnergyBalance for CrankTrain {
 #[cfg(test)]
 mod tests {
     use crate::dynamics::System;
-    use crate::models::crank_drive::{Engine, PrescribedCrank};
+    use crate::models::crank_train::drive::{Engine, PrescribedCrank};
     use crate::models::Parameters;
     use nalgebra::{Matrix4, Vector2, Vector3, Vector4};
 

@@ -14,10 +14,10 @@
 //! `p_intake V(−π) = m R(x_r) T_intake`; the fuel the charge holds bounds the heat release: `Q_fuel ≤ (1 − x_r) m
 //! (F/A)_s LHV`, and the burned gas is the product at `φ = Q_fuel / ((1 − x_r) m (F/A)_s LHV)`.
 
-use super::super::ModelError;
 use super::heat_transfer::{Correlation, Reference, WallHeat};
 use super::parameters::EngineCycleParameters;
 use super::thermo::{stoichiometric_fuel_air, Charge};
+use crate::models::ModelError;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 

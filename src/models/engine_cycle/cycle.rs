@@ -11,9 +11,9 @@
 //! integral over a cycle is IMEP · V_d. Heat flows to the walls over the closed part only: `wall_heat_total` is
 //! the closed parts' wall heat since the start time, `wall_heat_flux` its time derivative `dQ_w/dϑ · ω`.
 
-use super::super::{ModelError, CYCLE};
 use super::closed_cycle::{ClosedCycle, ClosedState};
 use super::parameters::{EngineCycleParameters, Volume};
+use crate::models::{ModelError, CYCLE};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::{FRAC_PI_2, PI};
 

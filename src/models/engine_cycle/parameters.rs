@@ -1,7 +1,6 @@
 //! The engine cycle's parameters: their table ranges, their relations, and the slider-crank volume they make.
 
-use super::super::parameters::{check_integer, check_real};
-use super::super::ModelError;
+use crate::models::error::{check_integer, check_real, ModelError};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 

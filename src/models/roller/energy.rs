@@ -4,7 +4,7 @@
 //! with the crank (`∂h/∂τ = ψ_max'`): while sliding at the rate `λ_cᵀ J ψ'`, and at an impulse Λ
 //! by `−Λᵀ ∂h/∂τ`. The damper dissipates `λ ψ'²`; impacts their `energy_lost`.
 
-use super::{Roller, RollerSystem};
+use super::model::{Roller, RollerSystem, LOWER, UPPER};
 use crate::dynamics::{Event, System};
 use crate::models::{EnergyBalance, PowerFlows};
 use nalgebra::Vector1;
@@ -26,15 +26,15 @@ impl Roller {
 impl EnergyBalance for Roller {
     fn mechanical_energy(&self) -> f64 {
         let s = &self.stepper;
-        0.5 * s.system().mechanism.inertia() * s.velocity()[0].powi(2) * self.energy_scale()
+        0.5 * s.system().mechanism().inertia() * s.velocity()[0].powi(2) * self.energy_scale()
     }
 
     fn power_flows(&self) -> PowerFlows {
         let s = &self.stepper;
         let (sys, theta, psi, rate) = (s.system(), s.time(), s.position()[0], s.velocity()[0]);
-        let at = sys.mechanism.at(theta);
+        let at = sys.mechanism().at(theta);
         let forcing = at.forcing(sys.lambda) - at.stiffness() * psi;
-        let walls = s.multipliers()[super::LOWER] - s.multipliers()[super::UPPER];
+        let walls = s.multipliers()[LOWER] - s.multipliers()[UPPER];
         // Rates per radian of crank angle, times Ω for per second.
         let watts = self.energy_scale() * self.crank_speed;
         PowerFlows { drive: (forcing + walls) * rate * watts, gas: 0.0, damping: sys.lambda * rate * rate * watts, friction: 0.0 }

@@ -70,7 +70,7 @@ impl RollerMechanism {
     /// The mechanism's terms at crank angle `tau`.
     pub fn at(&self, tau: f64) -> AtAngle {
         let xi2 = self.xi * self.xi;
-        let (s, c) = super::trig::sin_cos(tau);
+        let (s, c) = crate::models::numerics::trig::sin_cos(tau);
         let value = (1.0 - xi2 * s * s).sqrt();
         let d1 = -xi2 * s * c / value;
         let d2 = -xi2 * (c * c - s * s) / value - d1 * d1 / value;

@@ -7,26 +7,14 @@
 //!   yields the drive torque.
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
-use super::crank_linkage::{Linkage, Loads, Trig};
-use super::crank_train::MAX_STEP_ANGLE;
-use super::last_value::LastValue;
-use super::pressure::FourStrokePressure;
-use super::pressure_trace::PressureTrace;
-use super::{InputPolynomial, Inputs, ModelError, Parameters};
+use super::linkage::{Linkage, Loads, Trig};
+use super::model::MAX_STEP_ANGLE;
 use crate::dynamics::{Evaluation, System, Tangents};
+use crate::models::gas::GasPressure;
+use crate::models::numerics::{trig, LastValue};
+use crate::models::{InputPolynomial, ModelError, Parameters};
 use nalgebra::{Matrix2, Matrix3, Matrix4x2, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
-
-/// Where the gas pressure comes from.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub enum GasPressure {
-    /// The built-in four-stroke curve of crank angle.
-    BuiltIn(FourStrokePressure),
-    /// A measured trace of crank angle.
-    Trace(PressureTrace),
-    /// The host's `gas_pressure` input, Pa, over a step.
-    Held(InputPolynomial),
-}
 
 /// What drives the links apart from the crank motion: linkage, pressure, restitution.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -54,14 +42,9 @@ impl Engine {
     /// The engine of validated parameters; a held pressure starts at the input's default. Reads the
     /// pressure trace (`pressure_source = 3`), refusing a bad file.
     pub fn new(params: &Parameters) -> Result<Self, ModelError> {
-        let pressure = match params.pressure_source {
-            1 => GasPressure::Held(InputPolynomial::held(Inputs::default().gas_pressure)),
-            3 => GasPressure::Trace(PressureTrace::read(&params.pressure_trace, params.crankcase_pressure)?),
-            _ => GasPressure::BuiltIn(FourStrokePressure::new(params.peak_pressure, params.rod_length / params.crank_radius)),
-        };
         Ok(Self {
             linkage: Linkage::new(params),
-            pressure,
+            pressure: GasPressure::new(params)?,
             crown_area: 0.25 * std::f64::consts::PI * params.piston_diameter * params.piston_diameter,
             restitution: params.restitution,
             friction: params.friction,
@@ -71,14 +54,12 @@ impl Engine {
     /// Whether taking `pressure` would change nothing: it is the held input already, or the
     /// pressure comes from the built-in curve or a trace.
     pub fn holds(&self, pressure: &InputPolynomial) -> bool {
-        !matches!(&self.pressure, GasPressure::Held(p) if !p.same_as(pressure))
+        self.pressure.holds(pressure)
     }
 
     /// Takes the `gas_pressure` input over the next step, if the pressure comes from it.
     pub fn hold_pressure(&mut self, pressure: InputPolynomial) {
-        if let GasPressure::Held(p) = &mut self.pressure {
-            *p = pressure;
-        }
+        self.pressure.hold(pressure);
     }
 
     /// Gas force toward the crank at time t and crank angle φ1, N.
@@ -93,10 +74,7 @@ impl Engine {
 
     #[inline(always)]
     fn pressure_at(&self, t: f64, crank: &Crank) -> f64 {
-        match &self.pressure {
-            GasPressure::BuiltIn(_) | GasPressure::Trace(_) => crank.curve,
-            GasPressure::Held(p) => p.at(t),
-        }
+        self.pressure.at(t, crank.curve)
     }
 
     #[inline(always)]
@@ -108,13 +86,8 @@ impl Engine {
     /// the evaluations: called out of line, a cache hit would cost a call at every stage.
     #[inline(always)]
     fn crank(&self, angle: f64) -> Crank {
-        let (sin, cos) = super::trig::sin_cos(angle);
-        let curve = match &self.pressure {
-            GasPressure::BuiltIn(curve) => curve.gauge_at(angle, sin, cos),
-            GasPressure::Trace(trace) => trace.gauge(angle),
-            GasPressure::Held(_) => 0.0,
-        };
-        Crank { sin, cos, curve }
+        let (sin, cos) = trig::sin_cos(angle);
+        Crank { sin, cos, curve: self.pressure.of_angle(angle, sin, cos) }
     }
 
     /// The linkage's evaluation at (t, φ, φ̇) with the gas force at t and the crank angle of `crank`

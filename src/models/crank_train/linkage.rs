@@ -23,8 +23,9 @@
 //! w = −(d/2 + a) (K1, K2) or d/2 − a (K3, K4); gaps `h_i = D/2 + x_K` (K1, K2, wall −D/2) and
 //! `D/2 − x_K` (K3, K4), in metres, so a multiplier is the normal contact force in newtons.
 
-use super::{trig, Parameters};
 use crate::dynamics::{Evaluation, Tangents};
+use crate::models::numerics::trig;
+use crate::models::Parameters;
 use nalgebra::{Matrix3, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 

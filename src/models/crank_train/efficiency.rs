@@ -13,8 +13,8 @@
 //! 2πλ2²(1 − √(1 − λ2⁻²)), which cancels the λ2⁻² in front). A&K's c̄1 = 0.0288 N·m·s with M̄0 = 24.7 N·m
 //! follows from the printed form; the correct form gives 0.02865 for the same gas work.
 
-use super::crank_kinematics::SliderCrank;
-use super::ModelError;
+use super::kinematics::SliderCrank;
+use crate::models::ModelError;
 use std::f64::consts::PI;
 
 /// Quadrature points over the 4π cycle: the midpoint rule is exact to ~1e-9 relative for the
@@ -89,7 +89,7 @@ impl EfficiencyTarget {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::models::pressure::FourStrokePressure;
+    use crate::models::gas::FourStrokePressure;
 
     const AREA: f64 = 0.25 * PI * 0.08 * 0.08;
     const CENTRED: SliderCrank = SliderCrank { crank_radius: 0.04, rod_length: 0.15, pin_offset: 0.0 };

@@ -17,15 +17,13 @@
 //! x = −r sin θ, the pin is at x = −r sin θ − l sin(ψ − φ) ≈ −l Λ ψ, so the thesis's upper wall
 //! (ψ = ψ_max) is the x = −D/2 wall of corners 1 and 2, and the lower wall that of corners 3 and 4.
 
-use super::last_value::LastValue;
-use super::roller_forcing::{AtAngle, Forcing, RollerMechanism};
-use super::{EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, CYCLE};
+use super::forcing::{AtAngle, Forcing, RollerMechanism};
 use crate::dynamics::{DynamicsError, Evaluation, Event, EventKind, Stepper, StepperOptions, System};
+use crate::models::numerics::LastValue;
+use crate::models::{EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, CYCLE};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
-
-mod energy;
 
 /// Turns the stepper's crank angle may reach before a block of them is taken off: its
 /// round-off there (ulp 2e-12 rad) is far below the event tolerance, and runs shorter than it (the
@@ -94,20 +92,20 @@ impl System<1, 2> for RollerSystem {
 /// The roller slider crank as the FMU drives it: SI in and out, the thesis's variables inside.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Roller {
-    stepper: Stepper<RollerSystem, 1, 2>,
+    pub(super) stepper: Stepper<RollerSystem, 1, 2>,
     options: StepperOptions,
     crank_radius: f64,
-    rod_length: f64,
-    piston_mass: f64,
+    pub(super) rod_length: f64,
+    pub(super) piston_mass: f64,
     damping: f64,
     /// The crank's moment of inertia about its axis, J1 + m1 ey1², kg·m² (for the kinetic energy).
     crank_inertia: f64,
     /// Held crank speed Ω, rad/s; 0 before the first step.
-    crank_speed: f64,
+    pub(super) crank_speed: f64,
     /// SI time at the stepper's current crank angle.
     time: f64,
     /// Work the moving walls have done through impulses since the start, J (`EnergyBalance`).
-    impulse_work: f64,
+    pub(super) impulse_work: f64,
     /// Whole turns (2π) taken off the stepper's crank angle (`keep_angle_bounded`).
     turns: f64,
     /// The time and crank angle before the last point served from the step ahead (`serve_again`).

@@ -14,7 +14,7 @@
 //! last sample to the first one 4π later; a sample at exactly the first angle + 720° is that closing
 //! point and is dropped, as are samples beyond it (a trace may span 720° ± one sample).
 
-use super::ModelError;
+use crate::models::ModelError;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 

@@ -1,20 +1,18 @@
 //! Variant 1: the piston – connecting rod – crankshaft system of Awrejcewicz & Kudra on the core,
 //! as the FMU drives it (prescribed crank speed, or a free crank under a load torque).
 
-use super::crank_drive::{Engine, FreeCrank, PrescribedCrank};
-use super::crank_kinematics::SliderCrank;
-use super::crank_linkage::Trig;
-use super::{EngineEvent, EngineEventKind, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, CYCLE};
+use super::design_space::{self, validate};
+use super::drive::{Engine, FreeCrank, PrescribedCrank};
+use super::energy::by_wall;
+use super::kinematics::SliderCrank;
+use super::linkage::Trig;
 use crate::dynamics::{DynamicsError, Event, EventKind, StepCounts, Stepper, StepperOptions};
+use crate::models::{
+    EngineEvent, EngineEventKind, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, CYCLE,
+};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
-
-mod design_space;
-mod energy;
-use energy::by_wall;
-
-use design_space::validate;
 
 /// The adaptive RK4 step's largest size, s (7.2° of crank angle at 1200 rpm), and its bound on
 /// the local error of each step on the corner gaps, m. Event times and velocities do not depend
@@ -33,14 +31,14 @@ pub const LOCAL_ERROR: f64 = 1e-11;
 /// The crank train in one of its two crank modes.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct CrankTrain {
-    drive: Drive,
-    geometry: SliderCrank,
+    pub(super) drive: Drive,
+    pub(super) geometry: SliderCrank,
     start: StartOffset,
     /// The initial state is rebuilt with the first step's crank speed (DESIGN.md §4: nominal kinematics).
     started: bool,
     options: StepperOptions,
     /// Work the prescribed drive has done through impulses since the start, J (`EnergyBalance`).
-    impulse_work: f64,
+    pub(super) impulse_work: f64,
     /// Whole cycles (4π) taken off the crank angle (`keep_angle_within_a_cycle`).
     cycles: f64,
     /// Energy the friction impulses of impacts have dissipated since the start, J.
@@ -83,12 +81,12 @@ impl StartOffset {
 }
 
 #[derive(Clone, Debug, Serialize, Deserialize)]
-enum Drive {
+pub(super) enum Drive {
     Prescribed(Stepper<PrescribedCrank, 2, 4>),
     Free(Stepper<FreeCrank, 3, 4>),
 }
 
-fn check(ok: bool, message: impl FnOnce() -> String) -> Result<(), ModelError> {
+pub(super) fn check(ok: bool, message: impl FnOnce() -> String) -> Result<(), ModelError> {
     if ok {
         Ok(())
     } else {
@@ -288,7 +286,7 @@ impl CrankTrain {
         }
     }
 
-    fn engine(&self) -> &Engine {
+    pub(super) fn engine(&self) -> &Engine {
         match &self.drive {
             Drive::Prescribed(s) => &s.system().engine,
             Drive::Free(s) => &s.system().engine,

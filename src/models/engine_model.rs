@@ -1,0 +1,88 @@
+//! The interface the FMU drives a mechanism through, and the events it reports.
+
+use super::{InputDerivatives, Inputs, ModelError, Outputs, Parameters};
+use serde::{Deserialize, Serialize};
+
+/// One four-stroke engine cycle of crank angle, rad; firing top dead centre at 0 mod 4π.
+pub const CYCLE: f64 = 4.0 * std::f64::consts::PI;
+
+/// What happened at an event, in the impact log's words (`impact`, `slide`, `release`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
+pub enum EngineEventKind {
+    Impact,
+    Slide,
+    Release,
+    /// With liner friction: a corner in contact comes to rest along the liner and sticks.
+    Stick,
+    /// With liner friction: a corner in contact starts to slip, from sticking or reversing.
+    Slip,
+}
+
+/// One row of the impact log (DESIGN.md §4), in SI units.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct EngineEvent {
+    pub time: f64,
+    /// rad, in [0, 4π).
+    pub crank_angle: f64,
+    /// The engine cycle the event lies in: whole cycles (4π) of the accumulated crank angle.
+    pub cycle: i64,
+    pub kind: EngineEventKind,
+    /// 1..4: 1, 2 on the −D/2 (anti-thrust) wall, 3, 4 on the +D/2 (major-thrust) wall.
+    pub corner: u8,
+    /// m/s, normal approach speed −ḣ⁻ (≥ 0 for an impact).
+    pub normal_velocity_before: f64,
+    /// m/s, ḣ⁺.
+    pub normal_velocity_after: f64,
+    /// J, kinetic energy dissipated by this event.
+    pub energy_lost: f64,
+    /// J, the part of `energy_lost` liner friction dissipated (0 without friction).
+    pub friction_energy: f64,
+    /// m, pin position along the cylinder axis.
+    pub position: f64,
+}
+
+/// A model variant as the FMU drives it: built from parameters, advanced with held inputs.
+pub trait EngineModel: Sized + Clone {
+    /// Builds the model at `start_time` in the initial state of DESIGN.md §4, or refuses the
+    /// parameters with a message naming the offending one.
+    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError>;
+
+    /// Advances to exactly `t_end` with `inputs` held, appending every event to `events`.
+    /// On error the model may be left anywhere: the caller restores its own copy.
+    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        self.advance_interpolated(inputs, &InputDerivatives::default(), t_end, events)
+    }
+
+    /// As [`Self::advance`], the inputs following the polynomials of their values and `derivatives`
+    /// at the current time; a model that cannot follow a derivative refuses it.
+    fn advance_interpolated(
+        &mut self,
+        inputs: &Inputs,
+        derivatives: &InputDerivatives,
+        t_end: f64,
+        events: &mut Vec<EngineEvent>,
+    ) -> Result<(), ModelError>;
+
+    /// Before the first step, the state that step would start from with `inputs` (whose outputs are
+    /// then the initial ones); the first step rebuilds it from its own inputs.
+    fn prepare(&mut self, _inputs: &Inputs) -> Result<(), ModelError> {
+        Ok(())
+    }
+
+    /// Writes the kinematic and force outputs (everything but the impact statistics).
+    fn write_outputs(&self, out: &mut Outputs);
+
+    /// Advances to `t_end` as [`Self::advance_interpolated`] would where that only reads the state
+    /// there from a step already taken (no events): all or nothing, and a point the caller then
+    /// refuses is undone by [`Self::serve_again`] at the time before it, with no copy. None, with
+    /// nothing done, where it is not such a point.
+    fn serve(&mut self, _inputs: &Inputs, _derivatives: &InputDerivatives, _t_end: f64) -> Option<Result<(), ModelError>> {
+        None
+    }
+
+    /// Reads the state at `t` again from the step already taken, after a point that
+    /// [`Self::serves`] gave beyond `t`: the model is then exactly as it was at `t`.
+    fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {
+        Err(ModelError(format!("no step taken past t = {t} s to read the state from")))
+    }
+}
