@@ -7,7 +7,7 @@
 //!   yields the drive torque.
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
-use super::linkage::{Linkage, Loads, Trig};
+use super::linkage::{LinkAngles, Linkage, Loads};
 use super::model::MAX_STEP_ANGLE;
 use crate::dynamics::{Evaluation, System, Tangents};
 use crate::models::gas::GasPressure;
@@ -113,8 +113,8 @@ impl Engine {
     }
 
     #[inline(always)]
-    fn trig_and_loads(&self, t: f64, phi: &Vector3<f64>, load_torque: f64, crank: &Crank) -> (Trig, Loads) {
-        (Trig::with_crank((crank.sin, crank.cos), phi), Loads { gas_force: self.gas_force_at(t, crank), load_torque })
+    fn trig_and_loads(&self, t: f64, phi: &Vector3<f64>, load_torque: f64, crank: &Crank) -> (LinkAngles, Loads) {
+        (LinkAngles::with_crank((crank.sin, crank.cos), phi), Loads { gas_force: self.gas_force_at(t, crank), load_torque })
     }
 }
 

@@ -121,12 +121,12 @@ pub struct Loads {
 
 /// Sines and cosines of the three link angles: the only transcendental work of an evaluation.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Trig {
+pub struct LinkAngles {
     pub sin: [f64; 3],
     pub cos: [f64; 3],
 }
 
-impl Trig {
+impl LinkAngles {
     pub fn new(phi: &Vector3<f64>) -> Self {
         Self::with_crank(trig::sin_cos(phi[0]), phi)
     }
@@ -173,7 +173,7 @@ impl Linkage {
     }
 
     /// The pin O3 and the corner gaps from the angles' sines and cosines (the outputs' kinematics).
-    pub fn pin_and_gaps(&self, trig: &Trig) -> (Vector2<f64>, Vector4<f64>) {
+    pub fn pin_and_gaps(&self, trig: &LinkAngles) -> (Vector2<f64>, Vector4<f64>) {
         let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
         let [l1, l2] = self.bodies.links;
         let pin = Vector2::new(-l1 * s1 - l2 * s2, l1 * c1 + l2 * c2);
@@ -203,12 +203,12 @@ impl Linkage {
 
     /// M, f, h, J = ∂h/∂φ and d = φ̇ᵀ ∂²h/∂φ² φ̇ at (φ, φ̇); the constraints are scleronomic in φ.
     pub fn evaluate(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, loads: Loads) -> Evaluation<3, 4> {
-        self.evaluate_with(&Trig::new(phi), phid, loads)
+        self.evaluate_with(&LinkAngles::new(phi), phid, loads)
     }
 
     /// [`Self::evaluate`] from the angles' sines and cosines.
     #[inline(always)]
-    pub fn evaluate_with(&self, trig: &Trig, phid: &Vector3<f64>, loads: Loads) -> Evaluation<3, 4> {
+    pub fn evaluate_with(&self, trig: &LinkAngles, phid: &Vector3<f64>, loads: Loads) -> Evaluation<3, 4> {
         let (mass, force) = self.inertia_and_force_with(trig, phid, loads);
         let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
         let [l1, l2] = self.bodies.links;
@@ -234,7 +234,7 @@ impl Linkage {
 
     /// M and f of [`Self::evaluate_with`] alone (an RK4 stage in flight needs no more).
     #[inline(always)]
-    pub fn inertia_and_force_with(&self, trig: &Trig, phid: &Vector3<f64>, loads: Loads) -> (Matrix3<f64>, Vector3<f64>) {
+    pub fn inertia_and_force_with(&self, trig: &LinkAngles, phid: &Vector3<f64>, loads: Loads) -> (Matrix3<f64>, Vector3<f64>) {
         let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
         let k = &self.terms;
         // cos and sin of φi − φj.
@@ -262,7 +262,7 @@ impl Linkage {
 
     /// Kinetic and gravitational potential energy (zero at the crank axis), J.
     pub fn energy(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) -> (f64, f64) {
-        let kinetic = self.kinetic_energy(&Trig::new(phi), phid);
+        let kinetic = self.kinetic_energy(&LinkAngles::new(phi), phid);
         let (g, gx) = (self.bodies.gravity, self.bodies.gravity_lateral);
         let potential = (0..3)
             .map(|k| {
@@ -277,7 +277,7 @@ impl Linkage {
     /// `ẏ_K = −l1 sin φ1 φ̇1 − l2 sin φ2 φ̇2 + (w cos φ3 − z sin φ3) φ̇3`; friction `λ_T` on a
     /// corner is the liner's force on the piston along +y.
     pub fn tangents(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) -> Tangents<3, 4> {
-        let trig = Trig::new(phi);
+        let trig = LinkAngles::new(phi);
         let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
         let [l1, l2] = self.bodies.links;
         let (w1, w2, w3) = (phid[0] * phid[0], phid[1] * phid[1], phid[2] * phid[2]);
@@ -295,7 +295,7 @@ impl Linkage {
     }
 
     /// Kinetic energy ½ φ̇ᵀ M φ̇ from the angles' sines and cosines, J.
-    pub fn kinetic_energy(&self, trig: &Trig, phid: &Vector3<f64>) -> f64 {
+    pub fn kinetic_energy(&self, trig: &LinkAngles, phid: &Vector3<f64>) -> f64 {
         let (mass, _) = self.inertia_and_force_with(trig, phid, Loads { gas_force: 0.0, load_torque: 0.0 });
         0.5 * phid.dot(&(mass * phid))
     }

@@ -5,7 +5,7 @@ use super::design_space::{self, validate};
 use super::drive::{Engine, FreeCrank, PrescribedCrank};
 use super::energy::by_wall;
 use super::kinematics::SliderCrank;
-use super::linkage::Trig;
+use super::linkage::LinkAngles;
 use crate::dynamics::{DynamicsError, Event, EventKind, StepCounts, Stepper, StepperOptions};
 use crate::models::{
     EngineEvent, EngineEventKind, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, CYCLE,
@@ -429,7 +429,7 @@ impl EngineModel for CrankTrain {
     fn write_outputs(&self, out: &mut Outputs) {
         // The sines and cosines once, of the angle within the cycle (what the stepper holds).
         let (phi, phid) = self.state_within_cycle();
-        let trig = Trig::new(&phi);
+        let trig = LinkAngles::new(&phi);
         let linkage = &self.engine().linkage;
         let (pin, gaps) = linkage.pin_and_gaps(&trig);
         let (forces, in_contact) = self.contacts();
