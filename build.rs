@@ -1,10 +1,13 @@
-//! Turns each variable table of `modelDescription/` (the one source of truth of its FMU) into, in OUT_DIR,
-//! with the table's file prefix (none for PistonSlap's `variables.xml`, `engine_cycle_` for EngineCycle's):
+//! Turns each variable table `modelDescription/<fmu>.xml` (the one source of truth of its FMU) into, in OUT_DIR,
+//! with the prefix `<fmu>_`:
 //! - `modelDescription.xml`: the FMI 2.0 model description shipped in the FMU;
 //! - `variables.rs`: the GUID, the variable table and the value-reference dispatch onto the fields of
-//!   `Parameters`, `Inputs` and `Outputs` (included by `src/fmi/description.rs`);
-//! - `parameter_defaults.rs`: the defaults and range checks of `Parameters` and `Inputs`
-//!   (included by `src/models/contract.rs` and `src/models/engine_cycle/parameters.rs`).
+//!   `Parameters`, `Inputs` and `Outputs` (included by the FMU's room, `src/fmus/<fmu>/variables.rs`);
+//! - `contract.rs`: the defaults and range checks of `Parameters` and `Inputs`, the finiteness check of the
+//!   Real outputs and the input derivatives by name (included where the model keeps its contract types:
+//!   `src/models/contract.rs`, `src/models/engine_cycle/parameters.rs`);
+//!
+//! and once, `log_categories.rs` (included by `src/fmi/description.rs`).
 //!
 //! Value references are the positions in the table (0, 1, …); ModelStructure indices are those plus one.
 
@@ -18,15 +21,14 @@ use serde::Deserialize;
 use std::io;
 use std::path::Path;
 
-/// (table, prefix of the generated files).
-const TABLES: [(&str, &str); 2] =
-    [("modelDescription/variables.xml", ""), ("modelDescription/variables_engine_cycle.xml", "engine_cycle_")];
+/// The folder of the variable tables, one `<fmu>.xml` per FMU of the registry (`src/fmus/`).
+const TABLES: &str = "modelDescription";
 
 #[derive(Deserialize)]
 struct Table {
-    #[serde(rename = "@modelName", default = "piston_slap")]
+    #[serde(rename = "@modelName")]
     model_name: String,
-    #[serde(rename = "@description", default = "piston_slap_description")]
+    #[serde(rename = "@description")]
     description: String,
     #[serde(rename = "@canInterpolateInputs", default = "yes")]
     can_interpolate_inputs: String,
@@ -42,14 +44,6 @@ struct Table {
     variables: List<Variable>,
 }
 
-fn piston_slap() -> String {
-    "PistonSlap".into()
-}
-fn piston_slap_description() -> String {
-    "Piston secondary motion (piston slap): crank, connecting rod and piston with clearance, \
-     impacts and sliding of the piston corners on the liner"
-        .into()
-}
 fn yes() -> String {
     "true".into()
 }
@@ -179,8 +173,21 @@ fn main() {
     }
     println!("cargo:rerun-if-env-changed=SOURCE_DATE_EPOCH");
     let out_dir = std::env::var("OUT_DIR").expect("OUT_DIR");
-    for (path, prefix) in TABLES {
+    println!("cargo:rerun-if-changed={TABLES}");
+    let names: Vec<&str> = LOG_CATEGORIES.iter().map(|(n, _)| *n).collect();
+    let log_categories =
+        format!("/// Log categories accepted by fmi2SetDebugLogging.\npub const LOG_CATEGORIES: [&str; {}] = {names:?};\n", names.len());
+    std::fs::write(Path::new(&out_dir).join("log_categories.rs"), log_categories).expect("write OUT_DIR");
+    let mut tables: Vec<_> = std::fs::read_dir(TABLES)
+        .expect("read modelDescription/")
+        .map(|e| e.expect("list modelDescription/").path())
+        .filter(|p| p.extension().is_some_and(|x| x == "xml"))
+        .collect();
+    tables.sort();
+    for path in &tables {
+        let path = path.to_str().expect("UTF-8 table path");
         println!("cargo:rerun-if-changed={path}");
+        let prefix = format!("{}_", Path::new(path).file_stem().and_then(|s| s.to_str()).expect("table name"));
         let source = std::fs::read_to_string(path).unwrap_or_else(|e| panic!("read {path}: {e}"));
         let table: Table = quick_xml::de::from_str(&source).unwrap_or_else(|e| panic!("parse {path}: {e}"));
         let guid = guid_of(&source);
@@ -190,8 +197,8 @@ fn main() {
         let out = Path::new(&out_dir);
         let write = |name: &str, text: &[u8]| std::fs::write(out.join(format!("{prefix}{name}")), text).expect("write OUT_DIR");
         write("modelDescription.xml", &model_description(&table, &variables, &guid, path).expect("write modelDescription.xml"));
-        write("variables.rs", variables_rs(&variables, &guid, &table.model_name, prefix).as_bytes());
-        write("parameter_defaults.rs", defaults_rs(&variables).as_bytes());
+        write("variables.rs", variables_rs(&variables, &guid, &table.model_name, &prefix).as_bytes());
+        write("contract.rs", contract_rs(&variables, &table).as_bytes());
     }
 }
 
@@ -245,9 +252,7 @@ fn check(variables: &[Resolved]) {
 /// (value reference => field) per owner, from which `dispatch!` (src/fmi/description.rs) writes the
 /// match arms of the getters and setters, and `DESCRIPTION`, all of it as one value.
 fn variables_rs(variables: &[Resolved], guid: &str, model_name: &str, prefix: &str) -> String {
-    let names: Vec<&str> = LOG_CATEGORIES.iter().map(|(n, _)| *n).collect();
     let mut s = format!("/// Fingerprint of the variable table, also in modelDescription.xml.\npub const GUID: &str = {guid:?};\n");
-    s += &format!("/// Log categories accepted by fmi2SetDebugLogging.\npub const LOG_CATEGORIES: [&str; {}] = {names:?};\n", names.len());
     s += &format!("/// Every variable, indexed by value reference.\npub static VARIABLES: [Variable; {}] = [\n", variables.len());
     for v in variables {
         let (a, causality) = (v.a, capitalize(&v.a.causality));
@@ -277,8 +282,9 @@ fn variables_rs(variables: &[Resolved], guid: &str, model_name: &str, prefix: &s
     s
 }
 
-/// `Default` for `Parameters` and `Inputs` from the start values, and the range checks of `Parameters`.
-fn defaults_rs(variables: &[Resolved]) -> String {
+/// `Default` for `Parameters` and `Inputs` from the start values, the range checks of `Parameters`, the
+/// finiteness check of the Real outputs and, where the table interpolates inputs, the input derivatives by name.
+fn contract_rs(variables: &[Resolved], table: &Table) -> String {
     let literal = |kind: &str, text: &str| match kind {
         "Real" => format!("{:?}_f64", text.parse::<f64>().expect("Real number")),
         "Integer" => format!("{}_i32", text.parse::<i32>().expect("Integer number")),
@@ -307,7 +313,24 @@ fn defaults_rs(variables: &[Resolved]) -> String {
             _ => format!("        check_integer({name:?}, self.{name}, {min}, {max})?;\n"),
         };
     }
-    s + "        Ok(())\n    }\n}\n"
+    s += "        Ok(())\n    }\n}\n";
+    s += "impl Outputs {\n    /// The first Real output that is not finite, by name: a step that gives one has failed.\n";
+    s += "    pub fn first_non_finite(&self) -> Option<(&'static str, f64)> {\n        let reals = [\n";
+    for v in variables.iter().filter(|v| v.owner() == "outputs" && v.kind == "Real") {
+        s += &format!("            ({:?}, self.{}),\n", v.a.name, v.a.name);
+    }
+    s += "        ];\n        // One sum clears them all (x · 0 is NaN exactly for an infinite or NaN x) before any is named.\n";
+    s += "        if reals.iter().map(|(_, x)| x * 0.0).sum::<f64>() == 0.0 {\n            return None;\n        }\n";
+    s += "        reals.into_iter().find(|(_, x)| !x.is_finite())\n    }\n}\n";
+    if table.can_interpolate_inputs == "true" {
+        s += "impl InputDerivatives {\n    /// The derivatives of the input called `name`, if it is one.\n";
+        s += "    pub fn of_mut(&mut self, name: &str) -> Option<&mut [f64; 2]> {\n        match name {\n";
+        for v in variables.iter().filter(|v| v.owner() == "inputs" && v.kind == "Real") {
+            s += &format!("            {:?} => Some(&mut self.{}),\n", v.a.name, v.a.name);
+        }
+        s += "            _ => None,\n        }\n    }\n}\n";
+    }
+    s
 }
 
 /// The attributes of `pairs` that have a value.

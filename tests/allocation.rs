@@ -3,8 +3,8 @@
 //! step loop, events included), through `Simulation::step` and through the exported fmi2DoStep.
 
 use crate::fmu_host::{vr, Host};
+use pistonslap::fmus::piston_slap::simulation::Simulation;
 use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters, Roller};
-use pistonslap::simulation::Simulation;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 

@@ -5,7 +5,7 @@
 //! and touch no invalid memory.
 
 use crate::fmu_host::vr;
-use pistonslap::fmi::description::GUID;
+use pistonslap::fmus::piston_slap::GUID;
 use std::path::PathBuf;
 use std::process::{Command, Output};
 use std::sync::OnceLock;

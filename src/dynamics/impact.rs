@@ -1,4 +1,4 @@
-//! The generalized Newton impact law (A&K eqs 4–11, generalized per DESIGN.md §6.4) and its
+//! The generalized Newton impact law (A&K eqs 4–11, generalized per ARCHITECTURE.md §6.4) and its
 //! energy balance (eqs 8–9).
 
 use super::contact::{members, solve_lcp, Frame, Set};

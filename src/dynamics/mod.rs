@@ -11,7 +11,7 @@
 //!   `ḧ` at its ends; of `q` for the multipliers) and confirmed on the RK4 map
 //!   ([`EventLocator`]; the paper's step halving is kept for comparison);
 //! - at an event, the closed set (gaps within `ε_h`) is resolved together: the generalized Newton
-//!   impact as a complementarity problem (DESIGN §6.4; exactly eq 11 for one constraint), then
+//!   impact as a complementarity problem (ARCHITECTURE.md §6.4; exactly eq 11 for one constraint), then
 //!   persistent contact for the constraints at rest as the sliding complementarity problem over
 //!   all of them decides, a tie (zero force and zero gap acceleration) by the same problem a moment
 //!   later along the motion (`settle.rs`); the Zeno guard ([`ZENO_APEX_FACTOR`]) turns an

@@ -1,28 +1,25 @@
 //! The exported C symbols of `fmi_headers/fmi2Functions.h`: the common and Co-Simulation functions,
-//! each a call of its generic body in `functions.rs`. One binary serves both FMUs of the crate: a copy the
-//! packer stamped ([`identity`]) makes instances of its own model only, refusing any other GUID; an unstamped
-//! library makes an instance for the model whose GUID fmi2Instantiate gets (EngineCycle's, else PistonSlap's
-//! [`ModelVariant`], which refuses a wrong GUID). Every later call goes to the model whose tag the instance
-//! carries (PistonSlap's when none matches: its body then refuses the pointer).
+//! each a call of its generic body in `functions.rs` for one FMU of the registry (`crate::fmus::registry!`).
+//! One binary serves every FMU of the crate: a copy the packer stamped ([`identity`]) makes instances of its
+//! own FMU only, refusing any other GUID; an unstamped library makes an instance for the FMU whose GUID
+//! fmi2Instantiate gets (`registry::by_identity!`). Every later call goes to the FMU whose tag the instance
+//! carries (`registry::by_tag!`).
 #![allow(unsafe_code, non_snake_case, clippy::missing_safety_doc)]
 
 use super::functions;
-use super::identity::{self, Identity};
-use super::instance::Model;
+use super::identity;
+use super::registry::{by_identity, by_tag};
 use super::types::*;
-use crate::models::EngineCycle;
-use crate::simulation::ModelVariant;
+use crate::fmus::registry;
 use std::ffi::{c_char, c_int};
 
-/// `functions::$f::<M>($args)` for the model M that made instance `$c`; expands inside the caller's
+/// `functions::$f::<M>($args)` for the FMU M that made instance `$c`; expands inside the caller's
 /// `unsafe` block.
 macro_rules! by_model {
-    ($c:expr, $f:ident($($arg:expr),*)) => {
-        match functions::instance_tag($c) {
-            Some(tag) if tag == <EngineCycle as Model>::INSTANCE_TAG => functions::$f::<EngineCycle>($($arg),*),
-            _ => functions::$f::<ModelVariant>($($arg),*),
-        }
-    };
+    ($c:expr, $f:ident($($arg:expr),*)) => {{
+        let tag = functions::instance_tag($c);
+        registry!(by_tag!(tag, M => functions::$f::<M>($($arg),*)))
+    }};
 }
 
 #[no_mangle]
@@ -53,16 +50,11 @@ pub unsafe extern "C" fn fmi2Instantiate(
 ) -> fmi2Component {
     // SAFETY: the host keeps the FMI 2.0 calling contract, which is each body's contract.
     unsafe {
-        let engine_cycle = match identity::stamped() {
-            Identity::EngineCycle => true,
-            Identity::PistonSlap => false,
-            Identity::Both => functions::has_guid::<EngineCycle>(guid),
-        };
-        if engine_cycle {
-            functions::instantiate::<EngineCycle>(name, fmu_type, guid, resource_location, functions, logging_on)
-        } else {
-            functions::instantiate::<ModelVariant>(name, fmu_type, guid, resource_location, functions, logging_on)
-        }
+        let stamp = identity::stamped();
+        let stamp = stamp.as_deref();
+        registry!(
+            by_identity!(stamp, guid, M => functions::instantiate::<M>(name, fmu_type, guid, resource_location, functions, logging_on))
+        )
     }
 }
 

@@ -73,7 +73,7 @@ impl<E: Model> Default for Core<E> {
 impl<E: Model> Core<E> {
     /// The serialized FMU state.
     pub fn serialize(&self) -> Outcome<Vec<u8>> {
-        state_bytes::encode(self, E::DESCRIPTION.guid).map_err(Refusal::error)
+        state_bytes::encode(self, &state_bytes::Envelope::of::<E>()).map_err(Refusal::error)
     }
 
     /// What every state this FMU makes satisfies, so what a restored one must: finite times and
@@ -394,8 +394,8 @@ impl<E: Model> Instance<E> {
     }
 
     pub fn deserialize(&self, bytes: &[u8]) -> Outcome<Core<E>> {
-        let core: Core<E> =
-            state_bytes::decode(bytes, E::DESCRIPTION.guid).map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
+        let core: Core<E> = state_bytes::decode(bytes, &state_bytes::Envelope::of::<E>())
+            .map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
         core.check().map_err(|e| Refusal::error(format!("refused state bytes: {e}")))?;
         Ok(core)
     }

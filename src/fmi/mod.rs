@@ -5,8 +5,10 @@
 //!   machine's check, `catch_unwind`, logging out;
 //! - `state_machine`: the states and the one table of the states each function is allowed in;
 //! - `reentry`: refuses a call into an instance from inside its own call (its logger calling back);
+//! - `registry`: dispatch over the FMUs of `crate::fmus::registry!`, naming none;
 //! - `identity`: which FMU a copy of the binary belongs to (stamped by the packer);
-//! - `model`: what the layer needs of a model, and its two FMUs: PistonSlap and EngineCycle;
+//! - `model`: what the layer needs of a model (each FMU's room implements it);
+//! - `package`: what the packer needs of an FMU;
 //! - `instance`: what each function does, in safe code;
 //! - `resources`: the FMU's resources directory and the lookup of bare file names in it;
 //! - `description`: the variable table generated from `modelDescription/`;
@@ -19,15 +21,21 @@ pub mod identity;
 mod instance;
 mod logger;
 mod model;
+mod package;
 mod pointers;
 mod reentry;
+mod registry;
 mod resources;
 mod snapshot;
 mod state_bytes;
 mod state_machine;
 pub mod types;
 
-pub use logger::{fixed_argument_logger, FixedArgumentLogger};
+pub use description::{Causality, Description, Kind, Variable};
+pub use logger::{fixed_argument_logger, FixedArgumentLogger, Logger};
+pub use model::Model;
+pub use package::Package;
+pub use resources::resolve as resolve_resource;
 
 #[cfg(test)]
 mod tests;

@@ -2,7 +2,7 @@
 //!
 //! | bytes | content |
 //! |---|---|
-//! | 8 | magic `PSLAPFMU` |
+//! | 8 | magic: the FMU's state tag (`Model::STATE_TAG`, e.g. `PSLAPSTA`, `ENGCYSTA`) |
 //! | 4 | format version (u32 LE) |
 //! | 2 + n | GUID length (u16 LE) and GUID (UTF-8) of the model description that wrote it |
 //! | 8 | payload length (u64 LE) |
@@ -14,13 +14,26 @@
 
 use serde::{de::DeserializeOwned, Serialize};
 
-const MAGIC: &[u8; 8] = b"PSLAPFMU";
-/// Bump when the layout of the saved state changes.
-pub const FORMAT_VERSION: u32 = 3;
+/// Bump when the layout of the saved state changes (4: the magic is the FMU's own state tag).
+pub const FORMAT_VERSION: u32 = 4;
+
+/// Whose state the bytes hold: the FMU's magic and name, and the GUID of its model description.
+pub struct Envelope<'a> {
+    pub magic: [u8; 8],
+    pub name: &'a str,
+    pub guid: &'a str,
+}
+
+impl Envelope<'static> {
+    /// The envelope of model `E`'s states.
+    pub fn of<E: super::Model>() -> Self {
+        Self { magic: E::STATE_TAG.to_le_bytes(), name: E::NAME, guid: E::DESCRIPTION.guid }
+    }
+}
 
 /// The state in its envelope, the payload encoded once, straight after the header.
-pub fn encode<T: Serialize>(state: &T, guid: &str) -> Result<Vec<u8>, String> {
-    let mut out = header(guid)?;
+pub fn encode<T: Serialize>(state: &T, to: &Envelope) -> Result<Vec<u8>, String> {
+    let mut out = header(to)?;
     let length_at = out.len();
     out.extend_from_slice(&0u64.to_le_bytes());
     let mut out = postcard::to_extend(state, out).map_err(|e| format!("cannot encode the state: {e}"))?;
@@ -32,8 +45,8 @@ pub fn encode<T: Serialize>(state: &T, guid: &str) -> Result<Vec<u8>, String> {
 /// The state in `bytes`, whose payload must be exactly the encoding of the state it decodes to:
 /// postcard reads lengths and integers written in more bytes than needed, and would otherwise
 /// accept a state that does not re-serialize to its own bytes.
-pub fn decode<T: Serialize + DeserializeOwned>(bytes: &[u8], guid: &str) -> Result<T, String> {
-    let payload = open(bytes, guid)?;
+pub fn decode<T: Serialize + DeserializeOwned>(bytes: &[u8], to: &Envelope) -> Result<T, String> {
+    let payload = open(bytes, to)?;
     let (state, rest) = postcard::take_from_bytes(payload).map_err(|e| format!("cannot decode the state: {e}"))?;
     if !rest.is_empty() {
         return Err(format!("cannot decode the state: {} trailing bytes", rest.len()));
@@ -45,10 +58,11 @@ pub fn decode<T: Serialize + DeserializeOwned>(bytes: &[u8], guid: &str) -> Resu
 }
 
 /// Magic, format version and GUID.
-fn header(guid: &str) -> Result<Vec<u8>, String> {
+fn header(to: &Envelope) -> Result<Vec<u8>, String> {
+    let guid = to.guid;
     let guid_len = u16::try_from(guid.len()).map_err(|_| "GUID too long".to_string())?;
     let mut out = Vec::new();
-    out.extend_from_slice(MAGIC);
+    out.extend_from_slice(&to.magic);
     out.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
     out.extend_from_slice(&guid_len.to_le_bytes());
     out.extend_from_slice(guid.as_bytes());
@@ -64,19 +78,20 @@ fn sealed(mut body: Vec<u8>) -> Vec<u8> {
 
 /// Wraps a payload in the envelope.
 #[cfg(test)]
-pub fn seal(payload: &[u8], guid: &str) -> Result<Vec<u8>, String> {
-    let mut out = header(guid)?;
+pub fn seal(payload: &[u8], to: &Envelope) -> Result<Vec<u8>, String> {
+    let mut out = header(to)?;
     out.extend_from_slice(&(payload.len() as u64).to_le_bytes());
     out.extend_from_slice(payload);
     Ok(sealed(out))
 }
 
 /// Checks the envelope and returns its payload.
-pub fn open<'a>(bytes: &'a [u8], guid: &str) -> Result<&'a [u8], String> {
+pub fn open<'a>(bytes: &'a [u8], to: &Envelope) -> Result<&'a [u8], String> {
     let mut r = Reader(bytes);
-    if r.take(MAGIC.len())? != MAGIC {
-        return Err("not a PistonSlap FMU state (wrong magic)".into());
+    if r.take(to.magic.len())? != to.magic {
+        return Err(format!("not a state of {} (wrong magic)", to.name));
     }
+    let guid = to.guid;
     let version = u32::from_le_bytes(r.array()?);
     if version != FORMAT_VERSION {
         return Err(format!("state format version {version}, this FMU reads {FORMAT_VERSION}"));
@@ -143,10 +158,10 @@ fn crc32(bytes: &[u8]) -> u32 {
 mod tests {
     use super::*;
 
-    const GUID: &str = "{test}";
+    const TO: Envelope = Envelope { magic: *b"TESTSTAT", name: "Test", guid: "{test}" };
 
     fn sample() -> Vec<u8> {
-        encode(&(vec![0.1f64, -2.5, 1e-9], "log.csv".to_string(), Some(3u8)), GUID).unwrap()
+        encode(&(vec![0.1f64, -2.5, 1e-9], "log.csv".to_string(), Some(3u8)), &TO).unwrap()
     }
 
     type Sample = (Vec<f64>, String, Option<u8>);
@@ -158,7 +173,7 @@ mod tests {
 
     #[test]
     fn round_trip() {
-        let back: Sample = decode(&sample(), GUID).unwrap();
+        let back: Sample = decode(&sample(), &TO).unwrap();
         assert_eq!(back, (vec![0.1, -2.5, 1e-9], "log.csv".to_string(), Some(3)));
     }
 
@@ -166,15 +181,17 @@ mod tests {
     fn every_truncation_every_bit_flip_and_a_foreign_guid_are_refused() {
         let bytes = sample();
         for n in 0..bytes.len() {
-            assert!(decode::<Sample>(&bytes[..n], GUID).is_err(), "prefix {n}");
+            assert!(decode::<Sample>(&bytes[..n], &TO).is_err(), "prefix {n}");
         }
         for i in 0..bytes.len() * 8 {
             let mut flipped = bytes.clone();
             flipped[i / 8] ^= 1 << (i % 8);
-            assert!(decode::<Sample>(&flipped, GUID).is_err(), "bit {i}");
+            assert!(decode::<Sample>(&flipped, &TO).is_err(), "bit {i}");
         }
-        let err = decode::<Sample>(&bytes, "{other}").unwrap_err();
+        let err = decode::<Sample>(&bytes, &Envelope { guid: "{other}", ..TO }).unwrap_err();
         assert!(err.contains("GUID"), "{err}");
+        let err = decode::<Sample>(&bytes, &Envelope { magic: *b"OTHERFMU", name: "Other", ..TO }).unwrap_err();
+        assert!(err.contains("not a state of Other"), "{err}");
     }
 
     #[test]
@@ -191,9 +208,9 @@ mod tests {
                 })
                 .collect();
             if len % 2 == 0 && len >= 8 {
-                noise[..8].copy_from_slice(MAGIC);
+                noise[..8].copy_from_slice(&TO.magic);
             }
-            assert!(decode::<Sample>(&noise, GUID).is_err());
+            assert!(decode::<Sample>(&noise, &TO).is_err());
         }
     }
 }
@@ -201,9 +218,9 @@ mod tests {
 #[cfg(test)]
 mod simulation_tests {
     use super::*;
+    use crate::fmus::piston_slap::simulation::test_model::Shuttle;
+    use crate::fmus::piston_slap::simulation::Simulation;
     use crate::models::{Inputs, Parameters};
-    use crate::simulation::test_model::Shuttle;
-    use crate::simulation::Simulation;
 
     #[test]
     fn a_simulation_with_its_event_history_round_trips_exactly() {
@@ -211,8 +228,9 @@ mod simulation_tests {
         // One step over the first two impacts (4 ms and 20 ms): both are in the step's event rows.
         sim.step(&Inputs::default(), 0.025).unwrap();
         assert_eq!(sim.step_events().len(), 2);
-        let bytes = encode(&sim, "{g}").unwrap();
-        let back: Simulation<Shuttle> = decode(&bytes, "{g}").unwrap();
+        let to = Envelope { magic: *b"SHUTTLE!", name: "Shuttle", guid: "{g}" };
+        let bytes = encode(&sim, &to).unwrap();
+        let back: Simulation<Shuttle> = decode(&bytes, &to).unwrap();
         assert_eq!(back, sim);
         let bits = |s: &Simulation<Shuttle>| -> Vec<u64> {
             s.step_events().iter().flat_map(|e| [e.time, e.crank_angle, e.energy_lost].map(f64::to_bits)).collect()

@@ -2,13 +2,14 @@
 //! engine), driven with the test-only shuttle model whose impacts have closed-form times.
 #![allow(unsafe_code)]
 
-use super::description::{self, GUID, VARIABLES};
+use super::description;
 use super::fixed_argument_logger;
 use super::functions;
 use super::instance::Model;
 use super::types::*;
-use crate::simulation::test_model::{Shuttle, SHUTTLE_SPEED};
-use crate::simulation::ModelVariant;
+use crate::fmus::piston_slap::simulation::test_model::{Shuttle, SHUTTLE_SPEED};
+use crate::fmus::piston_slap::simulation::ModelVariant;
+use crate::fmus::piston_slap::{self as slap, GUID, VARIABLES};
 use std::ffi::{c_char, c_int, c_void, CStr, CString};
 use std::marker::PhantomData;
 use std::ptr::{null, null_mut};
@@ -42,7 +43,7 @@ fn callbacks(log: &Log) -> fmi2CallbackFunctions {
 }
 
 fn vr(name: &str) -> u32 {
-    description::value_reference(name).expect(name)
+    slap::value_reference(name).expect(name)
 }
 
 /// A host holding one instance of the FMU with engine model `E`.
@@ -451,5 +452,6 @@ fn strings_status_queries_and_debug_logging() {
 mod fmu_state;
 mod fuzz;
 mod reentry;
+mod registry;
 mod state_machine;
 mod threads;

@@ -1,4 +1,4 @@
-//! The FMU's variable contract (`../shared/DESIGN.md` §4) as plain Rust values, in SI units.
+//! The FMU's variable contract (`ARCHITECTURE.md` §4) as plain Rust values, in SI units.
 //! Field names are the FMI variable names: the value-reference dispatch generated from
 //! `modelDescription/` addresses these fields by name.
 
@@ -6,7 +6,7 @@ use super::error::{check_integer, check_real};
 use super::{InputPolynomial, ModelError};
 use serde::{Deserialize, Serialize};
 
-/// Model parameters; defaults are Awrejcewicz & Kudra section 8 unless DESIGN.md says otherwise.
+/// Model parameters; defaults are Awrejcewicz & Kudra section 8 unless ARCHITECTURE.md says otherwise.
 /// `Default` and the range checks are generated from the start, min and max values of
 /// `modelDescription/variables.xml`, so the FMU's XML and the Rust defaults cannot disagree.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -74,16 +74,6 @@ pub struct InputDerivatives {
 }
 
 impl InputDerivatives {
-    /// The derivatives of the input called `name`, if it is one.
-    pub fn of_mut(&mut self, name: &str) -> Option<&mut [f64; 2]> {
-        match name {
-            "crank_speed" => Some(&mut self.crank_speed),
-            "gas_pressure" => Some(&mut self.gas_pressure),
-            "load_torque" => Some(&mut self.load_torque),
-            _ => None,
-        }
-    }
-
     /// The inputs over a step starting at `t`: `inputs` there, with these derivatives.
     pub fn polynomials(&self, inputs: &Inputs, t: f64) -> [InputPolynomial; 3] {
         let polynomial = |value: f64, [slope, curvature]: [f64; 2]| InputPolynomial { time: t, value, slope, curvature };
@@ -95,7 +85,7 @@ impl InputDerivatives {
     }
 }
 
-/// Outputs (DESIGN.md §4). Impact statistics are filled by the caller from the event record;
+/// Outputs (ARCHITECTURE.md §4). Impact statistics are filled by the caller from the event record;
 /// the kinematic and force outputs by the model.
 #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct Outputs {
@@ -156,61 +146,9 @@ pub struct Outputs {
     pub liner_impulse_total: [f64; 2],
 }
 
-impl Outputs {
-    /// The first Real output that is not finite, by name: a step that gives one has failed.
-    pub fn first_non_finite(&self) -> Option<(&'static str, f64)> {
-        let reals = [
-            ("impact_velocity", self.impact_velocity),
-            ("max_impact_velocity_in_step", self.max_impact_velocity_in_step),
-            ("impact_energy_in_step", self.impact_energy_in_step),
-            ("impact_energy_total", self.impact_energy_total),
-            ("last_impact_crank_angle", self.last_impact_crank_angle),
-            ("piston_lateral", self.piston_lateral),
-            ("piston_lateral_velocity", self.piston_lateral_velocity),
-            ("piston_tilt", self.piston_tilt),
-            ("piston_axial", self.piston_axial),
-            ("crank_angle", self.crank_angle),
-            ("rod_angle", self.rod_angle),
-            ("crank_torque", self.crank_torque),
-            ("engine_torque", self.engine_torque),
-            ("gas_pressure_acting", self.gas_pressure_acting),
-            ("skirt_top_lateral", self.skirt_top_lateral),
-            ("skirt_bottom_lateral", self.skirt_bottom_lateral),
-            ("contact_force_1", self.contact_force_1),
-            ("contact_force_2", self.contact_force_2),
-            ("contact_force_3", self.contact_force_3),
-            ("contact_force_4", self.contact_force_4),
-            ("side_force", self.side_force),
-            ("cycle_impact_energy", self.cycle_impact_energy),
-            ("cycle_max_impact_energy_antithrust", self.cycle_max_impact_energy_antithrust),
-            ("cycle_max_impact_energy_thrust", self.cycle_max_impact_energy_thrust),
-            ("cycle_slap_energy_antithrust", self.cycle_slap_energy_antithrust),
-            ("cycle_slap_energy_thrust", self.cycle_slap_energy_thrust),
-            ("cycle_max_slap_energy_antithrust", self.cycle_max_slap_energy_antithrust),
-            ("cycle_max_slap_energy_thrust", self.cycle_max_slap_energy_thrust),
-            ("crank_speed_actual", self.crank_speed_actual),
-            ("kinetic_energy", self.kinetic_energy),
-            ("friction_force_1", self.friction_force_1),
-            ("friction_force_2", self.friction_force_2),
-            ("friction_force_3", self.friction_force_3),
-            ("friction_force_4", self.friction_force_4),
-            ("friction_power", self.friction_power),
-            ("friction_energy_total", self.friction_energy_total),
-            ("potential_energy", self.potential_energy),
-            ("dissipated_energy_total", self.dissipated_energy_total),
-            ("liner_impulse_thrust_in_step", self.liner_impulse_thrust_in_step),
-            ("liner_impulse_antithrust_in_step", self.liner_impulse_antithrust_in_step),
-        ];
-        // One sum clears them all (x · 0 is NaN exactly for an infinite or NaN x) before any is named.
-        if reals.iter().map(|(_, x)| x * 0.0).sum::<f64>() == 0.0 {
-            return None;
-        }
-        reals.into_iter().find(|(_, x)| !x.is_finite())
-    }
-}
-
-// `impl Default for Parameters`, `impl Default for Inputs` and `Parameters::check_ranges`.
-include!(concat!(env!("OUT_DIR"), "/parameter_defaults.rs"));
+// From modelDescription/piston_slap.xml: `impl Default for Parameters` and `for Inputs`, `Parameters::check_ranges`,
+// `Outputs::first_non_finite` and `InputDerivatives::of_mut`.
+include!(concat!(env!("OUT_DIR"), "/piston_slap_contract.rs"));
 
 impl Parameters {
     /// Refuses what no model can run: a value outside its physical range (negative masses or lengths,

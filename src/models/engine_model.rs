@@ -18,7 +18,7 @@ pub enum EngineEventKind {
     Slip,
 }
 
-/// One row of the impact log (DESIGN.md §4), in SI units.
+/// One row of the impact log (ARCHITECTURE.md §4), in SI units.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct EngineEvent {
     pub time: f64,
@@ -43,7 +43,7 @@ pub struct EngineEvent {
 
 /// A model variant as the FMU drives it: built from parameters, advanced with held inputs.
 pub trait EngineModel: Sized + Clone {
-    /// Builds the model at `start_time` in the initial state of DESIGN.md §4, or refuses the
+    /// Builds the model at `start_time` in the initial state of ARCHITECTURE.md §4, or refuses the
     /// parameters with a message naming the offending one.
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError>;
 
@@ -81,7 +81,7 @@ pub trait EngineModel: Sized + Clone {
     }
 
     /// Reads the state at `t` again from the step already taken, after a point that
-    /// [`Self::serves`] gave beyond `t`: the model is then exactly as it was at `t`.
+    /// [`Self::serve`] gave beyond `t`: the model is then exactly as it was at `t`.
     fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {
         Err(ModelError(format!("no step taken past t = {t} s to read the state from")))
     }

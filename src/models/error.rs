@@ -14,7 +14,9 @@ impl fmt::Display for ModelError {
 
 impl std::error::Error for ModelError {}
 
-pub(crate) fn check_real(name: &str, value: f64, min: Option<f64>, max: Option<f64>, positive: bool, unit: &str) -> Result<(), ModelError> {
+/// `value` of the parameter `name` (in `unit`) finite, within `[min, max]` and, where `positive`, above 0;
+/// otherwise the refusal naming it.
+pub fn check_real(name: &str, value: f64, min: Option<f64>, max: Option<f64>, positive: bool, unit: &str) -> Result<(), ModelError> {
     let refuse = |range: String| {
         Err(ModelError(format!("{name} = {value}{}{unit} is out of range: {range}", if unit.is_empty() { "" } else { " " })))
     };

@@ -1,10 +1,10 @@
 //! A host of the FMU's exported C functions in the same process, written in Rust so that a host's
 //! own cost stays out of what is measured: shared by `benches/fmu.rs` and the allocation test.
 
-use pistonslap::fmi::description::{value_reference, GUID};
 use pistonslap::fmi::exports::*;
 use pistonslap::fmi::fixed_argument_logger;
 use pistonslap::fmi::types::{fmi2CallbackFunctions, fmi2Component, Status, FMI2_CO_SIMULATION, FMI2_FALSE};
+use pistonslap::fmus::piston_slap::{value_reference, GUID};
 use std::ffi::{c_char, c_int, c_void, CString};
 
 /// Receives `logger(env, name, status, category, "%s", message)` and drops it.

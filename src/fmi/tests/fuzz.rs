@@ -6,7 +6,7 @@
 #![allow(unsafe_code)]
 
 use super::*;
-use crate::fmi::state_bytes;
+use crate::fmi::state_bytes::{self, Envelope};
 
 /// xorshift64*: small, fast and the same on every platform.
 struct Rng(u64);
@@ -207,12 +207,12 @@ fn fuzz_deserialize(seed: u64, cases: usize) -> (usize, usize) {
             }
         } else {
             // The payload, resealed with a valid envelope: what postcard and the model must withstand.
-            let mut payload = state_bytes::open(base, GUID).unwrap().to_vec();
-            let other = state_bytes::open(other, GUID).unwrap();
+            let mut payload = state_bytes::open(base, &Envelope::of::<ModelVariant>()).unwrap().to_vec();
+            let other = state_bytes::open(other, &Envelope::of::<ModelVariant>()).unwrap();
             for _ in 0..mutations {
                 mutate(&mut rng, &mut payload, other);
             }
-            let bytes = state_bytes::seal(&payload, GUID).unwrap();
+            let bytes = state_bytes::seal(&payload, &Envelope::of::<ModelVariant>()).unwrap();
             accepted += usize::from(deserialize_checked(&host, &victim, &bytes, &label));
         }
         if case % 256 == 0 {
@@ -292,7 +292,7 @@ fn set_checked(rng: &mut Rng, host: &Host<ModelVariant>, read_back: bool, case: 
                 if vrs[k + 1..].contains(&vr) {
                     continue;
                 }
-                let v = description::variable(vr).expect("accepted references exist");
+                let v = crate::fmus::piston_slap::variable(vr).expect("accepted references exist");
                 let now = match v.kind {
                     description::Kind::Real => host.real(v.name).to_bits().to_string(),
                     description::Kind::Integer => host.integer(v.name).to_string(),

@@ -1,6 +1,6 @@
 //! Exact kinematics of the rigid (zero-clearance) slider crank with a wrist-pin offset.
 //!
-//! Angles as in A&K eq 25 and DESIGN.md §3: each link's direction is `(−sin φ, cos φ)`, so
+//! Angles as in A&K eq 25 and ARCHITECTURE.md §3: each link's direction is `(−sin φ, cos φ)`, so
 //! `x_O3 = −l1 sin φ1 − l2 sin φ2`, `y_O3 = l1 cos φ1 + l2 cos φ2` (A&K eq 57 times l1) and φ1 = 0 is
 //! top dead centre. With the piston centred and untilted the pin runs on the line `x_O3 = a`
 //! (`a` = pin offset), hence `sin φ2 = −(a + l1 sin φ1)/l2`.

@@ -29,7 +29,7 @@ use crate::models::Parameters;
 use nalgebra::{Matrix3, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 
-/// Geometry, inertia and damping of the crank train (DESIGN.md §4 parameters), SI.
+/// Geometry, inertia and damping of the crank train (ARCHITECTURE.md §4 parameters), SI.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(from = "Bodies", into = "Bodies")]
 pub struct Linkage {

@@ -34,7 +34,7 @@ pub struct CrankTrain {
     pub(super) drive: Drive,
     pub(super) geometry: SliderCrank,
     start: StartOffset,
-    /// The initial state is rebuilt with the first step's crank speed (DESIGN.md §4: nominal kinematics).
+    /// The initial state is rebuilt with the first step's crank speed (ARCHITECTURE.md §4: nominal kinematics).
     started: bool,
     options: StepperOptions,
     /// Work the prescribed drive has done through impulses since the start, J (`EnergyBalance`).

@@ -59,9 +59,10 @@ pub struct EngineCycleParameters {
     pub crank_angle_start: f64,
 }
 
-// The name the generated defaults and range checks (from modelDescription/variables_engine_cycle.xml) address.
+// The names the generated defaults, range checks and output check (from modelDescription/engine_cycle.xml) address.
 type Parameters = EngineCycleParameters;
-include!(concat!(env!("OUT_DIR"), "/engine_cycle_parameter_defaults.rs"));
+type Outputs = super::EngineCycleOutputs;
+include!(concat!(env!("OUT_DIR"), "/engine_cycle_contract.rs"));
 
 /// rad/s: below this the correlations, fitted on running engines, are not applied.
 pub const SLOWEST_HEAT_TRANSFER_SPEED: f64 = 10.0 * PI;

@@ -9,7 +9,7 @@
 //! linearized in ψ (sin φ = ξ sin τ, cos φ = Λ) it is eq 2.13, a ψ'' + b ψ' + c(τ) ψ = f(τ), with
 //!   a = 1 + α/4 + β,  b = λ,  c = (1 + α/2) ξ cos(τ + φ),
 //!   f = (1 + α/4 + β) φ'' + (1 + α/2) ξ sin(τ + φ) + λ (1 + φ'),  φ'' = (ξ³ − ξ) sin τ / Λ³.
-//! The thesis prints (1 + α/4 − β) φ'' (DESIGN.md §6.1): it took the rod's angular velocity as
+//! The thesis prints (1 + α/4 − β) φ'' (ARCHITECTURE.md §6.1): it took the rod's angular velocity as
 //! φ̇ + ψ̇, which flips the sign of J_r φ̈. Both forms are offered; the unit tests below check each
 //! against a finite-difference evaluation of the exact Lagrangian it comes from.
 
@@ -283,7 +283,7 @@ mod tests {
         });
     }
 
-    /// The alternative form of DESIGN.md §6.1 is the same function as the corrected one.
+    /// The alternative form of ARCHITECTURE.md §6.1 is the same function as the corrected one.
     #[test]
     fn corrected_forcing_matches_design_form() {
         assert_forcing_is(thesis(Forcing::Corrected), 0.07, |xi, al, be, lam, t, big| {

@@ -9,11 +9,11 @@
 //! is a normal speed of 0.005 l Λ Ω. The thesis's threshold serves roller_forcing = 1; the corrected
 //! model uses one proportional to the clearance (`SLIDING_THRESHOLD_PER_CLEARANCE`).
 //!
-//! The FMU's dimensional parameters map as DESIGN.md §4 says: ξ = r/l, α = m/M, β = J_r/(M l²),
+//! The FMU's dimensional parameters map as ARCHITECTURE.md §4 says: ξ = r/l, α = m/M, β = J_r/(M l²),
 //! ρ = Δ/l with Δ = (bore − piston_diameter)/2, λ = c₂/(M l² Ω) with Ω the `crank_speed` input. As in
 //! the thesis there is no gravity, no gas force and no piston-pin damping, and the crank speed is
 //! prescribed (crank_mode = 1 only). Lateral positions are linearized like the model: x = −l Λ ψ, so
-//! the walls are at x = ∓Δ exactly. The sign is variant 1's (DESIGN.md §4): with the crank pin at
+//! the walls are at x = ∓Δ exactly. The sign is variant 1's (ARCHITECTURE.md §4): with the crank pin at
 //! x = −r sin θ, the pin is at x = −r sin θ − l sin(ψ − φ) ≈ −l Λ ψ, so the thesis's upper wall
 //! (ψ = ψ_max) is the x = −D/2 wall of corners 1 and 2, and the lower wall that of corners 3 and 4.
 

@@ -225,7 +225,11 @@ fn cycle_metrics_match_the_closed_form() {
 
 #[test]
 fn engine_torque_is_the_crank_torque_with_the_engine_sign() {
-    let mut sim = crate::simulation::Simulation::<crate::simulation::ModelVariant>::new(&Parameters::default(), 0.0).unwrap();
+    let mut sim = crate::fmus::piston_slap::simulation::Simulation::<crate::fmus::piston_slap::simulation::ModelVariant>::new(
+        &Parameters::default(),
+        0.0,
+    )
+    .unwrap();
     for k in 1..=40 {
         sim.step(&Inputs::default(), k as f64 * 1e-3).unwrap();
         let out = sim.outputs();

@@ -1,0 +1,12 @@
+//! EngineCycle.fmu's room: the engine cycle model (`crate::models::engine_cycle`) bound to the FMI layer, its
+//! variable table and its package.
+
+mod binding;
+mod package;
+mod variables;
+
+pub use package::PACKAGE;
+pub use variables::{DESCRIPTION, GUID, MODEL_DESCRIPTION_XML, VARIABLES};
+
+/// The type the FMI layer runs this FMU as.
+pub type Fmu = crate::models::EngineCycle;

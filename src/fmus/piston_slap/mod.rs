@@ -1,0 +1,14 @@
+//! PistonSlap.fmu's room: the run façade over the engine models ([`Simulation`]), its binding to the FMI
+//! layer, its variable table and its package.
+
+mod binding;
+mod package;
+pub mod simulation;
+mod variables;
+
+pub use package::PACKAGE;
+pub use simulation::{ModelVariant, Simulation};
+pub use variables::{value_reference, variable, DESCRIPTION, GUID, MODEL_DESCRIPTION_XML, VARIABLES};
+
+/// The type the FMI layer runs this FMU as.
+pub type Fmu = ModelVariant;
