@@ -3,26 +3,65 @@
 use super::options::{ACCUMULATION_WINDOW, PENETRATION_FACTOR};
 use std::fmt;
 
-/// What the core cannot resolve, as a value. Constraint sets are bitmasks (bit i = constraint i).
+/// What the core cannot resolve, as a value. Constraint sets are bitmasks (bit i = constraint i);
+/// `time` is the core's independent variable where it happened (s, or what `map_time` made it).
 #[derive(Clone, Debug, PartialEq)]
 pub enum DynamicsError {
     /// A state, force or multiplier became NaN or infinite.
-    NonFinite { time: f64 },
+    NonFinite {
+        /// Where it happened.
+        time: f64,
+    },
     /// The inertia matrix is not positive definite.
-    SingularMass { time: f64 },
+    SingularMass {
+        /// Where it happened.
+        time: f64,
+    },
     /// The constraints held closed have dependent gradients (more than the motion allows).
-    DependentContacts { time: f64, constraints: u32 },
+    DependentContacts {
+        /// Where it happened.
+        time: f64,
+        /// The constraints held.
+        constraints: u32,
+    },
     /// The paper's "multiple impact exception": no impulses satisfy the generalized Newton law.
-    MultipleImpact { time: f64, constraints: u32 },
+    MultipleImpact {
+        /// Where it happened.
+        time: f64,
+        /// The closed constraints of the impact.
+        constraints: u32,
+    },
     /// No non-negative contact forces keep the closed constraints admissible.
-    ContactUnresolved { time: f64, constraints: u32 },
+    ContactUnresolved {
+        /// Where it happened.
+        time: f64,
+        /// The candidates of persistent contact.
+        constraints: u32,
+    },
     /// A free constraint is violated by more than `PENETRATION_FACTOR · ε_h` at the start of a step.
-    Penetration { time: f64, constraint: usize, gap: f64 },
+    Penetration {
+        /// Where it happened.
+        time: f64,
+        /// The violated constraint's index.
+        constraint: usize,
+        /// Its gap, m (negative).
+        gap: f64,
+    },
     /// More events than the budget while the time advanced by less than `ACCUMULATION_WINDOW`
     /// nominal steps (an unresolved accumulation).
-    EventBudget { time: f64, events: usize },
+    EventBudget {
+        /// Where the budget ran out.
+        time: f64,
+        /// The budget.
+        events: usize,
+    },
     /// A refused argument: bad options, or an end time before the current time.
-    InvalidArgument { time: f64, reason: &'static str },
+    InvalidArgument {
+        /// The stepper's time when refused.
+        time: f64,
+        /// Why, in words.
+        reason: &'static str,
+    },
 }
 
 /// Prints a constraint bitmask as `{0, 2}`.

@@ -4,7 +4,7 @@
 //!
 //! One `Stepper::advance` (A&K Fig. 1):
 //! - RK4 steps of the nominal size with the active (sliding) set held: `q̈` and `λ` from the
-//!   saddle-point system of eqs 17–20 (`contact.rs`); after each step in contact, `q` and `q̇`
+//!   saddle-point system of eqs 17–20 (`complementarity.rs`); after each step in contact, `q` and `q̇`
 //!   are projected back onto `h_A = 0`, `ḣ_A = 0` (drift control);
 //! - events: a free gap falling below `−ε_h`, an active multiplier below `−ε_λ`, located by
 //!   Illinois on a quintic Hermite extension of the step (of the gaps themselves, from `h`, `ḣ`,
@@ -14,23 +14,35 @@
 //!   impact as a complementarity problem (ARCHITECTURE.md §6.4; exactly eq 11 for one constraint), then
 //!   persistent contact for the constraints at rest as the sliding complementarity problem over
 //!   all of them decides, a tie (zero force and zero gap acceleration) by the same problem a moment
-//!   later along the motion (`settle.rs`); the Zeno guard ([`ZENO_APEX_FACTOR`]) turns an
-//!   accumulation of impacts into sliding, and an event budget per thousandth of a nominal step
-//!   turns anything else into an error;
+//!   later along the motion (`contact_laws.rs`, applied by `settle.rs`); the Zeno guard
+//!   ([`ZENO_APEX_FACTOR`]) turns an accumulation of impacts into sliding, and an event budget per
+//!   thousandth of a nominal step turns anything else into an error;
 //! - where the system did not change since the last `advance`, its last step may run past the
 //!   end: the end's state comes from the step's quintic extension, and the step goes on next time.
 //!
 //! Constraint sets are bitmasks, all matrices are fixed-size: no heap use but the event record.
+//!
+//! The files, from the loop down: `stepper.rs` (the loop, the state it keeps, the accessors),
+//! `search.rs` (the event search of one step) over `root_finding.rs` (scan, Illinois, bisection),
+//! `settle.rs` (an event resolved, drift removed) over `contact_laws.rs` (the impact law and the
+//! laws of persistent contact), which reduce to `complementarity.rs` (constraint sets, the held
+//! set, `W`, the held acceleration, the LCP) and `coulomb.rs` (the friction problems by
+//! enumeration); `rk4.rs` (the RK4 step of a sample, its error estimate, its quintic extension)
+//! over `sample.rs` (the state the loop carries); `inertia.rs` (`M⁻¹`); `system.rs`,
+//! `options.rs`, `event.rs`, `error.rs` (what the core takes, is told, records and refuses);
+//! `testbeds.rs` (closed-form systems for tests and benches).
 
-mod contact;
+#![warn(missing_docs)]
+
+mod complementarity;
+mod contact_laws;
+mod coulomb;
 mod error;
-mod events;
-mod friction;
-mod impact;
+mod event;
 mod inertia;
 mod options;
-mod record;
 mod rk4;
+mod root_finding;
 mod sample;
 mod search;
 mod settle;
@@ -41,9 +53,9 @@ mod test_random;
 pub mod testbeds;
 
 pub use error::DynamicsError;
-pub use events::EventLocator;
+pub use event::{Event, EventKind, StepCounts};
 pub use options::{StepperOptions, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
-pub use record::{Event, EventKind, StepCounts};
 pub use settle::ZENO_APEX_FACTOR;
+pub use stepper::EventLocator;
 pub use stepper::Stepper;
 pub use system::{Evaluation, System, Tangents};

@@ -1,5 +1,10 @@
-//! The classical fourth-order Runge–Kutta step for `q̈ = a(t, q, q̇)` and its continuous extension.
+//! The classical fourth-order Runge–Kutta step for `q̈ = a(t, q, q̇)`, its continuous extension,
+//! and the step of a sample with its contacts held and that step's local error estimate.
 
+use super::complementarity::{Contacts, Frame, Set};
+use super::sample::{acceleration, dissipated, free_motion, motion, sample_of, Sample};
+use super::system::friction_of;
+use super::{DynamicsError, Evaluation, System};
 use nalgebra::SVector;
 
 /// One RK4 step of size `dt` from `(t0, q0, v0)`. `a0 = a(t0, q0, v0)` is passed in because the
@@ -40,7 +45,7 @@ pub(crate) struct Step<const N: usize> {
 ///
 /// Its interpolation error is O(dt⁶), below the O(dt⁵) local error of the RK4 step itself, so
 /// event location on it is as accurate as the step; the stepper still confirms every located
-/// event on the RK4 map (see `events`).
+/// event on the RK4 map (see `search.rs`).
 #[derive(Clone, Debug)]
 pub(crate) struct Hermite5<const N: usize> {
     pub t0: f64,
@@ -97,6 +102,94 @@ impl<const N: usize> Hermite5<N> {
             0.5 * s3 - s4 + 0.5 * s5,
         ]
     }
+}
+
+/// One RK4 step from `s0` to `t` with `contacts` held, and the end's evaluation.
+pub(super) fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    s0: &Sample<N, M>,
+    t: f64,
+    contacts: Contacts,
+) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
+    let (s, ev, _) = rk4_step(sys, s0, t, contacts)?;
+    Ok((s, ev))
+}
+
+/// `rk4_to`, with the end's evaluation and the step's last slopes (for `local_error`).
+#[allow(clippy::type_complexity)]
+#[inline(always)]
+pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    s0: &Sample<N, M>,
+    t: f64,
+    contacts: Contacts,
+) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
+    let dt = t - s0.t;
+    // Three monomorphizations of the step: a flight's stages need `M` and `f` alone, and
+    // frictionless held stages the normal forces alone, neither adding friction work; rubbing
+    // stages keep the friction power at stages 2–4 (the first is `s0`'s) for its integral by the
+    // step's own weights.
+    // Held stages also keep λ at stages 2–4 for the contact impulse, by the same weights.
+    let by_weights = |first: SVector<f64, M>, [_, a, b, c]: [SVector<f64, M>; 4]| (first + (a + b) * 2.0 + c) * (dt / 6.0);
+    let mut lambdas = [SVector::<f64, M>::zeros(); 4];
+    let (end, work, impulse) = if contacts.held == 0 {
+        let flight = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
+            let (mass, force) = sys.inertia_and_force(t, q, v);
+            Ok(free_motion(&mass, &force, t)?.1)
+        };
+        (step(flight, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work, s0.contact_impulse)
+    } else if friction_of(sys).is_none() {
+        let mut stage = 0;
+        let held = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
+            let (acc, lambda) = acceleration(&sys.evaluate(t, q, v), t, contacts.held)?;
+            stage += 1;
+            lambdas[stage] = lambda;
+            Ok(acc)
+        };
+        let end = step(held, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;
+        (end, s0.friction_work, s0.contact_impulse + by_weights(s0.lambda, lambdas))
+    } else {
+        let (mut powers, mut stage) = ([0.0; 4], 0);
+        let rubbing = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
+            let m = motion(sys, &sys.evaluate(t, q, v), (t, q, v), contacts)?;
+            stage += 1;
+            powers[stage] = dissipated(&m.friction, &m.slip);
+            lambdas[stage] = m.lambda;
+            Ok(m.acc)
+        };
+        let end = step(rubbing, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;
+        let work = s0.friction_work + (s0.friction_power() + 2.0 * (powers[1] + powers[2]) + powers[3]) * (dt / 6.0);
+        (end, work, s0.contact_impulse + by_weights(s0.lambda, lambdas))
+    };
+    let ev = sys.evaluate(t, &end.q, &end.v);
+    let mut s = sample_of(sys, &ev, t, end.q, end.v, contacts)?;
+    (s.friction_work, s.contact_impulse) = (work, impulse);
+    Ok((s, ev, end.last_slopes))
+}
+
+/// The local error of the RK4 step `s0 → s1` on the gaps, m: the embedded third-order estimate
+/// `(δq, δq̇)` mapped through `J`, the velocity part as the gap error it makes over the step.
+/// With constraints held, only the error along their manifold counts: `stabilize` removes the
+/// rest (a fully constrained motion has no error left at all).
+pub(super) fn local_error<const N: usize, const M: usize>(
+    s0: &Sample<N, M>,
+    (s1, ev): (&Sample<N, M>, &Evaluation<N, M>),
+    (v4, a4): (SVector<f64, N>, SVector<f64, N>),
+    active: Set,
+    lengths: &SVector<f64, N>,
+) -> Result<f64, DynamicsError> {
+    let (t, dt) = (s1.t, s1.t - s0.t);
+    let (mut dq, mut dv) = ((v4 - s1.v) * (dt / 6.0), (a4 - s1.acc) * (dt / 6.0));
+    let on_gaps = |dq: &SVector<f64, N>, dv: &SVector<f64, N>| (ev.gap_jacobian * dq).amax().max((ev.gap_jacobian * dv).amax() * dt);
+    if active == 0 {
+        return Ok(on_gaps(&dq, &dv));
+    }
+    let frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
+    let dependent = || DynamicsError::DependentContacts { time: t, constraints: active };
+    dq += frame.projection(&(ev.gap_jacobian * dq), active).ok_or_else(dependent)?.0;
+    dv += frame.projection(&(ev.gap_jacobian * dv), active).ok_or_else(dependent)?.0;
+    let along = lengths.component_mul(&dq).amax().max(lengths.component_mul(&dv).amax() * dt);
+    Ok(on_gaps(&dq, &dv).max(along))
 }
 
 #[cfg(test)]

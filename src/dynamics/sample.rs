@@ -1,10 +1,11 @@
 //! The state the loop carries between steps (a sample of the motion with its contact forces and
-//! gap rates), and the RK4 step and its error estimate that make the next one.
+//! gap rates), and the motion the held contacts give at one state.
 
-use super::contact::{held_acceleration, Frame, Set};
-use super::friction::{Contacts, Tangential};
+use super::complementarity::{contains, held_acceleration, Contacts, Frame, Mode, Set};
+use super::coulomb::Tangential;
 use super::inertia::Inertia;
-use super::{rk4, DynamicsError, Evaluation, System};
+use super::system::friction_of;
+use super::{DynamicsError, Evaluation, System};
 use nalgebra::{SMatrix, SVector};
 use serde::{Deserialize, Serialize};
 
@@ -49,7 +50,7 @@ impl<const N: usize, const M: usize> Sample<N, M> {
 }
 
 /// The power tangential forces `λ_T` dissipate at slip velocities `γ`, W (see `Sample::friction_power`).
-fn dissipated<const M: usize>(friction: &SVector<f64, M>, slip: &SVector<f64, M>) -> f64 {
+pub(super) fn dissipated<const M: usize>(friction: &SVector<f64, M>, slip: &SVector<f64, M>) -> f64 {
     friction.zip_fold(slip, 0.0, |sum, f, g| sum + (f * g).abs())
 }
 
@@ -68,6 +69,24 @@ pub(super) enum Watch {
     Stick(f64),
 }
 
+impl Watch {
+    /// What a step with `contacts` held watches: each free constraint's gap, each held one's
+    /// normal force, and where `mu` gives friction each held one's slip (slipping) or margin to
+    /// the friction cone (sticking).
+    pub(super) fn all<const M: usize>(contacts: Contacts, mu: Option<SVector<f64, M>>) -> impl Iterator<Item = (usize, Watch)> + Clone {
+        let normal = (0..M).map(move |i| (i, if contains(contacts.held, i) { Watch::Multiplier } else { Watch::Gap }));
+        let tangential = mu.into_iter().flat_map(move |mu| {
+            (0..M).filter_map(move |i| match contacts.mode(i) {
+                _ if mu[i] == 0.0 => None,
+                Mode::Open => None,
+                Mode::Stick => Some((i, Watch::Stick(mu[i]))),
+                Mode::Slip(s) => Some((i, Watch::Slip(s))),
+            })
+        });
+        normal.chain(tangential)
+    }
+}
+
 impl<const N: usize, const M: usize> Sample<N, M> {
     pub(super) fn watched(&self, i: usize, w: Watch) -> f64 {
         match w {
@@ -77,14 +96,6 @@ impl<const N: usize, const M: usize> Sample<N, M> {
             Watch::Stick(mu) => mu * self.lambda[i] - self.friction[i].abs(),
         }
     }
-}
-
-/// μ of each constraint, if any has friction: `None` keeps a frictionless system on the
-/// frictionless paths, to the bit.
-#[inline(always)]
-pub(super) fn friction_of<S: System<N, M>, const N: usize, const M: usize>(sys: &S) -> Option<SVector<f64, M>> {
-    let mu = SVector::<f64, M>::from_fn(|i, _| sys.friction(i));
-    mu.iter().any(|&m| m != 0.0).then_some(mu)
 }
 
 /// What the held contacts give at one state: `q̈`, `λ_N`, `λ_T` and the slip velocities γ.
@@ -191,92 +202,4 @@ pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
     } else {
         Err(DynamicsError::NonFinite { time: t })
     }
-}
-
-/// One RK4 step from `s0` to `t` with `contacts` held, and the end's evaluation.
-pub(super) fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
-    sys: &S,
-    s0: &Sample<N, M>,
-    t: f64,
-    contacts: Contacts,
-) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
-    let (s, ev, _) = rk4_step(sys, s0, t, contacts)?;
-    Ok((s, ev))
-}
-
-/// `rk4_to`, with the end's evaluation and the step's last slopes (for `local_error`).
-#[allow(clippy::type_complexity)]
-#[inline(always)]
-pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
-    sys: &S,
-    s0: &Sample<N, M>,
-    t: f64,
-    contacts: Contacts,
-) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
-    let dt = t - s0.t;
-    // Three monomorphizations of the step: a flight's stages need `M` and `f` alone, and
-    // frictionless held stages the normal forces alone, neither adding friction work; rubbing
-    // stages keep the friction power at stages 2–4 (the first is `s0`'s) for its integral by the
-    // step's own weights.
-    // Held stages also keep λ at stages 2–4 for the contact impulse, by the same weights.
-    let by_weights = |first: SVector<f64, M>, [_, a, b, c]: [SVector<f64, M>; 4]| (first + (a + b) * 2.0 + c) * (dt / 6.0);
-    let mut lambdas = [SVector::<f64, M>::zeros(); 4];
-    let (step, work, impulse) = if contacts.held == 0 {
-        let flight = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
-            let (mass, force) = sys.inertia_and_force(t, q, v);
-            Ok(free_motion(&mass, &force, t)?.1)
-        };
-        (rk4::step(flight, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work, s0.contact_impulse)
-    } else if friction_of(sys).is_none() {
-        let mut stage = 0;
-        let held = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
-            let (acc, lambda) = acceleration(&sys.evaluate(t, q, v), t, contacts.held)?;
-            stage += 1;
-            lambdas[stage] = lambda;
-            Ok(acc)
-        };
-        let step = rk4::step(held, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;
-        (step, s0.friction_work, s0.contact_impulse + by_weights(s0.lambda, lambdas))
-    } else {
-        let (mut powers, mut stage) = ([0.0; 4], 0);
-        let rubbing = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
-            let m = motion(sys, &sys.evaluate(t, q, v), (t, q, v), contacts)?;
-            stage += 1;
-            powers[stage] = dissipated(&m.friction, &m.slip);
-            lambdas[stage] = m.lambda;
-            Ok(m.acc)
-        };
-        let step = rk4::step(rubbing, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;
-        let work = s0.friction_work + (s0.friction_power() + 2.0 * (powers[1] + powers[2]) + powers[3]) * (dt / 6.0);
-        (step, work, s0.contact_impulse + by_weights(s0.lambda, lambdas))
-    };
-    let ev = sys.evaluate(t, &step.q, &step.v);
-    let mut s = sample_of(sys, &ev, t, step.q, step.v, contacts)?;
-    (s.friction_work, s.contact_impulse) = (work, impulse);
-    Ok((s, ev, step.last_slopes))
-}
-
-/// The local error of the RK4 step `s0 → s1` on the gaps, m: the embedded third-order estimate
-/// `(δq, δq̇)` mapped through `J`, the velocity part as the gap error it makes over the step.
-/// With constraints held, only the error along their manifold counts: `stabilize` removes the
-/// rest (a fully constrained motion has no error left at all).
-pub(super) fn local_error<const N: usize, const M: usize>(
-    s0: &Sample<N, M>,
-    (s1, ev): (&Sample<N, M>, &Evaluation<N, M>),
-    (v4, a4): (SVector<f64, N>, SVector<f64, N>),
-    active: Set,
-    lengths: &SVector<f64, N>,
-) -> Result<f64, DynamicsError> {
-    let (t, dt) = (s1.t, s1.t - s0.t);
-    let (mut dq, mut dv) = ((v4 - s1.v) * (dt / 6.0), (a4 - s1.acc) * (dt / 6.0));
-    let on_gaps = |dq: &SVector<f64, N>, dv: &SVector<f64, N>| (ev.gap_jacobian * dq).amax().max((ev.gap_jacobian * dv).amax() * dt);
-    if active == 0 {
-        return Ok(on_gaps(&dq, &dv));
-    }
-    let frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
-    let dependent = || DynamicsError::DependentContacts { time: t, constraints: active };
-    dq += frame.projection(&(ev.gap_jacobian * dq), active).ok_or_else(dependent)?.0;
-    dv += frame.projection(&(ev.gap_jacobian * dv), active).ok_or_else(dependent)?.0;
-    let along = lengths.component_mul(&dq).amax().max(lengths.component_mul(&dv).amax() * dt);
-    Ok(on_gaps(&dq, &dv).max(along))
 }

@@ -1,12 +1,11 @@
 //! The event search of one RK4 step: the earliest gap or multiplier crossing, located on the
 //! step's quintic extension and confirmed on the RK4 map.
 
-use super::contact::contains;
-use super::events::{self, Bracket, EventLocator, Located, Start};
-use super::friction::Mode;
-use super::rk4::Hermite5;
-use super::sample::{acceleration, friction_of, rk4_to, sample, Evaluated, Sample, Watch};
-use super::stepper::StepEnd;
+use super::rk4::{rk4_to, Hermite5};
+use super::root_finding::{self, Bracket, Located, Start};
+use super::sample::{acceleration, sample, Evaluated, Sample, Watch};
+use super::stepper::{EventLocator, StepEnd};
+use super::system::friction_of;
 use super::{DynamicsError, Evaluation, Stepper, System};
 use std::cell::OnceCell;
 
@@ -19,22 +18,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         }
     }
 
-    /// What the step watches: each free constraint's gap, each held one's normal force, and with
-    /// friction each held one's slip (slipping) or margin to the friction cone (sticking).
-    fn watches(&self) -> impl Iterator<Item = (usize, Watch)> + Clone + '_ {
-        let contacts = self.contacts;
-        let normal = (0..M).map(move |i| (i, if contains(contacts.held, i) { Watch::Multiplier } else { Watch::Gap }));
-        // Only a frictional system with contacts held has tangential watches.
-        let mu = if contacts.held == 0 { None } else { friction_of(&self.system) };
-        let tangential = mu.into_iter().flat_map(move |mu| {
-            (0..M).filter_map(move |i| match contacts.mode(i) {
-                _ if mu[i] == 0.0 => None,
-                Mode::Open => None,
-                Mode::Stick => Some((i, Watch::Stick(mu[i]))),
-                Mode::Slip(s) => Some((i, Watch::Slip(s))),
-            })
-        });
-        normal.chain(tangential)
+    /// What the step watches (`Watch::all`); only a frictional system with contacts held has
+    /// tangential watches.
+    fn watches(&self) -> impl Iterator<Item = (usize, Watch)> + Clone {
+        let mu = if self.contacts.held == 0 { None } else { friction_of(&self.system) };
+        Watch::all(self.contacts, mu)
     }
 
     /// The earliest event in the step `self.state → s1`.
@@ -119,7 +107,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                             Watch::Multiplier => g0 < 0.0,
                             Watch::Stick(_) => false,
                         };
-                        events::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (e.t, g1), tol, rising)?
+                        root_finding::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (e.t, g1), tol, rising)?
                     }
                     EventLocator::StepHalving if g1 < -tol && g0 > 0.0 => {
                         Some(Start::Within(Bracket { lo: s0.t, g_lo: g0, hi: e.t, g_hi: g1 }))
@@ -131,7 +119,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     None => continue,
                     Some(Start::Immediate) => s0.t,
                     Some(Start::Within(br)) => match self.locator {
-                        EventLocator::DenseOutput => pick(events::illinois(|t| on_dense(t, i, w), br, 0.25 * tol, None)?, w),
+                        EventLocator::DenseOutput => pick(root_finding::illinois(|t| on_dense(t, i, w), br, 0.25 * tol, None)?, w),
                         EventLocator::StepHalving => br.lo, // located on the RK4 map below
                     },
                 };
@@ -181,8 +169,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             Ok(gt)
         };
         let located = match self.locator {
-            EventLocator::DenseOutput => events::illinois(&mut g, br, tol, Some(estimate))?,
-            EventLocator::StepHalving => events::bisect(&mut g, br, tol)?,
+            EventLocator::DenseOutput => root_finding::illinois(&mut g, br, tol, Some(estimate))?,
+            EventLocator::StepHalving => root_finding::bisect(&mut g, br, tol)?,
         };
         let t = pick(located, w);
         match last {

@@ -1,11 +1,12 @@
-//! What happens at an event: the contact set decided and the state put on it (A&K Fig. 1 at a
-//! discontinuity point), and the drift of held contacts removed between events.
+//! What happens at an event: the contact set decided by the laws of `contact_laws.rs` and the
+//! state put on it, with the events recorded (A&K Fig. 1 at a discontinuity point); and the drift
+//! of held contacts removed between events.
 
-use super::contact::{contains, members, select, solve_on, ties, Frame, Set};
-use super::friction::{Choice, Contacts, Mode, Tangential};
-use super::inertia::Inertia;
-use super::sample::{frame_at, friction_of, rk4_to, sample, sample_of, Sample};
-use super::{impact, DynamicsError, Evaluation, Event, EventKind, Stepper, System};
+use super::complementarity::{members, select, Contacts, Frame, Set};
+use super::contact_laws::{energy_lost, impact, sliding_law, Tolerances};
+use super::sample::{frame_at, sample, sample_of, Sample};
+use super::system::friction_of;
+use super::{DynamicsError, Evaluation, Event, EventKind, Stepper, System};
 use nalgebra::SVector;
 
 /// Zeno guard: after an impact a closed constraint whose free flight would rise no higher than
@@ -23,22 +24,6 @@ const DRIFT_FRACTION: f64 = 0.1;
 
 /// Newton steps `onto_contacts` takes at most (quadratic convergence: two or three reach round-off).
 const MAX_PROJECTIONS: usize = 4;
-
-/// How far ahead, in nominal steps, the sliding law looks to decide a tie (`Stepper::sliding_law`):
-/// far enough that the trend outweighs round-off, near enough that it is the trend at the instant.
-const TIE_PROBE: f64 = 1e-4;
-
-/// What an impact does: the normal and tangential impulses, the velocity and `ḣ` after, and the
-/// energy each constraint's impulses dissipate.
-struct Jump<const N: usize, const M: usize> {
-    normal: SVector<f64, M>,
-    tangent: SVector<f64, M>,
-    v: SVector<f64, N>,
-    hd: SVector<f64, M>,
-    lost: SVector<f64, M>,
-    /// The part of `lost` the tangential impulses dissipate.
-    friction_lost: SVector<f64, M>,
-}
 
 impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// Keeps active constraints on the manifold against RK4 drift: once `h_A` or `ḣ_A` has drifted
@@ -118,144 +103,6 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         }
     }
 
-    /// The sliding law over `candidates` at `(t, q, q̇)`, with the tie rule: a candidate this
-    /// instant leaves undecided (zero force and zero gap acceleration together, as where a
-    /// contact opens, or where two corners trade places as the piston starts to pivot) takes the
-    /// law's answer `TIE_PROBE` nominal steps later along the motion with this instant's support
-    /// held. Every support consistent with the ties gives the same acceleration now, so the
-    /// motions differ at second order and any of them shows the first-order trend that decides.
-    /// A tie that persists there opens (the law's smallest support). Returns the contacts and q̈.
-    fn sliding_law(
-        &self,
-        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
-        ev: &Evaluation<N, M>,
-        frame: &Frame<N, M>,
-        candidates: Set,
-    ) -> Result<(Contacts, SVector<f64, N>), DynamicsError> {
-        if let Some(mu) = friction_of(&self.system) {
-            return self.coulomb_law((t, q, v), ev, mu, candidates);
-        }
-        let eps = self.options.multiplier_tolerance;
-        let unresolved = |time| DynamicsError::ContactUnresolved { time, constraints: candidates };
-        let now = frame.sliding(ev, candidates, eps).ok_or(unresolved(t))?;
-        let acc = |lambda: SVector<f64, M>| frame.free_acc + frame.minv_jt * lambda;
-        if now.ties == 0 {
-            return Ok((Contacts::frictionless(now.support), acc(now.lambda)));
-        }
-        let start = sample_of(&self.system, ev, t, *q, *v, Contacts::frictionless(now.support))?;
-        let (_, ev_ahead) = rk4_to(&self.system, &start, t + TIE_PROBE * self.options.step, Contacts::frictionless(now.support))?;
-        let frame_ahead = Frame::new(&ev_ahead).ok_or(DynamicsError::SingularMass { time: t })?;
-        let ahead = frame_ahead.sliding(&ev_ahead, candidates, eps).ok_or(unresolved(t))?;
-        if ahead.support == now.support {
-            return Ok((Contacts::frictionless(now.support), acc(now.lambda)));
-        }
-        let free = Frame::gap_acceleration(ev, &frame.free_acc);
-        let lambda =
-            solve_on(&frame.w, &-free, ahead.support).ok_or(DynamicsError::DependentContacts { time: t, constraints: ahead.support })?;
-        Ok((Contacts::frictionless(ahead.support), acc(lambda.map(|x| x.max(0.0)))))
-    }
-
-    /// The sliding law with Coulomb friction (`friction.rs`): the modes of the candidates by
-    /// enumeration, a candidate slipping faster than ε_ḣ keeping its direction, one slower
-    /// sticking or starting to slip as its tangential row decides; ties in the normal direction
-    /// by the same rule as without friction.
-    fn coulomb_law(
-        &self,
-        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
-        ev: &Evaluation<N, M>,
-        mu: SVector<f64, M>,
-        candidates: Set,
-    ) -> Result<(Contacts, SVector<f64, N>), DynamicsError> {
-        let at = |t: f64, q: &SVector<f64, N>, v: &SVector<f64, N>, ev: &Evaluation<N, M>| {
-            let tangents = self.system.tangents(t, q, v);
-            let inertia = Inertia::new(&ev.mass).ok_or(DynamicsError::SingularMass { time: t })?;
-            let free = inertia.solve(&ev.force);
-            let b = (Frame::gap_acceleration(ev, &free), tangents.jacobian * free + tangents.bias);
-            let scale = members::<M>(candidates).fold(0.0_f64, |s, i| {
-                s.max((ev.gap_jacobian.row(i) * free)[0].abs() + ev.gap_bias[i].abs())
-                    .max((tangents.jacobian.row(i) * free)[0].abs() + tangents.bias[i].abs())
-            });
-            Ok::<_, DynamicsError>((Tangential::new(ev, &tangents, &inertia, mu), free, b, scale, tangents.slip(v)))
-        };
-        let unresolved = DynamicsError::ContactUnresolved { time: t, constraints: candidates };
-        let (frame, free, b, scale, slip) = at(t, q, v, ev)?;
-        let choices = std::array::from_fn(|i| match (contains(candidates, i), slip[i]) {
-            (false, _) => Choice::Open,
-            (true, g) if g.abs() <= self.options.velocity_tolerance => Choice::AtRest,
-            (true, g) => Choice::Slipping(g.signum()),
-        });
-        let (modes, now) = frame.enumerate(&choices, (&b.0, &b.1), scale).ok_or(unresolved.clone())?;
-        let contacts = Contacts::of(&modes);
-        let w = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?.w;
-        let tied = ties(&w, (&now.normal, &now.y_normal), (candidates, contacts.held), scale, self.options.multiplier_tolerance);
-        if tied == 0 {
-            return Ok((contacts, frame.motion(&free, &now)));
-        }
-        let start = sample_of(&self.system, ev, t, *q, *v, contacts)?;
-        let (s, ev_ahead) = rk4_to(&self.system, &start, t + TIE_PROBE * self.options.step, contacts)?;
-        let (frame_ahead, _, b_ahead, scale_ahead, _) = at(s.t, &s.q, &s.v, &ev_ahead)?;
-        let (ahead, _) = frame_ahead.enumerate(&choices, (&b_ahead.0, &b_ahead.1), scale_ahead).ok_or(unresolved)?;
-        if Contacts::of(&ahead).held == contacts.held {
-            return Ok((contacts, frame.motion(&free, &now)));
-        }
-        let dependent = DynamicsError::DependentContacts { time: t, constraints: Contacts::of(&ahead).held };
-        let mut then = frame.solve(&ahead, (&b.0, &b.1)).ok_or(dependent)?;
-        then.normal = then.normal.map(|x| x.max(0.0));
-        for i in 0..M {
-            if let Mode::Slip(s) = ahead[i] {
-                then.tangent[i] = -mu[i] * s * then.normal[i];
-            }
-        }
-        Ok((Contacts::of(&ahead), frame.motion(&free, &then)))
-    }
-
-    /// The impact over `closed`: the generalized Newton law, or with friction the Newton–Coulomb
-    /// law (`friction.rs`).
-    fn impact(
-        &self,
-        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
-        ev: &Evaluation<N, M>,
-        frame: &Frame<N, M>,
-        closed: Set,
-    ) -> Result<Jump<N, M>, DynamicsError> {
-        let refused = DynamicsError::MultipleImpact { time: t, constraints: closed };
-        let e = SVector::<f64, M>::from_fn(|i, _| self.system.restitution(i));
-        let hd = ev.gap_jacobian * v + ev.gap_time_rate;
-        let Some(mu) = friction_of(&self.system) else {
-            let impulse = impact::newton_impulses(frame, &hd, &e, closed).ok_or(refused)?;
-            let hd_plus = hd + frame.w * impulse;
-            let lost = impact::energy_lost(&impulse, &hd, &hd_plus);
-            return Ok(Jump {
-                normal: impulse,
-                tangent: SVector::zeros(),
-                v: v + frame.minv_jt * impulse,
-                hd: hd_plus,
-                lost,
-                friction_lost: SVector::zeros(),
-            });
-        };
-        let tangents = self.system.tangents(t, q, v);
-        let inertia = Inertia::new(&ev.mass).ok_or(DynamicsError::SingularMass { time: t })?;
-        let coulomb = Tangential::new(ev, &tangents, &inertia, mu);
-        let slip = tangents.slip(v);
-        // ξ = γ⁺ + ε γ⁻ in both directions, ε = e for an approaching constraint, 0 for another
-        // closed one (as without friction).
-        let eps = SVector::<f64, M>::from_fn(|i, _| if hd[i] < 0.0 { e[i] } else { 0.0 });
-        let b = (hd + eps.component_mul(&hd), slip + eps.component_mul(&slip));
-        let choices = std::array::from_fn(|i| if contains(closed, i) { Choice::AtRest } else { Choice::Open });
-        let scale = members::<M>(closed).fold(0.0_f64, |s, i| s.max(hd[i].abs()).max(slip[i].abs()));
-        let (_, jump) = coulomb.enumerate(&choices, (&b.0, &b.1), scale).ok_or(refused)?;
-        let v_plus = coulomb.motion(v, &jump);
-        let hd_plus = ev.gap_jacobian * v_plus + ev.gap_time_rate;
-        let lost = impact::energy_lost(&jump.normal, &hd, &hd_plus) + impact::energy_lost(&jump.tangent, &slip, &tangents.slip(&v_plus));
-        // Friction's share: −Λ_T ξ_T / (1 + ε) = μ Λ_N |ξ_T| / (1 + ε) ≥ 0, the term the Coulomb
-        // law contributes to ΔT (friction.rs); the work of Λ_T on the mean slip, −Λ_T (γ⁻ + γ⁺)/2,
-        // can be negative where the impulses couple the normal and tangential motion.
-        let xi = tangents.slip(&v_plus) + eps.component_mul(&slip);
-        let friction_lost = SVector::<f64, M>::from_fn(|i, _| -jump.tangent[i] * xi[i] / (1.0 + eps[i]));
-        Ok(Jump { normal: jump.normal, tangent: jump.tangent, v: v_plus, hd: hd_plus, lost, friction_lost })
-    }
-
     /// Resolves the closed constraints at the current instant (Fig. 1 at a discontinuity point):
     /// 1. if any approaches (`ḣ < −ε_ḣ`), the generalized Newton impact over all of `closed`
     ///    (with friction, Newton–Coulomb);
@@ -276,6 +123,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let before = self.contacts;
         let was_active = before.held;
         let opts = self.options.clone();
+        let tol = Tolerances { velocity: opts.velocity_tolerance, multiplier: opts.multiplier_tolerance };
         let (mut ev, mut frame) = frame_at(&self.system, t, &q, &v, known)?;
         let mut hd = ev.gap_jacobian * v + ev.gap_time_rate;
 
@@ -284,7 +132,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let zeno_apex = ZENO_APEX_FACTOR * opts.gap_tolerance;
         let contacts = loop {
             if approaching != 0 {
-                let jump = self.impact((t, &q, &v), &ev, &frame, closed)?;
+                let jump = impact(&self.system, (t, &q, &v), &ev, &frame, closed)?;
                 // Recorded: the approaching constraints. Another closed one that takes an impulse
                 // (held, at rest, or moving off the liner) is pushed, not struck: its share of the
                 // losses, −Λᵢ (ḣ⁻ᵢ + ḣ⁺ᵢ)/2 ≤ 0 as it leaves faster, goes with its friction share to
@@ -305,7 +153,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
 
             let mut candidates = closed & ((hold & !impacted) | select::<M>(|i| hd[i] < opts.velocity_tolerance));
             let contacts = loop {
-                let (contacts, acc) = self.sliding_law((t, &q, &v), &ev, &frame, candidates)?;
+                let probe = |contacts, steps| self.probe((t, &q, &v), &ev, contacts, steps);
+                let (contacts, acc) = sliding_law(&self.system, tol, (t, &q, &v), (&ev, &frame), candidates, &probe)?;
                 // A held one the law would open slips the way it moves along the surface.
                 let forced = hold & candidates & !contacts.held;
                 let backward = if forced != 0 && friction_of(&self.system).is_some() {
@@ -347,7 +196,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             let hd = ev.gap_jacobian * v + ev.gap_time_rate;
             let (dv, impulse) = frame.projection(&hd, support).ok_or(DynamicsError::DependentContacts { time: t, constraints: support })?;
             let hd_after = hd + frame.w * impulse;
-            let lost = impact::energy_lost(&impulse, &hd, &hd_after);
+            let lost = energy_lost(&impulse, &hd, &hd_after);
             self.record(EventKind::Slide, support & !was_active, (&hd, &hd_after), (&lost, &SVector::zeros()), (impulse, SVector::zeros()));
             sample(&self.system, t, q, v + dv, contacts)?
         };

@@ -2,16 +2,26 @@
 //! events; at each event the impact law and the sliding law decide the new contact set
 //! (`settle`), found by the event search (`search`).
 
-use super::contact::{bit, contains, select};
-use super::events::EventLocator;
-use super::friction::Contacts;
+use super::complementarity::{bit, contains, select, Contacts};
 use super::options::{MAX_STEPS_PER_ADVANCE, PENETRATION_FACTOR, TOO_MANY_STEPS};
-use super::rk4::Hermite5;
-use super::sample::{local_error, rk4_step, rk4_to, sample, sample_of, Evaluated, Sample};
+use super::rk4::{local_error, rk4_step, rk4_to, Hermite5};
+use super::sample::{sample, sample_of, Evaluated, Sample};
 use super::{DynamicsError, Evaluation, Event, StepCounts, StepperOptions, System, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
 use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
+
+/// How the time of an event inside a step is found.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub enum EventLocator {
+    /// Illinois root finding on the quintic Hermite extension of the step (cheap: no RK4 steps),
+    /// then confirmed on the RK4 map itself, corrected there by Illinois if needed.
+    #[default]
+    DenseOutput,
+    /// The paper's scheme (A&K section 5): bisect the RK4 step until `|g| ≤ tol`. Like the
+    /// paper it sees only sign changes between the ends of a step, not a dip inside one.
+    StepHalving,
+}
 
 /// How a step ends: clear of events, or at the first one.
 pub(super) enum StepEnd<const N: usize, const M: usize> {
@@ -215,17 +225,36 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         Ok(())
     }
 
+    /// The state `steps` nominal steps after `(t, q, q̇)`, with `contacts` held, by one RK4 step from
+    /// there (`ev`: the evaluation at the start): how the laws of persistent contact look ahead to
+    /// decide a tie (`contact_laws::Probe`).
+    #[allow(clippy::type_complexity)]
+    pub(super) fn probe(
+        &self,
+        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
+        ev: &Evaluation<N, M>,
+        contacts: Contacts,
+        steps: f64,
+    ) -> Result<(f64, SVector<f64, N>, SVector<f64, N>, Evaluation<N, M>), DynamicsError> {
+        let start = sample_of(&self.system, ev, t, *q, *v, contacts)?;
+        let (s, ev) = rk4_to(&self.system, &start, t + steps * self.options.step, contacts)?;
+        Ok((s.t, s.q, s.v, ev))
+    }
+
     /// The state the accessors show: at the end of the last `advance`.
     fn current(&self) -> &Sample<N, M> {
         self.ahead.as_ref().map_or(&self.state, |a| &a.now)
     }
 
+    /// The current time.
     pub fn time(&self) -> f64 {
         self.current().t
     }
+    /// `q` at the current state.
     pub fn position(&self) -> &SVector<f64, N> {
         &self.current().q
     }
+    /// `q̇` at the current state.
     pub fn velocity(&self) -> &SVector<f64, N> {
         &self.current().v
     }
@@ -277,9 +306,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let s = self.current();
         0.5 * s.v.dot(&(self.system.evaluate(s.t, &s.q, &s.v).mass * s.v))
     }
+    /// The event record since the start or the last `clear_events`, in order.
     pub fn events(&self) -> &[Event<N, M>] {
         &self.events
     }
+    /// The work done since the stepper was made or restored.
     pub fn counts(&self) -> StepCounts {
         self.counts.get()
     }
@@ -288,9 +319,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         add(&mut counts);
         self.counts.set(counts);
     }
+    /// Empties the event record (the state is untouched).
     pub fn clear_events(&mut self) {
         self.events.clear();
     }
+    /// The system integrated.
     pub fn system(&self) -> &S {
         &self.system
     }
@@ -302,9 +335,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.changed = true;
         Ok(&mut self.system)
     }
+    /// The tolerances and nominal step.
     pub fn options(&self) -> &StepperOptions {
         &self.options
     }
+    /// How events are located.
     pub fn locator(&self) -> EventLocator {
         self.locator
     }

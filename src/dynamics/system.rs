@@ -1,3 +1,5 @@
+//! What the core integrates: the system's interface and the terms it evaluates.
+
 use nalgebra::{SMatrix, SVector};
 
 /// Everything one RK4 stage, one impact or one sliding solve needs, evaluated at `(t, q, q̇)`.
@@ -92,4 +94,12 @@ pub trait System<const N: usize, const M: usize> {
     fn tangents(&self, _t: f64, _q: &SVector<f64, N>, _qd: &SVector<f64, N>) -> Tangents<N, M> {
         Tangents { jacobian: SMatrix::zeros(), time_rate: SVector::zeros(), bias: SVector::zeros() }
     }
+}
+
+/// μ of each constraint, if any has friction: `None` keeps a frictionless system on the
+/// frictionless paths, to the bit.
+#[inline(always)]
+pub(super) fn friction_of<S: System<N, M>, const N: usize, const M: usize>(sys: &S) -> Option<SVector<f64, M>> {
+    let mu = SVector::<f64, M>::from_fn(|i, _| sys.friction(i));
+    mu.iter().any(|&m| m != 0.0).then_some(mu)
 }

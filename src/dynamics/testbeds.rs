@@ -10,11 +10,14 @@ use std::cell::Cell;
 /// Any system, counting how often the core evaluates it (the cost measure of the integrator).
 #[derive(Clone)]
 pub struct Counted<S> {
+    /// The system evaluated.
     pub inner: S,
+    /// `evaluate` calls so far.
     pub evaluations: Cell<u64>,
 }
 
 impl<S> Counted<S> {
+    /// `inner`, with no evaluation counted yet.
     pub fn new(inner: S) -> Self {
         Self { inner, evaluations: Cell::new(0) }
     }
@@ -39,14 +42,18 @@ impl<S: System<N, M>, const N: usize, const M: usize> System<N, M> for Counted<S
 /// Prescribed motion `y_f(t)` of the surface a [`Ball`] hits (a rheonomic constraint).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub enum Floor {
+    /// `y_f = 0`.
     Fixed,
     /// `y_f = velocity · t`.
     Moving {
+        /// m/s.
         velocity: f64,
     },
     /// `y_f = amplitude · sin(ω t)`.
     Oscillating {
+        /// m.
         amplitude: f64,
+        /// ω, rad/s.
         angular_frequency: f64,
     },
 }
@@ -69,9 +76,13 @@ impl Floor {
 /// floor's normal force. With `gravity = 0` it is a ball against a moving wall.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Ball {
+    /// kg.
     pub mass: f64,
+    /// m/s², downward.
     pub gravity: f64,
+    /// Newton's coefficient `e` at the floor.
     pub restitution: f64,
+    /// The floor's motion.
     pub floor: Floor,
 }
 
@@ -98,11 +109,17 @@ impl System<1, 1> for Ball {
 /// rotation. With Coulomb friction μ on the floor, end `i` slips at `γᵢ = ẋ ± (L/2) sin θ θ̇`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Rod {
+    /// kg.
     pub mass: f64,
+    /// m.
     pub length: f64,
+    /// m/s², downward.
     pub gravity: f64,
+    /// Newton's coefficient `e` at both ends.
     pub restitution: f64,
+    /// Coulomb's μ at both ends (0: frictionless).
     pub friction: f64,
+    /// The floor's motion.
     pub floor: Floor,
 }
 
@@ -151,9 +168,13 @@ impl System<3, 2> for Rod {
 /// `hᵢ = nᵢ · q ≥ 0` with unit inward normals `nᵢ`, under a constant force field `g`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Wedge {
+    /// kg.
     pub mass: f64,
+    /// The force field per unit mass `g`, m/s².
     pub gravity: Vector2<f64>,
+    /// The walls' unit inward normals `nᵢ`.
     pub normals: [Vector2<f64>; 2],
+    /// Newton's coefficient `e` at both walls.
     pub restitution: f64,
 }
 
@@ -184,14 +205,20 @@ impl System<2, 2> for Wedge {
 /// `h = l₁ sin θ₁ + l₂ sin θ₂ + wall ≥ 0`. Its inertia matrix couples the two angles.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct DoublePendulum {
+    /// `m₁`, `m₂`, kg.
     pub masses: [f64; 2],
+    /// `l₁`, `l₂`, m.
     pub lengths: [f64; 2],
+    /// m/s², downward.
     pub gravity: f64,
+    /// The wall's distance from the pivot, m (far beyond `l₁ + l₂`: no wall in reach).
     pub wall: f64,
+    /// Newton's coefficient `e` at the wall.
     pub restitution: f64,
 }
 
 impl DoublePendulum {
+    /// The inertia matrix `M(θ₁, θ₂)`.
     pub fn mass_matrix(&self, q: &Vector2<f64>) -> Matrix2<f64> {
         let ([m1, m2], [l1, l2]) = (self.masses, self.lengths);
         let coupling = m2 * l1 * l2 * libm::cos(q[0] - q[1]);
@@ -233,10 +260,13 @@ impl System<2, 1> for DoublePendulum {
 /// instant the torque starts: a tie that only the motion after it decides.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Plank {
+    /// kg.
     pub mass: f64,
-    /// About the centre.
+    /// About the centre, kg·m².
     pub inertia: f64,
+    /// `a`, m.
     pub half_length: f64,
+    /// m/s², downward.
     pub gravity: f64,
     /// N/s.
     pub lift_rate: f64,
@@ -267,12 +297,17 @@ impl System<2, 2> for Plank {
 /// slip `γ = ẋ − belt` (the belt's motion is the constraint's `∂γ/∂t`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Block {
+    /// kg.
     pub mass: f64,
+    /// m/s², downward.
     pub gravity: f64,
+    /// Coulomb's μ on the belt.
     pub friction: f64,
+    /// The belt's speed along x, m/s.
     pub belt: f64,
     /// N/s.
     pub push_rate: f64,
+    /// Newton's coefficient `e` on the belt.
     pub restitution: f64,
 }
 

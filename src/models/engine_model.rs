@@ -1,6 +1,7 @@
 //! The interface the FMU drives a mechanism through, and the events it reports.
 
 use super::{InputDerivatives, Inputs, ModelError, Outputs, Parameters};
+use crate::dynamics::EventKind;
 use serde::{Deserialize, Serialize};
 
 /// One four-stroke engine cycle of crank angle, rad; firing top dead centre at 0 mod 4π.
@@ -16,6 +17,19 @@ pub enum EngineEventKind {
     Stick,
     /// With liner friction: a corner in contact starts to slip, from sticking or reversing.
     Slip,
+}
+
+impl From<EventKind> for EngineEventKind {
+    /// The core's event kind under its impact-log name.
+    fn from(kind: EventKind) -> Self {
+        match kind {
+            EventKind::Impact => Self::Impact,
+            EventKind::Slide => Self::Slide,
+            EventKind::Release => Self::Release,
+            EventKind::Stick => Self::Stick,
+            EventKind::Slip => Self::Slip,
+        }
+    }
 }
 
 /// One row of the impact log (ARCHITECTURE.md §4), in SI units.

@@ -11,6 +11,7 @@ mod error;
 pub mod gas;
 pub mod numerics;
 pub mod roller;
+pub mod skirt;
 
 pub use contract::{InputDerivatives, Inputs, Outputs, Parameters};
 pub use crank_train::{CrankTrain, EfficiencyCalibration, EfficiencyTarget};

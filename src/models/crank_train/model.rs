@@ -6,10 +6,8 @@ use super::drive::{Engine, FreeCrank, PrescribedCrank};
 use super::energy::by_wall;
 use super::kinematics::SliderCrank;
 use super::linkage::LinkAngles;
-use crate::dynamics::{DynamicsError, Event, EventKind, StepCounts, Stepper, StepperOptions};
-use crate::models::{
-    EngineEvent, EngineEventKind, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, CYCLE,
-};
+use crate::dynamics::{DynamicsError, Event, StepCounts, Stepper, StepperOptions};
+use crate::models::{EngineEvent, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, CYCLE};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -308,13 +306,7 @@ impl CrankTrain {
                 time: e.time,
                 crank_angle: phi[0].rem_euclid(CYCLE),
                 cycle: (self.cycles + (phi[0] / CYCLE).floor()) as i64,
-                kind: match e.kind {
-                    EventKind::Impact => EngineEventKind::Impact,
-                    EventKind::Slide => EngineEventKind::Slide,
-                    EventKind::Release => EngineEventKind::Release,
-                    EventKind::Stick => EngineEventKind::Stick,
-                    EventKind::Slip => EngineEventKind::Slip,
-                },
+                kind: e.kind.into(),
                 corner: e.constraint as u8 + 1,
                 normal_velocity_before: -e.velocity_before,
                 normal_velocity_after: e.velocity_after,

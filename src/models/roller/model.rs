@@ -18,9 +18,9 @@
 //! (ψ = ψ_max) is the x = −D/2 wall of corners 1 and 2, and the lower wall that of corners 3 and 4.
 
 use super::forcing::{AtAngle, Forcing, RollerMechanism};
-use crate::dynamics::{DynamicsError, Evaluation, Event, EventKind, Stepper, StepperOptions, System};
+use crate::dynamics::{DynamicsError, Evaluation, Event, Stepper, StepperOptions, System};
 use crate::models::numerics::LastValue;
-use crate::models::{EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, CYCLE};
+use crate::models::{EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, CYCLE};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -226,13 +226,7 @@ impl Roller {
             // The turns taken off come in even blocks: the angle within a cycle is unchanged.
             crank_angle: event.time.rem_euclid(CYCLE),
             cycle: ((event.time + 2.0 * PI * self.turns) / CYCLE).floor() as i64,
-            kind: match event.kind {
-                EventKind::Impact => EngineEventKind::Impact,
-                EventKind::Slide => EngineEventKind::Slide,
-                EventKind::Release => EngineEventKind::Release,
-                EventKind::Stick => EngineEventKind::Stick,
-                EventKind::Slip => EngineEventKind::Slip,
-            },
+            kind: event.kind.into(),
             corner: corner(event.constraint),
             normal_velocity_before: -event.velocity_before * speed,
             normal_velocity_after: event.velocity_after * speed,

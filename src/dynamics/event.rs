@@ -3,6 +3,7 @@
 use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
 
+/// What happened at an event.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum EventKind {
     /// A velocity jump by the generalized Newton law.
@@ -20,8 +21,11 @@ pub enum EventKind {
 /// One entry of the event record.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Event<const N: usize, const M: usize> {
+    /// When it happened, in the core's independent variable.
     pub time: f64,
+    /// What happened.
     pub kind: EventKind,
+    /// The constraint's index.
     pub constraint: usize,
     /// ḣ⁻ (negative when approaching).
     pub velocity_before: f64,

@@ -1,20 +1,7 @@
-//! Event detection and location: a watched function `g` (a gap `hᵢ` of a free constraint, a
-//! multiplier `λᵢ` of a sliding one, with friction its slip or its margin to the friction cone)
-//! crossing from positive to below `−tol` within a step.
-
-use serde::{Deserialize, Serialize};
-
-/// How the time of an event inside a step is found.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub enum EventLocator {
-    /// Illinois root finding on the quintic Hermite extension of the step (cheap: no RK4 steps),
-    /// then confirmed on the RK4 map itself, corrected there by Illinois if needed.
-    #[default]
-    DenseOutput,
-    /// The paper's scheme (A&K section 5): bisect the RK4 step until `|g| ≤ tol`. Like the
-    /// paper it sees only sign changes between the ends of a step, not a dip inside one.
-    StepHalving,
-}
+//! The root finders of event detection and location: a watched function `g` (a gap `hᵢ` of a
+//! free constraint, a multiplier `λᵢ` of a sliding one, with friction its slip or its margin to
+//! the friction cone) crossing from positive to below `−tol` within a step, found by a scan of the
+//! step and located by Illinois or bisection.
 
 /// An interval with `g(lo) > 0` and `g(hi) < 0`.
 #[derive(Clone, Copy, Debug, PartialEq)]

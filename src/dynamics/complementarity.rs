@@ -1,10 +1,12 @@
-//! Contact mechanics in the metric of the inertia matrix: the Delassus matrix `W = J M⁻¹ Jᵀ`,
-//! the multipliers of persistent contact (A&K eqs 15–20 for several constraints) and the small
-//! linear complementarity problems that both the impact law and the sliding law reduce to.
+//! Constraint sets and the held set, and the complementarity solvers in the metric of the inertia
+//! matrix: the Delassus matrix `W = J M⁻¹ Jᵀ`, the multipliers of persistent contact (A&K eqs
+//! 15–20 for several constraints) and the small linear complementarity problems that both the
+//! impact law and the sliding law reduce to (`contact_laws.rs`; with friction, `coulomb.rs`).
 
 use super::inertia::Inertia;
 use super::Evaluation;
 use nalgebra::{Cholesky, SMatrix, SVector};
+use serde::{Deserialize, Serialize};
 
 /// A set of constraints as a bitmask: bit `i` is constraint `i` (serde-friendly, no heap).
 pub(crate) type Set = u32;
@@ -25,6 +27,45 @@ pub(crate) fn members<const M: usize>(set: Set) -> impl Iterator<Item = usize> {
 /// The set of indices `i < M` for which `pred(i)` holds.
 pub(crate) fn select<const M: usize>(pred: impl Fn(usize) -> bool) -> Set {
     (0..M).filter(|&i| pred(i)).fold(0, |s, i| s | bit(i))
+}
+
+/// The held constraints and how each carries tangential force: `stick` at tangential rest, the
+/// others slipping forward (`γ > 0`) or, in `back`, backward. Without friction only `held` is used.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub(crate) struct Contacts {
+    pub held: Set,
+    pub stick: Set,
+    pub back: Set,
+}
+
+impl Contacts {
+    pub fn frictionless(held: Set) -> Self {
+        Self { held, stick: 0, back: 0 }
+    }
+
+    pub fn mode(&self, i: usize) -> Mode {
+        if !contains(self.held, i) {
+            Mode::Open
+        } else if contains(self.stick, i) {
+            Mode::Stick
+        } else {
+            Mode::Slip(if contains(self.back, i) { -1.0 } else { 1.0 })
+        }
+    }
+
+    pub fn of<const M: usize>(modes: &[Mode; M]) -> Self {
+        let set = |pred: fn(&Mode) -> bool| (0..M).filter(|&i| pred(&modes[i])).fold(0, |s, i| s | 1 << i);
+        Self { held: set(|m| *m != Mode::Open), stick: set(|m| *m == Mode::Stick), back: set(|m| *m == Mode::Slip(-1.0)) }
+    }
+}
+
+/// The state of one constraint in a contact problem.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Mode {
+    Open,
+    Stick,
+    /// Slipping in the direction of the sign: `λ_T = −μ s λ_N`.
+    Slip(f64),
 }
 
 /// A pivot of the Cholesky factor this small relative to its diagonal entry means the constraints

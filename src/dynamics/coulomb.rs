@@ -21,50 +21,10 @@
 //! Every solve here sits at an event but one: with friction the held acceleration of each RK4
 //! stage is [`Tangential::solve`] with the modes held.
 
-use super::contact::{contains, Set, COMPLEMENTARITY_TOL, DEPENDENT_PIVOT};
+use super::complementarity::{Mode, COMPLEMENTARITY_TOL, DEPENDENT_PIVOT};
 use super::inertia::Inertia;
 use super::{Evaluation, Tangents};
 use nalgebra::{SMatrix, SVector};
-use serde::{Deserialize, Serialize};
-
-/// The held constraints and how each carries tangential force: `stick` at tangential rest, the
-/// others slipping forward (`γ > 0`) or, in `back`, backward. Without friction only `held` is used.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub(crate) struct Contacts {
-    pub held: Set,
-    pub stick: Set,
-    pub back: Set,
-}
-
-impl Contacts {
-    pub fn frictionless(held: Set) -> Self {
-        Self { held, stick: 0, back: 0 }
-    }
-
-    pub fn mode(&self, i: usize) -> Mode {
-        if !contains(self.held, i) {
-            Mode::Open
-        } else if contains(self.stick, i) {
-            Mode::Stick
-        } else {
-            Mode::Slip(if contains(self.back, i) { -1.0 } else { 1.0 })
-        }
-    }
-
-    pub fn of<const M: usize>(modes: &[Mode; M]) -> Self {
-        let set = |pred: fn(&Mode) -> bool| (0..M).filter(|&i| pred(&modes[i])).fold(0, |s, i| s | 1 << i);
-        Self { held: set(|m| *m != Mode::Open), stick: set(|m| *m == Mode::Stick), back: set(|m| *m == Mode::Slip(-1.0)) }
-    }
-}
-
-/// The state of one constraint in a contact problem.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub(crate) enum Mode {
-    Open,
-    Stick,
-    /// Slipping in the direction of the sign: `λ_T = −μ s λ_N`.
-    Slip(f64),
-}
 
 /// What a contact problem may choose for each constraint.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -98,10 +58,19 @@ pub(crate) struct Solution<const M: usize> {
 }
 
 impl<const N: usize, const M: usize> Tangential<N, M> {
+    /// The geometry at the state of `ev`, with `inertia` its `M` factored and `mu` the friction
+    /// coefficients.
     pub fn new(ev: &Evaluation<N, M>, tangents: &Tangents<N, M>, inertia: &Inertia<N>, mu: SVector<f64, M>) -> Self {
         let (jn, jt) = (&ev.gap_jacobian, &tangents.jacobian);
         let (normal, tangent) = (inertia.solve(&jn.transpose()), inertia.solve(&jt.transpose()));
         Self { w: [[jn * normal, jn * tangent], [jt * normal, jt * tangent]], normal, tangent, mu }
+    }
+
+    /// `new` with `M` factored here, and the acceleration without contact forces `M⁻¹ f`; `None`
+    /// when `M` is not positive definite.
+    pub fn at(ev: &Evaluation<N, M>, tangents: &Tangents<N, M>, mu: SVector<f64, M>) -> Option<(Self, SVector<f64, N>)> {
+        let inertia = Inertia::new(&ev.mass)?;
+        Some((Self::new(ev, tangents, &inertia, mu), inertia.solve(&ev.force)))
     }
 
     /// `q̈` (or `Δq̇`) from the forces (impulses) of a solution and the acceleration without them.

@@ -1,0 +1,106 @@
+//! The skirt's design data and their checks.
+
+use super::{Roughness, SkirtProfile};
+use crate::models::ModelError;
+
+/// Design data of the skirt and its oil, SI.
+///
+/// Geometry follows the crank train's corners (`crank_train/linkage.rs`): the piston axis lies `pin_offset`
+/// on the −x side of the pin O3; along the axis, the skirt spans from `pin_from_top` above the pin (its
+/// top edge, the corners K1, K3) to `pin_from_top − length` (its bottom edge, K2, K4). A point of the
+/// skirt at axial distance z above the pin and angle θ from +x has the film thickness
+/// `h = R − r(z)·cos φ3 − e(z)·cos θ + ovality·sin²θ`, with `e(z) = x − z·sin φ3 − a·cos φ3` the axis's
+/// lateral position there and `r(z) = d/2 − drop(z)`: at θ = 0 and π with no drop it is exactly the
+/// linkage's corner gap (K3/K4 on +x, K1/K2 on −x), so a collapsed film meets the dry contact.
+#[derive(Clone, Debug, PartialEq)]
+pub struct SkirtDesign {
+    /// Bore radius D/2, m.
+    pub radius_bore: f64,
+    /// Piston radius d/2 at zero drop, m.
+    pub radius_piston: f64,
+    /// Skirt length along the axis, m (`skirt_length`).
+    pub length: f64,
+    /// Axial distance from the skirt's top edge down to the pin axis, m (`pin_height`).
+    pub pin_from_top: f64,
+    /// Lateral offset of the piston axis from the pin toward −x, m (`pin_offset`, the linkage's a).
+    pub pin_offset: f64,
+    /// Angular extent of EACH side, rad (`skirt_arc`): thrust side centred on +x, anti-thrust on −x.
+    pub arc: f64,
+    /// Radial drop against axial position (`skirt_profile`).
+    pub profile: SkirtProfile,
+    /// Radial reduction of the piston at the pin axis (θ = ±90°) against the thrust axis, m; 0 = round.
+    pub ovality: f64,
+    /// Dynamic viscosity of the oil, Pa·s (`oil_viscosity`).
+    pub viscosity: f64,
+    /// Greenwood–Tripp asperity data of the piston–liner pair.
+    pub roughness: Roughness,
+    /// Coefficient of boundary friction on the asperity load, –.
+    pub boundary_friction: f64,
+    /// Interior grid nodes per side: (circumferential, axial).
+    pub grid: (usize, usize),
+}
+
+impl SkirtDesign {
+    /// The default grid per side (circumferential, axial); see the grid-convergence tests.
+    pub const DEFAULT_GRID: (usize, usize) = (16, 24);
+
+    /// Boundary friction coefficient by default, –.
+    pub const DEFAULT_BOUNDARY_FRICTION: f64 = 0.1;
+
+    /// A straight skirt of the crank train's geometry with the default oil, roughness and grid.
+    pub fn new(radius_bore: f64, radius_piston: f64, length: f64, pin_from_top: f64, pin_offset: f64, arc: f64, viscosity: f64) -> Self {
+        Self {
+            radius_bore,
+            radius_piston,
+            length,
+            pin_from_top,
+            pin_offset,
+            arc,
+            profile: SkirtProfile::default(),
+            ovality: 0.0,
+            viscosity,
+            roughness: Roughness::default(),
+            boundary_friction: Self::DEFAULT_BOUNDARY_FRICTION,
+            grid: Self::DEFAULT_GRID,
+        }
+    }
+
+    /// Refuses a design the film cannot be solved on, naming the field and the reason.
+    pub fn validate(&self) -> Result<(), ModelError> {
+        let refuse = |what: &str| Err(ModelError(format!("skirt: {what}")));
+        let positive = [
+            ("radius_bore", self.radius_bore),
+            ("radius_piston", self.radius_piston),
+            ("length", self.length),
+            ("viscosity", self.viscosity),
+        ];
+        for (name, v) in positive {
+            if !(v.is_finite() && v > 0.0) {
+                return refuse(&format!("{name} = {v} must be finite and > 0"));
+            }
+        }
+        for (name, v) in [("pin_from_top", self.pin_from_top), ("pin_offset", self.pin_offset)] {
+            if !v.is_finite() {
+                return refuse(&format!("{name} = {v} must be finite"));
+            }
+        }
+        if self.radius_piston >= self.radius_bore {
+            return refuse(&format!("radius_piston {} m must be below radius_bore {} m", self.radius_piston, self.radius_bore));
+        }
+        if !(self.arc > 0.0 && self.arc <= std::f64::consts::PI) {
+            return refuse(&format!("arc = {} rad must lie in (0, π]: each side is at most a half circle", self.arc));
+        }
+        if !(self.ovality.is_finite() && self.ovality >= 0.0) {
+            return refuse(&format!("ovality = {} m must be finite and ≥ 0", self.ovality));
+        }
+        if !(self.boundary_friction.is_finite() && self.boundary_friction >= 0.0) {
+            return refuse(&format!("boundary_friction = {} must be finite and ≥ 0", self.boundary_friction));
+        }
+        let (nc, na) = self.grid;
+        if !(2..=256).contains(&nc) || !(2..=256).contains(&na) {
+            return refuse(&format!("grid ({nc}, {na}) must have 2 to 256 nodes each way"));
+        }
+        self.profile.validate()?;
+        self.roughness.validate()
+    }
+}

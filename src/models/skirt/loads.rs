@@ -1,0 +1,76 @@
+//! What goes into and comes out of a skirt evaluation.
+
+use nalgebra::Matrix2;
+
+/// The skirt's motion relative to the liner, in the crank train's coordinates.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SkirtMotion {
+    /// Lateral position x of the pin O3, m: +x toward the major-thrust wall, 0 centred in the bore.
+    pub lateral: f64,
+    /// Tilt φ3 of the piston axis, rad, the linkage's sign (e(φ3) = (−sin φ3, cos φ3)).
+    pub tilt: f64,
+    /// ẋ of the pin, m/s.
+    pub lateral_rate: f64,
+    /// φ̇3, rad/s.
+    pub tilt_rate: f64,
+    /// Axial velocity of the piston along the cylinder axis, m/s, + away from the crank (the linkage's y).
+    pub sliding_speed: f64,
+}
+
+/// What the film and the asperities do to the piston at one motion, and their linearisation in the rates.
+///
+/// Forces are generalized forces on the piston conjugate to the pin's lateral position x and the tilt φ3
+/// (virtual work `Σ p·δh` over the skirt): the pressure `p` pushes the surfaces apart.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct SkirtLoads {
+    /// Lateral force on the piston along +x, N: film and asperities, both sides.
+    pub lateral_force: f64,
+    /// Moment on the piston about the pin, N·m, conjugate to φ3 (film and asperities, both sides).
+    pub moment: f64,
+    /// −∂(lateral_force, moment)/∂(lateral_rate, tilt_rate) at fixed position and sliding speed, in
+    /// (N·s/m, N·s, N·m·s/m, N·m·s): exact for the solved cavitation set (the same factorisation with
+    /// the rates' squeeze terms as right-hand sides).
+    pub damping: Matrix2<f64>,
+    /// Axial force on the piston, N, + away from the crank: the film's shear on the skirt, the axial
+    /// component of its pressure on the profiled skirt, and boundary friction on the asperity load.
+    pub friction_force: f64,
+    /// Moment about the pin, N·m, conjugate to φ3, of the axial `friction_force` acting at the skirt surface.
+    pub friction_moment: f64,
+    /// Net hydrodynamic lateral force along +x, N (both sides).
+    pub film_force: f64,
+    /// Total asperity load, N, both sides (≥ 0).
+    pub asperity_force: f64,
+    /// Couette dissipation of the film, W (≥ 0): `∫ μ V² / h` over the wetted skirt.
+    pub shear_power: f64,
+    /// Poiseuille dissipation of the film, W (≥ 0): `∫ h³/(12μ) |∇p|²`, which equals the power the
+    /// pressure takes from the lateral and tilt motion (squeeze) plus the sliding's wedge work on it.
+    /// `shear_power + squeeze_power` is the power the film takes from the piston's motion.
+    pub squeeze_power: f64,
+    /// Power of boundary friction on the asperity load, W (≥ 0).
+    pub asperity_friction_power: f64,
+    /// Smallest film thickness per side, m: [thrust (+x), anti-thrust (−x)].
+    pub min_film: [f64; 2],
+    /// Band Cholesky factorisations per side (active-set steps): the evaluation's cost.
+    pub factorisations: [usize; 2],
+}
+
+/// One side's pressure field on its grid, for plots.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct SideMap {
+    /// Circumferential node angles θ from +x, rad.
+    pub angle: Vec<f64>,
+    /// Axial node positions from the skirt's top edge, m (0 at the top, the skirt length at the bottom).
+    pub position: Vec<f64>,
+    /// Film pressure per node, Pa, row-major by axial position: `pressure[j * angle.len() + i]`.
+    pub pressure: Vec<f64>,
+    /// Asperity pressure per node, Pa, same layout.
+    pub asperity_pressure: Vec<f64>,
+    /// Film thickness per node, m, same layout.
+    pub film: Vec<f64>,
+}
+
+/// Both sides' fields: [thrust (+x), anti-thrust (−x)].
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PressureMap {
+    pub sides: [SideMap; 2],
+}

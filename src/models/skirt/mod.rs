@@ -1,0 +1,22 @@
+//! The lubricated piston skirt (issue 32): film thickness from the piston's lateral position and tilt,
+//! the Reynolds equation with the Reynolds (Swift–Stieber) cavitation condition solved as a linear
+//! complementarity problem, Greenwood–Tripp asperity contact, and the loads, damping and friction they
+//! put on the piston. Pure numerics: nothing here knows the crank train's state or the FMU.
+
+mod asperity;
+mod band;
+mod design;
+mod loads;
+mod profile;
+mod reynolds;
+#[cfg(test)]
+mod reynolds_tests;
+mod surface;
+#[cfg(test)]
+mod surface_tests;
+
+pub use asperity::Roughness;
+pub use design::SkirtDesign;
+pub use loads::{PressureMap, SideMap, SkirtLoads, SkirtMotion};
+pub use profile::SkirtProfile;
+pub use surface::Skirt;
