@@ -50,12 +50,15 @@ coupled: fmu venv
 	$(PISTONSLAP) coupled --out out/coupled
 	for preset in $$($(VENV_PYTHON) -c "from pistonslap.engine_cycle_presets import PRESETS; print(*PRESETS)"); do $(PISTONSLAP) coupled --engine $$preset --out out/coupled/$$preset || exit 1; done
 
-# The style gate (rustfmt, clippy with warnings as errors, the API documentation's links), the Rust tests, then the fmpy tests
-# against the packaged FMU, its win64 binary under Wine among them; fails if any fails.
+# The style gate (rustfmt, clippy with warnings as errors, the API documentation's links, ruff's formatter and linter
+# on python/), the Rust tests, then the fmpy tests against the packaged FMU, its win64 binary under Wine among them;
+# fails if any fails.
 test: toolchain fmu venv
 	cargo fmt --check
 	cargo clippy --all-targets -- -D warnings
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib --quiet
+	$(VENV)/bin/ruff format --check python
+	$(VENV)/bin/ruff check python
 	cargo test --release
 	$(VENV_PYTHON) -m pytest python/tests
 

@@ -35,23 +35,47 @@ _DIAMETER = 0.08
 #: The thesis's classification of its chapter-4 runs (section 4.3, 4.4): (lambda, rho, e) -> response;
 #: None where the thesis shows the impact profile but does not name the response type.
 THESIS_RESPONSES = {
-    (0.025, 0.010, 0.9): "transient chaos", (0.025, 0.015, 0.9): "transient chaos", (0.025, 0.020, 0.9): "chaos",
-    (0.050, 0.010, 0.9): "chaos", (0.050, 0.015, 0.9): "periodic", (0.050, 0.020, 0.9): "chaos",
-    (0.075, 0.010, 0.9): "transient chaos", (0.075, 0.015, 0.9): "chaos", (0.075, 0.020, 0.9): "chaos",
-    (0.15, 0.010, 0.9): None, (0.15, 0.015, 0.9): None, (0.15, 0.020, 0.9): None,
-    (0.20, 0.010, 0.9): None, (0.20, 0.015, 0.9): "chaos", (0.20, 0.020, 0.9): None,
-    (0.25, 0.010, 0.9): "periodic", (0.25, 0.015, 0.9): "periodic", (0.25, 0.020, 0.9): "periodic",
-    (0.050, 0.020, 0.7): "transient chaos", (0.050, 0.020, 0.5): "periodic",
+    (0.025, 0.010, 0.9): "transient chaos",
+    (0.025, 0.015, 0.9): "transient chaos",
+    (0.025, 0.020, 0.9): "chaos",
+    (0.050, 0.010, 0.9): "chaos",
+    (0.050, 0.015, 0.9): "periodic",
+    (0.050, 0.020, 0.9): "chaos",
+    (0.075, 0.010, 0.9): "transient chaos",
+    (0.075, 0.015, 0.9): "chaos",
+    (0.075, 0.020, 0.9): "chaos",
+    (0.15, 0.010, 0.9): None,
+    (0.15, 0.015, 0.9): None,
+    (0.15, 0.020, 0.9): None,
+    (0.20, 0.010, 0.9): None,
+    (0.20, 0.015, 0.9): "chaos",
+    (0.20, 0.020, 0.9): None,
+    (0.25, 0.010, 0.9): "periodic",
+    (0.25, 0.015, 0.9): "periodic",
+    (0.25, 0.020, 0.9): "periodic",
+    (0.050, 0.020, 0.7): "transient chaos",
+    (0.050, 0.020, 0.5): "periodic",
 }
+
 
 def thesis_start_values(lam, rho, e, forcing=1, start=0.0):
     """FMU start values that make the run the thesis's (lambda, rho, e) with roller_forcing = `forcing`,
     from psi = psi' = 0 at crank angle `start`."""
     return {
-        "model_variant": 2, "roller_forcing": forcing, "crank_mode": 1,
-        "crank_radius": XI, "rod_length": 1.0, "rod_mass": ALPHA, "piston_mass": 1.0, "rod_inertia": BETA,
-        "damping_crank_pin": lam, "piston_diameter": _DIAMETER, "bore": _DIAMETER + 2 * rho,
-        "restitution": e, "crank_angle_start": start, "crank_speed": 1.0,
+        "model_variant": 2,
+        "roller_forcing": forcing,
+        "crank_mode": 1,
+        "crank_radius": XI,
+        "rod_length": 1.0,
+        "rod_mass": ALPHA,
+        "piston_mass": 1.0,
+        "rod_inertia": BETA,
+        "damping_crank_pin": lam,
+        "piston_diameter": _DIAMETER,
+        "bore": _DIAMETER + 2 * rho,
+        "restitution": e,
+        "crank_angle_start": start,
+        "crank_speed": 1.0,
     }
 
 
@@ -75,8 +99,11 @@ def simulate_case(lam, rho, e, forcing=1, cycles=1530, progress=True, log_path=N
     stop_time = cycles * CRANK_CYCLE
     label = f"lambda={lam} rho={rho} e={e}"
     _, events = simulate_with_events(
-        log_path=log_path, start_values=thesis_start_values(lam, rho, e, forcing, start), stop_time=stop_time,
-        output_interval=CRANK_CYCLE, output=["impact_count"],
+        log_path=log_path,
+        start_values=thesis_start_values(lam, rho, e, forcing, start),
+        stop_time=stop_time,
+        output_interval=CRANK_CYCLE,
+        output=["impact_count"],
         step_finished=_progress_printer(label, stop_time) if progress else None,
     )
     return Run(lam=lam, rho=rho, e=e, forcing=forcing, cycles=cycles, **impacts_from_log(events, rho, start))
@@ -87,8 +114,13 @@ def _per_wall_sums(run, first_cycle, values, edges):
     over the total number N of those impacts (both walls): (upper, lower), both >= 0."""
     mask = run.window(first_cycle)
     total = max(int(mask.sum()), 1)
-    sums = [np.histogram(values[mask & (run.wall == wall)], bins=edges, weights=np.abs(run.rate[mask & (run.wall == wall)]))[0] / total
-            for wall in (1, -1)]
+    sums = [
+        np.histogram(
+            values[mask & (run.wall == wall)], bins=edges, weights=np.abs(run.rate[mask & (run.wall == wall)])
+        )[0]
+        / total
+        for wall in (1, -1)
+    ]
     return sums[0], sums[1]
 
 
@@ -135,8 +167,10 @@ SUMMARY_LEGEND = {
     "rho": "clearance ρ, half the diametral clearance over the rod length",
     "e": "coefficient of restitution",
     "forcing": "roller_forcing: 1 = f(τ) as printed in the thesis, 2 = corrected",
-    "response": "our classification from the first start (θ = 0): periodic (period in crank cycles, cycle where it "
-                "settled), transient chaos (periodic only after 100 cycles) or chaos (no recurrence)",
+    "response": (
+        "our classification from the first start (θ = 0): periodic (period in crank cycles, cycle where it "
+        "settled), transient chaos (periodic only after 100 cycles) or chaos (no recurrence)"
+    ),
     "impacts_per_cycle_upper": "impacts per crank cycle on the upper wall (ψ = ψ_max)",
     "mean_impact_rate_upper": "mean |ψ'| just before an upper-wall impact",
     "impacts_per_cycle_lower": "impacts per crank cycle on the lower wall (ψ = ψ_min)",
@@ -152,8 +186,14 @@ SUMMARY_LEGEND = {
 
 #: Units of the summary's numeric columns (the others are text).
 SUMMARY_UNITS = {
-    "lambda": "1", "rho": "1", "e": "1", "forcing": "1", "impacts_per_cycle_upper": "1/cycle",
-    "mean_impact_rate_upper": "rad/rad", "impacts_per_cycle_lower": "1/cycle", "mean_impact_rate_lower": "rad/rad",
+    "lambda": "1",
+    "rho": "1",
+    "e": "1",
+    "forcing": "1",
+    "impacts_per_cycle_upper": "1/cycle",
+    "mean_impact_rate_upper": "rad/rad",
+    "impacts_per_cycle_lower": "1/cycle",
+    "mean_impact_rate_lower": "rad/rad",
     "slides_per_cycle": "1/cycle",
 }
 
@@ -165,30 +205,44 @@ def disagreement_reason(row, response, kinds, cycles):
     if thesis is None or response.kind == thesis:
         return ""
     if thesis in kinds:
-        return (f"start-dependent: {kinds.count(thesis)} of {len(kinds)} starting crank angles give the thesis's "
-                f"{thesis}; the thesis does not state its start")
+        return (
+            f"start-dependent: {kinds.count(thesis)} of {len(kinds)} starting crank angles give the thesis's "
+            f"{thesis}; the thesis does not state its start"
+        )
     if response.kind == "periodic" and thesis == "transient chaos":
-        return (f"every start tried settles on a period (the first by cycle {response.settled}); a chaotic transient "
-                "depends on the start, which the thesis does not state")
+        return (
+            f"every start tried settles on a period (the first by cycle {response.settled}); a chaotic transient "
+            "depends on the start, which the thesis does not state"
+        )
     if response.kind == "transient chaos" and thesis == "periodic":
-        return (f"the period appears only at cycle {response.settled}, after the {CHAOTIC_TRANSIENT} cycles allowed a "
-                "transient; the thesis classified the run from its end")
+        return (
+            f"the period appears only at cycle {response.settled}, after the {CHAOTIC_TRANSIENT} cycles allowed a "
+            "transient; the thesis classified the run from its end"
+        )
     if response.kind == "chaos" and "periodic" in kinds:
-        return (f"coexisting responses: chaos from the first start over {cycles} cycles, a period from "
-                f"{kinds.count('periodic')} of {len(kinds)} starts; the thesis does not state its start")
+        return (
+            f"coexisting responses: chaos from the first start over {cycles} cycles, a period from "
+            f"{kinds.count('periodic')} of {len(kinds)} starts; the thesis does not state its start"
+        )
     if response.kind == "chaos":
-        return (f"no start tried recurs within {cycles} cycles (tolerance 1e-3); the thesis's {thesis} may need its own, "
-                "unstated start, or a section read by eye looked settled")
-    return (f"every start tried ends on a period (periods {row['periods']} crank cycles; tolerance 1e-3); with "
-            "roller_forcing = 1 the equations are the thesis's, so the integration or the thesis's reading of its "
-            "Poincaré section differs: not resolved here")
+        return (
+            f"no start tried recurs within {cycles} cycles (tolerance 1e-3); the thesis's {thesis} may need its own, "
+            "unstated start, or a section read by eye looked settled"
+        )
+    return (
+        f"every start tried ends on a period (periods {row['periods']} crank cycles; tolerance 1e-3); with "
+        "roller_forcing = 1 the equations are the thesis's, so the integration or the thesis's reading of its "
+        "Poincaré section differs: not resolved here"
+    )
 
 
 def summary_markdown(header, rows):
     """The summary table as markdown, followed by its legend."""
     lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
-    lines += ["| " + " | ".join(f"{row[k]:.4g}" if isinstance(row[k], float) else str(row[k]) for k in header) + " |"
-              for row in rows]
+    lines += [
+        "| " + " | ".join(f"{row[k]:.4g}" if isinstance(row[k], float) else str(row[k]) for k in header) + " |"
+        for row in rows
+    ]
     lines += ["", "Columns (thesis units: ψ' in rad per rad of crank angle):", ""]
     lines += [f"- `{name}`: {SUMMARY_LEGEND[name]}" for name in header]
     return "\n".join(lines) + "\n"
@@ -213,17 +267,34 @@ def write_case(run, out, transient=30):
     out.mkdir(parents=True, exist_ok=True)
     name = _case_name(run)
     response = classify(run)
-    write_csv(out / f"{name}_impacts.csv", ["cycle [1]", "theta [rad]", "wall [+1 upper, -1 lower]", "psi_rate [rad/rad]",
-                                            "approach_rate [rad/rad]", "x [1]"],
-              zip(run.cycle, run.theta, run.wall, run.rate, run.approach, run.location))
+    write_csv(
+        out / f"{name}_impacts.csv",
+        [
+            "cycle [1]",
+            "theta [rad]",
+            "wall [+1 upper, -1 lower]",
+            "psi_rate [rad/rad]",
+            "approach_rate [rad/rad]",
+            "x [1]",
+        ],
+        zip(run.cycle, run.theta, run.wall, run.rate, run.approach, run.location, strict=True),
+    )
     edges, upper, lower = impact_profile(run, transient)
-    write_csv(out / f"{name}_profile.csv", ["x_from [1]", "x_to [1]", "upper [rad/rad]", "lower [rad/rad]"],
-              zip(edges[:-1], edges[1:], upper, lower))
+    write_csv(
+        out / f"{name}_profile.csv",
+        ["x_from [1]", "x_to [1]", "upper [rad/rad]", "lower [rad/rad]"],
+        zip(edges[:-1], edges[1:], upper, lower, strict=True),
+    )
     sedges, supper, slower = impact_spectra(run, transient)
-    write_csv(out / f"{name}_spectra.csv", ["theta_from [rad]", "theta_to [rad]", "upper [rad/rad]", "lower [rad/rad]"],
-              zip(sedges[:-1], sedges[1:], supper, slower))
+    write_csv(
+        out / f"{name}_spectra.csv",
+        ["theta_from [rad]", "theta_to [rad]", "upper [rad/rad]", "lower [rad/rad]"],
+        zip(sedges[:-1], sedges[1:], supper, slower, strict=True),
+    )
     title = f"λ={run.lam:g} ρ={run.rho:g} e={run.e:g}: {response}"
-    roller_plots.case_sheet(poincare_points(run, transient), (edges, upper, lower), (sedges, supper, slower), title, out / f"{name}.png")
+    roller_plots.case_sheet(
+        poincare_points(run, transient), (edges, upper, lower), (sedges, supper, slower), title, out / f"{name}.png"
+    )
     return response, summary(run, response, transient)
 
 
@@ -244,7 +315,13 @@ def _run_tool(tool, args):
 
 
 #: Figures 2.4-2.9: (rho, lambda) of each constraint-force plot.
-FORCE_FIGURES = {"2.4": (0.01, 0.01), "2.5": (0.01, 0.1), "2.6": (0.01, 0.25), "2.7": (0.02, 0.267), "2.9": (0.01, 0.35)}
+FORCE_FIGURES = {
+    "2.4": (0.01, 0.01),
+    "2.5": (0.01, 0.1),
+    "2.6": (0.01, 0.25),
+    "2.7": (0.02, 0.267),
+    "2.9": (0.01, 0.35),
+}
 
 
 def write_forces(out, tool):
@@ -287,9 +364,14 @@ def thesis_sweeps(cycles, forcing, starts, model_description):
     specs, rhos = [], {}
     for i, (lams, grid_rhos, es) in enumerate(THESIS_GRIDS):
         bores = [thesis_start_values(0.0, rho, 0.0)["bore"] for rho in grid_rhos]
-        rhos.update(zip(bores, grid_rhos))
-        raw = dict(name=f"thesis{i + 1}_f{forcing}_{cycles}cycles", cycles=cycles, skip_cycles=0, start=fixed,
-                   grid=dict(zip(swept, (list(lams), bores, list(es), list(starts)))))
+        rhos.update(zip(bores, grid_rhos, strict=True))
+        raw = dict(
+            name=f"thesis{i + 1}_f{forcing}_{cycles}cycles",
+            cycles=cycles,
+            skip_cycles=0,
+            start=fixed,
+            grid=dict(zip(swept, (list(lams), bores, list(es), list(starts)), strict=True)),
+        )
         specs.append(parse(raw, model_description))
     return specs, rhos
 
@@ -309,41 +391,66 @@ def write_thesis(out, client, transient=30, cycles=1500, forcing=1, starts=START
         path, _ = run_sweep(spec, out / "sweeps", client)
         for row in pq.read_table(path).to_pylist():
             key = (row["damping_crank_pin"], rhos[row["bore"]], row["restitution"])
-            others.setdefault(key, {})[row["crank_angle_start"]] = Response(row["response"], row["period"], row["settled"])
+            others.setdefault(key, {})[row["crank_angle_start"]] = Response(
+                row["response"], row["period"], row["settled"]
+            )
     runs, rows = [], []
     for lam, rho, e in THESIS_RUNS:
         run = simulate_case(lam, rho, e, forcing, transient + cycles)
         response, row = write_case(run, out / "cases", transient)
         responses = [response] + [others[lam, rho, e][s] for s in starts[1:]]
         kinds = [r.kind for r in responses]
-        row["starts"] = ", ".join(f"{kinds.count(k)}× {k}" for k in ("periodic", "transient chaos", "chaos") if k in kinds)
+        row["starts"] = ", ".join(
+            f"{kinds.count(k)}× {k}" for k in ("periodic", "transient chaos", "chaos") if k in kinds
+        )
         row["periods"] = " ".join(str(r.period) for r in responses)
         row["reason"] = disagreement_reason(row, response, kinds, transient + cycles)
-        print(f"lambda={lam} rho={rho} e={e}: {response} (thesis: {row['thesis']}); over {len(kinds)} starts: {row['starts']}")
+        print(
+            f"lambda={lam} rho={rho} e={e}: {response} (thesis: {row['thesis']}); "
+            f"over {len(kinds)} starts: {row['starts']}"
+        )
         runs.append((run, response))
         rows.append(row)
     header = list(rows[0])
     units = [f"{k} [{SUMMARY_UNITS[k]}]" if k in SUMMARY_UNITS else k for k in header]
     write_csv(out / "summary.csv", units, [[row[k] for k in header] for row in rows])
     (out / "summary.md").write_text(summary_markdown(header, rows))
-    sheet = roller_plots.thesis_sheet([(run, response, impact_profile(run, transient), poincare_points(run, transient))
-                                       for run, response in runs], out / "thesis_sheet.png")
+    sheet = roller_plots.thesis_sheet(
+        [(run, response, impact_profile(run, transient), poincare_points(run, transient)) for run, response in runs],
+        out / "thesis_sheet.png",
+    )
     return out / "summary.md", sheet
 
 
 #: An engine-sized roller slider crank for the cross-check (FMU defaults where they apply).
-_CROSS = dict(crank_mode=1, crank_radius=0.04, rod_length=0.15, rod_mass=1.0, piston_mass=0.4, rod_inertia=0.0075,
-              damping_crank_pin=0.00576, damping_piston_pin=0.0, piston_diameter=0.08, restitution=0.5, gravity=0.0,
-              crank_speed=125.66, crank_angle_start=0.0)
+_CROSS = dict(
+    crank_mode=1,
+    crank_radius=0.04,
+    rod_length=0.15,
+    rod_mass=1.0,
+    piston_mass=0.4,
+    rod_inertia=0.0075,
+    damping_crank_pin=0.00576,
+    damping_piston_pin=0.0,
+    piston_diameter=0.08,
+    restitution=0.5,
+    gravity=0.0,
+    crank_speed=125.66,
+    crank_angle_start=0.0,
+)
 
 
 def _cross_sequence(events, corners, min_speed):
     """Impacts faster than `min_speed` and releases, on `corners`: the part of a run that the variants share
     (the tails of impact accumulations end in sliding by different thresholds)."""
-    keep = ((events["kind"] == "impact") & (events["normal_velocity_before"] > min_speed)) | (events["kind"] == "release")
+    keep = ((events["kind"] == "impact") & (events["normal_velocity_before"] > min_speed)) | (
+        events["kind"] == "release"
+    )
     events = events[keep & np.isin(events["corner"], corners)]
     # a contact released, re-closed and released again at one instant is one release here
-    repeat = np.r_[False, (events["kind"][1:] == "release") & (events["kind"][:-1] == "release") & (np.diff(events["time"]) < 1e-9)]
+    repeat = np.r_[
+        False, (events["kind"][1:] == "release") & (events["kind"][:-1] == "release") & (np.diff(events["time"]) < 1e-9)
+    ]
     return events[~repeat]
 
 
@@ -355,11 +462,22 @@ def cross_check(clearance, stop_time=0.05, min_speed=2e-3):
     Returns (variant-1 sequence, variant-2 sequence) of impacts and releases on corner 1, the x = -D/2 wall
     in both variants (the thesis's upper wall, toward which the crank pin swings after TDC)."""
     common = dict(_CROSS, bore=_CROSS["piston_diameter"] + 2 * clearance)
-    crank_train = dict(common, model_variant=1, skirt_length=0.012, pin_height=0.006, piston_com=0.0,
-                       rod_com=common["rod_length"] / 2, piston_inertia=1e-7, pressure_source=1, gas_pressure=0.0)
+    crank_train = dict(
+        common,
+        model_variant=1,
+        skirt_length=0.012,
+        pin_height=0.006,
+        piston_com=0.0,
+        rod_com=common["rod_length"] / 2,
+        piston_inertia=1e-7,
+        pressure_source=1,
+        gas_pressure=0.0,
+    )
     roller = dict(common, model_variant=2, roller_forcing=2)
-    runs = [simulate_with_events(start_values=values, stop_time=stop_time, output_interval=1e-3, output=["impact_count"])[1]
-            for values in (crank_train, roller)]
+    runs = [
+        simulate_with_events(start_values=values, stop_time=stop_time, output_interval=1e-3, output=["impact_count"])[1]
+        for values in (crank_train, roller)
+    ]
     return tuple(_cross_sequence(run, (1,), min_speed) for run in runs)
 
 
@@ -391,17 +509,32 @@ def main(argv=None):
         p.add_argument("--transient", type=int, default=30, help="crank cycles before the statistics")
         p.add_argument("--cycles", type=int, default=1500, help="crank cycles of statistics")
     thesis = sub.choices["thesis"]
-    thesis.add_argument("--starts", type=float, nargs="+", default=list(STARTS),
-                        help="starting crank angles (rad); statistics and figures from the first")
+    thesis.add_argument(
+        "--starts",
+        type=float,
+        nargs="+",
+        default=list(STARTS),
+        help="starting crank angles (rad); statistics and figures from the first",
+    )
     where = thesis.add_mutually_exclusive_group()
-    where.add_argument("--workers", type=int, default=os.cpu_count(),
-                       help="Dask worker processes for the runs from the other starts (default: all cores)")
+    where.add_argument(
+        "--workers",
+        type=int,
+        default=os.cpu_count(),
+        help="Dask worker processes for the runs from the other starts (default: all cores)",
+    )
     where.add_argument("--scheduler", help="address of a running Dask scheduler to use instead")
     forces = sub.add_parser("forces", help="constraint forces (Figs 2.4-2.9) and sliding regions (Fig 2.10)")
-    forces.add_argument("--forces-tool", type=Path, required=True,
-                        help="the built roller_forces example (target/release/examples/roller_forces)")
+    forces.add_argument(
+        "--forces-tool",
+        type=Path,
+        required=True,
+        help="the built roller_forces example (target/release/examples/roller_forces)",
+    )
     cross = sub.add_parser("crosscheck", help="variant 1 in the roller limit against variant 2 (roller_forcing = 2)")
-    cross.add_argument("--clearance", type=float, nargs="+", default=[10e-6, 20e-6, 40e-6, 80e-6, 160e-6, 320e-6], help="m")
+    cross.add_argument(
+        "--clearance", type=float, nargs="+", default=[10e-6, 20e-6, 40e-6, 80e-6, 160e-6, 320e-6], help="m"
+    )
     for p in sub.choices.values():
         p.add_argument("--out", type=Path, default=Path("out/thesis"), help="output folder")
     args = parser.parse_args(argv)
@@ -417,10 +550,15 @@ def main(argv=None):
             n = min(len(crank_train), len(roller))
             same = len(crank_train) == len(roller) and np.all(crank_train["kind"] == roller["kind"])
             impacts = crank_train["kind"][:n] == "impact"
-            speed = np.abs(crank_train["normal_velocity_before"][:n][impacts] / roller["normal_velocity_before"][:n][impacts] - 1)
+            speed = np.abs(
+                crank_train["normal_velocity_before"][:n][impacts] / roller["normal_velocity_before"][:n][impacts] - 1
+            )
             angle = np.abs(crank_train["time"][:n] - roller["time"][:n]) * _CROSS["crank_speed"]
-            print(f"clearance {clearance * 1e6:g} um: {len(crank_train)} / {len(roller)} events, same sequence {same}; "
-                  f"largest crank-angle difference {angle.max():.1e} rad, relative impact-velocity difference {speed.max():.1e}")
+            print(
+                f"clearance {clearance * 1e6:g} um: {len(crank_train)} / {len(roller)} events, same sequence {same}; "
+                f"largest crank-angle difference {angle.max():.1e} rad, "
+                f"relative impact-velocity difference {speed.max():.1e}"
+            )
     elif args.command == "forces":
         print(f"wrote {write_forces(args.out, args.forces_tool)}")
     else:

@@ -39,8 +39,19 @@ SPEED = 125.66
 WIRES = (("crank_speed", "crank_speed"), ("gas_pressure", "gas_pressure"))
 
 #: Columns of a coupled run, one row per communication point.
-COLUMNS = ("time", "engine_crank_angle", "engine_crank_speed", "gas_pressure", "crank_angle", "gas_pressure_acting",
-           "piston_lateral", "impact_count", "impacts_in_step", "max_impact_velocity_in_step", "impact_energy_total")
+COLUMNS = (
+    "time",
+    "engine_crank_angle",
+    "engine_crank_speed",
+    "gas_pressure",
+    "crank_angle",
+    "gas_pressure_acting",
+    "piston_lateral",
+    "impact_count",
+    "impacts_in_step",
+    "max_impact_velocity_in_step",
+    "impact_energy_total",
+)
 
 
 class Slave:
@@ -50,8 +61,12 @@ class Slave:
         description = fmpy.read_model_description(str(path))
         self.variables = {v.name: v for v in description.modelVariables}
         self.unzipdir = fmpy.extract(str(path))
-        self.fmu = FMU2Slave(guid=description.guid, unzipDirectory=self.unzipdir,
-                             modelIdentifier=description.coSimulation.modelIdentifier, instanceName=name)
+        self.fmu = FMU2Slave(
+            guid=description.guid,
+            unzipDirectory=self.unzipdir,
+            modelIdentifier=description.coSimulation.modelIdentifier,
+            instanceName=name,
+        )
         self.fmu.instantiate()
         self.fmu.setupExperiment(startTime=start_time)
         self.fmu.enterInitializationMode()
@@ -63,8 +78,9 @@ class Slave:
 
     def set(self, name, value):
         v = self.variables[name]
-        {"Real": self.fmu.setReal, "Integer": self.fmu.setInteger, "String": self.fmu.setString}[v.type]([v.valueReference],
-                                                                                                      [value])
+        {"Real": self.fmu.setReal, "Integer": self.fmu.setInteger, "String": self.fmu.setString}[v.type](
+            [v.valueReference], [value]
+        )
 
     def free(self):
         self.fmu.terminate()
@@ -79,7 +95,7 @@ def run(stop_time, step, engine_values=None, slap_values=None, derivatives=True,
     With `derivatives`, the engine's output derivatives are passed on as PistonSlap's input derivatives.
     Returns a structured array with `COLUMNS`, one row per communication point including the start.
     """
-    steps = int(round((stop_time - start_time) / step))
+    steps = round((stop_time - start_time) / step)
     if steps < 1 or abs(start_time + steps * step - stop_time) > 1e-9 * max(1.0, abs(stop_time)):
         raise ValueError(f"stop_time - start_time = {stop_time - start_time} s is not a whole number of {step} s steps")
     engine = Slave(ENGINE_FMU, "engine", engine_values or {}, start_time)
@@ -92,8 +108,15 @@ def run(stop_time, step, engine_values=None, slap_values=None, derivatives=True,
         slap.fmu.exitInitializationMode()
 
         engine_read = engine.vrs(["crank_angle", "crank_speed", "gas_pressure"])
-        slap_real = slap.vrs(["crank_angle", "gas_pressure_acting", "piston_lateral", "max_impact_velocity_in_step",
-                              "impact_energy_total"])
+        slap_real = slap.vrs(
+            [
+                "crank_angle",
+                "gas_pressure_acting",
+                "piston_lateral",
+                "max_impact_velocity_in_step",
+                "impact_energy_total",
+            ]
+        )
         slap_int = slap.vrs(["impact_count", "impacts_in_step"])
         rows = np.zeros(steps + 1, dtype=[(c, "f8") for c in COLUMNS])
 
@@ -135,10 +158,18 @@ def run_libcosim(steps, osp_system=OSP_SYSTEM):
     execution.add_observer(observer)
     slap, engine = execution.slave_index_from_instance_name("slap"), execution.slave_index_from_instance_name("engine")
     vr = {v.name: v.valueReference for v in fmpy.read_model_description(str(fmu_path())).modelVariables}
-    engine_angle = next(v.valueReference for v in fmpy.read_model_description(str(ENGINE_FMU)).modelVariables
-                        if v.name == "crank_angle")
-    rows = np.zeros(steps, dtype=[("impacts_in_step", "i8"), ("impact_count", "i8"), ("impact_energy_total", "f8"),
-                                  ("engine_crank_angle", "f8")])
+    engine_angle = next(
+        v.valueReference for v in fmpy.read_model_description(str(ENGINE_FMU)).modelVariables if v.name == "crank_angle"
+    )
+    rows = np.zeros(
+        steps,
+        dtype=[
+            ("impacts_in_step", "i8"),
+            ("impact_count", "i8"),
+            ("impact_energy_total", "f8"),
+            ("engine_crank_angle", "f8"),
+        ],
+    )
     for k in range(steps):
         if not execution.step():
             raise RuntimeError(f"libcosim failed at step {k}")
@@ -155,7 +186,9 @@ def energy_per_cycle(rows, first_cycle, last_cycle):
     step short of `last_cycle`). `ValueError` when the run does not reach `last_cycle`."""
     angle = rows["crank_angle"]
     if not first_cycle < last_cycle or last_cycle * CYCLE > angle[-1] + np.diff(angle).max():
-        raise ValueError(f"cycles {first_cycle} to {last_cycle} are not within the run's {angle[-1] / CYCLE:.3g} cycles")
+        raise ValueError(
+            f"cycles {first_cycle} to {last_cycle} are not within the run's {angle[-1] / CYCLE:.3g} cycles"
+        )
     cycle = np.floor(angle / CYCLE)
     start = np.argmax(cycle >= first_cycle)
     end = np.argmax(cycle >= last_cycle) if cycle[-1] >= last_cycle else len(angle) - 1
@@ -175,8 +208,10 @@ def write(rows, out, origin=CENTRED):
         writer.writerows(rows.tolist())
     degrees = np.degrees(from_firing_tdc(rows["crank_angle"], origin))
     fig, (ax_p, ax_i) = plt.subplots(2, 1, sharex=True, figsize=(9, 6))
-    fig.suptitle(f"PistonSlap driven by EngineCycle: {len(rows) - 1} steps of {rows['time'][1] - rows['time'][0]:g} s, "
-                 "every cycle overlaid")
+    fig.suptitle(
+        f"PistonSlap driven by EngineCycle: {len(rows) - 1} steps of {rows['time'][1] - rows['time'][0]:g} s, "
+        "every cycle overlaid"
+    )
     # One line per engine cycle: broken where the angle wraps to the axis' start.
     wraps = np.flatnonzero(np.diff(degrees) < 0) + 1
     ax_p.plot(np.insert(degrees, wraps, np.nan), np.insert(rows["gas_pressure"] / 1e5, wraps, np.nan), lw=1)
@@ -208,14 +243,22 @@ def main(argv=None):
 
     parser = Parser(prog="pistonslap coupled", description=__doc__.split("\n\n")[0])
     parser.add_argument("--out", default="out/coupled")
-    parser.add_argument("--cycles", type=int, default=20,
-                        help="engine cycles at the engine's constant speed, at least 3 (default 20)")
-    parser.add_argument("--step", type=float, default=1e-3,
-                        help=f"communication step, s (default 0.001; at most {MAX_STEP_DEG:g}° of crank angle)")
+    parser.add_argument(
+        "--cycles", type=int, default=20, help="engine cycles at the engine's constant speed, at least 3 (default 20)"
+    )
+    parser.add_argument(
+        "--step",
+        type=float,
+        default=1e-3,
+        help=f"communication step, s (default 0.001; at most {MAX_STEP_DEG:g}° of crank angle)",
+    )
     parser.add_argument("--held", action="store_true", help="hold the inputs over each step (no derivatives)")
     parser.add_argument("--engine", help=f"EngineCycle preset: {', '.join(PRESETS)} (default: the FMU's defaults)")
-    parser.add_argument("--crank-0-720", action="store_true",
-                        help="draw the crank angle from 0 to 720° (default -360 to 360°; 0 = firing TDC either way)")
+    parser.add_argument(
+        "--crank-0-720",
+        action="store_true",
+        help="draw the crank angle from 0 to 720° (default -360 to 360°; 0 = firing TDC either way)",
+    )
     args = parser.parse_args(argv)
     if args.engine is not None and args.engine not in PRESETS:
         raise Refusal(f"unknown --engine {args.engine!r} (presets: {', '.join(PRESETS)})")
@@ -227,13 +270,17 @@ def main(argv=None):
     largest = np.radians(MAX_STEP_DEG) / speed
     number(args.step, "--step", low=0, low_open=True, unit=" s", meaning="the communication step")
     if args.step > largest:
-        raise Refusal(f"--step = {args.step:g} s is {np.degrees(args.step * speed):.3g}° of crank angle at "
-                      f"{speed * 30 / np.pi:.0f} rpm: give at most {largest:.3g} s ({MAX_STEP_DEG:g}°), since over a "
-                      "step the gas pressure only follows its value and slope at the step's start")
+        raise Refusal(
+            f"--step = {args.step:g} s is {np.degrees(args.step * speed):.3g}° of crank angle at "
+            f"{speed * 30 / np.pi:.0f} rpm: give at most {largest:.3g} s ({MAX_STEP_DEG:g}°), since over a "
+            "step the gas pressure only follows its value and slope at the step's start"
+        )
     period = CYCLE / speed
     stop = round(args.cycles * period / args.step) * args.step
     rows = run(stop, args.step, engine_values=engine, slap_values=slap, derivatives=not args.held)
     write(rows, args.out, FROM_FIRING_TDC if args.crank_0_720 else CENTRED)
-    print(f"{args.out}: {len(rows) - 1} steps, {int(rows['impact_count'][-1])} impacts, "
-          f"{energy_per_cycle(rows, 2, args.cycles):.4g} J per cycle after "
-          "two cycles")
+    print(
+        f"{args.out}: {len(rows) - 1} steps, {int(rows['impact_count'][-1])} impacts, "
+        f"{energy_per_cycle(rows, 2, args.cycles):.4g} J per cycle after "
+        "two cycles"
+    )

@@ -1,8 +1,8 @@
 """Simulates one operating point of the FMU through fmpy and writes CSVs and plots of its last engine cycle.
 
     pistonslap demo [--engine NAME] [--params FILE.toml] [--set NAME=VALUE ...] [--pressure-trace FILE]
-                    [--friction MU] [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM] [--restitution E]
-                    [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S] [--crank-0-720]
+                    [--firing-tdc DEG] [--friction MU] [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM]
+                    [--restitution E] [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S] [--crank-0-720]
 
 Values apply in that order, a later one over an earlier one: the engine preset, the parameter file, then the options.
 What none sets keeps the FMU's default (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
@@ -18,6 +18,7 @@ from .presets import PRESETS, help_text
 from .refusal import Parser, Refusal, check_start_values, number
 from .settings import parse_set, read_params, to_fmu
 from .tables import cycle_metrics, slap_rows, write_table
+from .trace_tdc import place_firing_tdc
 
 #: Crank angle between samples (and communication points), deg: the FMU's default experiment samples every
 #: 5e-5 s, 0.36° at 1200 rpm.
@@ -29,12 +30,28 @@ MAGNIFICATION = 200
 def _parser():
     parser = Parser(prog="pistonslap demo", description=__doc__.splitlines()[0])
     parser.add_argument("--engine", choices=PRESETS, help=f"engine preset: {help_text()}")
-    parser.add_argument("--params", type=Path, help="TOML file of parameters: name = SI number or \"number unit\"")
-    parser.add_argument("--set", action="append", default=[], metavar="NAME=VALUE",
-                        help="any FMU parameter, SI or with a unit the FMU declares (crank_speed=3000rpm, "
-                             "peak_pressure=90bar, bore=80.08mm); repeatable")
-    parser.add_argument("--pressure-trace", type=Path,
-                        help="CSV trace (header: crank angle [deg], pressure [bar|Pa|kPa|MPa|psi] absolute|gauge)")
+    parser.add_argument("--params", type=Path, help='TOML file of parameters: name = SI number or "number unit"')
+    parser.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help=(
+            "any FMU parameter, SI or with a unit the FMU declares (crank_speed=3000rpm, "
+            "peak_pressure=90bar, bore=80.08mm); repeatable"
+        ),
+    )
+    parser.add_argument(
+        "--pressure-trace",
+        type=Path,
+        help="CSV trace (header: crank angle [deg], pressure [bar|Pa|kPa|MPa|psi] absolute|gauge)",
+    )
+    parser.add_argument(
+        "--firing-tdc",
+        type=float,
+        metavar="DEG",
+        help="firing TDC in the --pressure-trace's angles (default: the TDC, a multiple of 360°, nearest its peak)",
+    )
     parser.add_argument("--friction", type=float, help="Coulomb friction coefficient at the liner (default 0)")
     parser.add_argument("--out", type=Path, default=Path("out"), help="output folder (default: out)")
     parser.add_argument("--rpm", type=float, help="crank speed, rpm (default 1200)")
@@ -43,9 +60,14 @@ def _parser():
     parser.add_argument("--restitution", type=float, help="coefficient of restitution (default 0.5)")
     parser.add_argument("--pin-offset", type=float, help="pin offset toward the major-thrust side, mm (default 0)")
     parser.add_argument("--cycles", type=int, default=2, help="engine cycles (720° each) to simulate (default 2)")
-    parser.add_argument("--crank-0-720", action="store_true",
-                        help="draw the crank angle from 0 to 720° (default -360 to 360°; 0 = firing TDC either way)")
-    parser.add_argument("--slap-threshold", type=float, help="impacts faster than this count as slaps, mm/s (default 10)")
+    parser.add_argument(
+        "--crank-0-720",
+        action="store_true",
+        help="draw the crank angle from 0 to 720° (default -360 to 360°; 0 = firing TDC either way)",
+    )
+    parser.add_argument(
+        "--slap-threshold", type=float, help="impacts faster than this count as slaps, mm/s (default 10)"
+    )
     return parser
 
 
@@ -54,26 +76,38 @@ def check(args):
     if args.rpm is not None:
         number(args.rpm, "--rpm", low=0, high=30000, low_open=True, unit=" rpm", meaning="the crank speed")
     if args.clearance is not None:
-        number(args.clearance, "--clearance", low=0, low_open=True, unit=" µm",
-               meaning="the diametral clearance c = D − d (bore minus piston diameter)")
+        number(
+            args.clearance,
+            "--clearance",
+            low=0,
+            low_open=True,
+            unit=" µm",
+            meaning="the diametral clearance c = D − d (bore minus piston diameter)",
+        )
     if args.cycles < 1:
         raise Refusal(f"--cycles = {args.cycles}: give a whole number of engine cycles >= 1")
+    if args.firing_tdc is not None:
+        if args.pressure_trace is None:
+            raise Refusal("--firing-tdc places the firing TDC of a --pressure-trace: give the trace")
+        number(args.firing_tdc, "--firing-tdc", unit="°", meaning="firing TDC")
 
 
 def all_start_values(args, md, defaults):
-    """The start values (SI) of the preset, the parameter file, the options and --set, in that order."""
-    values = dict(PRESETS[args.engine].values) if args.engine else {}
+    """The start values (SI) of the preset, the parameter file, the options and --set, in that order, and what
+    was said of a --pressure-trace's firing TDC (or None)."""
+    values, placed = dict(PRESETS[args.engine].values) if args.engine else {}, None
     if args.params:
         values.update(read_params(args.params, md))
     values.update(start_values(args, dict(defaults, **values)))
     if args.pressure_trace is not None:
         if not args.pressure_trace.is_file():
             raise Refusal(f"--pressure-trace {args.pressure_trace}: no such file")
-        values.update(pressure_source=3, pressure_trace=str(args.pressure_trace.resolve()))
+        trace, placed = place_firing_tdc(args.pressure_trace, args.out, args.firing_tdc)
+        values.update(pressure_source=3, pressure_trace=str(Path(trace).resolve()))
     if args.friction is not None:
         values["friction"] = number(args.friction, "--friction", low=0, meaning="the friction coefficient")
     values.update(parse_set(args.set, md))
-    return to_fmu(values, defaults)
+    return to_fmu(values, defaults), placed
 
 
 def start_values(args, defaults):
@@ -96,9 +130,16 @@ def start_values(args, defaults):
 
 def case_title(p):
     """The operating point in the words of an engine test sheet; `p` holds every parameter by name (SI)."""
-    return (f"{p['crank_speed'] * 30 / np.pi:.0f} rpm, peak pressure {p['peak_pressure'] * 1e-5:g} bar, "
-            f"clearance {(p['bore'] - p['piston_diameter']) * 1e6:g} µm, e = {p['restitution']:g}, "
-            f"pin offset {p['pin_offset'] * 1e3:g} mm, slap threshold {p['slap_threshold'] * 1e3:g} mm/s")
+    pressure = (
+        f"pressure trace {Path(p['pressure_trace']).name}"
+        if p.get("pressure_source") == 3
+        else f"peak pressure {p['peak_pressure'] * 1e-5:g} bar"
+    )
+    return (
+        f"{p['crank_speed'] * 30 / np.pi:.0f} rpm, {pressure}, "
+        f"clearance {(p['bore'] - p['piston_diameter']) * 1e6:g} µm, e = {p['restitution']:g}, "
+        f"pin offset {p['pin_offset'] * 1e3:g} mm, slap threshold {p['slap_threshold'] * 1e3:g} mm/s"
+    )
 
 
 def summary(last):
@@ -108,11 +149,14 @@ def summary(last):
     walls = "; ".join(
         f"{last[f'cycle_slaps_{side}']} on the {name} wall, {last[f'cycle_slap_energy_{side}'] * mj:.3g} mJ "
         f"(largest {last[f'cycle_max_slap_energy_{side}'] * mj:.3g} mJ)"
-        for side, name in (("thrust", "major-thrust"), ("antithrust", "anti-thrust")))
-    return (f"Last cycle: {last['cycle_slap_events']} slaps (landings on the other wall): {walls}. "
-            f"{last['cycle_impacts']} impacts (every bounce) dissipated {last['cycle_impact_energy'] * mj:.3g} mJ, "
-            f"the largest {last['cycle_max_impact_energy_thrust'] * mj:.3g} mJ on the major-thrust wall and "
-            f"{last['cycle_max_impact_energy_antithrust'] * mj:.3g} mJ on the anti-thrust wall.")
+        for side, name in (("thrust", "major-thrust"), ("antithrust", "anti-thrust"))
+    )
+    return (
+        f"Last cycle: {last['cycle_slap_events']} slaps (landings on the other wall): {walls}. "
+        f"{last['cycle_impacts']} impacts (every bounce) dissipated {last['cycle_impact_energy'] * mj:.3g} mJ, "
+        f"the largest {last['cycle_max_impact_energy_thrust'] * mj:.3g} mJ on the major-thrust wall and "
+        f"{last['cycle_max_impact_energy_antithrust'] * mj:.3g} mJ on the anti-thrust wall."
+    )
 
 
 def main(argv=None):
@@ -124,8 +168,10 @@ def main(argv=None):
         raise Refusal(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
     md = fmpy.read_model_description(str(fmu_path()))
     defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
-    values = all_start_values(args, md, defaults)
+    values, placed = all_start_values(args, md, defaults)
     check_start_values(values, fmu_path(), md)
+    if placed:
+        print(placed)
     p = dict(defaults, **values)
     omega, origin = p["crank_speed"], FROM_FIRING_TDC if args.crank_0_720 else CENTRED
     interval = np.radians(SAMPLE_DEG) / omega
@@ -134,13 +180,17 @@ def main(argv=None):
     stop_time = (args.cycles * CYCLE - origin) / omega + interval
 
     args.out.mkdir(parents=True, exist_ok=True)
-    result, events = simulate_with_events(log_path=args.out / "impact_log.csv", start_values=values,
-                                          stop_time=stop_time, output_interval=interval)
-    case = case_title(p)
+    result, events = simulate_with_events(
+        log_path=args.out / "impact_log.csv", start_values=values, stop_time=stop_time, output_interval=interval
+    )
+    case = (f"{args.engine}: " if args.engine else "") + case_title(p)
     units = {v.name: v.unit or (v.declaredType.unit if v.declaredType else None) for v in md.modelVariables}
     units["time"] = "s"
-    written = [write_table(args.out / "demo.csv", result, units), args.out / "impact_log.csv",
-               write_table(args.out / "cycles.csv", *cycle_metrics(result))]
+    written = [
+        write_table(args.out / "demo.csv", result, units),
+        args.out / "impact_log.csv",
+        write_table(args.out / "cycles.csv", *cycle_metrics(result)),
+    ]
 
     cycle, angle = last_cycle(result["crank_angle"], origin=origin)
     times = result["time"][cycle]
@@ -150,16 +200,39 @@ def main(argv=None):
     half_clearance = (p["bore"] - p["piston_diameter"]) / 2
     written += [
         plots.piston_motion(angle[cycle], result[cycle], half_clearance, args.out / "piston_motion.png", case, origin),
-        plots.slap(in_cycle, slap_rows(events, p["slap_threshold"])[window], p["slap_threshold"], args.out / "slap.png",
-                   case, origin),
+        plots.slap(
+            in_cycle,
+            slap_rows(events, p["slap_threshold"])[window],
+            p["slap_threshold"],
+            args.out / "slap.png",
+            case,
+            origin,
+        ),
         plots.forces(angle[cycle], result[cycle], args.out / "forces.png", case, origin),
-        plots.piston_positions(angle[cycle], result[cycle], in_cycle, geometry, MAGNIFICATION,
-                               args.out / "piston_positions.png", case, origin=origin),
-        plots.piston_animation(angle[cycle], result[cycle], in_cycle, geometry, MAGNIFICATION,
-                               args.out / "piston_positions.gif", case, origin=origin),
+        plots.piston_positions(
+            angle[cycle],
+            result[cycle],
+            in_cycle,
+            geometry,
+            MAGNIFICATION,
+            args.out / "piston_positions.png",
+            case,
+            origin=origin,
+        ),
+        plots.piston_animation(
+            angle[cycle],
+            result[cycle],
+            in_cycle,
+            geometry,
+            MAGNIFICATION,
+            args.out / "piston_positions.gif",
+            case,
+            origin=origin,
+        ),
     ]
-    print(f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. "
-          + summary(result[-1]))
+    print(
+        f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. " + summary(result[-1])
+    )
     for path in written:
         print(f"wrote {path}")
 

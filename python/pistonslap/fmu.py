@@ -16,31 +16,34 @@ PACKAGED_FMU = Path(__file__).resolve().parent / "fmu" / "PistonSlap.fmu"
 
 #: Rows of the `impact_log` CSV (SI units; the crank angle also in degrees from firing TDC in [-360, 360)), in the
 #: order of its header (the line after the `#` line stating the conventions).
-EVENT_DTYPE = np.dtype([
-    ("time", "f8"),
-    ("crank_angle", "f8"),
-    ("kind", "U8"),
-    ("corner", "i4"),
-    ("normal_velocity_before", "f8"),
-    ("normal_velocity_after", "f8"),
-    ("energy_lost", "f8"),
-    ("position", "f8"),
-    ("crank_angle_deg", "f8"),
-    ("friction_energy_lost", "f8"),
-])
+EVENT_DTYPE = np.dtype(
+    [
+        ("time", "f8"),
+        ("crank_angle", "f8"),
+        ("kind", "U8"),
+        ("corner", "i4"),
+        ("normal_velocity_before", "f8"),
+        ("normal_velocity_after", "f8"),
+        ("energy_lost", "f8"),
+        ("position", "f8"),
+        ("crank_angle_deg", "f8"),
+        ("friction_energy_lost", "f8"),
+    ]
+)
 
 
 def fmu_path() -> Path:
     """The FMU to run: `$PISTONSLAP_FMU` if set, else the one this package carries (`PACKAGED_FMU`)."""
     path = Path(os.environ.get("PISTONSLAP_FMU", PACKAGED_FMU))
     if not path.is_file():
-        raise FileNotFoundError(f"{path} is missing: run `make fmu` in the PistonSlap repository (it copies the FMU "
-                                "there), or set PISTONSLAP_FMU to a PistonSlap.fmu")
+        raise FileNotFoundError(
+            f"{path} is missing: run `make fmu` in the PistonSlap repository (it copies the FMU "
+            "there), or set PISTONSLAP_FMU to a PistonSlap.fmu"
+        )
     return path
 
 
-def simulate(stop_time=None, output_interval=None, start_values=None, input=None, output=None, fmu=None,
-             **fmpy_kwargs):
+def simulate(stop_time=None, output_interval=None, start_values=None, input=None, output=None, fmu=None, **fmpy_kwargs):
     """Runs the FMU through `fmpy.simulate_fmu` and returns its structured array (`time` + recorded variables).
 
     `stop_time=None` runs the FMU's default experiment; `output=None` records every output;
@@ -78,7 +81,11 @@ def read_impact_log(path) -> np.ndarray:
         if header != EVENT_DTYPE.names:
             raise ValueError(f"{path}: header {header} is not the impact log's {EVENT_DTYPE.names}")
         types = [EVENT_DTYPE[name].type for name in EVENT_DTYPE.names]
-        rows = [tuple(t(value) for t, value in zip(types, row)) for row in reader]
+        rows = []
+        for number, row in enumerate(reader, start=1):
+            if len(row) != len(types):
+                raise ValueError(f"{path}: row {number} has {len(row)} fields, the header {len(types)}")
+            rows.append(tuple(t(value) for t, value in zip(types, row, strict=True)))
     return np.array(rows, dtype=EVENT_DTYPE)
 
 
@@ -99,6 +106,8 @@ def input_signals(time, **signals) -> np.ndarray:
 #: Where an engine cycle's crank-angle axis starts, rad from firing TDC: -2π (the cycle centred on firing TDC,
 #: -360°...360°, as engine people read it) or 0 (0...720°).
 CENTRED, FROM_FIRING_TDC = -2 * np.pi, 0.0
+#: How far short of its end a record's last cycle may stop and still count as complete, rad.
+CYCLE_SLACK = np.radians(0.1)
 
 
 def from_firing_tdc(crank_angle, origin=CENTRED):
@@ -106,7 +115,7 @@ def from_firing_tdc(crank_angle, origin=CENTRED):
     return np.mod(np.asarray(crank_angle) - origin, CYCLE) + origin
 
 
-def last_cycle(crank_angle, slack=np.radians(0.1), origin=CENTRED):
+def last_cycle(crank_angle, slack=CYCLE_SLACK, origin=CENTRED):
     """The last complete engine cycle in a record of the accumulated crank angle, its axis starting at `origin`
     (rad from firing TDC, crank angle 0 mod 4π: `CENTRED` -2π or `FROM_FIRING_TDC` 0).
 

@@ -31,8 +31,13 @@ def _parser():
     parser.add_argument("--x", required=True, help="swept variable along x")
     parser.add_argument("--y", required=True, help="swept variable along y")
     parser.add_argument("--metric", required=True, help=f"one of {', '.join(METRICS)}, or response")
-    parser.add_argument("--where", action="append", default=[], metavar="NAME=VALUE",
-                        help="keep the points where another swept variable has this value (repeatable)")
+    parser.add_argument(
+        "--where",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="keep the points where another swept variable has this value (repeatable)",
+    )
     parser.add_argument("--out", type=Path, help="PNG to write (default: DIR/<metric>_<x>_<y>.png)")
     return parser
 
@@ -76,17 +81,26 @@ def heat_map(table, x, y, metric, path, title):
 
     fig, ax = plt.subplots(figsize=(7, 5.5))
     grid_x, grid_y = np.unique(xs), np.unique(ys)
-    cells = {(a, b) for a, b in zip(xs, ys)}
+    cells = set(zip(xs, ys, strict=True))
     if len(cells) == len(xs) == len(grid_x) * len(grid_y):
         image = np.full((len(grid_y), len(grid_x)), np.nan)
         image[np.searchsorted(grid_y, ys), np.searchsorted(grid_x, xs)] = values
-        artist = ax.pcolormesh(_cell_edges(grid_x) * x_factor, _cell_edges(grid_y) * y_factor,
-                               np.ma.masked_invalid(image), cmap=cmap, **norm)
+        artist = ax.pcolormesh(
+            _cell_edges(grid_x) * x_factor,
+            _cell_edges(grid_y) * y_factor,
+            np.ma.masked_invalid(image),
+            cmap=cmap,
+            **norm,
+        )
     elif len(cells) == len(xs):
-        artist = ax.scatter(xs * x_factor, ys * y_factor, c=np.ma.masked_invalid(values), cmap=cmap, plotnonfinite=True, s=60, **norm)
+        artist = ax.scatter(
+            xs * x_factor, ys * y_factor, c=np.ma.masked_invalid(values), cmap=cmap, plotnonfinite=True, s=60, **norm
+        )
     else:
-        raise Refusal(f"several points share an ({x}, {y}) pair: other variables vary; pick one value of each "
-                         "with --where NAME=VALUE")
+        raise Refusal(
+            f"several points share an ({x}, {y}) pair: other variables vary; pick one value of each "
+            "with --where NAME=VALUE"
+        )
     bar = fig.colorbar(artist, ax=ax)
     if metric == "response":
         bar.set_ticks(range(len(RESPONSES)), labels=RESPONSES)

@@ -51,14 +51,26 @@ def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED):
     sliding contact), and contact force per corner."""
     deg = np.degrees(angle)
     fig, (lateral, tilt, states, forces) = _axes(4, "Piston secondary motion over one engine cycle", case, origin)
-    for name, label, style in (("skirt_top_lateral", "skirt top (K1/K3 level)", "-"),
-                               ("skirt_bottom_lateral", "skirt bottom (K2/K4 level)", "-"),
-                               ("piston_lateral", "pin", ":")):
+    for name, label, style in (
+        ("skirt_top_lateral", "skirt top (K1/K3 level)", "-"),
+        ("skirt_bottom_lateral", "skirt bottom (K2/K4 level)", "-"),
+        ("piston_lateral", "pin", ":"),
+    ):
         lateral.plot(deg, result[name] * 1e6, style, label=label)
-    for sign, (label, _, colour) in zip((1, -1), SIDES):
-        lateral.axhline(sign * half_clearance * 1e6, color=colour, lw=0.8, ls="--")
-        lateral.annotate(label.split(" (")[0] + " wall", (np.degrees(origin) + 5, sign * half_clearance * 1e6), color=colour,
-                         fontsize="x-small", va="top" if sign > 0 else "bottom")
+    # the walls' names beyond the walls, where no curve can run
+    wall = half_clearance * 1e6
+    lateral.set_ylim(-1.4 * wall, 1.4 * wall)
+    for sign, (label, _, colour) in zip((1, -1), SIDES, strict=True):
+        lateral.axhline(sign * wall, color=colour, lw=0.8, ls="--")
+        lateral.annotate(
+            label.split(" (")[0] + " wall",
+            (np.degrees(origin) + 5, sign * wall),
+            xytext=(0, 2 * sign),
+            textcoords="offset points",
+            color=colour,
+            fontsize="x-small",
+            va="bottom" if sign > 0 else "top",
+        )
     lateral.set_ylabel("eccentricity x [µm]\n(+ toward major thrust)")
     _legend(lateral, ncol=3)
     tilt.plot(deg, result["piston_tilt"] * 1e3)
@@ -88,13 +100,23 @@ def slap(events, is_slap, slap_threshold, path, case, origin=CENTRED):
         slaps, others = mine & is_slap, mine & ~is_slap
         for ax, values in ((energy, events["energy_lost"] * 1e3), (speed, events["normal_velocity_before"] * 1e3)):
             ax.vlines(deg[slaps], 0, values[slaps], color=colour, lw=1)
-            ax.plot(deg[slaps], values[slaps], "o", color=colour, ms=5, zorder=4,
-                    label=f"{label}: {slaps.sum()} slaps")
-            ax.plot(deg[others], values[others], "o", mfc="none", color=colour, ms=3, mew=0.8, zorder=3, clip_on=False,
-                    label=f"{label}: {others.sum()} other impacts")
-    speed.axhline(slap_threshold * 1e3, color="k", lw=0.8, ls="--")
-    speed.annotate(f"slap threshold {slap_threshold * 1e3:g} mm/s", (np.degrees(origin) + 5, slap_threshold * 1e3),
-                   fontsize="x-small", va="bottom")
+            ax.plot(deg[slaps], values[slaps], "o", color=colour, ms=5, zorder=4, label=f"{label}: {slaps.sum()} slaps")
+            ax.plot(
+                deg[others],
+                values[others],
+                "o",
+                mfc="none",
+                color=colour,
+                ms=3,
+                mew=0.8,
+                zorder=3,
+                clip_on=False,
+                label=f"{label}: {others.sum()} other impacts",
+            )
+    # named in the legend: a label on the line would sit among the bounces that follow each slap
+    speed.axhline(
+        slap_threshold * 1e3, color="k", lw=0.8, ls="--", label=f"slap threshold {slap_threshold * 1e3:g} mm/s"
+    )
     energy.set_ylabel("energy dissipated\nper impact [mJ]")
     speed.set_ylabel("impact speed [mm/s]")
     for ax in (energy, speed):
@@ -112,7 +134,7 @@ def _zero_at_same_height(*axes):
     # the largest fraction of the height below zero, given to every axis
     below = max(-lo / (hi - lo) for lo, hi in limits)
     if below < 1:
-        for ax, (lo, hi) in zip(axes, limits):
+        for ax, (lo, hi) in zip(axes, limits, strict=True):
             ax.set_ylim(min(lo, -below * hi / (1 - below)), hi)
 
 
@@ -129,8 +151,15 @@ def forces(angle, result, path, case, origin=CENTRED):
     _zero_at_same_height(side, pressure)
     side.axhline(0, color="k", lw=0.5, label="_zero")
     lines = [line for line in side.get_lines() + pressure.get_lines() if not line.get_label().startswith("_")]
-    side.legend(lines, [line.get_label() for line in lines], loc="lower right", bbox_to_anchor=(1, 1), ncol=2,
-                fontsize="small", frameon=False)
+    side.legend(
+        lines,
+        [line.get_label() for line in lines],
+        loc="lower right",
+        bbox_to_anchor=(1, 1),
+        ncol=2,
+        fontsize="small",
+        frameon=False,
+    )
     torque.plot(deg, result["engine_torque"])
     torque.set_ylabel("engine torque [N·m]\n(+ along rotation)")
     return _save(fig, path)
@@ -180,17 +209,23 @@ def position_frames(angle, result, events, every_deg, origin=CENTRED):
     for target in np.arange(np.degrees(origin), np.degrees(origin) + 720, every_deg):
         k = int(np.argmin(np.abs(deg - target)))
         recent = (hit > target - every_deg) & (hit <= target)
-        frames.append({
-            "deg": target, "top": result["skirt_top_lateral"][k], "bottom": result["skirt_bottom_lateral"][k],
-            "sliding": [c for c in CORNERS if result[f"contact_state_{c}"][k] > 0],
-            "hit": sorted(set(impacts["corner"][recent].tolist())),
-        })
+        frames.append(
+            {
+                "deg": target,
+                "top": result["skirt_top_lateral"][k],
+                "bottom": result["skirt_bottom_lateral"][k],
+                "sliding": [c for c in CORNERS if result[f"contact_state_{c}"][k] > 0],
+                "hit": sorted(set(impacts["corner"][recent].tolist())),
+            }
+        )
     return frames
 
 
 def _positions_caption(magnification):
-    return (f"clearance and tilt magnified {magnification:g}×; red: major-thrust wall (+x), blue: anti-thrust wall; "
-            "● corner sliding on the liner, ○ corner hit since the previous frame; + piston pin")
+    return (
+        f"clearance and tilt magnified {magnification:g}×; red: major-thrust wall (+x), blue: anti-thrust wall; "
+        "● corner sliding on the liner, ○ corner hit since the previous frame; + piston pin"
+    )
 
 
 def piston_positions(angle, result, events, geometry, magnification, path, case, every_deg=30, origin=CENTRED):
@@ -200,12 +235,13 @@ def piston_positions(angle, result, events, geometry, magnification, path, case,
     columns = 8
     rows = -(-len(frames) // columns)
     fig, axes = plt.subplots(rows, columns, figsize=(1.5 * columns, 2.1 * rows + 1.0), squeeze=False)
-    for ax, frame in zip(axes.flat, frames):
+    for ax, frame in zip(axes.flat, frames, strict=False):
         _draw_piston(ax, frame, geometry, magnification)
-    for ax in axes.flat[len(frames):]:
+    for ax in axes.flat[len(frames) :]:
         ax.set_visible(False)
-    fig.suptitle(f"Successive piston positions in the bore over one engine cycle (0° = firing TDC)\n{case}",
-                 fontsize="medium")
+    fig.suptitle(
+        f"Successive piston positions in the bore over one engine cycle (0° = firing TDC)\n{case}", fontsize="medium"
+    )
     fig.text(0.5, 0.01, _positions_caption(magnification), ha="center", fontsize="small")
     fig.tight_layout(rect=(0, 0.03, 1, 1))
     fig.savefig(path, dpi=110)

@@ -14,6 +14,9 @@ class Preset:
     values: dict = field(default_factory=dict)
 
 
+#: Farahanchi's table is in US customary units: pound-force and inch, masses in lbf·s²/in, inertias in lbf·s²·in.
+_LBF, _INCH = 4.4482216152605, 0.0254
+
 PRESETS = {
     "awrejcewicz-kudra": Preset(
         summary="the FMU's default: the academic engine of the paper (1200 rpm, 80 bar, 80 µm)",
@@ -21,32 +24,89 @@ PRESETS = {
     ),
     "flores": Preset(
         summary="the Flores-Leine-Glocker slider crank with a free crank at 150 rad/s, mu = 0.01, gravity across",
-        source="P. Flores, R. Leine, C. Glocker, Multibody System Dynamics 23 (2010) 165-190, as published "
-               "(the mapping of /work/shared/benchmarks/flores-slider-crank.md)",
+        source=(
+            "P. Flores, R. Leine, C. Glocker, Multibody System Dynamics 23 (2010) 165-190, as published "
+            "(the mapping of /work/shared/benchmarks/flores-slider-crank.md)"
+        ),
         values={
-            "crank_mode": 2, "pressure_source": 1, "crank_speed": 150.0, "gas_pressure": 0.0, "load_torque": 0.0,
-            "crank_radius": 0.153, "rod_length": 0.306, "crank_com": 0.0765, "rod_com": 0.153, "piston_com": 0.0,
-            "crank_mass": 0.038, "rod_mass": 0.038, "piston_mass": 0.076,
-            "crank_inertia": 7.4e-5, "rod_inertia": 5.9e-4, "piston_inertia": 2.7e-6,
-            "piston_diameter": 0.05, "skirt_length": 0.1, "pin_height": 0.05, "bore": 0.052, "restitution": 0.4,
-            "damping_main": 0.0, "damping_crank_pin": 0.0, "damping_piston_pin": 0.0, "gravity": 0.0,
-            "gravity_lateral": 9.81, "friction": 0.01, "piston_tilt_rate_start": -0.01,
+            "crank_mode": 2,
+            "pressure_source": 1,
+            "crank_speed": 150.0,
+            "gas_pressure": 0.0,
+            "load_torque": 0.0,
+            "crank_radius": 0.153,
+            "rod_length": 0.306,
+            "crank_com": 0.0765,
+            "rod_com": 0.153,
+            "piston_com": 0.0,
+            "crank_mass": 0.038,
+            "rod_mass": 0.038,
+            "piston_mass": 0.076,
+            "crank_inertia": 7.4e-5,
+            "rod_inertia": 5.9e-4,
+            "piston_inertia": 2.7e-6,
+            "piston_diameter": 0.05,
+            "skirt_length": 0.1,
+            "pin_height": 0.05,
+            "bore": 0.052,
+            "restitution": 0.4,
+            "damping_main": 0.0,
+            "damping_crank_pin": 0.0,
+            "damping_piston_pin": 0.0,
+            "gravity": 0.0,
+            "gravity_lateral": 9.81,
+            "friction": 0.01,
+            "piston_tilt_rate_start": -0.01,
         },
     ),
     "lu2018-diesel": Preset(
         summary="a 110 mm bore diesel at 1680 rpm (piston 1.39 kg, rod 1.7 kg, 50 µm radial skirt clearance)",
-        source="Y. J. Lu, S. Li, P. Wang, C. Liu, Y. Zhang, N. Müller, \"The Analysis of Secondary Motion and "
-               "Lubrication Performance of Piston considering the Piston Skirt Profile\", Shock and Vibration 2018, "
-               "3240469, Table 2. Read as: rod centre of mass from the crank pin, piston centre of mass from the pin, "
-               "pin 37.3 mm below the skirt top, the 50 µm clearance radial (bore = piston + 2 x 50 µm), the "
-               "solid-solid friction coefficient 0.1 as liner friction; the gas pressure is not in the table (the "
-               "built-in curve at its default peak)",
+        source=(
+            'Y. J. Lu, S. Li, P. Wang, C. Liu, Y. Zhang, N. Müller, "The Analysis of Secondary Motion and '
+            'Lubrication Performance of Piston considering the Piston Skirt Profile", Shock and Vibration 2018, '
+            "3240469, Table 2. Read as: rod centre of mass from the crank pin, piston centre of mass from the pin, "
+            "pin 37.3 mm below the skirt top, the 50 µm clearance radial (bore = piston + 2 x 50 µm), the "
+            "solid-solid friction coefficient 0.1 as liner friction; the gas pressure is not in the table (the "
+            "built-in curve at its default peak)"
+        ),
         values={
-            "crank_speed": 1680 * 3.141592653589793 / 30, "crank_radius": 0.072, "rod_length": 0.223,
-            "rod_com": 0.072, "piston_com": 0.0108, "crank_mass": 23.5, "crank_inertia": 2.0,
-            "rod_mass": 1.7, "rod_inertia": 0.017, "piston_mass": 1.39, "piston_inertia": 0.003,
-            "piston_diameter": 0.110, "bore": 0.110 + 2 * 50e-6, "skirt_length": 0.0828, "pin_height": 0.0373,
-            "pin_offset": 0.0, "friction": 0.1,
+            "crank_speed": 1680 * 3.141592653589793 / 30,
+            "crank_radius": 0.072,
+            "rod_length": 0.223,
+            "rod_com": 0.072,
+            "piston_com": 0.0108,
+            "crank_mass": 23.5,
+            "crank_inertia": 2.0,
+            "rod_mass": 1.7,
+            "rod_inertia": 0.017,
+            "piston_mass": 1.39,
+            "piston_inertia": 0.003,
+            "piston_diameter": 0.110,
+            "bore": 0.110 + 2 * 50e-6,
+            "skirt_length": 0.0828,
+            "pin_height": 0.0373,
+            "pin_offset": 0.0,
+            "friction": 0.1,
+        },
+    ),
+    "ford-gasoline": Preset(
+        summary="a Ford four-cylinder gasoline car engine's slider crank (84 mm stroke, piston 0.368 kg, rod 0.699 kg)",
+        source=(
+            "F. Farahanchi, Chaotic and periodic dynamics of a slider crank mechanism with slider clearance, "
+            "M.S. thesis, Michigan State University, 1991, section 4.1: a Ford Motor Company automotive four-cylinder "
+            "gasoline engine (from H. H. Denman, Mechanism and Machine Theory 23 (1988) 435-439): crank radius "
+            "1.6535 in, rod 5.4570 in, rod mass 0.00399 and piston mass 0.00210 lbf s^2/in, rod inertia about its "
+            "centre of mass 0.0295 lbf s^2 in; the rod uniform (section 2.2), its centre of mass at mid-length. "
+            "Not in the source, so the FMU's defaults: the 80 mm piston, its skirt, pin height and inertia, the "
+            "80 µm clearance, 1200 rpm and the built-in pressure curve at 80 bar"
+        ),
+        values={
+            "crank_radius": 1.6535 * _INCH,
+            "rod_length": 5.4570 * _INCH,
+            "rod_com": 5.4570 * _INCH / 2,
+            "rod_mass": 0.00399 * _LBF / _INCH,
+            "piston_mass": 0.00210 * _LBF / _INCH,
+            "rod_inertia": 0.0295 * _LBF * _INCH,
         },
     ),
 }

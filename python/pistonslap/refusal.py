@@ -38,8 +38,11 @@ def number(text, name, low=None, high=None, low_open=False, unit="", meaning="")
         bounds = [f"{'>' if low_open else '>='} {low:g}"] if low is not None else []
         bounds += [f"<= {high:g}"] if high is not None else []
         what = f"{meaning} must be" if meaning else "give"
-        raise Refusal(f"{name} = {text:g}{unit}: {what} a finite number {' and '.join(bounds)}{unit}".rstrip()
-                      if isinstance(text, float) else f"{name} = {text}: {what} a finite number {' and '.join(bounds)}")
+        raise Refusal(
+            f"{name} = {text:g}{unit}: {what} a finite number {' and '.join(bounds)}{unit}".rstrip()
+            if isinstance(text, float)
+            else f"{name} = {text}: {what} a finite number {' and '.join(bounds)}"
+        )
     return value
 
 
@@ -71,8 +74,9 @@ def check_start_values(start_values, fmu, model_description=None):
     if unknown:
         raise Refusal(f"the FMU has no variable {', '.join(unknown)}")
     try:
-        fmpy.simulate_fmu(str(fmu), model_description=md, start_values=dict(start_values), stop_time=0.0,
-                          output=[], logger=logger)
+        fmpy.simulate_fmu(
+            str(fmu), model_description=md, start_values=dict(start_values), stop_time=0.0, output=[], logger=logger
+        )
     except Exception as e:  # fmpy raises its own exception types; the FMU's log says why
         raise Refusal(f"the FMU refuses: {errors[-1] if errors else e}") from None
     if errors:

@@ -9,9 +9,11 @@ import numpy as np
 XI, ALPHA, BETA = 0.3030, 1.9, 0.4719
 CRANK_CYCLE = 2 * np.pi
 
+
 @dataclass
 class Run:
     """One simulated case, in thesis units: every impact and sliding start of `cycles` crank cycles."""
+
     lam: float
     rho: float
     e: float
@@ -47,8 +49,12 @@ def impacts_from_log(events, rho, start=0.0, xi=XI, length=1.0, speed=1.0):
     rate = wall * (wall_rate + approach)
     slides = events[events["kind"] == "slide"]
     return dict(
-        cycle=np.floor(theta / CRANK_CYCLE).astype(int), theta=np.mod(theta, CRANK_CYCLE), wall=wall,
-        rate=rate, approach=approach, location=impacts["position"] / length,
+        cycle=np.floor(theta / CRANK_CYCLE).astype(int),
+        theta=np.mod(theta, CRANK_CYCLE),
+        wall=wall,
+        rate=rate,
+        approach=approach,
+        location=impacts["position"] / length,
         slide_cycle=np.floor((start + speed * slides["time"]) / CRANK_CYCLE).astype(int),
     )
 
@@ -59,17 +65,18 @@ def roller_run(events, values, cycles):
     divided out."""
     length = values["rod_length"]
     rho = (values["bore"] - values["piston_diameter"]) / (2 * length)
-    quantities = impacts_from_log(events, rho, values["crank_angle_start"], values["crank_radius"] / length, length,
-                                  values["crank_speed"])
+    quantities = impacts_from_log(
+        events, rho, values["crank_angle_start"], values["crank_radius"] / length, length, values["crank_speed"]
+    )
     lam = values["damping_crank_pin"] / (values["piston_mass"] * length**2 * values["crank_speed"])
-    return Run(lam=lam, rho=rho, e=values["restitution"], forcing=values["roller_forcing"],
-               cycles=cycles, **quantities)
+    return Run(lam=lam, rho=rho, e=values["restitution"], forcing=values["roller_forcing"], cycles=cycles, **quantities)
 
 
 @dataclass
 class Response:
     """The steady response by recurrence of the impacts: `kind` is 'periodic', 'transient chaos' or 'chaos';
     `period` in crank cycles and `settled` (first crank cycle of the recurring pattern) when it recurs."""
+
     kind: str
     period: int = 0
     settled: int = 0
@@ -85,7 +92,7 @@ def _cycle_patterns(run):
     order = np.argsort(run.cycle, kind="stable")
     rows = np.column_stack([run.wall, run.theta, run.rate])[order]
     bounds = np.searchsorted(run.cycle[order], np.arange(run.cycles + 1))
-    return [rows[bounds[k]:bounds[k + 1]] for k in range(run.cycles)]
+    return [rows[bounds[k] : bounds[k + 1]] for k in range(run.cycles)]
 
 
 #: Crank cycles of chaos after which a response that becomes periodic counts as transient chaos. The thesis
@@ -101,8 +108,9 @@ MAX_PERIOD, MIN_REPEATS = 16, 10
 CLASSIFIABLE_CYCLES = CHAOTIC_TRANSIENT + MAX_PERIOD * (MIN_REPEATS + 1)
 
 
-def classify(run, settle_limit=CHAOTIC_TRANSIENT, max_period=MAX_PERIOD, tolerance=1e-3, coarse=0.05,
-             min_repeats=MIN_REPEATS):
+def classify(
+    run, settle_limit=CHAOTIC_TRANSIENT, max_period=MAX_PERIOD, tolerance=1e-3, coarse=0.05, min_repeats=MIN_REPEATS
+):
     """Classifies the response by the recurrence of each crank cycle's impacts (the points of the Poincare
     section and their lower-wall counterparts): cycle k recurs with period p when cycle k + p has the same
     walls in the same order, at crank angles (rad) and rates (in units of rho) within a tolerance.
@@ -119,7 +127,9 @@ def classify(run, settle_limit=CHAOTIC_TRANSIENT, max_period=MAX_PERIOD, toleran
     def recurs_from(p, tol):
         def same(a, b):
             return a.shape == b.shape and (
-                a.size == 0 or (np.array_equal(a[:, 0], b[:, 0]) and (np.abs(a[:, 1:] - b[:, 1:]) / scale).max() < tol))
+                a.size == 0 or (np.array_equal(a[:, 0], b[:, 0]) and (np.abs(a[:, 1:] - b[:, 1:]) / scale).max() < tol)
+            )
+
         k = n - p - 1
         while k >= 0 and same(patterns[k], patterns[k + p]):
             k -= 1

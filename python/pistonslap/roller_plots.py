@@ -58,7 +58,7 @@ def forces_sheet(figures, curves, regions, path):
     n = len(figures)
     fig, axes = plt.subplots(2, (n + 3) // 2, figsize=(5 * ((n + 3) // 2), 8), squeeze=False)
     axes = axes.ravel()
-    for ax, (name, (rho, lam)) in zip(axes, figures.items()):
+    for ax, (name, (rho, lam)) in zip(axes, figures.items(), strict=False):
         for forcing, style in ((1, "-"), (2, "--")):
             data = curves[name, forcing]
             ax.plot(data[:, 0], data[:, 1], style, color="tab:red", label=f"f_u, forcing {forcing}")
@@ -69,17 +69,24 @@ def forces_sheet(figures, curves, regions, path):
         ax.set_xlabel("crank angle θ [rad]")
         ax.set_ylabel("constraint force (eq 2.29) [thesis units]")
     axes[0].legend(fontsize="x-small", title="u: upper wall, l: lower wall", title_fontsize="x-small")
-    for ax, forcing in zip(axes[n:], (1, 2)):
-        rows = np.array([(float(r), float(l), _REGION_CODES[g]) for r, l, g in regions[forcing]])
-        size = int(round(np.sqrt(len(rows))))
+    for ax, forcing in zip(axes[n:], (1, 2), strict=False):
+        rows = np.array([(float(r), float(lam), _REGION_CODES[g]) for r, lam, g in regions[forcing]])
+        size = round(np.sqrt(len(rows)))
         grid = rows[:, 2].reshape(size, size)
-        image = ax.imshow(grid.T, origin="lower", aspect="auto", cmap="viridis", vmin=0, vmax=3,
-                          extent=(0, rows[:, 0].max(), 0, rows[:, 1].max()))
+        image = ax.imshow(
+            grid.T,
+            origin="lower",
+            aspect="auto",
+            cmap="viridis",
+            vmin=0,
+            vmax=3,
+            extent=(0, rows[:, 0].max(), 0, rows[:, 1].max()),
+        )
         ax.set_xlabel("clearance ρ [-]")
         ax.set_ylabel("damping λ [-]")
         ax.set_title(f"Fig 2.10, forcing {forcing}: regions 0 none, I, II, III", fontsize="small")
         fig.colorbar(image, ax=ax, ticks=[0, 1, 2, 3])
-    for ax in axes[n + 2:]:
+    for ax in axes[n + 2 :]:
         ax.axis("off")
     return _save(fig, path)
 
@@ -91,7 +98,9 @@ def thesis_sheet(cases, path):
     fig, axes = plt.subplots(2 * rows, cols, figsize=(4 * cols, 5.6 * rows), squeeze=False)
     for k, (run, response, profile, points) in enumerate(cases):
         r, c = divmod(k, cols)
-        title = f"λ={run.lam:g} ρ={run.rho:g} e={run.e:g}\n{response.kind}" + (f" P{response.period}" if response.period else "")
+        title = f"λ={run.lam:g} ρ={run.rho:g} e={run.e:g}\n{response.kind}" + (
+            f" P{response.period}" if response.period else ""
+        )
         _profile(axes[2 * r, c], profile, title)
         _poincare(axes[2 * r + 1, c], points)
     for k in range(len(cases), rows * cols):

@@ -33,9 +33,16 @@ def units(model_description):
 #: The running clearance as engine people quote it: diametral, c = D − d (bore less piston diameter), m (display µm).
 #: Not an FMU variable: it sets `bore` to `piston_diameter` + c (`to_fmu`).
 CLEARANCE = SimpleNamespace(
-    name="clearance", type="Real", causality="parameter", unit="m", min="0", max=None, start=None,
+    name="clearance",
+    type="Real",
+    causality="parameter",
+    unit="m",
+    min="0",
+    max=None,
+    start=None,
     declaredType=SimpleNamespace(unit="m", min=None, max=None, displayUnit="µm"),
-    description="diametral clearance c = bore - piston_diameter")
+    description="diametral clearance c = bore - piston_diameter",
+)
 
 
 def settable(model_description):
@@ -70,8 +77,9 @@ def value_of(name, text, model_description, where):
     if variable.type == "String":
         return str(text)
     if isinstance(text, bool) or variable.type == "Boolean":
-        if variable.type != "Boolean" or not isinstance(text, bool) and text not in ("true", "false"):
-            raise Refusal(f"{where}: {name} is a {variable.type}; give {'true or false' if variable.type == 'Boolean' else 'a number'}")
+        if variable.type != "Boolean" or (not isinstance(text, bool) and text not in ("true", "false")):
+            wanted = "true or false" if variable.type == "Boolean" else "a number"
+            raise Refusal(f"{where}: {name} is a {variable.type}; give {wanted}")
         return text if isinstance(text, bool) else text == "true"
     if isinstance(text, (int, float)):
         number, unit = float(text), ""

@@ -12,11 +12,10 @@ import tempfile
 from pathlib import Path
 
 import fmpy
+import pyarrow.parquet as pq
 from distributed import Client, LocalCluster, as_completed, get_worker
 from distributed.diagnostics.plugin import WorkerPlugin
 from tqdm import tqdm
-
-import pyarrow.parquet as pq
 
 from .fmu import fmu_path
 from .refusal import Parser, Refusal
@@ -50,9 +49,14 @@ class FmuPlugin(WorkerPlugin):
 def run_batch(points, fixed, cycles, skip_cycles):
     """The rows of `points` ((index, swept values) pairs), run on this worker's extracted FMU."""
     fmu = get_worker().plugins[FmuPlugin.name]
-    return [dict(point=index, **values,
-                 **run_point(fmu.folder, fmu.model_description, dict(fixed, **values), cycles, skip_cycles))
-            for index, values in points]
+    return [
+        dict(
+            point=index,
+            **values,
+            **run_point(fmu.folder, fmu.model_description, dict(fixed, **values), cycles, skip_cycles),
+        )
+        for index, values in points
+    ]
 
 
 def run(spec, out, client, fmu=None, batch_size=None, progress=True):
@@ -64,10 +68,25 @@ def run(spec, out, client, fmu=None, batch_size=None, progress=True):
         client.register_plugin(FmuPlugin(Path(fmu or fmu_path()).read_bytes()))
         workers = max(len(client.scheduler_info(n_workers=-1)["workers"]), 1)
         size = batch_size or min(max(math.ceil(len(todo) / (BATCHES_PER_WORKER * workers)), 1), MAX_BATCH)
-        futures = [client.submit(run_batch, [(i, spec.points[i]) for i in todo[k:k + size]], spec.fixed, spec.cycles,
-                                 spec.skip_cycles, pure=False) for k in range(0, len(todo), size)]
-        with tqdm(total=len(spec.points), initial=len(spec.points) - len(todo), unit="point", disable=not progress,
-                  desc=spec.name, file=sys.stderr) as bar:
+        futures = [
+            client.submit(
+                run_batch,
+                [(i, spec.points[i]) for i in todo[k : k + size]],
+                spec.fixed,
+                spec.cycles,
+                spec.skip_cycles,
+                pure=False,
+            )
+            for k in range(0, len(todo), size)
+        ]
+        with tqdm(
+            total=len(spec.points),
+            initial=len(spec.points) - len(todo),
+            unit="point",
+            disable=not progress,
+            desc=spec.name,
+            file=sys.stderr,
+        ) as bar:
             for future in as_completed(futures):
                 rows = future.result()
                 store.write_part(rows)
@@ -79,8 +98,12 @@ def _parser():
     parser = Parser(prog="pistonslap sweep", description=__doc__.splitlines()[0])
     parser.add_argument("spec", type=Path, help="the sweep's TOML spec")
     where = parser.add_mutually_exclusive_group()
-    where.add_argument("--workers", type=int, default=os.cpu_count(),
-                       help="worker processes of a local cluster, one thread each (default: all cores)")
+    where.add_argument(
+        "--workers",
+        type=int,
+        default=os.cpu_count(),
+        help="worker processes of a local cluster, one thread each (default: all cores)",
+    )
     where.add_argument("--scheduler", help="address of a running Dask scheduler (tcp://host:8786) to use instead")
     parser.add_argument("--out", type=Path, default=Path("out/sweeps"), help="results folder (default out/sweeps)")
     parser.add_argument("--batch", type=int, help="points per task (default: about ten tasks per worker)")
@@ -97,7 +120,7 @@ def connect(workers, scheduler):
 def summary(path, ran):
     """One line on the results at `path`: points, run now, failed, and the first failure's point and message."""
     table = pq.read_table(path, columns=["point", "status"])
-    failed = [(p, s) for p, s in zip(table["point"].to_pylist(), table["status"].to_pylist()) if s != "ok"]
+    failed = [(p, s) for p, s in zip(table["point"].to_pylist(), table["status"].to_pylist(), strict=True) if s != "ok"]
     line = f"wrote {path} ({table.num_rows} points, {ran} run now, {len(failed)} failed"
     return line + (f"; first failure: point {failed[0][0]}: {failed[0][1]})" if failed else ")")
 

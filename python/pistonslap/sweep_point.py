@@ -3,14 +3,16 @@
 import numpy as np
 from fmpy.fmi1 import FMICallException
 
-from .response import CLASSIFIABLE_CYCLES, classify, roller_run
 from .fmu import CYCLE, simulate_with_events
+from .response import CLASSIFIABLE_CYCLES, classify, roller_run
 from .settings import to_fmu
 from .tables import side_changes
 
 #: The results' columns after the swept values, and their units.
 METRICS = {
-    "impacts_per_cycle": "1/cycle", "max_impact_velocity": "m/s", "impact_energy_per_cycle": "J/cycle",
+    "impacts_per_cycle": "1/cycle",
+    "max_impact_velocity": "m/s",
+    "impact_energy_per_cycle": "J/cycle",
     "side_changes_per_cycle": "1/cycle",
 }
 #: Then the response (variant 2, runs of at least CLASSIFIABLE_CYCLES crank cycles; else empty), its period and the
@@ -43,11 +45,18 @@ def run_point(fmu, model_description, values, cycles, skip_cycles):
 
     try:
         _, events = simulate_with_events(
-            fmu=fmu, model_description=model_description, start_values=values, stop_time=cycles * angle / speed,
-            output_interval=angle / speed, output=["impact_count"], logger=logger)
+            fmu=fmu,
+            model_description=model_description,
+            start_values=values,
+            stop_time=cycles * angle / speed,
+            output_interval=angle / speed,
+            output=["impact_count"],
+            logger=logger,
+        )
     except FMICallException as e:
-        return dict(dict.fromkeys(METRICS, np.nan), response=None, period=0, settled=0,
-                    status=errors[-1] if errors else str(e))
+        return dict(
+            dict.fromkeys(METRICS, np.nan), response=None, period=0, settled=0, status=errors[-1] if errors else str(e)
+        )
     row = metrics(events, speed * events["time"] // angle, cycles, skip_cycles)
     kind, period, settled = None, 0, 0
     if every["model_variant"] == 2 and cycles >= CLASSIFIABLE_CYCLES:

@@ -66,8 +66,9 @@ def parse(raw, model_description):
         raise SpecError(f"unknown entries {sorted(unknown)}; a spec has {sorted(_TOP_LEVEL)}")
     name = raw.get("name")
     if not isinstance(name, str) or not name or not name.replace("-", "").replace("_", "").replace(".", "").isalnum():
-        raise SpecError(f"name = {name!r}: give a non-empty name of letters, digits, '-', '_' or '.' (it names the "
-                        "results folder)")
+        raise SpecError(
+            f"name = {name!r}: give a non-empty name of letters, digits, '-', '_' or '.' (it names the results folder)"
+        )
     cycles = _integer(raw.get("cycles"), "cycles", minimum=1)
     skip = _integer(raw.get("skip_cycles", 0), "skip_cycles", minimum=0)
     if skip >= cycles:
@@ -88,9 +89,12 @@ def parse(raw, model_description):
         raise SpecError("nothing to sweep: give [grid] or [random]")
 
     swept = tuple(grid) + tuple(random)
-    samples = [dict(zip(random, row)) for row in zip(*random.values())] if random else [{}]
-    points = [dict(zip(grid, combination), **sample)
-              for combination in itertools.product(*grid.values()) for sample in samples]
+    samples = [dict(zip(random, row, strict=True)) for row in zip(*random.values(), strict=True)] if random else [{}]
+    points = [
+        dict(zip(grid, combination, strict=True), **sample)
+        for combination in itertools.product(*grid.values())
+        for sample in samples
+    ]
     return Spec(name=name, cycles=cycles, skip_cycles=skip, fixed=fixed, swept=swept, points=points)
 
 

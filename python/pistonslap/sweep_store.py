@@ -1,8 +1,8 @@
 """A sweep's folder: its spec, the parquet part written for each finished batch, and the merged results.
 
-    DIR/<name>/spec.json        the spec the results belong to (a rerun with another spec is refused)
-    DIR/<name>/parts/*.parquet  one per finished batch, each written whole (to a temporary name, then renamed)
-    DIR/<name>/results.parquet  every recorded point, one row each, by point index
+DIR/<name>/spec.json        the spec the results belong to (a rerun with another spec is refused)
+DIR/<name>/parts/*.parquet  one per finished batch, each written whole (to a temporary name, then renamed)
+DIR/<name>/results.parquet  every recorded point, one row each, by point index
 """
 
 import json
@@ -31,13 +31,17 @@ class Store:
         recorded = self.folder / "spec.json"
         identity = json.dumps(asdict(spec), sort_keys=True)
         if recorded.exists() and recorded.read_text() != identity:
-            raise SpecError(f"{self.folder} holds the results of another spec named {spec.name!r}: give another "
-                            "--out or name, or remove the folder")
+            raise SpecError(
+                f"{self.folder} holds the results of another spec named {spec.name!r}: give another "
+                "--out or name, or remove the folder"
+            )
         recorded.write_text(identity)
         self.schema = pa.schema(
-            [("point", pa.int64())] + [(name, _ARROW[type(value)]) for name, value in spec.points[0].items()]
+            [("point", pa.int64())]
+            + [(name, _ARROW[type(value)]) for name, value in spec.points[0].items()]
             + [(name, pa.float64()) for name in METRICS]
-            + [("response", pa.string()), ("period", pa.int64()), ("settled", pa.int64()), ("status", pa.string())])
+            + [("response", pa.string()), ("period", pa.int64()), ("settled", pa.int64()), ("status", pa.string())]
+        )
 
     def write_part(self, rows):
         """Records finished points (dicts with every column) as one part file, atomically."""

@@ -7,10 +7,17 @@ import numpy as np
 
 #: The FMU's per-cycle outputs and their units: slaps (side changes) per wall, then all impacts.
 CYCLE_METRICS = {
-    "cycle_slap_events": "1", "cycle_slaps_thrust": "1", "cycle_slaps_antithrust": "1",
-    "cycle_slap_energy_thrust": "J", "cycle_slap_energy_antithrust": "J", "cycle_max_slap_energy_thrust": "J",
-    "cycle_max_slap_energy_antithrust": "J", "cycle_impacts": "1", "cycle_impact_energy": "J",
-    "cycle_max_impact_energy_thrust": "J", "cycle_max_impact_energy_antithrust": "J",
+    "cycle_slap_events": "1",
+    "cycle_slaps_thrust": "1",
+    "cycle_slaps_antithrust": "1",
+    "cycle_slap_energy_thrust": "J",
+    "cycle_slap_energy_antithrust": "J",
+    "cycle_max_slap_energy_thrust": "J",
+    "cycle_max_slap_energy_antithrust": "J",
+    "cycle_impacts": "1",
+    "cycle_impact_energy": "J",
+    "cycle_max_impact_energy_thrust": "J",
+    "cycle_max_impact_energy_antithrust": "J",
 }
 
 

@@ -1,7 +1,7 @@
 """The README's variable tables, generated from the FMU's model description so that they cannot drift from it.
 
-    python -m pistonslap.variable_table README.md      rewrites the part between the two markers below
-    python -m pistonslap.variable_table --check README.md   exit 1 when that part differs from the FMU's table
+python -m pistonslap.variable_table README.md      rewrites the part between the two markers below
+python -m pistonslap.variable_table --check README.md   exit 1 when that part differs from the FMU's table
 """
 
 import sys
@@ -44,12 +44,17 @@ def tables(model_description):
     parts = []
     for causality, title in _CAUSALITIES:
         rows = [v for v in model_description.modelVariables if v.causality == causality]
-        lines = [f"{title} ({len(rows)}):", "", "| name | type | unit (display) | start | range | description |",
-                 "|---|---|---|---|---|---|"]
+        lines = [
+            f"{title} ({len(rows)}):",
+            "",
+            "| name | type | unit (display) | start | range | description |",
+            "|---|---|---|---|---|---|",
+        ]
         for v in rows:
             start = "" if v.start is None else (f'"{v.start}"' if v.type == "String" else v.start)
-            lines.append(f"| `{v.name}` | {v.type} | {_unit(v)} | {_cell(start)} | {_range(v)} | "
-                         f"{_cell(v.description or '')} |")
+            lines.append(
+                f"| `{v.name}` | {v.type} | {_unit(v)} | {_cell(start)} | {_range(v)} | {_cell(v.description or '')} |"
+            )
         parts.append("\n".join(lines))
     return "\n\n".join(parts)
 
@@ -63,7 +68,7 @@ def replaced(text, model_description):
     start, end = text.find(BEGIN), text.find(END)
     if start < 0 or end < start:
         raise ValueError("the markers of the generated variable tables are missing")
-    return text[:start] + section(model_description) + text[end + len(END):]
+    return text[:start] + section(model_description) + text[end + len(END) :]
 
 
 def main(argv=None):

@@ -67,8 +67,12 @@ class Instance:
 
     def set(self, **values):
         for name, value in values.items():
-            setter = {"Real": self.slave.setReal, "Integer": self.slave.setInteger,
-                      "Boolean": self.slave.setBoolean, "String": self.slave.setString}[self.types[name]]
+            setter = {
+                "Real": self.slave.setReal,
+                "Integer": self.slave.setInteger,
+                "Boolean": self.slave.setBoolean,
+                "String": self.slave.setString,
+            }[self.types[name]]
             setter([self.vr[name]], [value])
 
     def get(self, *names):

@@ -24,6 +24,7 @@ CASES = {
     "FMU refusal": (["demo", "--restitution", "1.5"], ["restitution", "[0, 1]"]),
     "FMU refusal of the pin offset": (["demo", "--pin-offset", "50"], ["pin_offset"]),
     "FMU refusal of the threshold": (["demo", "--slap-threshold", "-5"], ["slap_threshold"]),
+    "firing TDC without a trace": (["demo", "--firing-tdc", "360"], ["--firing-tdc", "--pressure-trace"]),
     "missing file": (["sweep", "nonexist.toml"], ["nonexist.toml"]),
     "zero step": (["coupled", "--step", "0"], ["--step"]),
     "negative step": (["coupled", "--step", "-0.001"], ["--step"]),
@@ -35,14 +36,20 @@ CASES = {
 
 
 def _run(args, cwd):
-    return subprocess.run([str(PISTONSLAP), *args], cwd=cwd, env=dict(os.environ, MPLBACKEND="Agg"),
-                          capture_output=True, text=True, timeout=120)
+    return subprocess.run(
+        [str(PISTONSLAP), *args],
+        cwd=cwd,
+        env=dict(os.environ, MPLBACKEND="Agg"),
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
 
 
 @pytest.mark.parametrize("case", CASES)
 def test_refusal_is_one_line_and_exit_2(case, tmp_path):
     args, words = CASES[case]
-    done = _run(args + ["--out", str(tmp_path / "out")] if args[0] == "demo" else args, tmp_path)
+    done = _run([*args, "--out", str(tmp_path / "out")] if args[0] == "demo" else args, tmp_path)
     lines = done.stderr.splitlines()
     assert done.returncode == 2, (done.returncode, done.stderr)
     assert len(lines) == 1 and "Traceback" not in done.stderr, done.stderr

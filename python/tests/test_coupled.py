@@ -36,8 +36,10 @@ def test_held_speed_lags_by_half_alpha_h_squared_per_step(ramp_runs):
 @pytest.fixture(scope="module")
 def energies():
     """Impact energy per cycle over cycles 2..5 at 1200 rpm, fired default engine."""
-    return {(h, d): energy_per_cycle(run(0.6, h, derivatives=d), 2, 5) for h, d in
-            [(2e-5, False), (1e-3, False), (1e-3, True), (2.5e-4, False), (2.5e-4, True)]}
+    return {
+        (h, d): energy_per_cycle(run(0.6, h, derivatives=d), 2, 5)
+        for h, d in [(2e-5, False), (1e-3, False), (1e-3, True), (2.5e-4, False), (2.5e-4, True)]
+    }
 
 
 def test_first_derivatives_at_1ms_give_the_fine_step_impact_energy(energies):

@@ -4,9 +4,10 @@ that acted, the engine torque's sign, the skirt eccentricity."""
 import numpy as np
 import pytest
 
-from harness import Instance
 from pistonslap.fmu import CYCLE, simulate_with_events
 from pistonslap.tables import slap_rows
+
+from harness import Instance
 
 OMEGA = 125.66  # rad/s, the crank_speed start value
 HALF_CLEARANCE = (0.08008 - 0.08) / 2
@@ -17,8 +18,9 @@ PEAK = 8e6  # Pa, peak_pressure's start value
 def run(request, fmu_file):
     """Three cycles of the default case at 1 ms communication steps with the given slap threshold."""
     threshold = request.param
-    result, events = simulate_with_events(start_values={"slap_threshold": threshold}, stop_time=3.05 * CYCLE / OMEGA,
-                                          output_interval=1e-3)
+    result, events = simulate_with_events(
+        start_values={"slap_threshold": threshold}, stop_time=3.05 * CYCLE / OMEGA, output_interval=1e-3
+    )
     return threshold, result, events
 
 
@@ -52,7 +54,10 @@ def test_cycle_metrics_are_those_of_the_impact_log(run):
             assert result[f"cycle_slap_energy_{side}"][k] == pytest.approx(on_side.sum(), rel=1e-12)
             assert result[f"cycle_max_slap_energy_{side}"][k] == (on_side.max() if len(on_side) else 0.0)
         assert result["cycle_impact_energy"][k] == pytest.approx(mine["energy_lost"].sum(), rel=1e-12)
-        for column, corners in (("cycle_max_impact_energy_thrust", (3, 4)), ("cycle_max_impact_energy_antithrust", (1, 2))):
+        for column, corners in (
+            ("cycle_max_impact_energy_thrust", (3, 4)),
+            ("cycle_max_impact_energy_antithrust", (1, 2)),
+        ):
             on_side = mine["energy_lost"][np.isin(mine["corner"], corners)]
             assert result[column][k] == (on_side.max() if len(on_side) else 0.0), column
     # the paper's six side changes per cycle, each landing with an impact faster than 10 mm/s (the first cycle's first
@@ -68,8 +73,9 @@ def test_the_threshold_counts_only_faster_impacts(fmu_file):
     side change landing with an impact is a slap."""
     counts = []
     for threshold in (0.0, 0.01, 0.1, 10.0):
-        result, events = simulate_with_events(start_values={"slap_threshold": threshold},
-                                              stop_time=1.02 * CYCLE / OMEGA, output_interval=2e-3)
+        result, events = simulate_with_events(
+            start_values={"slap_threshold": threshold}, stop_time=1.02 * CYCLE / OMEGA, output_interval=2e-3
+        )
         counts.append(int(result["cycle_slap_events"][-1]))
         if threshold == 0.0:
             in_first = slap_rows(events, 0.0) & (OMEGA * events["time"] < CYCLE)
@@ -91,8 +97,9 @@ def test_gas_pressure_acting_is_the_built_in_curve(fmu_file):
     """pressure_source = 2: the curve peaks at peak_pressure shortly after firing TDC (sampled every 0.36°, within
     0.1 %), scales with it, and is zero gauge over the exhaust and intake strokes (180° to 540°)."""
     for peak in (PEAK, 5e6):
-        result = simulate_with_events(start_values={"peak_pressure": peak}, stop_time=CYCLE / OMEGA,
-                                      output_interval=5e-5)[0]
+        result = simulate_with_events(
+            start_values={"peak_pressure": peak}, stop_time=CYCLE / OMEGA, output_interval=5e-5
+        )[0]
         p, angle = result["gas_pressure_acting"], np.degrees(result["crank_angle"])
         assert 0.999 * peak < p.max() <= peak
         assert 0 < angle[np.argmax(p)] < 30

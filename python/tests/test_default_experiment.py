@@ -69,13 +69,15 @@ def test_impact_statistics_agree_with_the_impact_log(run):
     np.testing.assert_array_equal(np.diff(counts), result["impacts_in_step"][1:])
     # the impacts of step k are log rows counts[k-1] .. counts[k]-1
     for k in np.flatnonzero(result["impacts_in_step"]):
-        in_step = impacts[counts[k - 1]:counts[k]]
-        assert result["max_impact_velocity_in_step"][k] == pytest.approx(in_step["normal_velocity_before"].max(), rel=1e-12)
+        in_step = impacts[counts[k - 1] : counts[k]]
+        assert result["max_impact_velocity_in_step"][k] == pytest.approx(
+            in_step["normal_velocity_before"].max(), rel=1e-12
+        )
         assert result["impact_energy_in_step"][k] == pytest.approx(in_step["energy_lost"].sum(), rel=1e-9)
         assert result["impact_velocity"][k] == pytest.approx(in_step["normal_velocity_before"][-1], rel=1e-12)
         assert result["last_impact_corner"][k] == in_step["corner"][-1]
     np.testing.assert_allclose(result["impact_energy_total"], np.cumsum(result["impact_energy_in_step"]), rtol=1e-9)
-    assert 0 <= result["last_impact_crank_angle"].min() and result["last_impact_crank_angle"].max() < CYCLE
+    assert result["last_impact_crank_angle"].min() >= 0 and result["last_impact_crank_angle"].max() < CYCLE
 
 
 def test_impacts_obey_newtons_law(run):

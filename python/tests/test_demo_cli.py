@@ -25,8 +25,24 @@ def test_fmu_path_is_the_packaged_fmu(tmp_path):
 
 def test_demo_at_an_operating_point(tmp_path):
     out = tmp_path / "demo"
-    printed = _run("demo", "--rpm", "1500", "--peak-pressure", "60", "--clearance", "40", "--restitution", "0.3",
-                   "--pin-offset", "0.5", "--cycles", "1", "--out", str(out), cwd=tmp_path)
+    printed = _run(
+        "demo",
+        "--rpm",
+        "1500",
+        "--peak-pressure",
+        "60",
+        "--clearance",
+        "40",
+        "--restitution",
+        "0.3",
+        "--pin-offset",
+        "0.5",
+        "--cycles",
+        "1",
+        "--out",
+        str(out),
+        cwd=tmp_path,
+    )
     assert "1500 rpm, peak pressure 60 bar, clearance 40 µm, e = 0.3, pin offset 0.5 mm" in printed
     with open(out / "demo.csv", newline="") as f:
         header = next(csv.reader(f))
@@ -42,6 +58,12 @@ def test_demo_at_an_operating_point(tmp_path):
         rows = list(csv.reader(f))
     assert rows[0][:3] == ["time [s]", "cycle [1]", "cycle_slap_events [1]"] and len(rows) == 2 and rows[1][1] == "1"
     assert "cycle_slap_energy_thrust [J]" in rows[0] and "cycle_impacts [1]" in rows[0]
-    for name in ("slap.png", "forces.png", "piston_motion.png", "piston_positions.png", "piston_positions.gif",
-                 "impact_log.csv"):
+    for name in (
+        "slap.png",
+        "forces.png",
+        "piston_motion.png",
+        "piston_positions.png",
+        "piston_positions.gif",
+        "impact_log.csv",
+    ):
         assert (out / name).stat().st_size > 1000, name

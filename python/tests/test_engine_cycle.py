@@ -17,7 +17,11 @@ def side_changes(lateral):
 
 
 def test_six_side_changes_per_cycle(fmu_file):
-    result = simulate(stop_time=CYCLES * 0.1, output_interval=1e-4, start_values={"restitution": 0.0},
-                      output=["crank_angle", "piston_lateral"])
+    result = simulate(
+        stop_time=CYCLES * 0.1,
+        output_interval=1e-4,
+        start_values={"restitution": 0.0},
+        output=["crank_angle", "piston_lateral"],
+    )
     cycle, _ = last_cycle(result["crank_angle"])
     assert side_changes(result["piston_lateral"][cycle]) == 6

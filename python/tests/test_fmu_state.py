@@ -8,9 +8,22 @@ from harness import Instance
 
 H = 1e-4
 BEFORE, AFTER = 300, 200  # steps before the state is taken, steps compared after it
-RECORD = ("piston_lateral", "piston_lateral_velocity", "piston_tilt", "crank_angle", "crank_torque", "side_force",
-          "impact_count", "impacts_in_step", "impact_velocity", "impact_energy_total", "contact_state_1",
-          "contact_force_1", "contact_state_4", "contact_force_4")
+RECORD = (
+    "piston_lateral",
+    "piston_lateral_velocity",
+    "piston_tilt",
+    "crank_angle",
+    "crank_torque",
+    "side_force",
+    "impact_count",
+    "impacts_in_step",
+    "impact_velocity",
+    "impact_energy_total",
+    "contact_state_1",
+    "contact_force_1",
+    "contact_state_4",
+    "contact_force_4",
+)
 
 
 def exact(rows):
@@ -54,6 +67,7 @@ def test_serialized_state_continues_bit_identically_in_another_instance(started,
 
 def test_instances_do_not_share_state(unpacked_fmu):
     """Two instances stepped in turn, one with e = 0.9, give what each gives alone (no global mutable state)."""
+
     def alone(**values):
         with Instance(unpacked_fmu) as fmu:
             fmu.initialize(**values)

@@ -5,9 +5,10 @@ import numpy as np
 import pytest
 from fmpy.fmi1 import FMICallException
 
-from harness import FMI_ERROR, Instance
 from pistonslap.fmu import simulate, simulate_with_events
 from pistonslap.presets import PRESETS
+
+from harness import FMI_ERROR, Instance
 
 # The benchmark's links, slider and guide mapped onto the crank train (tests/crank_train/flores_benchmark.rs),
 # as published: mu = 0.01, gravity 9.81 m/s^2 across the guide, a start tilt rate of -0.01 rad/s.
@@ -17,8 +18,12 @@ FLORES = PRESETS["flores"].values
 def test_flores_as_published_matches_siconos():
     """0.2 s at 1 ms steps: Siconos Moreau-Jean, its SliderCrank example run as published and extrapolated to
     h -> 0, turns the crank 2.87801 times; friction slows it against the frictionless 2.89271 with gravity alone."""
-    result = simulate(stop_time=0.2, output_interval=1e-3, start_values=FLORES,
-                      output=["crank_angle", "friction_energy_total", "friction_power"])
+    result = simulate(
+        stop_time=0.2,
+        output_interval=1e-3,
+        start_values=FLORES,
+        output=["crank_angle", "friction_energy_total", "friction_power"],
+    )
     revolutions = result["crank_angle"][-1] / (2 * np.pi)
     assert revolutions == pytest.approx(2.87801, rel=1e-4)
     assert revolutions < 2.8927 - 1e-3
@@ -29,9 +34,12 @@ def test_flores_as_published_matches_siconos():
 def rubbing_engine():
     """One engine cycle of the default case with mu = 0.1 on a horizontal cylinder, at 0.1 ms steps."""
     corners = [f"{name}_{i}" for name in ("friction_force", "contact_force", "contact_state") for i in range(1, 5)]
-    return simulate_with_events(start_values={"friction": 0.1, "gravity_lateral": 9.81}, stop_time=0.1,
-                                output_interval=1e-4,
-                                output=corners + ["friction_power", "friction_energy_total", "crank_angle"])
+    return simulate_with_events(
+        start_values={"friction": 0.1, "gravity_lateral": 9.81},
+        stop_time=0.1,
+        output_interval=1e-4,
+        output=[*corners, "friction_power", "friction_energy_total", "crank_angle"],
+    )
 
 
 def test_friction_forces_obey_the_coulomb_law(rubbing_engine):
@@ -51,7 +59,7 @@ def test_friction_forces_obey_the_coulomb_law(rubbing_engine):
 def test_friction_energy_accumulates_its_power(rubbing_engine):
     """friction_energy_total starts at 0, never decreases, and holds at least the sliding friction's work (the
     trapezoid of friction_power, to 2 % for the trapezoid's error at 0.1 ms): impacts add their share."""
-    result, events = rubbing_engine
+    result, _ = rubbing_engine
     energy, power, time = result["friction_energy_total"], result["friction_power"], result["time"]
     assert energy[0] == 0 and np.all(np.diff(energy) >= 0)
     sliding = np.trapezoid(power, time)
@@ -79,10 +87,24 @@ def test_the_roller_refuses_friction(unpacked_fmu):
 
 #: The default engine rubbing on a horizontal liner (mu = 0.1, gravity across the bore) with a free crank, no gas,
 #: load or joint damping: what it dissipates is all impact and friction loss.
-RUBBING_FREE = {"crank_mode": 2, "pressure_source": 1, "gas_pressure": 0.0, "load_torque": 0.0, "damping_main": 0.0,
-                "damping_crank_pin": 0.0, "damping_piston_pin": 0.0, "friction": 0.1, "gravity_lateral": 9.81}
-ENERGY_OUTPUTS = ["kinetic_energy", "potential_energy", "impact_energy_total", "friction_energy_total",
-                  "dissipated_energy_total"]
+RUBBING_FREE = {
+    "crank_mode": 2,
+    "pressure_source": 1,
+    "gas_pressure": 0.0,
+    "load_torque": 0.0,
+    "damping_main": 0.0,
+    "damping_crank_pin": 0.0,
+    "damping_piston_pin": 0.0,
+    "friction": 0.1,
+    "gravity_lateral": 9.81,
+}
+ENERGY_OUTPUTS = [
+    "kinetic_energy",
+    "potential_energy",
+    "impact_energy_total",
+    "friction_energy_total",
+    "dissipated_energy_total",
+]
 
 
 @pytest.mark.parametrize("case", [FLORES, RUBBING_FREE], ids=["Flores as published", "rubbing engine"])
@@ -104,8 +126,9 @@ def test_kinetic_energy_at_the_start_is_the_free_cranks_start_speed():
     """Flores at q = 0 with the crank at 150 rad/s: the crank turns about its axis, the rod about the piston pin
     (at rest at TDC) at 150 l1/l2 = 75 rad/s, the slider tilts at -0.01 rad/s: T = 7.4956 J from the published
     masses and inertias, at t = 0 already (the state the first step starts from)."""
-    result = simulate(stop_time=1e-3, output_interval=1e-3, start_values=FLORES,
-                      output=["kinetic_energy", "crank_speed_actual"])
+    result = simulate(
+        stop_time=1e-3, output_interval=1e-3, start_values=FLORES, output=["kinetic_energy", "crank_speed_actual"]
+    )
     l1, l2, m1, m2, j1, j2, j3 = 0.153, 0.306, 0.038, 0.038, 7.4e-5, 5.9e-4, 2.7e-6
     closed = 0.5 * (j1 + m1 * (l1 / 2) ** 2) * 150**2 + 0.5 * (j2 + m2 * (l2 / 2) ** 2) * 75**2 + 0.5 * j3 * 0.01**2
     assert result["crank_speed_actual"][0] == 150.0

@@ -12,8 +12,15 @@ LIGHTGREY = np.array([211, 211, 211]) / 255
 
 
 def table(statuses, x=(1.0, 2.0, 1.0, 2.0), y=(0.1, 0.1, 0.2, 0.2)):
-    return pa.table(dict(x=list(x), y=list(y), impacts_per_cycle=[1.0, 2.0, 3.0, 4.0],
-                         response=["periodic", "chaos", "periodic", None], status=statuses))
+    return pa.table(
+        dict(
+            x=list(x),
+            y=list(y),
+            impacts_per_cycle=[1.0, 2.0, 3.0, 4.0],
+            response=["periodic", "chaos", "periodic", None],
+            status=statuses,
+        )
+    )
 
 
 def grey_pixels(path):
@@ -24,7 +31,9 @@ def test_failed_and_unclassified_points_are_grey(tmp_path):
     """A quarter of the axes (thousands of pixels) turns grey for the failed point of a metric map, and for the
     unclassified point of a response map."""
     ok, failed = ["ok"] * 4, ["ok", "ok", "ok", "fmi2ExitInitializationMode: bore ..."]
-    metric = [grey_pixels(heat_map(table(s), "x", "y", "impacts_per_cycle", tmp_path / "m.png", "t")) for s in (ok, failed)]
+    metric = [
+        grey_pixels(heat_map(table(s), "x", "y", "impacts_per_cycle", tmp_path / "m.png", "t")) for s in (ok, failed)
+    ]
     assert metric[1] > metric[0] + 10000
     response = grey_pixels(heat_map(table(ok), "x", "y", "response", tmp_path / "r.png", "t"))
     assert response > metric[0] + 10000

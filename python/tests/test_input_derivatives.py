@@ -64,13 +64,16 @@ def test_a_new_crank_speed_ends_its_derivatives(unpacked_fmu):
         assert s.get("crank_angle")[0] - before == pytest.approx(100.0 * h, rel=1e-12)
 
 
-@pytest.mark.parametrize("name, order, value, expected", [
-    ("crank_speed", 0, 1.0, "derivative order 0 of crank_speed refused"),
-    ("crank_speed", 3, 1.0, "derivative order 3 of crank_speed refused"),
-    ("gas_pressure", 1, float("nan"), "derivative 1 of gas_pressure = NaN refused"),
-    ("crank_angle", 1, 1.0, "crank_angle (value reference"),
-    ("restitution", 1, 1.0, "restitution (value reference"),
-])
+@pytest.mark.parametrize(
+    "name, order, value, expected",
+    [
+        ("crank_speed", 0, 1.0, "derivative order 0 of crank_speed refused"),
+        ("crank_speed", 3, 1.0, "derivative order 3 of crank_speed refused"),
+        ("gas_pressure", 1, float("nan"), "derivative 1 of gas_pressure = NaN refused"),
+        ("crank_angle", 1, 1.0, "crank_angle (value reference"),
+        ("restitution", 1, 1.0, "restitution (value reference"),
+    ],
+)
 def test_bad_input_derivatives_are_refused_naming_the_cause(unpacked_fmu, name, order, value, expected):
     with Instance(unpacked_fmu) as s:
         s.initialize()
@@ -81,6 +84,7 @@ def test_bad_input_derivatives_are_refused_naming_the_cause(unpacked_fmu, name, 
 
 
 # --- a host-supplied Wiebe pressure cycle: step-size convergence, held against first-order inputs ---------------------
+
 
 class FullLoadPressure:
     """The shipped full-load trace (gauge) as a C¹ function of crank angle: cubic Hermite through its 0.5° samples
@@ -98,7 +102,12 @@ class FullLoadPressure:
         k = int(x) % len(self.p)
         s, k1, dx = x - int(x), (k + 1) % len(self.p), self.spacing
         p0, p1, m0, m1 = self.p[k], self.p[k1], self.m[k] * dx, self.m[k1] * dx
-        value = (2 * s**3 - 3 * s**2 + 1) * p0 + (s**3 - 2 * s**2 + s) * m0 + (3 * s**2 - 2 * s**3) * p1 + (s**3 - s**2) * m1
+        value = (
+            (2 * s**3 - 3 * s**2 + 1) * p0
+            + (s**3 - 2 * s**2 + s) * m0
+            + (3 * s**2 - 2 * s**3) * p1
+            + (s**3 - s**2) * m1
+        )
         slope = (6 * s**2 - 6 * s) * (p0 - p1) + (3 * s**2 - 4 * s + 1) * m0 + (3 * s**2 - 2 * s) * m1
         return value, slope / dx
 
@@ -107,7 +116,7 @@ def fed_cycles(unpacked_fmu, pressure, h, first_order, cycles=2):
     """One warm-up cycle, then `cycles` at 1200 rpm with `gas_pressure` fed at each step (and its time derivative
     ω dp/dθ when `first_order`): (impact energy per cycle [J], largest impact velocity [m/s]) after the warm-up."""
     cycle = 4 * np.pi / W0
-    steps, warm_up = int(round((cycles + 1) * cycle / h)), int(round(cycle / h))
+    steps, warm_up = round((cycles + 1) * cycle / h), round(cycle / h)
     with Instance(unpacked_fmu) as s:
         s.initialize(pressure_source=1)
         fastest = 0.0

@@ -9,7 +9,8 @@ from pistonslap.fmu import CYCLE, simulate
 
 OMEGA = 125.66  # rad/s, the default crank speed
 OUTPUTS = ["liner_impulse_thrust_in_step", "liner_impulse_antithrust_in_step", "impacts_in_step"] + [
-    f"contact_force_{i}" for i in range(1, 5)]
+    f"contact_force_{i}" for i in range(1, 5)
+]
 
 
 @pytest.fixture(scope="module")

@@ -102,11 +102,15 @@ def test_wrong_guid_is_refused_at_instantiation(unpacked_fmu):
     fmu.slave.freeLibrary()
 
 
-@pytest.mark.parametrize("call", [
-    lambda slave, vr: slave.getReal([vr]),
-    lambda slave, vr: slave.getInteger([vr]),
-    lambda slave, vr: slave.setReal([vr], [0.0]),
-], ids=["getReal", "getInteger", "setReal"])
+@pytest.mark.parametrize(
+    "call",
+    [
+        lambda slave, vr: slave.getReal([vr]),
+        lambda slave, vr: slave.getInteger([vr]),
+        lambda slave, vr: slave.setReal([vr], [0.0]),
+    ],
+    ids=["getReal", "getInteger", "setReal"],
+)
 def test_unknown_value_reference_is_refused(stepping, call):
     refused(call, stepping.slave, max(stepping.vr.values()) + 1000)
     assert stepping.messages(FMI_ERROR)
@@ -128,15 +132,18 @@ def test_corrupt_serialized_state_is_refused(stepping):
     assert stepping.messages(FMI_ERROR)
 
 
-@pytest.mark.parametrize("name, value, named", [
-    ("piston_mass", -0.4, ["piston_mass"]),
-    ("rod_length", -0.15, ["rod_length"]),
-    ("skirt_length", -0.01, ["skirt_length"]),
-    ("restitution", 1.5, ["restitution"]),
-    ("restitution", -0.1, ["restitution"]),
-    ("bore", 0.0799, ["bore", "piston_diameter"]),  # smaller than the piston (0.08 m)
-    ("crank_radius", 0.2, ["crank_radius", "rod_length"]),  # longer than the rod (0.15 m)
-])
+@pytest.mark.parametrize(
+    "name, value, named",
+    [
+        ("piston_mass", -0.4, ["piston_mass"]),
+        ("rod_length", -0.15, ["rod_length"]),
+        ("skirt_length", -0.01, ["skirt_length"]),
+        ("restitution", 1.5, ["restitution"]),
+        ("restitution", -0.1, ["restitution"]),
+        ("bore", 0.0799, ["bore", "piston_diameter"]),  # smaller than the piston (0.08 m)
+        ("crank_radius", 0.2, ["crank_radius", "rod_length"]),  # longer than the rod (0.15 m)
+    ],
+)
 def test_out_of_range_parameter_is_refused_at_exit_initialization(unpacked_fmu, name, value, named):
     """The log message names the parameter (or, for a relation between two, one of them)."""
     with Instance(unpacked_fmu) as fmu:

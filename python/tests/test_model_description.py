@@ -7,19 +7,59 @@ from fmpy.validation import validate_fmu
 
 INPUTS = {"crank_speed": "rad/s", "gas_pressure": "Pa", "load_torque": None}
 REAL_OUTPUTS = [
-    "impact_velocity", "max_impact_velocity_in_step", "impact_energy_in_step", "impact_energy_total",
-    "last_impact_crank_angle", "piston_lateral", "piston_lateral_velocity", "piston_tilt", "piston_axial",
-    "crank_angle", "rod_angle", "crank_torque", "side_force", "engine_torque", "gas_pressure_acting",
-    "skirt_top_lateral", "skirt_bottom_lateral", "cycle_impact_energy", "cycle_max_impact_energy_thrust",
+    "impact_velocity",
+    "max_impact_velocity_in_step",
+    "impact_energy_in_step",
+    "impact_energy_total",
+    "last_impact_crank_angle",
+    "piston_lateral",
+    "piston_lateral_velocity",
+    "piston_tilt",
+    "piston_axial",
+    "crank_angle",
+    "rod_angle",
+    "crank_torque",
+    "side_force",
+    "engine_torque",
+    "gas_pressure_acting",
+    "skirt_top_lateral",
+    "skirt_bottom_lateral",
+    "cycle_impact_energy",
+    "cycle_max_impact_energy_thrust",
     "cycle_max_impact_energy_antithrust",
 ] + [f"contact_force_{i}" for i in range(1, 5)]
 INTEGER_OUTPUTS = ["impact_count", "impacts_in_step", "last_impact_corner", "cycle_count", "cycle_slap_events"] + [
-    f"contact_state_{i}" for i in range(1, 5)]
+    f"contact_state_{i}" for i in range(1, 5)
+]
 PARAMETERS = [
-    "model_variant", "crank_mode", "pressure_source", "roller_forcing", "peak_pressure", "crank_radius", "rod_length",
-    "crank_com", "rod_com", "piston_com", "crank_mass", "rod_mass", "piston_mass", "crank_inertia", "rod_inertia",
-    "piston_inertia", "piston_diameter", "skirt_length", "pin_height", "bore", "pin_offset", "restitution",
-    "damping_main", "damping_crank_pin", "damping_piston_pin", "gravity", "crank_angle_start", "impact_log",
+    "model_variant",
+    "crank_mode",
+    "pressure_source",
+    "roller_forcing",
+    "peak_pressure",
+    "crank_radius",
+    "rod_length",
+    "crank_com",
+    "rod_com",
+    "piston_com",
+    "crank_mass",
+    "rod_mass",
+    "piston_mass",
+    "crank_inertia",
+    "rod_inertia",
+    "piston_inertia",
+    "piston_diameter",
+    "skirt_length",
+    "pin_height",
+    "bore",
+    "pin_offset",
+    "restitution",
+    "damping_main",
+    "damping_crank_pin",
+    "damping_piston_pin",
+    "gravity",
+    "crank_angle_start",
+    "impact_log",
     "slap_threshold",
 ]
 ANGLES = ["last_impact_crank_angle", "piston_tilt", "crank_angle", "rod_angle", "crank_angle_start"]
@@ -62,7 +102,7 @@ def test_variable_contract(unpacked_fmu):
     for name in ANGLES:
         v = variables[name]
         assert unit_of(v) == "rad" and (v.displayUnit or v.declaredType.displayUnit) == "deg", name
-    for name in REAL_OUTPUTS + ["slap_threshold"]:
+    for name in [*REAL_OUTPUTS, "slap_threshold"]:
         assert unit_of(variables[name]) is not None, f"{name} has no unit"
 
 

@@ -8,7 +8,6 @@ import os
 import re
 import shutil
 import subprocess
-import zipfile
 from pathlib import Path
 
 import fmpy
@@ -21,8 +20,15 @@ ENGINE_FMU = Path(__file__).resolve().parents[1] / "pistonslap" / "fmu" / "Engin
 GLIBC_BASELINE = (2, 28)
 
 #: DLLs every Windows 10 and later has; the win64 binary may import nothing else (no MinGW runtime).
-SYSTEM_DLLS = {"kernel32.dll", "ntdll.dll", "msvcrt.dll", "userenv.dll", "ws2_32.dll", "bcryptprimitives.dll",
-               "api-ms-win-core-synch-l1-2-0.dll"}
+SYSTEM_DLLS = {
+    "kernel32.dll",
+    "ntdll.dll",
+    "msvcrt.dll",
+    "userenv.dll",
+    "ws2_32.dll",
+    "bcryptprimitives.dll",
+    "api-ms-win-core-synch-l1-2-0.dll",
+}
 
 STEPS, STEP = 2000, 1e-4
 
@@ -88,15 +94,25 @@ def run(build, scenario, platform, *extra):
     options = [f"{kind}:{by_name[var].valueReference}={value}" for kind, var, value in parameters]
     resources = (unzipdir / "resources").as_posix()
     if platform == "linux64":
-        command = [str(out / "trace"), str(unzipdir / "binaries" / "linux64" / f"{name}.so"), md.guid,
-                   "file://" + resources]
+        command = [
+            str(out / "trace"),
+            str(unzipdir / "binaries" / "linux64" / f"{name}.so"),
+            md.guid,
+            "file://" + resources,
+        ]
         env = None
     else:
         command = [tool("wine"), str(out / "win64" / "trace.exe"), f"{name}.dll", md.guid, "file:///Z:" + resources]
         env = wine_env(out)
         extra = [re.sub(r"(save|load):(\d+):(.*)", lambda m: f"{m[1]}:{m[2]}:{windows_path(m[3])}", e) for e in extra]
-    done = subprocess.run([*command, str(STEPS), repr(STEP), reals, integers, *options, *extra], capture_output=True,
-                          text=True, env=env, cwd=out / "win64", timeout=600)
+    done = subprocess.run(
+        [*command, str(STEPS), repr(STEP), reals, integers, *options, *extra],
+        capture_output=True,
+        text=True,
+        env=env,
+        cwd=out / "win64",
+        timeout=600,
+    )
     assert done.returncode == 0, f"{platform} {scenario}: exit {done.returncode}\n{done.stderr[-2000:]}"
     lines = done.stdout.splitlines()
     assert lines, f"{platform} {scenario}: no output"
@@ -107,7 +123,7 @@ def run(build, scenario, platform, *extra):
 def test_win64_outputs_equal_linux64_bit_for_bit(build, scenario):
     linux, windows = run(build, scenario, "linux64"), run(build, scenario, "win64")
     assert len(linux) == STEPS == len(windows)
-    different = [(a, b) for a, b in zip(linux, windows) if a != b]
+    different = [(a, b) for a, b in zip(linux, windows, strict=True) if a != b]
     assert not different, f"{len(different)} of {STEPS} steps differ, first:\n{different[0][0]}\n{different[0][1]}"
 
 
@@ -117,7 +133,7 @@ def test_a_state_saved_on_one_platform_continues_on_the_other(build, tmp_path, s
     straight = run(build, "friction_free_crank", saved_on, f"save:{STEPS // 2}:{state}")
     assert state.stat().st_size > 0
     continued = run(build, "friction_free_crank", restored_on, f"load:{STEPS // 2}:{state}")
-    assert continued == straight[STEPS // 2:]
+    assert continued == straight[STEPS // 2 :]
 
 
 def objdump(binary, *flags):
@@ -128,7 +144,7 @@ def objdump(binary, *flags):
 def fmi2_functions():
     """The functions a Co-Simulation FMU exports: the header's common and Co-Simulation sections."""
     text = (ROOT / "fmi_headers" / "fmi2FunctionTypes.h").read_text()
-    model_exchange = text[text.index("/* Model Exchange only"):text.index("/* Co-Simulation only")]
+    model_exchange = text[text.index("/* Model Exchange only") : text.index("/* Co-Simulation only")]
     return set(re.findall(r"(fmi2\w+)TYPE\s*\(", text.replace(model_exchange, "")))
 
 
@@ -144,7 +160,9 @@ def test_linux64_exports_only_fmi2_and_needs_glibc_2_28(build, name):
     _, fmus = build
     so = fmus[name][0] / "binaries" / "linux64" / f"{name}.so"
     table = objdump(so, "-T")
-    defined = {line.split()[-1] for line in table.splitlines() if re.match(r"[0-9a-f]+ g ", line) and "*UND*" not in line}
+    defined = {
+        line.split()[-1] for line in table.splitlines() if re.match(r"[0-9a-f]+ g ", line) and "*UND*" not in line
+    }
     assert defined == FMI2_FUNCTIONS, defined ^ FMI2_FUNCTIONS
     versions = {tuple(int(p) for p in v.split(".")) for v in re.findall(r"GLIBC_([0-9.]+)", table)}
     assert versions and max(versions) <= GLIBC_BASELINE, sorted(versions)[-3:]

@@ -14,6 +14,6 @@ def test_the_readme_tables_are_the_model_descriptions(fmu_file):
     text = README.read_text()
     md = fmpy.read_model_description(fmu_file)
     assert replaced(text, md) == text, "README's variable tables differ from the FMU's: regenerate them"
-    section = text[text.index(BEGIN):text.index(END)]
+    section = text[text.index(BEGIN) : text.index(END)]
     for v in md.modelVariables:
         assert f"| `{v.name}` |" in section, v.name

@@ -17,8 +17,12 @@ def test_sliding_on_the_upper_wall_never_releases_at_high_damping(fmu_file):
     """Fig 2.9: at lambda = 0.35 the upper wall holds the roller over the whole cycle; with e = 0 the roller
     comes to slide there and never leaves, pressed by a positive force."""
     values = analysis.thesis_start_values(0.35, 0.01, 0.0)
-    result = simulate(stop_time=6 * np.pi, output_interval=0.05, start_values=values,
-                      output=["contact_state_1", "contact_state_3", "contact_force_1", "piston_lateral"])
+    result = simulate(
+        stop_time=6 * np.pi,
+        output_interval=0.05,
+        start_values=values,
+        output=["contact_state_1", "contact_state_3", "contact_force_1", "piston_lateral"],
+    )
     later = result["time"] > 2 * np.pi
     assert np.all(result["contact_state_1"][later] == 1)
     assert np.all(result["contact_state_3"][later] == 0)
@@ -75,10 +79,21 @@ def test_impact_log_gives_eq_2_17(fmu_file):
 def synthetic_run(cycles, pattern):
     """A Run whose impacts in cycle k are pattern(k): [(wall, theta, rate)]."""
     rows = [(k, w, th, r) for k in range(cycles) for w, th, r in pattern(k)]
-    k, w, th, r = (np.array(c) for c in zip(*rows))
-    return analysis.Run(lam=0.1, rho=0.01, e=0.9, forcing=1, cycles=cycles, cycle=k.astype(int), theta=th,
-                        wall=w.astype(int), rate=r, approach=np.abs(r), location=np.ones_like(r),
-                        slide_cycle=np.array([], dtype=int))
+    k, w, th, r = (np.array(c) for c in zip(*rows, strict=True))
+    return analysis.Run(
+        lam=0.1,
+        rho=0.01,
+        e=0.9,
+        forcing=1,
+        cycles=cycles,
+        cycle=k.astype(int),
+        theta=th,
+        wall=w.astype(int),
+        rate=r,
+        approach=np.abs(r),
+        location=np.ones_like(r),
+        slide_cycle=np.array([], dtype=int),
+    )
 
 
 def test_classifier_on_known_sequences():
@@ -115,7 +130,9 @@ def test_crank_train_in_the_roller_limit_matches_the_roller(fmu_file):
         assert len(crank_train) == len(roller) >= 8
         assert np.all(crank_train["kind"] == roller["kind"])
         impacts = roller["kind"] == "impact"
-        speed = np.abs(crank_train["normal_velocity_before"][impacts] / roller["normal_velocity_before"][impacts] - 1).max()
+        speed = np.abs(
+            crank_train["normal_velocity_before"][impacts] / roller["normal_velocity_before"][impacts] - 1
+        ).max()
         angle = np.abs(crank_train["time"] - roller["time"]).max() * 125.66
         assert speed < 2e-3 and angle < 1e-3
         differences.append(speed)

@@ -5,8 +5,8 @@ import fmpy
 import numpy as np
 import pytest
 
-from pistonslap.presets import PRESETS
 from pistonslap.fmu import simulate
+from pistonslap.presets import PRESETS
 from pistonslap.refusal import Refusal
 from pistonslap.settings import display_unit, parse_set, read_params, to_fmu
 from pistonslap.sweep_point import defaults
@@ -18,8 +18,19 @@ def md(fmu_file):
 
 
 def test_display_units_convert_to_si(md):
-    values = parse_set(["crank_speed=3000rpm", "peak_pressure=90 bar", "bore=80.1mm", "clearance=40um",
-                        "restitution=0.3", "pressure_source=3", "pressure_trace=x.csv", "crank_angle_start=180deg"], md)
+    values = parse_set(
+        [
+            "crank_speed=3000rpm",
+            "peak_pressure=90 bar",
+            "bore=80.1mm",
+            "clearance=40um",
+            "restitution=0.3",
+            "pressure_source=3",
+            "pressure_trace=x.csv",
+            "crank_angle_start=180deg",
+        ],
+        md,
+    )
     assert values["crank_speed"] == pytest.approx(3000 * np.pi / 30, rel=1e-15)
     assert values["peak_pressure"] == pytest.approx(9e6, rel=1e-15)
     assert values["bore"] == pytest.approx(0.0801, rel=1e-15)
@@ -30,14 +41,17 @@ def test_display_units_convert_to_si(md):
     assert display_unit("clearance", md) == ("µm", 1e6) and display_unit("crank_speed", md)[0] == "rpm"
 
 
-@pytest.mark.parametrize("assignment, words", [
-    ("crank_sped=3000rpm", ["crank_sped", "crank_speed"]),
-    ("crank_speed=3000rpx", ["rpx", "rpm"]),
-    ("peak_pressure=90psi", ["psi", "bar"]),
-    ("crank_speed", ["NAME=VALUE"]),
-    ("pressure_source=1.5", ["whole number"]),
-    ("impact_count=3", ["impact_count"]),
-])
+@pytest.mark.parametrize(
+    "assignment, words",
+    [
+        ("crank_sped=3000rpm", ["crank_sped", "crank_speed"]),
+        ("crank_speed=3000rpx", ["rpx", "rpm"]),
+        ("peak_pressure=90psi", ["psi", "bar"]),
+        ("crank_speed", ["NAME=VALUE"]),
+        ("pressure_source=1.5", ["whole number"]),
+        ("impact_count=3", ["impact_count"]),
+    ],
+)
 def test_unknown_names_and_units_are_refused(md, assignment, words):
     with pytest.raises(Refusal) as refused:
         parse_set([assignment], md)

@@ -67,14 +67,20 @@ def test_one_long_step_gives_the_impacts_of_short_ones(fmu_file):
 #: The default engine at 8000 rpm, and one at 3482 rpm with a 3.6 um clearance and e = 0: fast and tight designs,
 #: where the prescribed crank's steps must stay bounded in crank angle (not only by the error control, which sees
 #: nothing while two corners hold the piston) for the impacts not to depend on the communication step.
-FAST_AND_TIGHT = [({"crank_speed": 8000 * np.pi / 30}, 400),
-                  ({"crank_speed": 3482 * np.pi / 30, "bore": 0.08 + 7.2e-6, "restitution": 0.0}, 20)]
+FAST_AND_TIGHT = [
+    ({"crank_speed": 8000 * np.pi / 30}, 400),
+    ({"crank_speed": 3482 * np.pi / 30, "bore": 0.08 + 7.2e-6, "restitution": 0.0}, 20),
+]
 
 
 @pytest.mark.parametrize("start_values, at_least", FAST_AND_TIGHT)
 def test_impacts_at_high_speed_and_tight_clearance_pair_one_to_one(fmu_file, start_values, at_least):
-    coarse, fine = (simulate_with_events(start_values=start_values, stop_time=0.06, output_interval=h,
-                                         output=["impact_energy_total"]) for h in (2e-3, 1e-5))
+    coarse, fine = (
+        simulate_with_events(
+            start_values=start_values, stop_time=0.06, output_interval=h, output=["impact_energy_total"]
+        )
+        for h in (2e-3, 1e-5)
+    )
     assert coarse[0]["impact_energy_total"][-1] == pytest.approx(fine[0]["impact_energy_total"][-1], rel=1e-6)
     coarse, fine = impacts(coarse), impacts(fine)
     assert len(coarse) == len(fine) >= at_least

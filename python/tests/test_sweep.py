@@ -28,9 +28,11 @@ def model_description(fmu_file):
 
 @pytest.fixture(scope="module")
 def client():
-    with LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster:
-        with Client(cluster) as client:
-            yield client
+    with (
+        LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster,
+        Client(cluster) as client,
+    ):
+        yield client
 
 
 def spec_of(model_description, **raw):
@@ -48,17 +50,24 @@ def test_grid_rows_are_the_direct_runs(client, model_description, tmp_path):
     assert summary(path, ran).startswith(f"wrote {path} (6 points, 6 run now, 2 failed; first failure: point 4: ")
     assert "bore" in summary(path, ran).split("point 4: ")[1]
     for row in rows:
-        assert (row["bore"], row["restitution"]) == (spec.points[row["point"]]["bore"], spec.points[row["point"]]["restitution"])
+        assert (row["bore"], row["restitution"]) == (
+            spec.points[row["point"]]["bore"],
+            spec.points[row["point"]]["restitution"],
+        )
         if row["bore"] < 0.08:
             assert "bore" in row["status"] and np.isnan(row["impacts_per_cycle"]), row
             continue
-        direct = simulate(stop_time=6 * CYCLE_TIME, output_interval=CYCLE_TIME,
-                          start_values={"bore": row["bore"], "restitution": row["restitution"]},
-                          output=["impact_count", "impact_energy_total", "max_impact_velocity_in_step"])
+        direct = simulate(
+            stop_time=6 * CYCLE_TIME,
+            output_interval=CYCLE_TIME,
+            start_values={"bore": row["bore"], "restitution": row["restitution"]},
+            output=["impact_count", "impact_energy_total", "max_impact_velocity_in_step"],
+        )
         assert row["status"] == "ok" and row["response"] is None  # variant 1 is not classified
         assert row["impacts_per_cycle"] == (direct["impact_count"][6] - direct["impact_count"][2]) / 4
         assert row["impact_energy_per_cycle"] == pytest.approx(
-            (direct["impact_energy_total"][6] - direct["impact_energy_total"][2]) / 4, rel=1e-12)
+            (direct["impact_energy_total"][6] - direct["impact_energy_total"][2]) / 4, rel=1e-12
+        )
         # the log's approach speed and the output's agree to round-off (2e-12 here), not bit for bit
         assert row["max_impact_velocity"] == pytest.approx(direct["max_impact_velocity_in_step"][3:].max(), rel=1e-9)
         if (row["bore"], row["restitution"]) == (0.08008, 0.0):
@@ -72,13 +81,28 @@ def test_a_rerun_after_the_sweep_is_killed_runs_only_the_missing_points(client, 
     """The sweep's process (and its cluster) killed after two batches: the rerun adds exactly the missing points and
     keeps the recorded ones as they were."""
     text = "name = 'test'\ncycles = 150\nskip_cycles = 2\n[grid]\n" + "".join(
-        f"{name} = {values}\n" for name, values in SLOW_GRID.items())
+        f"{name} = {values}\n" for name, values in SLOW_GRID.items()
+    )
     (tmp_path / "spec.toml").write_text(text)
     spec = spec_of(model_description, cycles=150, grid=SLOW_GRID)
     parts = tmp_path / "test" / "parts"
-    process = subprocess.Popen([sys.executable, "-m", "pistonslap.cli", "sweep", str(tmp_path / "spec.toml"),
-                                "--workers", "1", "--batch", "1", "--out", str(tmp_path)],
-                               stderr=subprocess.DEVNULL, start_new_session=True)
+    process = subprocess.Popen(
+        [
+            sys.executable,
+            "-m",
+            "pistonslap.cli",
+            "sweep",
+            str(tmp_path / "spec.toml"),
+            "--workers",
+            "1",
+            "--batch",
+            "1",
+            "--out",
+            str(tmp_path),
+        ],
+        stderr=subprocess.DEVNULL,
+        start_new_session=True,
+    )
     deadline = time.monotonic() + 60
     while len(list(parts.glob("*.parquet"))) < 2 and process.poll() is None and time.monotonic() < deadline:
         time.sleep(0.05)
@@ -115,18 +139,24 @@ def test_a_worker_killed_mid_sweep_loses_nothing(client, model_description, tmp_
     assert killed == Store(tmp_path / "undisturbed", spec).read().to_pylist()
 
 
-@pytest.mark.parametrize("raw, message", [
-    (dict(grid={"bore_width": [0.0801]}), "grid.bore_width: the FMU has no variable 'bore_width'"),
-    (dict(start={"impact_count": 1}, grid={"bore": [0.0801]}), "start.impact_count: impact_count is an output"),
-    (dict(grid={"restitution": [0.5, 1.5]}), r"grid.restitution\[1\] = 1.5 is outside restitution's range"),
-    (dict(grid={"bore": {"start": 0.0801, "stop": 0.0802, "num": 0}}), "grid.bore.num = 0"),
-    (dict(grid={"model_variant": [1, 1.5]}), r"grid.model_variant\[1\] = 1.5: model_variant is an Integer"),
-    (dict(random={"n": 4, "seed": 1, "bore": [0.0802, 0.0801]}), "random.bore = .*: low must be below high"),
-    (dict(grid={"bore": [0.0801]}, random={"n": 2, "seed": 1, "bore": [0.08, 0.081]}), "bore is given in more than one"),
-    (dict(cycles=5, skip_cycles=5, grid={"bore": [0.0801]}), "skip_cycles = 5 leaves no cycle"),
-    (dict(grid={"impact_log": ["x.csv"]}), "grid.impact_log: impact_log is set by the sweep itself"),
-    (dict(grids={"bore": [0.0801]}), r"unknown entries \['grids'\]"),
-])
+@pytest.mark.parametrize(
+    "raw, message",
+    [
+        (dict(grid={"bore_width": [0.0801]}), "grid.bore_width: the FMU has no variable 'bore_width'"),
+        (dict(start={"impact_count": 1}, grid={"bore": [0.0801]}), "start.impact_count: impact_count is an output"),
+        (dict(grid={"restitution": [0.5, 1.5]}), r"grid.restitution\[1\] = 1.5 is outside restitution's range"),
+        (dict(grid={"bore": {"start": 0.0801, "stop": 0.0802, "num": 0}}), "grid.bore.num = 0"),
+        (dict(grid={"model_variant": [1, 1.5]}), r"grid.model_variant\[1\] = 1.5: model_variant is an Integer"),
+        (dict(random={"n": 4, "seed": 1, "bore": [0.0802, 0.0801]}), "random.bore = .*: low must be below high"),
+        (
+            dict(grid={"bore": [0.0801]}, random={"n": 2, "seed": 1, "bore": [0.08, 0.081]}),
+            "bore is given in more than one",
+        ),
+        (dict(cycles=5, skip_cycles=5, grid={"bore": [0.0801]}), "skip_cycles = 5 leaves no cycle"),
+        (dict(grid={"impact_log": ["x.csv"]}), "grid.impact_log: impact_log is set by the sweep itself"),
+        (dict(grids={"bore": [0.0801]}), r"unknown entries \['grids'\]"),
+    ],
+)
 def test_bad_specs_are_refused_naming_the_entry(model_description, raw, message):
     with pytest.raises(SpecError, match=message):
         spec_of(model_description, **raw)
@@ -134,7 +164,11 @@ def test_bad_specs_are_refused_naming_the_entry(model_description, raw, message)
 
 def test_the_command_refuses_a_bad_spec_before_starting_a_cluster(tmp_path):
     (tmp_path / "bad.toml").write_text("name = 'bad'\ncycles = 4\n[grid]\nrestitution = [2.0]\n")
-    done = subprocess.run([sys.executable, "-m", "pistonslap.cli", "sweep", str(tmp_path / "bad.toml"), "--out",
-                           str(tmp_path)], capture_output=True, text=True, timeout=60)
+    done = subprocess.run(
+        [sys.executable, "-m", "pistonslap.cli", "sweep", str(tmp_path / "bad.toml"), "--out", str(tmp_path)],
+        capture_output=True,
+        text=True,
+        timeout=60,
+    )
     assert done.returncode == 2 and "grid.restitution[0] = 2.0 is outside restitution's range" in done.stderr
     assert not (tmp_path / "bad").exists()

@@ -1,0 +1,88 @@
+"""Firing TDC of a supplied pressure trace: detected as the TDC nearest the peak or stated, reported, and a trace
+counted from another TDC handed to the FMU shifted so that it runs exactly as the same cycle counted from firing TDC.
+"""
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from pistonslap.fmu import simulate
+from pistonslap.refusal import Refusal
+from pistonslap.trace_tdc import detect_firing_tdc, place_firing_tdc, read_trace
+
+PISTONSLAP = Path(sys.executable).parent / "pistonslap"
+RESOURCES = Path(__file__).resolve().parents[2] / "resources"
+
+
+def moved(tmp_path, name, by):
+    """The shipped trace `name` with every angle moved by `by` degrees (firing TDC then at `by`)."""
+    header, *rows = (RESOURCES / name).read_text().splitlines()
+    cells = [row.split(",", 1) for row in rows]
+    path = tmp_path / f"{Path(name).stem}_at_{by:g}.csv"
+    path.write_text(header + "\n" + "".join(f"{float(a) + by!r},{p}\n" for a, p in cells))
+    return path
+
+
+def test_firing_tdc_is_the_tdc_nearest_the_peak():
+    """The full-load example peaks 11° after firing TDC, the motored one at it (the README of resources/)."""
+    for name, peak in (("full_load.csv", 11.0), ("motored.csv", 0.0)):
+        _, angles, pressures, _ = read_trace(RESOURCES / name)
+        assert detect_firing_tdc(angles, pressures) == (0.0, peak)
+        assert detect_firing_tdc(angles + 360, pressures) == (360.0, peak + 360)
+        assert detect_firing_tdc(angles - 360, pressures) == (-360.0, peak - 360)
+
+
+def test_a_trace_from_the_gas_exchange_tdc_runs_as_the_same_cycle_from_firing_tdc(tmp_path):
+    """Counted 0–720° with firing TDC at 360°, the full-load trace is detected, reported and shifted back: the copy
+    holds the original's angles exactly and its pressures as written, and the FMU's impacts over 50 ms at 3000 rpm
+    are the original's bit for bit."""
+    trace, said = place_firing_tdc(moved(tmp_path, "full_load.csv", 360), tmp_path / "out")
+    assert "peak at 371°, firing TDC at 360° (detected" in said and "shifted by -360°" in said, said
+    assert trace.read_text() == (RESOURCES / "full_load.csv").read_text().replace("\r", "")
+    outputs = ["impact_count", "impact_energy_total", "piston_lateral"]
+    runs = [
+        simulate(
+            stop_time=0.05,
+            output_interval=1e-4,
+            output=outputs,
+            start_values={"pressure_source": 3, "pressure_trace": str(path), "crank_speed": 100 * np.pi},
+        )
+        for path in (trace, RESOURCES / "full_load.csv")
+    ]
+    assert runs[0]["impact_count"][-1] > 0
+    for name in outputs:
+        np.testing.assert_array_equal(runs[0][name], runs[1][name])
+
+
+def test_a_trace_counted_from_firing_tdc_is_used_as_it_is(tmp_path):
+    path = RESOURCES / "motored.csv"
+    trace, said = place_firing_tdc(path, tmp_path)
+    assert trace == path and "firing TDC at 0°" in said and not list(tmp_path.iterdir())
+
+
+def test_a_stated_firing_tdc_wins_over_the_peak(tmp_path):
+    """A trace with firing TDC at its 90° (peak at 101°, 101° from the nearest TDC, 0°) is refused unless firing TDC
+    is stated; stated, it is shifted by it."""
+    path = moved(tmp_path, "full_load.csv", 90)
+    with pytest.raises(Refusal, match=r"peak pressure lies at 101°, 101° from the nearest TDC \(0°\).*--firing-tdc"):
+        place_firing_tdc(path, tmp_path / "out")
+    trace, said = place_firing_tdc(path, tmp_path / "out", stated=90)
+    assert "firing TDC at 90° (stated)" in said
+    assert read_trace(trace)[1][0] == -360.0
+
+
+def test_the_demo_refuses_a_trace_whose_firing_tdc_cannot_be_told_in_one_line(tmp_path):
+    path = moved(tmp_path, "full_load.csv", 90)
+    done = subprocess.run(
+        [str(PISTONSLAP), "demo", "--pressure-trace", str(path), "--out", str(tmp_path / "out")],
+        env=dict(os.environ, MPLBACKEND="Agg"),
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert done.returncode == 2 and len(done.stderr.splitlines()) == 1, done.stderr
+    assert "--pressure-trace" in done.stderr and "--firing-tdc" in done.stderr, done.stderr
