@@ -6,9 +6,20 @@ import pytest
 
 from pistonslap.fmu import simulate
 
-FILM = ["min_film_thickness_thrust", "min_film_thickness_antithrust", "film_force", "asperity_force",
-        "skirt_friction_force", "skirt_friction_power", "film_energy_total", "dissipated_energy_total",
-        "impact_energy_total", "friction_energy_total", "crank_angle", "impact_count"]
+FILM = [
+    "min_film_thickness_thrust",
+    "min_film_thickness_antithrust",
+    "film_force",
+    "asperity_force",
+    "skirt_friction_force",
+    "skirt_friction_power",
+    "film_energy_total",
+    "dissipated_energy_total",
+    "impact_energy_total",
+    "friction_energy_total",
+    "crank_angle",
+    "impact_count",
+]
 
 
 @pytest.mark.parametrize("rpm", [1200, 3000])
@@ -17,9 +28,12 @@ def test_the_default_engine_rides_on_the_film(rpm):
     the film pushing back (its side force of hundreds of newtons), a skirt friction of newtons to tens of
     newtons, and the film's absorbed work in the dissipation total."""
     omega = rpm * np.pi / 30
-    result = simulate(stop_time=4 * np.pi / omega, output_interval=1e-4, output=FILM,
-                      start_values={"skirt_model": 2, "crank_speed": omega,
-                                    "skirt_grid_circumferential": 6, "skirt_grid_axial": 8})
+    result = simulate(
+        stop_time=4 * np.pi / omega,
+        output_interval=1e-4,
+        output=FILM,
+        start_values={"skirt_model": 2, "crank_speed": omega, "skirt_grid_circumferential": 6, "skirt_grid_axial": 8},
+    )
     for side in ("thrust", "antithrust"):
         film = result[f"min_film_thickness_{side}"]
         assert np.all(film > 1e-6) and np.all(film < 80e-6)
@@ -36,4 +50,6 @@ def test_dry_skirt_outputs_are_the_corner_gaps():
     for name in ("film_force", "asperity_force", "skirt_friction_force", "film_energy_total"):
         assert np.all(result[name] == 0)
     # (a corner held on the liner sits within the event tolerance, 1e-12 m, of it)
-    assert np.all(result["min_film_thickness_thrust"] >= -1e-12) and np.all(result["min_film_thickness_thrust"] <= 80e-6)
+    assert np.all(result["min_film_thickness_thrust"] >= -1e-12) and np.all(
+        result["min_film_thickness_thrust"] <= 80e-6
+    )
