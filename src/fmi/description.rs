@@ -120,8 +120,14 @@ pub(crate) use dispatch;
 pub(crate) mod checks {
     use super::*;
 
+    /// Both checks of a table.
+    pub(crate) fn table<P: Default, I: Default, O: Default>(d: &Description<P, I, O>) {
+        every_variable_reaches_its_field_and_only_inputs_and_parameters_are_settable(d);
+        start_values_are_the_rust_defaults(d);
+    }
+
     /// Every variable reads its field; only inputs and parameters are settable.
-    pub(crate) fn every_variable_reaches_its_field_and_only_inputs_and_parameters_are_settable<P: Default, I: Default, O: Default>(
+    fn every_variable_reaches_its_field_and_only_inputs_and_parameters_are_settable<P: Default, I: Default, O: Default>(
         d: &Description<P, I, O>,
     ) {
         let (mut p, mut i, o) = (P::default(), I::default(), O::default());
@@ -143,7 +149,7 @@ pub(crate) mod checks {
     }
 
     /// The table's start values are the Rust defaults.
-    pub(crate) fn start_values_are_the_rust_defaults<P: Default, I: Default, O: Default>(d: &Description<P, I, O>) {
+    fn start_values_are_the_rust_defaults<P: Default, I: Default, O: Default>(d: &Description<P, I, O>) {
         let (p, i, o) = (P::default(), I::default(), O::default());
         for (vr, v) in d.variables.iter().enumerate().filter(|(_, v)| v.causality != Causality::Output) {
             let vr = vr as u32;

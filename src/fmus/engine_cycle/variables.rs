@@ -17,8 +17,7 @@ mod tests {
 
     #[test]
     fn the_table_reaches_its_fields_with_its_start_values() {
-        checks::every_variable_reaches_its_field_and_only_inputs_and_parameters_are_settable(&DESCRIPTION);
-        checks::start_values_are_the_rust_defaults(&DESCRIPTION);
+        checks::table(&DESCRIPTION);
     }
 
     #[test]
