@@ -345,7 +345,8 @@ fn struct_macro(variables: &[Resolved], owner: &str) -> String {
     s += &format!("macro_rules! {owner}_struct {{\n    ($(#[$attribute:meta])* $vis:vis struct $name:ident {{ $($field:tt)* }}) => {{\n");
     s += "        $(#[$attribute])*\n        $vis struct $name {\n";
     for v in variables.iter().filter(|v| v.owner() == owner) {
-        let description = v.a.description.trim_end_matches('.');
+        // Brackets escaped: rustdoc would read `[bar]` as a link.
+        let description = v.a.description.trim_end_matches('.').replace('[', "\\[").replace(']', "\\]");
         let doc = match v.unit {
             Some(unit) => format!("{unit}: {description}."),
             None => format!("{description}."),
