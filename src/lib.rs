@@ -7,6 +7,7 @@
 //! - [`fmi`]: the exported `fmi2*` functions over the registry, naming no FMU; the only `unsafe` code.
 
 #![deny(unsafe_code)]
+#![warn(missing_docs)]
 #![warn(clippy::undocumented_unsafe_blocks)]
 
 pub mod dynamics;

@@ -32,8 +32,6 @@
 //! `options.rs`, `event.rs`, `error.rs` (what the core takes, is told, records and refuses). The
 //! closed-form systems the tests and benches run it on are `tests/common/testbeds.rs`.
 
-#![warn(missing_docs)]
-
 mod complementarity;
 mod contact_laws;
 mod coulomb;

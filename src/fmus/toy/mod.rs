@@ -7,9 +7,10 @@ use crate::models::ModelError;
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
-/// τ, s.
+/// The lag's one parameter.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct LagParameters {
+    /// τ, s.
     pub time_constant: f64,
 }
 
@@ -19,15 +20,17 @@ impl Default for LagParameters {
     }
 }
 
-/// u.
+/// The lag's one input.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct LagInputs {
+    /// u, followed by y.
     pub u: f64,
 }
 
-/// y.
+/// The lag's one output.
 #[derive(Clone, Debug, Default, Serialize, Deserialize)]
 pub struct LagOutputs {
+    /// y, with τ ẏ = u − y.
     pub y: f64,
 }
 

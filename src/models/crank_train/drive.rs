@@ -20,11 +20,13 @@ use serde::{Deserialize, Serialize};
 /// What drives the links apart from the crank motion: linkage, pressure, restitution.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Engine {
+    /// The links' geometry, masses and the liner's corners.
     pub linkage: Linkage,
     /// Private: `PrescribedCrank` caches the curve's values, so only a held pressure may change.
     pressure: GasPressure,
     /// Crown area π d²/4, m².
     pub crown_area: f64,
+    /// Newton's restitution coefficient e of the corners' impacts on the liner.
     pub restitution: f64,
     /// Coulomb friction coefficient μ of the corners on the liner.
     pub friction: f64,
@@ -148,6 +150,7 @@ impl Engine {
 /// Rod and piston with the crank turning at the speed of the `crank_speed` input.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct PrescribedCrank {
+    /// The engine the crank turns.
     pub engine: Engine,
     /// φ1 at the speed's reference time.
     angle_ref: f64,
@@ -394,6 +397,7 @@ fn rod_and_piston_rows(mass: &Matrix3<f64>, force: &Vector3<f64>) -> (Matrix2<f6
 /// Crank, rod and piston, the crank loaded by the `load_torque` input.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct FreeCrank {
+    /// The engine on the crank.
     pub engine: Engine,
     /// N·m, opposing rotation.
     pub load_torque: InputPolynomial,

@@ -10,8 +10,11 @@ use serde::{Deserialize, Serialize};
 /// Crank radius `l1`, rod length `l2` and pin offset `a` of a slider crank, in metres.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct SliderCrank {
+    /// l1.
     pub crank_radius: f64,
+    /// l2.
     pub rod_length: f64,
+    /// a, the pin's lateral offset from the crank axis' line.
     pub pin_offset: f64,
 }
 

@@ -122,11 +122,14 @@ pub struct Loads {
 /// Sines and cosines of the three link angles: the only transcendental work of an evaluation.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct LinkAngles {
+    /// sin φ1, sin φ2, sin φ3.
     pub sin: [f64; 3],
+    /// cos φ1, cos φ2, cos φ3.
     pub cos: [f64; 3],
 }
 
 impl LinkAngles {
+    /// The sines and cosines of φ.
     pub fn new(phi: &Vector3<f64>) -> Self {
         Self::with_crank(trig::sin_cos(phi[0]), phi)
     }

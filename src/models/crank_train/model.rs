@@ -18,13 +18,14 @@ use std::f64::consts::PI;
 /// on the step (events are located by root finding); the step follows the motion: near 1e-3 s
 /// where the piston lies flat on a wall (fully constrained, no error to control), ≈ 1e-4 s in
 /// flight. Over ten cycles of the default case against a 2.5 µs fixed-step reference (958
-/// impacts faster than 0.1 mm/s, `examples/step_study.rs`): impact times agree to 4.6e-9 s and
+/// impacts faster than 0.1 mm/s, `tools/step_study.rs`): impact times agree to 4.6e-9 s and
 /// speeds to 2.3e-4 relative, as a fixed 1e-4 s step does (4.5e-9 s, 2.8e-4) with 2.3×
 /// as many RK4 steps; 1e-10 m gives 3.0e-8 s and 8.7e-4.
 pub const MAX_STEP: f64 = 1e-3;
 /// The crank angle one step of the prescribed crank may span, rad (7.2°: `MAX_STEP` at 1200 rpm, so
 /// that slower cranks keep `MAX_STEP`); see `PrescribedCrank::largest_step`.
 pub const MAX_STEP_ANGLE: f64 = 2.0 * PI / 50.0;
+/// The bound on the local error of each step on the corner gaps, m (see `MAX_STEP`).
 pub const LOCAL_ERROR: f64 = 1e-11;
 
 /// The crank train in one of its two crank modes.
@@ -211,21 +212,6 @@ impl CrankTrain {
         Ok(())
     }
 
-    /// The inputs over a step from now, refused unless finite.
-    fn inputs_over_step(&self, inputs: &Inputs, derivatives: &InputDerivatives) -> Result<[InputPolynomial; 3], ModelError> {
-        let polynomials = derivatives.polynomials(inputs, self.time());
-        // One sum clears all nine numbers (x · 0 is NaN exactly for an infinite or NaN x).
-        if polynomials.iter().map(|u| u.value * 0.0 + u.slope * 0.0 + u.curvature * 0.0).sum::<f64>() == 0.0 {
-            return Ok(polynomials);
-        }
-        let [speed, pressure, load] = polynomials;
-        for (name, u) in [("crank_speed", speed), ("gas_pressure", pressure), ("load_torque", load)] {
-            let finite = [u.value, u.slope, u.curvature].iter().all(|x| x.is_finite());
-            check(finite, || format!("input {name} ({}, derivatives {}, {}) must be finite", u.value, u.slope, u.curvature))?;
-        }
-        Ok(polynomials)
-    }
-
     /// The crank angle less the whole cycles taken off it, and the whole cycles it is past its first.
     fn angle_past_cycles(&self) -> (f64, f64) {
         let angle = self.state().0[0] - 4.0 * PI * self.cycles;
@@ -309,7 +295,8 @@ impl EngineModel for CrankTrain {
         t_end: f64,
         events: &mut Vec<EngineEvent>,
     ) -> Result<(), ModelError> {
-        let [speed, pressure, load] = self.inputs_over_step(inputs, derivatives)?;
+        // The façade has checked them finite.
+        let [speed, pressure, load] = derivatives.polynomials(inputs, self.time());
         if !self.started {
             self.start(inputs.crank_speed)?;
         }
@@ -347,10 +334,7 @@ impl EngineModel for CrankTrain {
     /// With the inputs held as they are, no cycle to take off the crank angle and the step ahead
     /// past `t_end`, `advance_interpolated` would only have the stepper serve the point.
     fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
-        let [speed, pressure, load] = match self.inputs_over_step(inputs, derivatives) {
-            Ok(polynomials) => polynomials,
-            Err(e) => return Some(Err(e)),
-        };
+        let [speed, pressure, load] = derivatives.polynomials(inputs, self.time());
         if !(self.started && self.engine().holds(&pressure) && self.angle_past_cycles().1 == 0.0) {
             return None;
         }

@@ -72,5 +72,6 @@ pub struct SideMap {
 /// Both sides' fields: [thrust (+x), anti-thrust (−x)].
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct PressureMap {
+    /// Thrust, anti-thrust.
     pub sides: [SideMap; 2],
 }

@@ -16,7 +16,14 @@ use std::str::FromStr;
 /// All numbers in metres, finite, drops and positions ≥ 0; whitespace is free.
 #[derive(Clone, Debug, PartialEq)]
 pub enum SkirtProfile {
-    Parabola { top_drop: f64, bottom_drop: f64 },
+    /// The barrel, by its drops at the top and bottom edges, m.
+    Parabola {
+        /// m, at u = 0.
+        top_drop: f64,
+        /// m, at u = skirt length.
+        bottom_drop: f64,
+    },
+    /// (u, drop) points, m, u strictly increasing.
     Table(Vec<(f64, f64)>),
 }
 
