@@ -283,8 +283,9 @@ fn variables_rs(variables: &[Resolved], guid: &str, model_name: &str, prefix: &s
     s
 }
 
-/// `Default` for `Parameters` and `Inputs` from the start values, the range checks of `Parameters`, the
-/// finiteness check of the Real outputs and, where the table interpolates inputs, the input derivatives by name.
+/// The struct macros, `Default` for `Parameters` and `Inputs` from the start values, the range checks of
+/// `Parameters`, the finiteness check of the Real outputs and, where the table interpolates inputs,
+/// `InputDerivatives` with its access by name.
 fn contract_rs(variables: &[Resolved], table: &Table) -> String {
     let literal = |kind: &str, text: &str| match kind {
         "Real" => format!("{:?}_f64", text.parse::<f64>().expect("Real number")),
@@ -327,9 +328,24 @@ fn contract_rs(variables: &[Resolved], table: &Table) -> String {
     s += "        if reals.iter().map(|(_, x)| x * 0.0).sum::<f64>() == 0.0 {\n            return None;\n        }\n";
     s += "        reals.into_iter().find(|(_, x)| !x.is_finite())\n    }\n}\n";
     if table.can_interpolate_inputs == "true" {
-        s += "impl InputDerivatives {\n    /// The derivatives of the input called `name`, if it is one.\n";
+        let inputs: Vec<&Resolved> = variables.iter().filter(|v| v.owner() == "inputs" && v.kind == "Real").collect();
+        s += "/// Time derivatives of the continuous inputs at the start of a step, `[first, second]` per input\n";
+        s += "/// (fmi2SetRealInputDerivatives); zero means held.\n";
+        s += "#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]\npub struct InputDerivatives {\n";
+        for v in &inputs {
+            let unit = v.unit.unwrap_or("1");
+            s += &format!("    #[doc = \"{unit}/s, {unit}/s²: of `{}`.\"]\n    pub {}: [f64; 2],\n", v.a.name, v.a.name);
+        }
+        s += "}\nimpl InputDerivatives {\n    /// Each input's name, value and derivatives, in the table's order.\n";
+        s +=
+            &format!("    pub fn with_values(&self, inputs: &Inputs) -> [(&'static str, f64, [f64; 2]); {}] {{\n        [\n", inputs.len());
+        for v in &inputs {
+            s += &format!("            ({:?}, inputs.{}, self.{}),\n", v.a.name, v.a.name, v.a.name);
+        }
+        s += "        ]\n    }\n\n";
+        s += "    /// The derivatives of the input called `name`, if it is one.\n";
         s += "    pub fn of_mut(&mut self, name: &str) -> Option<&mut [f64; 2]> {\n        match name {\n";
-        for v in variables.iter().filter(|v| v.owner() == "inputs" && v.kind == "Real") {
+        for v in &inputs {
             s += &format!("            {:?} => Some(&mut self.{}),\n", v.a.name, v.a.name);
         }
         s += "            _ => None,\n        }\n    }\n}\n";

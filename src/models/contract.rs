@@ -7,7 +7,8 @@ use super::{InputPolynomial, ModelError};
 use serde::{Deserialize, Serialize};
 
 // From modelDescription/piston_slap.xml: the three struct macros, `impl Default for Parameters` and `for
-// Inputs`, `Parameters::check_ranges`, `Outputs::first_non_finite` and `InputDerivatives::of_mut`.
+// Inputs`, `Parameters::check_ranges`, `Outputs::first_non_finite`, and `InputDerivatives` with `with_values`
+// and `of_mut`.
 include!(concat!(env!("OUT_DIR"), "/piston_slap_contract.rs"));
 
 parameters_struct! {
@@ -25,27 +26,12 @@ inputs_struct! {
     pub struct Inputs {}
 }
 
-/// Time derivatives of the continuous inputs at the start of a step, `[first, second]` per input
-/// (fmi2SetRealInputDerivatives); zero means held.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct InputDerivatives {
-    /// rad/s², rad/s³.
-    pub crank_speed: [f64; 2],
-    /// Pa/s, Pa/s².
-    pub gas_pressure: [f64; 2],
-    /// N·m/s, N·m/s².
-    pub load_torque: [f64; 2],
-}
-
 impl InputDerivatives {
     /// Refuses an input whose value or derivatives are not finite, naming it.
     pub fn check_finite(&self, inputs: &Inputs) -> Result<(), ModelError> {
-        let inputs = [
-            ("crank_speed", inputs.crank_speed, self.crank_speed),
-            ("gas_pressure", inputs.gas_pressure, self.gas_pressure),
-            ("load_torque", inputs.load_torque, self.load_torque),
-        ];
-        match inputs.into_iter().find(|(_, value, [slope, curvature])| !(value.is_finite() && slope.is_finite() && curvature.is_finite())) {
+        let finite =
+            |(_, value, [slope, curvature]): &(&str, f64, [f64; 2])| value.is_finite() && slope.is_finite() && curvature.is_finite();
+        match self.with_values(inputs).into_iter().find(|input| !finite(input)) {
             Some((name, value, [slope, curvature])) => {
                 Err(ModelError(format!("input {name} = {value} (derivatives {slope}, {curvature}) is not finite")))
             }
@@ -53,14 +39,10 @@ impl InputDerivatives {
         }
     }
 
-    /// The inputs over a step starting at `t`: `inputs` there, with these derivatives.
+    /// The inputs over a step starting at `t`: `inputs` there, with these derivatives, in the table's order
+    /// (`crank_speed`, `gas_pressure`, `load_torque`).
     pub fn polynomials(&self, inputs: &Inputs, t: f64) -> [InputPolynomial; 3] {
-        let polynomial = |value: f64, [slope, curvature]: [f64; 2]| InputPolynomial { time: t, value, slope, curvature };
-        [
-            polynomial(inputs.crank_speed, self.crank_speed),
-            polynomial(inputs.gas_pressure, self.gas_pressure),
-            polynomial(inputs.load_torque, self.load_torque),
-        ]
+        self.with_values(inputs).map(|(_, value, [slope, curvature])| InputPolynomial { time: t, value, slope, curvature })
     }
 }
 
@@ -69,12 +51,12 @@ outputs_struct! {
     /// the kinematic and force outputs by the model.
     #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
     pub struct Outputs {
-    /// J, the piston–liner friction work since the start (corners and skirt; no variable: the
-    /// statistics take `cycle_skirt_fmep` from its cycles' differences).
-    pub liner_friction_work: f64,
-    /// N·s, the liner's impulse on the piston since the start per wall [anti-thrust, major thrust],
-    /// impacts and contact forces (no variable: the `_in_step` outputs are its steps' differences).
-    pub liner_impulse_total: [f64; 2],
+        /// J, the piston–liner friction work since the start (corners and skirt; no variable: the
+        /// statistics take `cycle_skirt_fmep` from its cycles' differences).
+        pub liner_friction_work: f64,
+        /// N·s, the liner's impulse on the piston since the start per wall [anti-thrust, major thrust],
+        /// impacts and contact forces (no variable: the `_in_step` outputs are its steps' differences).
+        pub liner_impulse_total: [f64; 2],
     }
 }
 
