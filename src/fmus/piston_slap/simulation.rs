@@ -92,10 +92,12 @@ impl<E: EngineModel> Simulation<E> {
         Ok(sim)
     }
 
+    /// s, the time reached.
     pub fn time(&self) -> f64 {
         self.time
     }
 
+    /// The outputs at `time()`.
     pub fn outputs(&self) -> &Outputs {
         &self.outputs
     }
