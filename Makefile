@@ -14,7 +14,7 @@ CROSS_CACHE ?= $(or $(XDG_CACHE_HOME),$(HOME)/.cache)/pistonslap
 # Plots render without a display.
 export MPLBACKEND := Agg
 
-.PHONY: designs toolchain fmu venv demo coupled test thesis bench soak clean
+.PHONY: designs toolchain fmu venv demo coupled test thesis bench soak film-convergence clean
 
 # The cross compilers of win64 and of the glibc 2.28 baseline (Debian's rustc-web, MinGW-w64, Wine, cargo-zigbuild),
 # pinned; installs what is missing (apt needs root), otherwise only checks.
@@ -83,6 +83,14 @@ designs:
 
 soak:
 	cargo run --release --example soak -- 10000 1000000
+
+# The lubricated skirt's convergence in the film relaxation τ (at the default grid) and in the film grid (at the
+# default τ), the default engine at 1200 and 3000 rpm, the second cycle of each run against the first row's: the
+# tables of docs/lubricated_skirt.md (about an hour on the 2-CPU machine).
+film-convergence:
+	cargo run --release --example film_convergence -- 1200 2.5e-5:16:24 5e-5:16:24 1e-4:16:24 2e-4:16:24 4e-4:16:24 8e-4:16:24
+	cargo run --release --example film_convergence -- 1200 1e-4:24:36 1e-4:16:24 1e-4:12:18 1e-4:8:12
+	cargo run --release --example film_convergence -- 3000 1e-4:24:36 1e-4:16:24 1e-4:12:18 1e-4:8:12
 
 clean:
 	cargo clean

@@ -33,7 +33,7 @@ fn main() {
         "median of {RUNS} runs over {} motions of a 1200 rpm cycle (default engine geometry, 70° arcs, 20/10 µm barrel)",
         motions.len()
     );
-    for grid in [(8, 12), SkirtDesign::DEFAULT_GRID, (24, 36), (32, 48)] {
+    for grid in [(8, 12), SkirtDesign::DEFAULT_GRID, (16, 24), (32, 48)] {
         let mut design = SkirtDesign::new(0.04004, 0.04, 0.08, 0.04, 0.0, 70f64.to_radians(), 0.01);
         design.profile = SkirtProfile::Parabola { top_drop: 20e-6, bottom_drop: 10e-6 };
         design.grid = grid;

@@ -230,6 +230,8 @@ def main(argv=None):
             origin=origin,
         ),
     ]
+    if p.get("skirt_model") == 2:
+        written.append(plots.film(angle[cycle], result[cycle], args.out / "film.png", case, origin))
     print(
         f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. " + summary(result[-1])
     )

@@ -165,6 +165,24 @@ def forces(angle, result, path, case, origin=CENTRED):
     return _save(fig, path)
 
 
+def film(angle, result, path, case, origin=CENTRED):
+    """The lubricated skirt (skirt_model = 2): the thinnest oil film on each side (µm), the skirt's axial friction
+    force (N, + away from the crank) and the power it takes from the piston's motion (W)."""
+    deg = np.degrees(angle)
+    fig, (thickness, friction, power) = _axes(3, "Oil film and skirt friction over one engine cycle", case, origin)
+    for side, (label, _, colour) in zip(("thrust", "antithrust"), SIDES, strict=True):
+        thickness.plot(deg, result[f"min_film_thickness_{side}"] * 1e6, color=colour, label=label.split(" (")[0])
+    thickness.set_ylabel("minimum film\nthickness [µm]")
+    thickness.set_ylim(bottom=0)
+    _legend(thickness, ncol=2)
+    friction.plot(deg, result["skirt_friction_force"], color="tab:green")
+    friction.axhline(0, color="k", lw=0.5)
+    friction.set_ylabel("skirt friction force [N]\n(+ away from the crank)")
+    power.plot(deg, result["skirt_friction_power"], color="tab:olive")
+    power.set_ylabel("skirt friction\npower [W]")
+    return _save(fig, path)
+
+
 def _outline(top, bottom, pin_height, skirt, diameter, magnification):
     """Corners K1, K3, K4, K2 of the drawn piston in mm: the axis at the top and bottom corner levels displaced by
     `magnification` times the skirt's lateral positions (m), heights from the pin."""

@@ -67,3 +67,4 @@ def test_demo_at_an_operating_point(tmp_path):
         "impact_log.csv",
     ):
         assert (out / name).stat().st_size > 1000, name
+    assert not (out / "film.png").exists(), "the film plot is the lubricated skirt's (skirt_model = 2)"

@@ -17,9 +17,9 @@ impl Band {
         Self { n, b, data: vec![0.0; n * (b + 1)], inverse_diagonal: vec![0.0; n] }
     }
 
-    /// Clears every entry.
-    pub(crate) fn clear(&mut self) {
-        self.data.fill(0.0);
+    /// Clears every entry of rows `first..`.
+    pub(crate) fn clear_from(&mut self, first: usize) {
+        self.data[first * (self.b + 1)..].fill(0.0);
     }
 
     /// Adds `v` to entry (i, j), j ≤ i ≤ j + b.
@@ -32,9 +32,13 @@ impl Band {
     /// Rows marked in `identity` must hold the identity (1 on the diagonal, 0 elsewhere): their work is
     /// skipped, with the same result bit for bit (their rows of L are the identity's, and their columns
     /// of L below them stay 0).
-    pub(crate) fn factor(&mut self, identity: &[bool]) -> bool {
+    ///
+    /// Only rows `first..` are factorised: row i of L depends on rows ..= i of the matrix alone, so
+    /// when the matrix changed from row `first` on since a factorisation, rows `..first` of that
+    /// factorisation stand and the result is the full factorisation's bit for bit.
+    pub(crate) fn factor_from(&mut self, identity: &[bool], first: usize) -> bool {
         let (n, b, w) = (self.n, self.b, self.b + 1);
-        for i in 0..n {
+        for i in first..n {
             if identity[i] {
                 self.inverse_diagonal[i] = 1.0;
                 continue;
@@ -109,7 +113,7 @@ mod tests {
                 a.add(i, i - 1, -1.0);
             }
         }
-        assert!(a.factor(&[false; 9]));
+        assert!(a.factor_from(&[false; 9], 0));
         let mut r = vec![1.0; n];
         a.solve(&mut r);
         for (i, x) in r.iter().enumerate() {

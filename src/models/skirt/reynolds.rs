@@ -13,9 +13,11 @@
 //! p > 0, and no outflow into the cavitated zone, i.e. the linear complementarity problem
 //! `p ≥ 0, w = A p − b ≥ 0, pᵢ wᵢ = 0`. It is the obstacle problem of an M-matrix, solved by the
 //! primal–dual active-set method (Hintermüller, Ito & Kunisch, SIAM J. Optim. 13 (2003) 865–888), which
-//! for an M-matrix ends in finitely many steps at the exact solution of the discrete problem; the last
-//! step is a direct (band Cholesky) solve on the converged set, so the result depends on the set alone,
-//! and the same factorisation solves the damping's right-hand sides.
+//! for an M-matrix ends in finitely many steps at the exact solution of the discrete problem, from any
+//! starting set (a solve starts from its workspace's last set); the last step is a direct (band
+//! Cholesky) solve on the converged set, so the result depends on the set alone, and the same
+//! factorisation solves the damping's right-hand sides. A step refactorises only from the first band
+//! row its set changes touch.
 //!
 //! Why not mass-conserving JFO (Elrod–Adams): the Reynolds condition places the rupture boundary where
 //! the film's pressure gradient vanishes, which is exact for rupture, but it does not conserve mass
@@ -86,6 +88,16 @@ impl Grid {
             j * self.nx + i
         } else {
             i * self.nz + j
+        }
+    }
+
+    /// Node (i, j) of unknown index `row`: [`Grid::index`]'s inverse.
+    #[inline]
+    pub(crate) fn node(&self, row: usize) -> (usize, usize) {
+        if self.nx <= self.nz {
+            (row % self.nx, row / self.nx)
+        } else {
+            (row / self.nz, row % self.nz)
         }
     }
 
@@ -164,7 +176,7 @@ pub(crate) struct Reynolds {
     identity: Vec<bool>,
     /// The last solve's pressures, Pa, node order j·nx + i.
     pub pressure: Vec<f64>,
-    /// The last solve's film nodes (false: cavitated, p = 0).
+    /// The last solve's film nodes (false: cavitated, p = 0), the next solve's starting set.
     pub free: Vec<bool>,
 }
 
@@ -192,6 +204,9 @@ impl Reynolds {
     pub(crate) fn solve(&mut self, film: &Film, viscosity: f64, b: &[f64], cavitation: Cavitation, extra: &mut [&mut [f64]]) -> usize {
         self.conductances(film, viscosity);
         let (mut p, mut free) = (std::mem::take(&mut self.pressure), std::mem::take(&mut self.free));
+        if cavitation == Cavitation::None {
+            free.fill(true);
+        }
         let steps = self.active_set(b, cavitation, &mut p, &mut free);
         for r in extra.iter_mut() {
             for (x, &film) in r.iter_mut().zip(&free) {
@@ -205,16 +220,18 @@ impl Reynolds {
         steps
     }
 
-    /// The primal–dual active-set iteration; the factorisation of the last set stays in `matrix`.
+    /// The primal–dual active-set iteration from the set in `free`; the factorisation of the last set
+    /// stays in `matrix`.
     fn active_set(&mut self, b: &[f64], cavitation: Cavitation, p: &mut [f64], free: &mut [bool]) -> usize {
         let n = self.grid.len();
-        free.fill(true);
         let scale_b = b.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
         let mut steps = 0;
+        // The first band row whose matrix row changed since the last factorisation (all at first).
+        let mut first = 0;
         loop {
             steps += 1;
-            self.assemble(free);
-            if !self.matrix.factor(&self.identity) {
+            self.assemble(free, first);
+            if !self.matrix.factor_from(&self.identity, first) {
                 // Only a non-finite film gets here (the callers keep h > 0): say so with NaN, never panic.
                 p.fill(f64::NAN);
                 return steps;
@@ -228,16 +245,17 @@ impl Reynolds {
             }
             // w = A p − b on the cavitated nodes; a node joins the film where w < 0 (oil would flow in),
             // leaves it where p < 0. Tolerances far below the solution's scale stop round-off cycling.
+            // A node's change alters its own row and its higher-indexed neighbours' rows.
             let scale_p = p.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
-            let mut changed = false;
+            first = n;
             for k in 0..n {
                 let now = if free[k] { p[k] >= -1e-12 * scale_p } else { self.residual(p, k) - b[k] < -1e-12 * scale_b };
                 if now != free[k] {
                     free[k] = now;
-                    changed = true;
+                    first = first.min(self.grid.index(k % self.grid.nx, k / self.grid.nx));
                 }
             }
-            if !changed {
+            if first == n {
                 break;
             }
         }
@@ -264,48 +282,46 @@ impl Reynolds {
         }
     }
 
-    /// The reduced matrix: rows and columns of cavitated nodes replaced by the identity.
-    fn assemble(&mut self, free: &[bool]) {
+    /// The reduced matrix, band rows `first..`: rows and columns of cavitated nodes replaced by the identity.
+    fn assemble(&mut self, free: &[bool], first: usize) {
         let g = &self.grid;
         let (nx, nz) = (g.nx, g.nz);
-        self.matrix.clear();
-        for j in 0..nz {
-            for i in 0..nx {
-                let k = j * nx + i;
-                let row = g.index(i, j);
-                self.identity[row] = !free[k];
-                if !free[k] {
-                    self.matrix.add(row, row, 1.0);
-                    continue;
-                }
-                let (west, east) = (self.cx[j * (nx + 1) + i], self.cx[j * (nx + 1) + i + 1]);
-                let mut diagonal = west + east;
-                if !g.long {
-                    diagonal += self.cz[j * nx + i] + self.cz[(j + 1) * nx + i];
-                }
-                self.matrix.add(row, row, diagonal);
-                // Couplings to lower-indexed free neighbours (the band stores the lower triangle).
-                let mut couple = |ni: usize, nj: usize, c: f64| {
-                    if free[nj * nx + ni] {
-                        let col = g.index(ni, nj);
-                        if col < row {
-                            self.matrix.add(row, col, -c);
-                        }
+        self.matrix.clear_from(first);
+        for row in first..g.len() {
+            let (i, j) = g.node(row);
+            let k = j * nx + i;
+            self.identity[row] = !free[k];
+            if !free[k] {
+                self.matrix.add(row, row, 1.0);
+                continue;
+            }
+            let (west, east) = (self.cx[j * (nx + 1) + i], self.cx[j * (nx + 1) + i + 1]);
+            let mut diagonal = west + east;
+            if !g.long {
+                diagonal += self.cz[j * nx + i] + self.cz[(j + 1) * nx + i];
+            }
+            self.matrix.add(row, row, diagonal);
+            // Couplings to lower-indexed free neighbours (the band stores the lower triangle).
+            let mut couple = |ni: usize, nj: usize, c: f64| {
+                if free[nj * nx + ni] {
+                    let col = g.index(ni, nj);
+                    if col < row {
+                        self.matrix.add(row, col, -c);
                     }
-                };
-                if i > 0 {
-                    couple(i - 1, j, west);
                 }
-                if i + 1 < nx {
-                    couple(i + 1, j, east);
+            };
+            if i > 0 {
+                couple(i - 1, j, west);
+            }
+            if i + 1 < nx {
+                couple(i + 1, j, east);
+            }
+            if !g.long {
+                if j > 0 {
+                    couple(i, j - 1, self.cz[j * nx + i]);
                 }
-                if !g.long {
-                    if j > 0 {
-                        couple(i, j - 1, self.cz[j * nx + i]);
-                    }
-                    if j + 1 < nz {
-                        couple(i, j + 1, self.cz[(j + 1) * nx + i]);
-                    }
+                if j + 1 < nz {
+                    couple(i, j + 1, self.cz[(j + 1) * nx + i]);
                 }
             }
         }

@@ -181,7 +181,11 @@ fn finite_bearing_matches_raimondi_and_boyd() {
     // Raimondi & Boyd, "A solution for the finite journal bearing and its application to analysis and
     // design", ASLE Trans. 1 (1958) 159–209, full (360°) bearing, L/D = 1 (as reproduced in Shigley's
     // Mechanical Engineering Design, table "dimensionless performance parameters for full journal
-    // bearings with side flow"): (ε, S, attitude angle φ in degrees).
+    // bearings with side flow"): (ε, S, attitude angle φ in degrees). The S column checked against two
+    // public transcriptions of the L/D = 1 table: a MathWorks Answers design script (question 707318,
+    // S = 0.0188 … 1.33 against h0/c = 1 − ε = 0.1 … 0.9, all six) and U. C. Jindal, Machine Design,
+    // example 17-2, p. 482 (S = 0.0446 at h0/c = 0.2). The attitude angles are Shigley's, not yet
+    // checked against a second source.
     let table =
         [(0.1, 1.33, 79.5), (0.2, 0.631, 74.02), (0.4, 0.264, 63.10), (0.6, 0.121, 50.58), (0.8, 0.0446, 36.24), (0.9, 0.0188, 26.45)];
     for (e, s, phi) in table {

@@ -15,6 +15,7 @@ use super::reynolds::{Cavitation, Film, Grid, Reynolds};
 use super::{PressureMap, SideMap, SkirtDesign, SkirtLoads, SkirtMotion};
 use crate::models::ModelError;
 use nalgebra::Matrix2;
+use std::cell::RefCell;
 
 /// Per side: column terms (cos θ, ovality·sin²θ) at the node columns, the x faces, and the closed grid
 /// (edges included, for the asperities, the smallest film and the plots).
@@ -36,9 +37,13 @@ struct Rows {
 
 /// A skirt ready to evaluate: the design checked and its grids and tables built.
 ///
-/// [`Skirt::loads`] is a pure function of the design and the motion, deterministic to the bit: every
-/// call starts the active-set iteration from the same full film and ends with a direct solve on the
-/// converged cavitation set. A motion with a non-finite entry gives non-finite loads.
+/// [`Skirt::loads`] gives the discrete problem's unique solution at the motion: each side's
+/// active-set iteration starts from that side's last cavitation set (a warm start: successive
+/// motions of a run differ little, so the set is mostly right and one factorisation confirms it)
+/// and ends with a direct solve on the converged set, so the result depends on that set alone and
+/// is what a fresh skirt gives, bit for bit unless a node lies on the cavitation boundary to
+/// round-off (then within 1e-12 of the loads' scale; the tests measure both). A motion with a
+/// non-finite entry gives non-finite loads.
 #[derive(Clone, Debug)]
 pub struct Skirt {
     design: SkirtDesign,
@@ -47,15 +52,28 @@ pub struct Skirt {
     rows: Rows,
     asperity: Asperity,
     floor: f64,
+    /// The workspace, lent to each evaluation: every entry is written before it is read, so an
+    /// evaluation's result does not depend on the one before.
+    scratch: RefCell<Scratch>,
 }
 
-/// The per-call workspace (allocated per call: see the bench for its cost).
+/// The per-evaluation workspace.
+#[derive(Clone, Debug)]
 struct Scratch {
-    reynolds: Reynolds,
+    /// Per side: each solve starts its active-set iteration from the side's last cavitation set.
+    reynolds: [Reynolds; 2],
     film: Film,
     rhs: Vec<f64>,
     rate_x: Vec<f64>,
     rate_tilt: Vec<f64>,
+}
+
+impl Scratch {
+    fn new(grid: &Grid) -> Self {
+        let n = grid.len();
+        let reynolds = [Reynolds::new(grid.clone()), Reynolds::new(grid.clone())];
+        Self { reynolds, film: Film::new(grid), rhs: vec![0.0; n], rate_x: vec![0.0; n], rate_tilt: vec![0.0; n] }
+    }
 }
 
 impl Skirt {
@@ -86,7 +104,8 @@ impl Skirt {
         };
         let asperity = Asperity::new(&design.roughness);
         let floor = 0.1 * design.roughness.sigma;
-        Ok(Self { sides: [side(0.0), side(std::f64::consts::PI)], rows, asperity, floor, grid, design })
+        let scratch = RefCell::new(Scratch::new(&grid));
+        Ok(Self { sides: [side(0.0), side(std::f64::consts::PI)], rows, asperity, floor, grid, design, scratch })
     }
 
     /// The design this skirt was built from.
@@ -104,17 +123,6 @@ impl Skirt {
         let mut map = PressureMap::default();
         self.evaluate(motion, Some(&mut map));
         map
-    }
-
-    fn scratch(&self) -> Scratch {
-        let n = self.grid.len();
-        Scratch {
-            reynolds: Reynolds::new(self.grid.clone()),
-            film: Film::new(&self.grid),
-            rhs: vec![0.0; n],
-            rate_x: vec![0.0; n],
-            rate_tilt: vec![0.0; n],
-        }
     }
 
     fn evaluate(&self, m: &SkirtMotion, mut map: Option<&mut PressureMap>) -> SkirtLoads {
@@ -140,7 +148,7 @@ impl Skirt {
         } else {
             0.0
         };
-        let mut s = self.scratch();
+        let s = &mut *self.scratch.borrow_mut();
         let mut out = SkirtLoads::default();
         let mut damping = Matrix2::zeros();
         for (side_index, side) in self.sides.iter().enumerate() {
@@ -157,8 +165,8 @@ impl Skirt {
             }
             s.film.add_wedge(&self.grid, (0.0, 0.5 * v), &mut s.rhs);
             out.factorisations[side_index] =
-                s.reynolds.solve(&s.film, mu, &s.rhs, Cavitation::Reynolds, &mut [&mut s.rate_x, &mut s.rate_tilt]);
-            let (pressure, free) = (&s.reynolds.pressure, &s.reynolds.free);
+                s.reynolds[side_index].solve(&s.film, mu, &s.rhs, Cavitation::Reynolds, &mut [&mut s.rate_x, &mut s.rate_tilt]);
+            let (pressure, free) = (&s.reynolds[side_index].pressure, &s.reynolds[side_index].free);
             for (j, &(_, (alpha, beta), z, r)) in node_rows.iter().enumerate() {
                 for (i, &(c, _)) in side.nodes.iter().enumerate() {
                     let k = j * nx + i;
