@@ -38,6 +38,21 @@ pub struct InputDerivatives {
 }
 
 impl InputDerivatives {
+    /// Refuses an input whose value or derivatives are not finite, naming it.
+    pub fn check_finite(&self, inputs: &Inputs) -> Result<(), ModelError> {
+        let inputs = [
+            ("crank_speed", inputs.crank_speed, self.crank_speed),
+            ("gas_pressure", inputs.gas_pressure, self.gas_pressure),
+            ("load_torque", inputs.load_torque, self.load_torque),
+        ];
+        match inputs.into_iter().find(|(_, value, [slope, curvature])| !(value.is_finite() && slope.is_finite() && curvature.is_finite())) {
+            Some((name, value, [slope, curvature])) => {
+                Err(ModelError(format!("input {name} = {value} (derivatives {slope}, {curvature}) is not finite")))
+            }
+            None => Ok(()),
+        }
+    }
+
     /// The inputs over a step starting at `t`: `inputs` there, with these derivatives.
     pub fn polynomials(&self, inputs: &Inputs, t: f64) -> [InputPolynomial; 3] {
         let polynomial = |value: f64, [slope, curvature]: [f64; 2]| InputPolynomial { time: t, value, slope, curvature };

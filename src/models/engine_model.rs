@@ -63,7 +63,8 @@ pub struct EngineEvent {
 /// A model variant as the FMU drives it: built from parameters, advanced with held inputs.
 pub trait EngineModel: Sized + Clone {
     /// Builds the model at `start_time` in the initial state of ARCHITECTURE.md §4, or refuses the
-    /// parameters with a message naming the offending one.
+    /// parameters with a message naming the offending one: the table's ranges (`Parameters::validate`)
+    /// and the model's own conditions, the only validation a start makes.
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError>;
 
     /// Advances to exactly `t_end` with `inputs` held, appending every event to `events`.
