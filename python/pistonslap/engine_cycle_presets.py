@@ -7,21 +7,21 @@ Both run at full load, 2000 rpm, with the default real-gas properties and Woschn
 Sources of the constants:
 - Wiebe function x_b = 1 − exp(−a ((ϑ − ϑ0)/Δϑ)^(m+1)) with a = 5, m = 2: the efficiency factor a = 5 of Kirkpatrick,
   *Internal Combustion Engines: Applied Thermosciences* (Wiley, the edition citing Ghojel 2010), eq 2.70 and
-  Example 2.4; m = 2 as
-  Heywood (1988) eq 9.23 fits spark-ignition burn profiles. The diesel preset uses the same single Wiebe shape: its
+  Example 2.4; m = 2 as Heywood (1988) eq 9.23 fits spark-ignition burn profiles, cited from memory (neither the
+  value nor the equation number is checked against the book). The diesel preset uses the same single Wiebe shape: its
   premixed and diffusion phases (a double Wiebe) are not modelled, only their span.
 - Woschni's C1 = 2.28 and C2 = 3.24e-3 m/(s·K) (SAE 670931, 1967) and Hohenberg's correlation (SAE 790825, 1979) are
   built into the FMU (src/models/engine_cycle/heat_transfer.rs, which states their forms and units), chosen by
   `heat_transfer` = 1 or 2.
 - Fuels: lower heating values and H/C ratios of Çengel & Boles, *Thermodynamics: An Engineering Approach*
-  (McGraw-Hill, 8th ed. 2015), Table A-27: gasoline CnH1.87n 44.0 MJ/kg, light diesel CnH1.8n 43.2 MJ/kg (the
-  values of Heywood 1988, App. D, Table D.4).
+  (McGraw-Hill, 8th ed. 2015), Table A-27: gasoline CnH1.87n 44.0 MJ/kg, light diesel CnH1.8n 43.2 MJ/kg (Heywood
+  1988, App. D, Table D.4 is recalled to give the same; not checked).
 - `heat_release` is 0.95 (gasoline, stoichiometric charge less incomplete combustion) and 0.70 (diesel, the smoke
   limit of full load) of the fuel the trapped charge can burn, the bound EngineCycle enforces: 1483 of 1561 J and
   2378 of 3398 J.
 
 What they give (tested in python/tests/test_engine_cycle_fmu.py): the gasoline engine an indicated efficiency of
-0.39 and a peak pressure of 59 bar at 14° after TDC, the diesel 0.47 and 153 bar.
+0.39 and a peak pressure of 59 bar at 14° after TDC, the diesel 0.46 and 154 bar at 13°.
 """
 
 import math

@@ -4,7 +4,6 @@ outputs in every scenario, and an FMU state saved on one platform continues on t
 tables: exactly the fmi2 functions exported, no glibc symbol newer than the 2.28 baseline, only system DLLs
 imported. `make test` installs the cross toolchain (`make toolchain`); a missing piece fails these tests."""
 
-import os
 import re
 import shutil
 import subprocess
@@ -12,6 +11,7 @@ from pathlib import Path
 
 import fmpy
 import pytest
+from wine import bcrypt_shim, tool, windows_path, wine_env
 
 ROOT = Path(__file__).resolve().parents[2]
 ENGINE_FMU = Path(__file__).resolve().parents[1] / "pistonslap" / "fmu" / "EngineCycle.fmu"
@@ -42,13 +42,6 @@ SCENARIOS = {
 }
 
 
-def tool(name):
-    path = shutil.which(name)
-    if path is None:
-        pytest.fail(f"{name} not found: `make toolchain` installs it")
-    return path
-
-
 @pytest.fixture(scope="module")
 def build(tmp_path_factory, fmu_file):
     """The unpacked FMUs and the host, native and win64 (with the Wine-only stand-in DLL beside it)."""
@@ -65,21 +58,10 @@ def build(tmp_path_factory, fmu_file):
     win.mkdir()
     mingw = tool("x86_64-w64-mingw32-gcc")
     subprocess.run([mingw, *flags, "-o", win / "trace.exe", source], check=True)
-    shim = ROOT / "tests" / "c_host" / "wine" / "bcryptprimitives.c"
-    subprocess.run([mingw, "-O1", "-shared", "-o", win / "bcryptprimitives.dll", shim, "-ladvapi32"], check=True)
+    bcrypt_shim(win)
     for name, (unzipdir, _) in fmus.items():
         shutil.copy(unzipdir / "binaries" / "win64" / f"{name}.dll", win)
     return out, fmus
-
-
-def wine_env(out):
-    # One prefix for the whole session (Wine takes ~15 s to create one); no Mono or Gecko installers.
-    return dict(os.environ, WINEPREFIX=str(out / "wineprefix"), WINEDEBUG="-all", WINEDLLOVERRIDES="mscoree,mshtml=")
-
-
-def windows_path(path):
-    """What Wine's Z: drive calls a Linux path."""
-    return "Z:" + str(path).replace("/", "\\")
 
 
 def run(build, scenario, platform, *extra):

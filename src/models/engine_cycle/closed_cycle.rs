@@ -10,7 +10,7 @@
 //!   `m (c_v dT/dϑ + (u_b − u_a) dx/dϑ) = dQ/dϑ − dQ_w/dϑ − p dV/dϑ`, and `p = m R(x) T/V`.
 //!
 //! `Q = Q_fuel x_b` with the Wiebe burn fraction `x_b = 1 − exp(−a ((ϑ − ϑ_s)/Δϑ)^(m+1))` for ϑ ≥ ϑ_s
-//! (Heywood eq 9.23), `Q_w` the wall heat ([`super::heat_transfer`]). The mass follows from
+//! (Heywood eq 9.23; the number not checked), `Q_w` the wall heat ([`super::heat_transfer`]). The mass follows from
 //! `p_intake V(−π) = m R(x_r) T_intake`; the fuel the charge holds bounds the heat release: `Q_fuel ≤ (1 − x_r) m
 //! (F/A)_s LHV`, and the burned gas is the product at `φ = Q_fuel / ((1 − x_r) m (F/A)_s LHV)`.
 

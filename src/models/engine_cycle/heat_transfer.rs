@@ -7,8 +7,8 @@
 //!   combustion and expansion (6.18 over gas exchange, not modelled) and C2 = 3.24e-3 m/(s·K) from the start of
 //!   combustion on (0 before; 6.22e-3 would be a prechamber engine's); r is the state at inlet valve closing and
 //!   `p_m = p_r (V_r/V)^γ_r` the motored pressure, `p − p_m` taken ≥ 0. Woschni's 110 kcal/(m²·h·K) with p in at
-//!   is 130 W/(m²·K) with p in bar and 3.26 with p in kPa. Heywood's eq 12.19 prints the same constant with
-//!   T^−0.55, which at 300–2500 K gives 11–14 % less heat than the paper's T^−0.53 used here.
+//!   is 130 W/(m²·K) with p in bar and 3.26 with p in kPa. Heywood's eq 12.19 (number and exponent as recalled, not
+//!   checked) prints the same constant with T^−0.55, which at 300–2500 K gives 11–14 % less heat than the paper's T^−0.53 used here.
 //! - 2 Hohenberg (G. F. Hohenberg, SAE 790825, 1979): `h = 130 V^−0.06 p^0.8 T^−0.4 (S̄p + 1.4)^0.8` with V in m³,
 //!   p in bar, T in K, S̄p in m/s (129.8 in some tools' rounding).
 //!

@@ -74,7 +74,7 @@ impl EngineCycleParameters {
         self.area() * self.stroke
     }
 
-    /// The slider-crank volume at crank angle `theta` (Heywood eq 2.6).
+    /// The slider-crank volume at crank angle `theta` (Heywood eq 2.6; the number not checked).
     pub fn volume(&self, theta: f64) -> Volume {
         let (r, l, area) = (0.5 * self.stroke, self.rod_length, self.area());
         let (sin, cos) = libm::sincos(theta);

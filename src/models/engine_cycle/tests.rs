@@ -294,8 +294,8 @@ fn report_fired_default_case() {
     let efficiency = |m: &EngineCycle| m.imep(14_400) * m.parameters().displacement() / q;
     let wall = first_law(&fired).3;
     println!(
-        "fired default: IMEP {:.3} bar, indicated efficiency {:.3} (textbook cycle {:.3}), wall heat {:.1} J ({:.1} % of Q), \
-         peak {:.2} bar at {at:.1}° after firing TDC, φ = {:.3}",
+        "fired default: IMEP {:.4} bar, indicated efficiency {:.4} (textbook cycle {:.4}), wall heat {:.2} J ({:.2} % of Q), \
+         peak {:.3} bar at {at:.1}° after firing TDC, φ = {:.3}",
         fired.imep(14_400) / 1e5,
         efficiency(&fired),
         efficiency(&textbook_cycle),

@@ -173,8 +173,8 @@ mod tests {
 
     #[test]
     fn air_has_the_textbook_gas_constant_and_heat_capacities() {
-        // Heywood (1988) App. D and the NBS Circular 564 air table: R = 287 J/(kg K), c_v(300 K) = 718,
-        // c_v(1000 K) = 855 J/(kg K) (3 figures).
+        // The NBS Circular 564 air table: R = 287 J/(kg K), c_v(300 K) = 718, c_v(1000 K) = 855 J/(kg K)
+        // (3 figures).
         let air = Charge::new(1.87, 1.0).air;
         assert!((air.r - 287.0).abs() < 0.5, "R = {}", air.r);
         assert!((air.cv(300.0) - 718.0).abs() < 2.0, "cv(300) = {}", air.cv(300.0));
@@ -201,7 +201,9 @@ mod tests {
 
     #[test]
     fn stoichiometric_air_fuel_ratios_are_heywoods() {
-        // Heywood (1988) App. D: gasoline (CH1.87) 14.6, diesel (CH1.8) 14.5.
+        // The atom balance: (1 + y/4) kmol O2 per (12.011 + 1.008 y) kg of CH_y, air 23.2 % O2 by mass, gives
+        // gasoline (CH1.87) 14.6 and diesel (CH1.8) 14.5, the values usually tabulated (Heywood App. D as
+        // recalled, not checked).
         assert!((1.0 / stoichiometric_fuel_air(1.87) - 14.6).abs() < 0.05);
         assert!((1.0 / stoichiometric_fuel_air(1.8) - 14.5).abs() < 0.05);
     }

@@ -7,7 +7,8 @@
 //!   `p̂(ϑ) = [(V(π)/V(ϑ))ⁿ (1 + (ρ − 1) x_b(ϑ)) − 1] w(ϑ)`, in units of the intake pressure;
 //!   `V(ϑ)/V_d = 1/(ε − 1) + ½[(1 − cos ϑ) + λ(1 − √(1 − sin²ϑ/λ²))]` is the slider-crank volume
 //!   (Heywood, *Internal Combustion Engine Fundamentals*, eq 2.6), `λ` = rod length / crank radius;
-//!   `x_b = 1 − exp(−a ((ϑ − ϑ_s)/Δϑ)^(m+1))` for ϑ ≥ ϑ_s is the Wiebe burn fraction (Heywood eq 9.23);
+//!   `x_b = 1 − exp(−a ((ϑ − ϑ_s)/Δϑ)^(m+1))` for ϑ ≥ ϑ_s is the Wiebe burn fraction (Heywood eq 9.23; both
+//!   equation numbers not checked against the book);
 //!   `w` = 1 up to exhaust valve opening ϑ_EVO, then `cos²(π/2 · (ϑ − ϑ_EVO)/(π − ϑ_EVO))` (blowdown to
 //!   crankcase pressure at BDC);
 //! - exhaust and intake strokes, ϑ ∈ (π, 3π) mod 4π: 0 (gas exchange at crankcase pressure).
