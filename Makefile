@@ -16,9 +16,8 @@ export MPLBACKEND := Agg
 
 .PHONY: designs toolchain fmu venv demo coupled test thesis bench soak film-convergence clean
 
-# The cross compilers of win64 and of the glibc 2.28 baseline (Debian's rustc-web, MinGW-w64, Wine, cargo-zigbuild)
-# and the FMU Compliance Checker (built from build/vendor/), pinned; installs what is missing (apt needs root),
-# otherwise only checks.
+# The cross compilers of win64 and of the glibc 2.28 baseline (Debian's rustc-web, MinGW-w64, Wine, cargo-zigbuild),
+# pinned; installs what is missing (apt needs root), otherwise only checks.
 toolchain:
 	build/toolchain.sh $(CROSS_CACHE)
 
@@ -52,8 +51,8 @@ coupled: fmu venv
 	for preset in $$($(VENV_PYTHON) -c "from pistonslap.engine_cycle_presets import PRESETS; print(*PRESETS)"); do $(PISTONSLAP) coupled --engine $$preset --out out/coupled/$$preset || exit 1; done
 
 # The style gate (rustfmt, clippy with warnings as errors, the API documentation's links, ruff's formatter and linter
-# on python/), the Rust tests, then the fmpy tests against the packaged FMU, its win64 binary under Wine and the FMU
-# Compliance Checker among them; fails if any fails.
+# on python/), the Rust tests, then the fmpy tests against the packaged FMU, its win64 binary under Wine among them;
+# fails if any fails.
 test: toolchain fmu venv
 	cargo fmt --check
 	cargo clippy --all-targets -- -D warnings
@@ -61,7 +60,7 @@ test: toolchain fmu venv
 	$(VENV)/bin/ruff format --check python
 	$(VENV)/bin/ruff check python
 	cargo test --release
-	CROSS_CACHE=$(CROSS_CACHE) $(VENV_PYTHON) -m pytest python/tests
+	$(VENV_PYTHON) -m pytest python/tests
 
 # Farahanchi's chapter 2 figures (constraint forces, sliding regions) and chapter 4 (20 runs of 30 + 1500 crank
 # cycles from 6 starting crank angles, the 100 from the other starts a resumable sweep on a local Dask cluster):
