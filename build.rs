@@ -3,9 +3,10 @@
 //! - `modelDescription.xml`: the FMI 2.0 model description shipped in the FMU;
 //! - `variables.rs`: the GUID, the variable table and the value-reference dispatch onto the fields of
 //!   `Parameters`, `Inputs` and `Outputs` (included by the FMU's room, `src/fmus/<fmu>/variables.rs`);
-//! - `contract.rs`: the defaults and range checks of `Parameters` and `Inputs`, the finiteness check of the
-//!   Real outputs and the input derivatives by name (included where the model keeps its contract types:
-//!   `src/models/contract.rs`, `src/models/engine_cycle/parameters.rs`);
+//! - `contract.rs`: the macros `parameters_struct!`, `inputs_struct!` and `outputs_struct!` that declare the
+//!   contract types with one documented field per variable, the defaults and range checks of `Parameters`
+//!   and `Inputs`, the finiteness check of the Real outputs and the input derivatives by name (included where
+//!   the model keeps its contract types: `src/models/contract.rs`, `src/models/engine_cycle/contract.rs`);
 //!
 //! and once, `log_categories.rs` (included by `src/fmi/description.rs`).
 //!
@@ -291,6 +292,9 @@ fn contract_rs(variables: &[Resolved], table: &Table) -> String {
         _ => format!("String::from({text:?})"),
     };
     let mut s = String::new();
+    for owner in ["parameters", "inputs", "outputs"] {
+        s += &struct_macro(variables, owner);
+    }
     for (owner, ty) in [("parameters", "Parameters"), ("inputs", "Inputs")] {
         // A struct without fields derives its Default.
         if !variables.iter().any(|v| v.owner() == owner) {
@@ -303,7 +307,7 @@ fn contract_rs(variables: &[Resolved], table: &Table) -> String {
         s += "        }\n    }\n}\n";
     }
     s += "impl Parameters {\n    /// Every Real parameter finite and within the table's min/max (and > 0 where marked positive);\n";
-    s += "    /// every Integer parameter within its min/max.\n    fn check_ranges(&self) -> Result<(), ModelError> {\n";
+    s += "    /// every Integer parameter within its min/max.\n    pub(crate) fn check_ranges(&self) -> Result<(), ModelError> {\n";
     for v in variables.iter().filter(|v| v.owner() == "parameters" && v.kind != "String") {
         let (name, unit, positive) = (&v.a.name, v.unit.unwrap_or(""), v.a.positive);
         let bound = |b: &Option<String>| b.as_deref().map_or("None".to_string(), |b| format!("Some({})", literal(v.kind, b)));
@@ -330,6 +334,31 @@ fn contract_rs(variables: &[Resolved], table: &Table) -> String {
         }
         s += "            _ => None,\n        }\n    }\n}\n";
     }
+    s
+}
+
+/// `<owner>_struct!`, declaring a struct (attributes, visibility and name given) with one public field per variable
+/// of `owner`, documented by the variable's unit and description, followed by the fields given (those no variable
+/// holds).
+fn struct_macro(variables: &[Resolved], owner: &str) -> String {
+    let mut s = format!("/// Declares the struct of the table's {owner}, one field per variable, then the given fields.\n");
+    s += &format!("macro_rules! {owner}_struct {{\n    ($(#[$attribute:meta])* $vis:vis struct $name:ident {{ $($field:tt)* }}) => {{\n");
+    s += "        $(#[$attribute])*\n        $vis struct $name {\n";
+    for v in variables.iter().filter(|v| v.owner() == owner) {
+        // Brackets escaped: rustdoc would read `[bar]` as a link.
+        let description = v.a.description.trim_end_matches('.').replace('[', "\\[").replace(']', "\\]");
+        let doc = match v.unit {
+            Some(unit) => format!("{unit}: {description}."),
+            None => format!("{description}."),
+        };
+        let ty = match v.kind {
+            "Real" => "f64",
+            "Integer" => "i32",
+            _ => "String",
+        };
+        s += &format!("            #[doc = {doc:?}]\n            pub {}: {ty},\n", v.a.name);
+    }
+    s += "            $($field)*\n        }\n    };\n}\n";
     s
 }
 

@@ -3,9 +3,12 @@
 //! Each figure is the median of several runs; evaluations are counted by a wrapping system.
 
 use nalgebra::{SVector, Vector1, Vector2, Vector3};
-use pistonslap::dynamics::testbeds::{Ball, Counted, DoublePendulum, Floor, Rod};
+#[path = "../tests/common/testbeds.rs"]
+mod testbeds;
+
 use pistonslap::dynamics::{EventLocator, Stepper, StepperOptions, System};
 use std::time::{Duration, Instant};
+use testbeds::{Ball, Counted, DoublePendulum, Floor, Rod};
 
 const RUNS: usize = 7;
 

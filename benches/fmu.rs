@@ -12,7 +12,7 @@ use std::time::Instant;
 
 #[path = "fmu/flop_count.rs"]
 mod flop_count;
-#[path = "../tests/fmu_host/mod.rs"]
+#[path = "../tests/common/fmu_host.rs"]
 mod fmu_host;
 
 use fmu_host::{vr, Host};

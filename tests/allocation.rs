@@ -2,7 +2,7 @@
 //! allocations of steady-state steps of both engine models: through their `advance` (the core's
 //! step loop, events included), through `Simulation::step` and through the exported fmi2DoStep.
 
-use crate::fmu_host::{vr, Host};
+use crate::common::fmu_host::{vr, Host};
 use pistonslap::fmus::piston_slap::simulation::Simulation;
 use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters, Roller};
 use std::alloc::{GlobalAlloc, Layout, System};

@@ -4,7 +4,7 @@
 //! memcheck it repeats short instantiate / step / FMU-state / free cycles, which must leak nothing
 //! and touch no invalid memory.
 
-use crate::fmu_host::vr;
+use crate::common::fmu_host::vr;
 use pistonslap::fmus::piston_slap::GUID;
 use std::path::PathBuf;
 use std::process::{Command, Output};

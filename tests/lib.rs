@@ -8,5 +8,4 @@ mod common;
 mod core;
 mod crank_train;
 mod engine_cycle_fmu;
-mod fmu_host;
 mod roller;

@@ -29,8 +29,8 @@
 //! set, `W`, the held acceleration, the LCP) and `coulomb.rs` (the friction problems by
 //! enumeration); `rk4.rs` (the RK4 step of a sample, its error estimate, its quintic extension)
 //! over `sample.rs` (the state the loop carries); `inertia.rs` (`M⁻¹`); `system.rs`,
-//! `options.rs`, `event.rs`, `error.rs` (what the core takes, is told, records and refuses);
-//! `testbeds.rs` (closed-form systems for tests and benches).
+//! `options.rs`, `event.rs`, `error.rs` (what the core takes, is told, records and refuses). The
+//! closed-form systems the tests and benches run it on are `tests/common/testbeds.rs`.
 
 #![warn(missing_docs)]
 
@@ -50,7 +50,6 @@ mod stepper;
 mod system;
 #[cfg(test)]
 mod test_random;
-pub mod testbeds;
 
 pub use error::DynamicsError;
 pub use event::{Event, EventKind, StepCounts};

@@ -6,44 +6,66 @@
 // LOG_CATEGORIES, shared by every FMU.
 include!(concat!(env!("OUT_DIR"), "/log_categories.rs"));
 
+/// A variable's FMI type (the tables have no Booleans).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kind {
+    /// fmi2Real, an f64 field.
     Real,
+    /// fmi2Integer, an i32 field (options and counts).
     Integer,
+    /// fmi2String, a String field (file names).
     String,
 }
 
+/// Who sets a variable: the host during the run, the model, or the host before the run.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Causality {
+    /// Set by the host between steps.
     Input,
+    /// Computed by the model.
     Output,
+    /// Fixed at initialization.
     Parameter,
 }
 
 /// One row of the variable table.
 #[derive(Debug)]
 pub struct Variable {
+    /// The FMI name, also the Rust field's.
     pub name: &'static str,
+    /// The FMI type.
     pub kind: Kind,
+    /// Input, output or parameter.
     pub causality: Causality,
     /// SI unit name as in UnitDefinitions, empty when dimensionless or not Real.
     pub unit: &'static str,
     /// Start value as written in the table, empty for outputs.
     pub start: &'static str,
+    /// What the variable is, as the XML says.
     pub description: &'static str,
 }
 
 /// One FMU's variable table and its dispatch onto the structs `P` (parameters), `I` (inputs) and `O` (outputs).
 pub struct Description<P: 'static, I: 'static, O: 'static> {
+    /// modelName of the XML.
     pub model_name: &'static str,
+    /// The table's fingerprint, in the XML and checked by fmi2Instantiate.
     pub guid: &'static str,
+    /// The modelDescription.xml shipped in the FMU.
     pub model_description_xml: &'static str,
+    /// Every variable, indexed by value reference.
     pub variables: &'static [Variable],
+    /// The Real variable `vr` of the parameters, inputs or outputs; `None` if `vr` is not a Real.
     pub get_real: for<'a> fn(u32, &'a P, &'a I, &'a O) -> Option<f64>,
+    /// As `get_real`, for Integers.
     pub get_integer: for<'a> fn(u32, &'a P, &'a I, &'a O) -> Option<i32>,
+    /// As `get_real`, for Strings.
     pub get_string: for<'a> fn(u32, &'a P, &'a I, &'a O) -> Option<&'a str>,
+    /// The settable (parameter or input) Real variable `vr`; `None` if `vr` is not one.
     pub real_mut: for<'a> fn(u32, &'a mut P, &'a mut I) -> Option<&'a mut f64>,
+    /// As `real_mut`, for Integers.
     pub integer_mut: for<'a> fn(u32, &'a mut P, &'a mut I) -> Option<&'a mut i32>,
+    /// As `real_mut`, for Strings.
     pub string_mut: for<'a> fn(u32, &'a mut P, &'a mut I) -> Option<&'a mut String>,
 }
 
@@ -61,7 +83,9 @@ impl<P, I, O> Description<P, I, O> {
 
 /// A field's value as a getter returns it: numbers by copy, strings borrowed.
 pub trait FieldValue<'a> {
+    /// What the getter returns.
     type Value;
+    /// The field's value as the getter returns it.
     fn value(&'a self) -> Self::Value;
 }
 

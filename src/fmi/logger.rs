@@ -28,6 +28,7 @@ pub struct Logger {
 }
 
 impl Logger {
+    /// A logger calling the host's `callback` for instance `instance_name`, every category on or off.
     pub fn new(callback: fmi2CallbackLogger, environment: fmi2ComponentEnvironment, instance_name: &str, on: bool) -> Self {
         Self { callback, environment, instance_name: c_string(instance_name), enabled: [on; LOG_CATEGORIES.len()] }
     }

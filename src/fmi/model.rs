@@ -14,8 +14,11 @@ use std::path::Path;
 pub trait Model: Sized + Clone + Debug + 'static {
     /// The FMU's name in messages.
     const NAME: &'static str;
+    /// The parameters, one field per parameter of the table.
     type Parameters: Clone + Debug + Default + Serialize + DeserializeOwned + 'static;
+    /// The inputs, one field per input of the table.
     type Inputs: Clone + Debug + Default + Serialize + DeserializeOwned + 'static;
+    /// The outputs, one field per output of the table.
     type Outputs: Default + 'static;
     /// The input derivatives fmi2SetRealInputDerivatives sets, saved with the FMU state.
     type InputDerivatives: Clone + Debug + Default + Serialize + DeserializeOwned;
@@ -30,6 +33,7 @@ pub trait Model: Sized + Clone + Debug + 'static {
     /// Mark live instances and FMU states of this model: a pointer of another model is refused. The state
     /// tag's bytes also open the model's serialized states.
     const INSTANCE_TAG: u64;
+    /// See `INSTANCE_TAG`.
     const STATE_TAG: u64;
 
     /// The parameters with bare file names turned into their paths in the FMU's `resources/`.
@@ -45,7 +49,9 @@ pub trait Model: Sized + Clone + Debug + 'static {
     fn step(sim: &mut Self::Simulation, inputs: &Self::Inputs, derivatives: &Self::InputDerivatives, t_end: f64) -> Result<(), ModelError>;
     /// Logs what happened during the last step (category `logEvents`).
     fn log_step(sim: &Self::Simulation, logger: &Logger);
+    /// s, the time the simulation has reached.
     fn time(sim: &Self::Simulation) -> f64;
+    /// The outputs at that time.
     fn outputs(sim: &Self::Simulation) -> &Self::Outputs;
     /// A restored simulation is one the parameters can make.
     fn check(sim: &Self::Simulation) -> Result<(), ModelError>;

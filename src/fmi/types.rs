@@ -3,39 +3,62 @@
 
 use std::ffi::{c_char, c_int, c_uint, c_void};
 
+/// The instance handle given to the host by fmi2Instantiate.
 pub type fmi2Component = *mut c_void;
+/// The host's pointer passed back to its callbacks.
 pub type fmi2ComponentEnvironment = *mut c_void;
+/// A saved FMU state's handle (fmi2GetFMUstate).
 pub type fmi2FMUstate = *mut c_void;
+/// A variable's value reference: its position in the variable table.
 pub type fmi2ValueReference = c_uint;
+/// An FMI Real.
 pub type fmi2Real = f64;
+/// An FMI Integer.
 pub type fmi2Integer = c_int;
+/// An FMI Boolean: 0 false, anything else true.
 pub type fmi2Boolean = c_int;
+/// A NUL-terminated UTF-8 string owned by its giver.
 pub type fmi2String = *const c_char;
+/// A byte of a serialized FMU state.
 pub type fmi2Byte = c_char;
 
+/// fmi2True.
 pub const FMI2_TRUE: fmi2Boolean = 1;
+/// fmi2False.
 pub const FMI2_FALSE: fmi2Boolean = 0;
 
 /// fmi2Status. Only returned to C, never read from it, so a Rust enum is sound here.
 #[repr(C)]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Status {
+    /// fmi2OK: done as asked.
     Ok = 0,
+    /// fmi2Warning: done, with something the log explains.
     Warning = 1,
+    /// fmi2Discard: the step was not completed; the instance stays usable.
     Discard = 2,
+    /// fmi2Error: refused or failed; the instance needs a reset or a restored state.
     Error = 3,
+    /// fmi2Fatal: no instance can be trusted any more.
     Fatal = 4,
+    /// fmi2Pending: an asynchronous step is running (never returned: steps are synchronous).
     Pending = 5,
 }
 
 /// fmi2Type and fmi2StatusKind arrive from C as plain ints: a Rust enum with an out-of-range value
 /// would be undefined behaviour.
+/// fmi2CoSimulation, the only fmi2Type instantiated.
 pub const FMI2_CO_SIMULATION: c_int = 1;
+/// fmi2DoStepStatus.
 pub const FMI2_DO_STEP_STATUS: c_int = 0;
+/// fmi2PendingStatus.
 pub const FMI2_PENDING_STATUS: c_int = 1;
+/// fmi2LastSuccessfulTime.
 pub const FMI2_LAST_SUCCESSFUL_TIME: c_int = 2;
+/// fmi2Terminated.
 pub const FMI2_TERMINATED: c_int = 3;
 
+/// The host's logger: its environment, the instance name, the status, the log category and a printf format.
 pub type fmi2CallbackLogger = unsafe extern "C" fn(
     env: fmi2ComponentEnvironment,
     instance_name: fmi2String,
@@ -45,11 +68,17 @@ pub type fmi2CallbackLogger = unsafe extern "C" fn(
     ...
 );
 
+/// The host's callbacks given to fmi2Instantiate.
 #[repr(C)]
 pub struct fmi2CallbackFunctions {
+    /// Where messages go; none silences the instance.
     pub logger: Option<fmi2CallbackLogger>,
+    /// calloc-like allocator (FMI 2.0 requires it; the FMU allocates with Rust's own allocator).
     pub allocate_memory: Option<unsafe extern "C" fn(usize, usize) -> *mut c_void>,
+    /// Frees what `allocate_memory` gave.
     pub free_memory: Option<unsafe extern "C" fn(*mut c_void)>,
+    /// Asynchronous step completion (unused: steps are synchronous).
     pub step_finished: Option<unsafe extern "C" fn(fmi2ComponentEnvironment, c_int)>,
+    /// Passed back to `logger` and `step_finished`.
     pub component_environment: fmi2ComponentEnvironment,
 }

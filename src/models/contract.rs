@@ -6,72 +6,23 @@ use super::error::{check_integer, check_real};
 use super::{InputPolynomial, ModelError};
 use serde::{Deserialize, Serialize};
 
-/// Model parameters; defaults are Awrejcewicz & Kudra section 8 unless ARCHITECTURE.md says otherwise.
-/// `Default` and the range checks are generated from the start, min and max values of
-/// `modelDescription/variables.xml`, so the FMU's XML and the Rust defaults cannot disagree.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Parameters {
-    pub model_variant: i32,
-    pub crank_mode: i32,
-    pub pressure_source: i32,
-    pub roller_forcing: i32,
-    pub peak_pressure: f64,
-    pub crankcase_pressure: f64,
-    pub crank_radius: f64,
-    pub rod_length: f64,
-    pub crank_com: f64,
-    pub rod_com: f64,
-    pub piston_com: f64,
-    pub crank_mass: f64,
-    pub rod_mass: f64,
-    pub piston_mass: f64,
-    pub crank_inertia: f64,
-    pub rod_inertia: f64,
-    pub piston_inertia: f64,
-    pub piston_diameter: f64,
-    pub skirt_length: f64,
-    pub pin_height: f64,
-    pub bore: f64,
-    pub pin_offset: f64,
-    pub restitution: f64,
-    pub friction: f64,
-    pub damping_main: f64,
-    pub damping_crank_pin: f64,
-    pub damping_piston_pin: f64,
-    pub gravity: f64,
-    pub gravity_lateral: f64,
-    pub slap_threshold: f64,
-    pub crank_angle_start: f64,
-    pub piston_lateral_start: f64,
-    pub piston_lateral_velocity_start: f64,
-    pub piston_tilt_start: f64,
-    pub piston_tilt_rate_start: f64,
-    pub skirt_model: i32,
-    pub oil_viscosity: f64,
-    pub skirt_arc: f64,
-    pub skirt_profile: String,
-    pub skirt_ovality: f64,
-    pub skirt_roughness: f64,
-    pub asperity_density: f64,
-    pub asperity_radius: f64,
-    pub composite_modulus: f64,
-    pub boundary_friction: f64,
-    pub skirt_grid_circumferential: i32,
-    pub skirt_grid_axial: i32,
-    pub film_relaxation: f64,
-    pub impact_log: String,
-    pub pressure_trace: String,
+// From modelDescription/piston_slap.xml: the three struct macros, `impl Default for Parameters` and `for
+// Inputs`, `Parameters::check_ranges`, `Outputs::first_non_finite` and `InputDerivatives::of_mut`.
+include!(concat!(env!("OUT_DIR"), "/piston_slap_contract.rs"));
+
+parameters_struct! {
+    /// Model parameters; defaults are Awrejcewicz & Kudra section 8 unless ARCHITECTURE.md says otherwise.
+    /// The fields, their documentation, `Default` and the range checks are generated from the variables,
+    /// units, descriptions, start, min and max values of `modelDescription/piston_slap.xml`, so the FMU's
+    /// XML and the Rust contract cannot disagree.
+    #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+    pub struct Parameters {}
 }
 
-/// Continuous inputs, held constant over a communication step.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct Inputs {
-    /// rad/s, used when `crank_mode = 1`.
-    pub crank_speed: f64,
-    /// Pa, cylinder minus crankcase pressure, used when `pressure_source = 1`.
-    pub gas_pressure: f64,
-    /// N·m, opposing rotation, used when `crank_mode = 2`.
-    pub load_torque: f64,
+inputs_struct! {
+    /// Continuous inputs, held constant over a communication step unless their derivatives are set.
+    #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+    pub struct Inputs {}
 }
 
 /// Time derivatives of the continuous inputs at the start of a step, `[first, second]` per input
@@ -87,6 +38,21 @@ pub struct InputDerivatives {
 }
 
 impl InputDerivatives {
+    /// Refuses an input whose value or derivatives are not finite, naming it.
+    pub fn check_finite(&self, inputs: &Inputs) -> Result<(), ModelError> {
+        let inputs = [
+            ("crank_speed", inputs.crank_speed, self.crank_speed),
+            ("gas_pressure", inputs.gas_pressure, self.gas_pressure),
+            ("load_torque", inputs.load_torque, self.load_torque),
+        ];
+        match inputs.into_iter().find(|(_, value, [slope, curvature])| !(value.is_finite() && slope.is_finite() && curvature.is_finite())) {
+            Some((name, value, [slope, curvature])) => {
+                Err(ModelError(format!("input {name} = {value} (derivatives {slope}, {curvature}) is not finite")))
+            }
+            None => Ok(()),
+        }
+    }
+
     /// The inputs over a step starting at `t`: `inputs` there, with these derivatives.
     pub fn polynomials(&self, inputs: &Inputs, t: f64) -> [InputPolynomial; 3] {
         let polynomial = |value: f64, [slope, curvature]: [f64; 2]| InputPolynomial { time: t, value, slope, curvature };
@@ -98,81 +64,19 @@ impl InputDerivatives {
     }
 }
 
-/// Outputs (ARCHITECTURE.md §4). Impact statistics are filled by the caller from the event record;
-/// the kinematic and force outputs by the model.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct Outputs {
-    pub impact_velocity: f64,
-    pub impact_count: i32,
-    pub impacts_in_step: i32,
-    pub max_impact_velocity_in_step: f64,
-    pub impact_energy_in_step: f64,
-    pub impact_energy_total: f64,
-    pub last_impact_corner: i32,
-    pub last_impact_crank_angle: f64,
-    pub piston_lateral: f64,
-    pub piston_lateral_velocity: f64,
-    pub piston_tilt: f64,
-    pub piston_axial: f64,
-    pub crank_angle: f64,
-    pub rod_angle: f64,
-    pub crank_torque: f64,
-    pub engine_torque: f64,
-    pub gas_pressure_acting: f64,
-    pub skirt_top_lateral: f64,
-    pub skirt_bottom_lateral: f64,
-    pub contact_state_1: i32,
-    pub contact_state_2: i32,
-    pub contact_state_3: i32,
-    pub contact_state_4: i32,
-    pub contact_force_1: f64,
-    pub contact_force_2: f64,
-    pub contact_force_3: f64,
-    pub contact_force_4: f64,
-    pub side_force: f64,
-    pub cycle_count: i32,
-    pub cycle_slap_events: i32,
-    pub cycle_impact_energy: f64,
-    pub cycle_max_impact_energy_antithrust: f64,
-    pub cycle_max_impact_energy_thrust: f64,
-    pub cycle_impacts: i32,
-    pub cycle_slaps_antithrust: i32,
-    pub cycle_slaps_thrust: i32,
-    pub cycle_slap_energy_antithrust: f64,
-    pub cycle_slap_energy_thrust: f64,
-    pub cycle_max_slap_energy_antithrust: f64,
-    pub cycle_max_slap_energy_thrust: f64,
-    pub crank_speed_actual: f64,
-    pub kinetic_energy: f64,
-    pub friction_force_1: f64,
-    pub friction_force_2: f64,
-    pub friction_force_3: f64,
-    pub friction_force_4: f64,
-    pub friction_power: f64,
-    pub friction_energy_total: f64,
-    pub potential_energy: f64,
-    pub dissipated_energy_total: f64,
-    pub min_film_thickness_thrust: f64,
-    pub min_film_thickness_antithrust: f64,
-    pub film_force: f64,
-    pub asperity_force: f64,
-    pub skirt_friction_force: f64,
-    pub skirt_friction_power: f64,
-    pub film_energy_total: f64,
-    pub cycle_skirt_fmep: f64,
+outputs_struct! {
+    /// Outputs (ARCHITECTURE.md §4). Impact statistics are filled by the caller from the event record;
+    /// the kinematic and force outputs by the model.
+    #[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
+    pub struct Outputs {
     /// J, the piston–liner friction work since the start (corners and skirt; no variable: the
     /// statistics take `cycle_skirt_fmep` from its cycles' differences).
     pub liner_friction_work: f64,
-    pub liner_impulse_thrust_in_step: f64,
-    pub liner_impulse_antithrust_in_step: f64,
     /// N·s, the liner's impulse on the piston since the start per wall [anti-thrust, major thrust],
     /// impacts and contact forces (no variable: the `_in_step` outputs are its steps' differences).
     pub liner_impulse_total: [f64; 2],
+    }
 }
-
-// From modelDescription/piston_slap.xml: `impl Default for Parameters` and `for Inputs`, `Parameters::check_ranges`,
-// `Outputs::first_non_finite` and `InputDerivatives::of_mut`.
-include!(concat!(env!("OUT_DIR"), "/piston_slap_contract.rs"));
 
 impl Parameters {
     /// Refuses what no model can run: a value outside its physical range (negative masses or lengths,

@@ -10,8 +10,11 @@ pub const CYCLE: f64 = 4.0 * std::f64::consts::PI;
 /// What happened at an event, in the impact log's words (`impact`, `slide`, `release`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub enum EngineEventKind {
+    /// A corner strikes the liner.
     Impact,
+    /// A corner stays on the liner after an impact and slides along it.
     Slide,
+    /// A corner leaves the liner.
     Release,
     /// With liner friction: a corner in contact comes to rest along the liner and sticks.
     Stick,
@@ -35,11 +38,13 @@ impl From<EventKind> for EngineEventKind {
 /// One row of the impact log (ARCHITECTURE.md §4), in SI units.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct EngineEvent {
+    /// s.
     pub time: f64,
     /// rad, in [0, 4π).
     pub crank_angle: f64,
     /// The engine cycle the event lies in: whole cycles (4π) of the accumulated crank angle.
     pub cycle: i64,
+    /// What happened.
     pub kind: EngineEventKind,
     /// 1..4: 1, 2 on the −D/2 (anti-thrust) wall, 3, 4 on the +D/2 (major-thrust) wall.
     pub corner: u8,
@@ -58,7 +63,8 @@ pub struct EngineEvent {
 /// A model variant as the FMU drives it: built from parameters, advanced with held inputs.
 pub trait EngineModel: Sized + Clone {
     /// Builds the model at `start_time` in the initial state of ARCHITECTURE.md §4, or refuses the
-    /// parameters with a message naming the offending one.
+    /// parameters with a message naming the offending one: the table's ranges (`Parameters::validate`)
+    /// and the model's own conditions, the only validation a start makes.
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError>;
 
     /// Advances to exactly `t_end` with `inputs` held, appending every event to `events`.

@@ -3,6 +3,8 @@
 #![allow(dead_code)]
 
 pub mod designs;
+pub mod fmu_host;
+pub mod testbeds;
 
 use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
 use std::f64::consts::PI;

@@ -2,8 +2,8 @@
 //! implicit: the stiff mode relaxes over the step bound instead of m/c, the motion keeps the slow
 //! (terminal) velocity, and the absorbed work closes the energy books with the impacts.
 
+use crate::common::testbeds::{Ball, DampedBall, Floor};
 use nalgebra::Vector1;
-use pistonslap::dynamics::testbeds::{Ball, DampedBall, Floor};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
 
 const G: f64 = 9.81;

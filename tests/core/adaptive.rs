@@ -1,8 +1,8 @@
 //! The adaptive step (`StepperOptions::local_error`): its error follows the tolerance, its cost
 //! follows RK4's order, and a motion the held constraints fully determine runs at the largest step.
 
+use crate::common::testbeds::{Ball, Counted, DoublePendulum, Floor};
 use nalgebra::{Vector1, Vector2};
-use pistonslap::dynamics::testbeds::{Ball, Counted, DoublePendulum, Floor};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
 
 /// A double pendulum swinging freely (its "gap" is the tip's distance from a far wall) for 1 s:

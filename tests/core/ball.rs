@@ -1,8 +1,8 @@
 //! A ball dropped on a fixed floor: impact times and velocities in closed form, the accumulation
 //! of impacts for e < 1, then resting contact with λ = m g.
 
+use crate::common::testbeds::{Ball, Floor};
 use nalgebra::Vector1;
-use pistonslap::dynamics::testbeds::{Ball, Floor};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions, ZENO_APEX_FACTOR};
 
 const G: f64 = 9.81;

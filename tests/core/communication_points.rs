@@ -1,8 +1,8 @@
 //! Communication points inside a step: with the system unchanged, `advance` serves them from the
 //! step's dense output and lets the step run on, so the motion does not depend on where they fall.
 
+use crate::common::testbeds::{Ball, Floor};
 use nalgebra::Vector1;
-use pistonslap::dynamics::testbeds::{Ball, Floor};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
 
 /// A ball dropped from 1 m onto a fixed floor, e = 0.5, until its bounces accumulate into contact.

@@ -1,8 +1,8 @@
 //! Contact transitions decided by the contact problem over the whole closed set (DESIGN §5): two
 //! contacts that reach zero force at the same instant, and a gap a hair below zero.
 
+use crate::common::testbeds::{Ball, Floor, Plank};
 use nalgebra::{Vector1, Vector2};
-use pistonslap::dynamics::testbeds::{Ball, Floor, Plank};
 use pistonslap::dynamics::{DynamicsError, EventKind, Stepper, StepperOptions};
 
 /// A plank of 1 kg and 1 m (I = 1/12 kg·m², a = 0.5 m), lifted at 10 N/s past its weight at t = 0,

@@ -1,8 +1,8 @@
 //! Two constraints closed at once: the complementarity impact law (DESIGN §6.4) and persistent
 //! contact on both, against hand-solved cases.
 
+use crate::common::testbeds::{Floor, Rod, Wedge};
 use nalgebra::{Vector2, Vector3};
-use pistonslap::dynamics::testbeds::{Floor, Rod, Wedge};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
 
 /// Floor `y ≥ 0` and a wall with inward normal at 60° to it (interior angle 120°): n₁·n₂ = ½.

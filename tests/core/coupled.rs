@@ -1,8 +1,8 @@
 //! Inertia coupling: post-impact velocities of eq 11 against hand derivations, including the
 //! tangential velocity jump eq 5 allows, and energy conservation over 1000 elastic impacts.
 
+use crate::common::testbeds::{DoublePendulum, Floor, Rod};
 use nalgebra::{Vector2, Vector3};
-use pistonslap::dynamics::testbeds::{DoublePendulum, Floor, Rod};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions, System};
 
 /// A rod translating down (no gravity, no spin) meets the floor with its lower end at angle θ.

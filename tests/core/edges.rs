@@ -1,7 +1,7 @@
 //! Held inputs changed between steps, and what the core refuses: errors are values.
 
+use crate::common::testbeds::{Ball, DoublePendulum, Floor};
 use nalgebra::{Vector1, Vector2};
-use pistonslap::dynamics::testbeds::{Ball, DoublePendulum, Floor};
 use pistonslap::dynamics::{DynamicsError, EventKind, Stepper, StepperOptions, ACCUMULATION_WINDOW};
 
 const G: f64 = 9.81;

@@ -4,8 +4,8 @@
 //! push still exceeds the cone slips back for an instant shorter than the step's samples, and a
 //! rod flat on the floor slides on both ends, then sticks on both.
 
+use crate::common::testbeds::{Block, Floor, Rod};
 use nalgebra::{Vector2, Vector3};
-use pistonslap::dynamics::testbeds::{Block, Floor, Rod};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
 
 const G: f64 = 9.81;

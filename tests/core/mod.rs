@@ -1,4 +1,4 @@
-//! The nonsmooth core on the closed-form systems of `dynamics::testbeds`.
+//! The nonsmooth core on the closed-form systems of `tests/common/testbeds.rs`.
 
 mod absorbing;
 mod adaptive;

@@ -1,7 +1,7 @@
 //! RK4 converges with order 4 between events; events are located within ε_h whichever locator.
 
+use crate::common::testbeds::{Ball, DoublePendulum, Floor};
 use nalgebra::{Vector1, Vector2};
-use pistonslap::dynamics::testbeds::{Ball, DoublePendulum, Floor};
 use pistonslap::dynamics::{EventKind, EventLocator, Stepper, StepperOptions, System};
 
 fn pendulum(wall: f64, restitution: f64) -> DoublePendulum {

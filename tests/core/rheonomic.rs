@@ -1,7 +1,7 @@
 //! Moving constraints: ∂h/∂t in the impact law (eq 7) and ∂²h/∂t² in the sliding law (eq 18).
 
+use crate::common::testbeds::{Ball, Floor};
 use nalgebra::Vector1;
-use pistonslap::dynamics::testbeds::{Ball, Floor};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
 
 fn ball(gravity: f64, restitution: f64, floor: Floor, y: f64, v: f64) -> Stepper<Ball, 1, 1> {

@@ -2,8 +2,8 @@
 //! refused) must still get the impact law; otherwise it is penetrated at the next instant with
 //! nothing to resolve it. Farahanchi's roller meets this with the thesis's large ε_ḣ = 0.005.
 
+use crate::common::testbeds::{Ball, Floor};
 use nalgebra::Vector1;
-use pistonslap::dynamics::testbeds::{Ball, Floor};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
 
 /// A ball on the floor, pulled away from it (negative gravity), arriving at 0.05 m/s with

@@ -1,7 +1,7 @@
 //! Every physical design runs (DESIGN §5): seeded random engines and light sliders
 //! (`common/designs.rs`) a few cycles each, none ending in an error. The light sliders have no
 //! damping, gas or gravity, so their energy balance closes too: T(0) = T(end) + what the impacts
-//! and sliding starts dissipated. `examples/random_designs` runs the same families by the thousand.
+//! and sliding starts dissipated. `tools/random_designs.rs` runs the same families by the thousand.
 
 use crate::common::designs::{declared, engine, lubricated_engine, rubbing_engine, rubbing_slider, run, slider, Design, Finished, Random};
 

@@ -48,13 +48,13 @@ impl<T: Default> PartialEq for Scratch<T> {
 }
 
 impl<E: EngineModel> Simulation<E> {
-    /// Validates the parameters (generic ranges, then the model's own checks) and builds the model at
-    /// `start_time` with its initial outputs. Touches no file: the impact log starts with [`Self::start`].
+    /// Builds the model at `start_time` with its initial outputs; the model validates the parameters
+    /// (`EngineModel::new`: the table's ranges, then its own checks, once). Touches no file: the impact log
+    /// starts with [`Self::start`].
     pub fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         if !start_time.is_finite() {
             return Err(ModelError(format!("start time {start_time} is not finite")));
         }
-        params.validate()?;
         let model = E::new(params, start_time)?;
         let mut sim = Self {
             model,
@@ -92,10 +92,12 @@ impl<E: EngineModel> Simulation<E> {
         Ok(sim)
     }
 
+    /// s, the time reached.
     pub fn time(&self) -> f64 {
         self.time
     }
 
+    /// The outputs at `time()`.
     pub fn outputs(&self) -> &Outputs {
         &self.outputs
     }
@@ -111,12 +113,10 @@ impl<E: EngineModel> Simulation<E> {
     }
 
     /// As [`Self::step`], the inputs following their values and `derivatives` (at the current time)
-    /// as polynomials in time.
+    /// as polynomials in time. The one place a step's inputs are checked: a value or derivative that is
+    /// not finite is refused by name; the models take them as given.
     pub fn step_interpolated(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Result<(), ModelError> {
-        let held = [("crank_speed", inputs.crank_speed), ("gas_pressure", inputs.gas_pressure), ("load_torque", inputs.load_torque)];
-        if let Some((name, value)) = held.iter().find(|(_, v)| !v.is_finite()) {
-            return Err(ModelError(format!("input {name} = {value} is not finite")));
-        }
+        derivatives.check_finite(inputs)?;
         if !(t_end.is_finite() && t_end > self.time) {
             return Err(ModelError(format!("step end {t_end} s is not after the current time {} s", self.time)));
         }

@@ -8,7 +8,7 @@
 
 use super::drive::PrescribedCrank;
 use super::linkage::Loads;
-use super::model::{CrankTrain, Drive};
+use super::model::CrankTrain;
 use crate::models::{EnergyBalance, PowerFlows};
 use nalgebra::{Vector2, Vector4};
 
@@ -38,10 +38,7 @@ impl PrescribedCrank {
 impl CrankTrain {
     /// The persistent contact forces' impulse on the piston per wall since the start, N·s.
     pub(super) fn contact_impulse(&self) -> [f64; 2] {
-        by_wall(&match &self.drive {
-            Drive::Prescribed(s) => s.contact_impulses(),
-            Drive::Free(s) => s.contact_impulses(),
-        })
+        by_wall(&self.drive.stepper().contact_impulses())
     }
 }
 
@@ -70,13 +67,8 @@ impl EnergyBalance for CrankTrain {
         let bare = Loads { gas_force: 0.0, load_torque: 0.0 };
         let odd = engine.linkage.evaluate(&phi, &phid, bare).force - engine.linkage.evaluate(&phi, &-phid, bare).force;
         let (friction, friction_power, _) = self.friction();
-        let drive = match &self.drive {
-            Drive::Prescribed(s) => {
-                let (forces, _) = self.contacts();
-                s.system().drive_torque(s.time(), (s.position(), s.velocity(), &s.acceleration()), (&forces, &friction)) * phid[0]
-            }
-            Drive::Free(s) => -s.system().load_torque.at(s.time()) * phid[0],
-        };
+        let (forces, _) = self.contacts();
+        let drive = self.drive.stepper().crank_torque(&forces, &friction) * phid[0];
         let gas = -engine.gas_force(self.time(), phi[0]) * height_rate;
         PowerFlows { drive, gas, damping: -0.5 * odd.dot(&phid), friction: friction_power, film: self.absorbed().0[0] }
     }

@@ -1,12 +1,13 @@
 //! Variant 1: the piston – connecting rod – crankshaft system of Awrejcewicz & Kudra on the core,
 //! as the FMU drives it (prescribed crank speed, or a free crank under a load torque).
 
+use super::crank_stepper::{CrankEvent, Drive};
 use super::design_space::{self, validate};
 use super::drive::{Engine, FreeCrank, PrescribedCrank};
 use super::energy::by_wall;
 use super::kinematics::SliderCrank;
 use super::linkage::LinkAngles;
-use crate::dynamics::{DynamicsError, Event, StepCounts, Stepper, StepperOptions};
+use crate::dynamics::{DynamicsError, StepCounts, Stepper, StepperOptions};
 use crate::models::{EngineEvent, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, CYCLE};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -76,12 +77,6 @@ impl StartOffset {
         let rod_rate = s.rod_rate * speed - self.lateral_velocity / (shifted.rod_length * libm::cos(s.rod_angle));
         Ok((Vector2::new(s.rod_angle, self.tilt), Vector2::new(rod_rate, self.tilt_rate)))
     }
-}
-
-#[derive(Clone, Debug, Serialize, Deserialize)]
-pub(super) enum Drive {
-    Prescribed(Stepper<PrescribedCrank, 2, 4>),
-    Free(Stepper<FreeCrank, 3, 4>),
 }
 
 pub(super) fn check(ok: bool, message: impl FnOnce() -> String) -> Result<(), ModelError> {
@@ -197,10 +192,7 @@ impl CrankTrain {
 
     /// [`Self::state`] with the crank angle less the whole cycles taken off it.
     fn state_within_cycle(&self) -> (Vector3<f64>, Vector3<f64>) {
-        match &self.drive {
-            Drive::Prescribed(s) => s.system().full_state(s.time(), s.position(), s.velocity()),
-            Drive::Free(s) => (*s.position(), *s.velocity()),
-        }
+        self.drive.stepper().angles()
     }
 
     /// Keeps the crank angle within its first cycle, the whole cycles counted apart: left to
@@ -214,13 +206,7 @@ impl CrankTrain {
         if cycles == 0.0 {
             return Ok(());
         }
-        match &mut self.drive {
-            Drive::Prescribed(s) => {
-                let rebased = s.system().rebased(s.time(), angle - 4.0 * PI * cycles);
-                *s.system_mut().map_err(dynamics_error)? = rebased;
-            }
-            Drive::Free(s) => s.shift(0.0, &Vector3::new(-4.0 * PI * cycles, 0.0, 0.0)).map_err(dynamics_error)?,
-        }
+        self.drive.stepper_mut().take_cycles(angle, cycles).map_err(dynamics_error)?;
         self.cycles += cycles;
         Ok(())
     }
@@ -253,68 +239,49 @@ impl CrankTrain {
 
     /// Contact forces λ_i, N, and whether each corner is in persistent contact.
     pub fn contacts(&self) -> (Vector4<f64>, [bool; 4]) {
-        match &self.drive {
-            Drive::Prescribed(s) => (s.multipliers(), std::array::from_fn(|i| s.in_contact(i))),
-            Drive::Free(s) => (s.multipliers(), std::array::from_fn(|i| s.in_contact(i))),
-        }
+        self.drive.stepper().contacts()
     }
 
     /// Friction forces on the corners along +y, N; the power friction dissipates now, W; and the
     /// energy it has dissipated since the start, J (sliding and impacts).
     pub fn friction(&self) -> (Vector4<f64>, f64, f64) {
-        let (forces, (power, sliding)) = match &self.drive {
-            Drive::Prescribed(s) => (s.friction_forces(), s.friction_dissipation()),
-            Drive::Free(s) => (s.friction_forces(), s.friction_dissipation()),
-        };
+        let (forces, (power, sliding)) = self.drive.stepper().friction();
         (forces, power, sliding + self.impact_friction_energy)
     }
 
     /// The integrator's work so far (see `StepCounts`).
     pub fn step_counts(&self) -> StepCounts {
-        match &self.drive {
-            Drive::Prescribed(s) => s.counts(),
-            Drive::Free(s) => s.counts(),
-        }
+        self.drive.stepper().counts()
     }
 
+    /// s, the time reached.
     pub fn time(&self) -> f64 {
-        match &self.drive {
-            Drive::Prescribed(s) => s.time(),
-            Drive::Free(s) => s.time(),
-        }
+        self.drive.stepper().time()
     }
 
     pub(super) fn engine(&self) -> &Engine {
-        match &self.drive {
-            Drive::Prescribed(s) => &s.system().engine,
-            Drive::Free(s) => &s.system().engine,
-        }
+        self.drive.stepper().engine()
     }
 
     fn engine_mut(&mut self) -> Result<&mut Engine, ModelError> {
-        Ok(match &mut self.drive {
-            Drive::Prescribed(s) => &mut s.system_mut().map_err(dynamics_error)?.engine,
-            Drive::Free(s) => &mut s.system_mut().map_err(dynamics_error)?.engine,
-        })
+        self.drive.stepper_mut().engine_mut().map_err(dynamics_error)
     }
 
-    /// Core events as impact-log rows; `angle` gives φ1 at an event.
-    fn log<const N: usize>(&self, raw: &[Event<N, 4>], angle: impl Fn(&Event<N, 4>) -> Vector3<f64>, events: &mut Vec<EngineEvent>) {
-        for e in raw {
-            let phi = angle(e);
-            events.push(EngineEvent {
-                time: e.time,
-                crank_angle: phi[0].rem_euclid(CYCLE),
-                cycle: (self.cycles + (phi[0] / CYCLE).floor()) as i64,
-                kind: e.kind.into(),
-                corner: e.constraint as u8 + 1,
-                normal_velocity_before: -e.velocity_before,
-                normal_velocity_after: e.velocity_after,
-                energy_lost: e.energy_lost,
-                friction_energy: e.friction_energy,
-                position: self.engine().linkage.pin(&phi).y,
-            });
-        }
+    /// A core event as an impact-log row.
+    fn log(&self, e: &CrankEvent, events: &mut Vec<EngineEvent>) {
+        let phi = e.angles;
+        events.push(EngineEvent {
+            time: e.time,
+            crank_angle: phi[0].rem_euclid(CYCLE),
+            cycle: (self.cycles + (phi[0] / CYCLE).floor()) as i64,
+            kind: e.kind.into(),
+            corner: e.constraint as u8 + 1,
+            normal_velocity_before: -e.velocity_before,
+            normal_velocity_after: e.velocity_after,
+            energy_lost: e.energy_lost,
+            friction_energy: e.friction_energy,
+            position: self.engine().linkage.pin(&phi).y,
+        });
     }
 }
 
@@ -352,43 +319,28 @@ impl EngineModel for CrankTrain {
             self.engine_mut()?.hold_pressure(pressure);
         }
         self.keep_angle_within_a_cycle()?;
-        match &mut self.drive {
-            Drive::Prescribed(s) => {
-                if !s.system().holds_speed(&speed) {
-                    s.system_mut().map_err(dynamics_error)?.hold_speed(speed);
-                }
-                s.advance(t_end).map_err(dynamics_error)?;
+        let stepper = self.drive.stepper_mut();
+        stepper.hold_drive(speed, load).map_err(dynamics_error)?;
+        stepper.advance(t_end).map_err(dynamics_error)?;
+        let (mut impulse_work, mut singular) = (self.impulse_work, None);
+        let (mut friction_energy, mut impulses) = (0.0, Vector4::zeros());
+        self.drive.stepper().each_event(&mut |e| {
+            self.log(&e, events);
+            match e.drive_work {
+                Some(work) => impulse_work += work,
+                None => singular = singular.or(Some(e.time)),
             }
-            Drive::Free(s) => {
-                if !s.system().load_torque.same_as(&load) {
-                    s.system_mut().map_err(dynamics_error)?.load_torque = load;
-                }
-                s.advance(t_end).map_err(dynamics_error)?;
-            }
+            friction_energy += e.friction_energy;
+            impulses += e.impulses;
+        });
+        if let Some(time) = singular {
+            return Err(ModelError(format!("crank train: at t = {time} s: the rod and piston inertia is singular")));
         }
-        match &self.drive {
-            Drive::Prescribed(s) => {
-                let sys = s.system();
-                self.log(s.events(), |e| Vector3::new(sys.crank_angle(e.time), e.q[0], e.q[1]), events);
-                for e in s.events().iter().filter(|e| e.impulses != Vector4::zeros()) {
-                    let work = sys.impulse_work(e.time, (&e.q, &e.v), (&e.impulses, &e.friction_impulses));
-                    self.impulse_work += work
-                        .ok_or_else(|| ModelError(format!("crank train: at t = {} s: the rod and piston inertia is singular", e.time)))?;
-                }
-            }
-            Drive::Free(s) => self.log(s.events(), |e| e.q, events),
-        }
-        let (friction_energy, impulses) = match &self.drive {
-            Drive::Prescribed(s) => s.events().iter().fold((0.0, Vector4::zeros()), |(f, p), e| (f + e.friction_energy, p + e.impulses)),
-            Drive::Free(s) => s.events().iter().fold((0.0, Vector4::zeros()), |(f, p), e| (f + e.friction_energy, p + e.impulses)),
-        };
+        self.impulse_work = impulse_work;
         self.impact_friction_energy += friction_energy;
         let [anti, thrust] = by_wall(&impulses);
         self.impact_impulse = [self.impact_impulse[0] + anti, self.impact_impulse[1] + thrust];
-        match &mut self.drive {
-            Drive::Prescribed(s) => s.clear_events(),
-            Drive::Free(s) => s.clear_events(),
-        }
+        self.drive.stepper_mut().clear_events();
         Ok(())
     }
 
@@ -402,20 +354,15 @@ impl EngineModel for CrankTrain {
         if !(self.started && self.engine().holds(&pressure) && self.angle_past_cycles().1 == 0.0) {
             return None;
         }
-        let served = match &mut self.drive {
-            Drive::Prescribed(s) if s.system().holds_speed(&speed) && s.serves(t_end) => s.serve(t_end),
-            Drive::Free(s) if s.system().load_torque.same_as(&load) && s.serves(t_end) => s.serve(t_end),
-            _ => return None,
-        };
-        Some(served.map_err(dynamics_error))
+        let stepper = self.drive.stepper_mut();
+        if !stepper.serves_with(&speed, &load, t_end) {
+            return None;
+        }
+        Some(stepper.serve(t_end).map_err(dynamics_error))
     }
 
     fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {
-        match &mut self.drive {
-            Drive::Prescribed(s) => s.serve(t),
-            Drive::Free(s) => s.serve(t),
-        }
-        .map_err(dynamics_error)
+        self.drive.stepper_mut().serve(t).map_err(dynamics_error)
     }
 
     fn write_outputs(&self, out: &mut Outputs) {
@@ -435,26 +382,15 @@ impl EngineModel for CrankTrain {
         // from their walls are D/2 + x (K1, K2) and D/2 − x (K3, K4).
         out.skirt_top_lateral = 0.5 * (gaps[0] - gaps[2]);
         out.skirt_bottom_lateral = 0.5 * (gaps[1] - gaps[3]);
-        out.gas_pressure_acting = match &self.drive {
-            Drive::Prescribed(s) => s.system().pressure(s.time(), phi[0]),
-            Drive::Free(s) => s.system().engine.pressure(s.time(), phi[0]),
-        };
+        let stepper = self.drive.stepper();
+        out.gas_pressure_acting = stepper.gas_pressure(phi[0]);
         out.piston_axial = pin.y;
         out.crank_angle = phi[0] + 4.0 * PI * self.cycles;
         out.rod_angle = phi[1];
-        out.crank_torque = match &self.drive {
-            Drive::Prescribed(s) => {
-                s.system().drive_torque(s.time(), (s.position(), s.velocity(), &s.acceleration()), (&forces, &friction))
-            }
-            // The external torque on the crank: the load, opposing rotation.
-            Drive::Free(s) => -s.system().load_torque.at(s.time()),
-        };
+        out.crank_torque = stepper.crank_torque(&forces, &friction);
         [out.contact_state_1, out.contact_state_2, out.contact_state_3, out.contact_state_4] = in_contact.map(i32::from);
         [out.contact_force_1, out.contact_force_2, out.contact_force_3, out.contact_force_4] = [forces[0], forces[1], forces[2], forces[3]];
-        out.crank_speed_actual = match &self.drive {
-            Drive::Prescribed(s) => s.system().speed(s.time()),
-            Drive::Free(_) => phid[0],
-        };
+        out.crank_speed_actual = stepper.crank_speed(phid[0]);
         (out.kinetic_energy, out.potential_energy) = linkage.energy(&phi, &phid);
         let contact = self.contact_impulse();
         out.liner_impulse_total = std::array::from_fn(|w| contact[w] + self.impact_impulse[w]);

@@ -3,7 +3,7 @@
 //! thickness and zero loads. The side force is the liner's net lateral force in either case.
 
 use super::linkage::LinkAngles;
-use super::model::{CrankTrain, Drive};
+use super::model::CrankTrain;
 use crate::dynamics::Absorbed;
 use crate::models::Outputs;
 use nalgebra::{Vector3, Vector4};
@@ -11,10 +11,7 @@ use nalgebra::{Vector3, Vector4};
 impl CrankTrain {
     /// What the skirt has absorbed: power now and work since the start, [all, friction] (zero dry).
     pub(super) fn absorbed(&self) -> (Absorbed, Absorbed) {
-        match &self.drive {
-            Drive::Prescribed(s) => s.absorbed(),
-            Drive::Free(s) => s.absorbed(),
-        }
+        self.drive.stepper().absorbed()
     }
 
     /// Writes the skirt's outputs and `side_force` at (φ, φ̇), the corners' gaps `gaps` and contact

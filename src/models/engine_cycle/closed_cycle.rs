@@ -15,8 +15,8 @@
 //! (F/A)_s LHV`, and the burned gas is the product at `φ = Q_fuel / ((1 − x_r) m (F/A)_s LHV)`.
 
 use super::heat_transfer::{Correlation, Reference, WallHeat};
-use super::parameters::EngineCycleParameters;
 use super::thermo::{stoichiometric_fuel_air, Charge};
+use super::EngineCycleParameters;
 use crate::models::ModelError;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -42,14 +42,17 @@ struct Node {
 /// The closed cycle's state at one crank angle.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct ClosedState {
-    /// Pa and Pa/rad.
+    /// Pa.
     pub p: f64,
+    /// Pa/rad.
     pub dp: f64,
     /// K.
     pub t: f64,
-    /// J, wall heat since inlet valve closing, its rate J/rad and that rate's derivative J/rad².
+    /// J, wall heat since inlet valve closing.
     pub q: f64,
+    /// J/rad, its rate.
     pub dq: f64,
+    /// J/rad², that rate's derivative.
     pub d2q: f64,
 }
 
@@ -60,6 +63,7 @@ pub struct ClosedCycle {
     pub mass: f64,
     /// Equivalence ratio of the burned gas.
     pub equivalence_ratio: f64,
+    /// The air and burned-gas mixtures.
     pub charge: Charge,
     /// Node k at ϑ = −π + k · TABLE_SPACING, up to and including the first node past ϑ_EVO.
     nodes: Vec<Node>,

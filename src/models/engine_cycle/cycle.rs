@@ -12,33 +12,11 @@
 //! the closed parts' wall heat since the start time, `wall_heat_flux` its time derivative `dQ_w/dϑ · ω`.
 
 use super::closed_cycle::{ClosedCycle, ClosedState};
-use super::parameters::{EngineCycleParameters, Volume};
+use super::parameters::Volume;
+use super::{EngineCycleOutputs, EngineCycleParameters};
 use crate::models::{ModelError, CYCLE};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::{FRAC_PI_2, PI};
-
-/// EngineCycle has no inputs: its speed comes from the parameters.
-#[derive(Clone, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct EngineCycleInputs {}
-
-/// The values a host reads, with their time derivatives.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct EngineCycleOutputs {
-    /// rad, accumulated.
-    pub crank_angle: f64,
-    /// rad/s.
-    pub crank_speed: f64,
-    /// Pa, absolute.
-    pub cylinder_pressure: f64,
-    /// Pa, cylinder minus crankcase.
-    pub gas_pressure: f64,
-    /// N·m.
-    pub indicated_torque: f64,
-    /// W, heat flowing from the charge to the walls.
-    pub wall_heat_flux: f64,
-    /// J, heat to the walls since the start time.
-    pub wall_heat_total: f64,
-}
 
 /// The single-zone cycle: the parameters and the closed cycle.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -59,6 +37,7 @@ impl EngineCycle {
         Ok(Self { parameters: parameters.clone(), start_time, closed })
     }
 
+    /// The parameters it was made with.
     pub fn parameters(&self) -> &EngineCycleParameters {
         &self.parameters
     }
@@ -209,10 +188,12 @@ impl EngineCycleRun {
         Ok(())
     }
 
+    /// s, the time reached.
     pub fn time(&self) -> f64 {
         self.time
     }
 
+    /// The outputs at `time()`.
     pub fn outputs(&self) -> &EngineCycleOutputs {
         &self.outputs
     }

@@ -29,12 +29,16 @@ const HOHENBERG_SPEED_OFFSET: f64 = 1.4;
 /// The correlation `heat_transfer` selects.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub enum Correlation {
+    /// Adiabatic walls (`heat_transfer = 0`).
     None,
+    /// Woschni (1967), `heat_transfer = 1`.
     Woschni,
+    /// Hohenberg (1979), `heat_transfer = 2`.
     Hohenberg,
 }
 
 impl Correlation {
+    /// The correlation of a `heat_transfer` value within its table range.
     pub fn from_parameter(value: i32) -> Self {
         match value {
             1 => Self::Woschni,

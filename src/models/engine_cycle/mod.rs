@@ -3,6 +3,7 @@
 //! driving PistonSlap with crank speed and gas pressure. No FFI, no FMI words.
 
 mod closed_cycle;
+mod contract;
 mod cycle;
 mod heat_transfer;
 mod parameters;
@@ -11,7 +12,8 @@ mod tests;
 mod thermo;
 
 pub use closed_cycle::{wiebe, ClosedCycle, ClosedState, PEAK_PRESSURE_LIMIT, PEAK_TEMPERATURE_LIMIT};
-pub use cycle::{EngineCycle, EngineCycleInputs, EngineCycleOutputs, EngineCycleRun};
+pub use contract::{EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters};
+pub use cycle::{EngineCycle, EngineCycleRun};
 pub use heat_transfer::Correlation;
-pub use parameters::{EngineCycleParameters, Volume};
+pub use parameters::Volume;
 pub use thermo::{stoichiometric_fuel_air, Charge, Mixture};

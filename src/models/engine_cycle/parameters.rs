@@ -1,68 +1,9 @@
-//! The engine cycle's parameters: their table ranges, their relations, and the slider-crank volume they make.
+//! What the engine cycle's parameters imply: their relations beyond the table's ranges, the heat-transfer speed and
+//! the slider-crank volume.
 
-use crate::models::error::{check_integer, check_real, ModelError};
-use serde::{Deserialize, Serialize};
+use super::EngineCycleParameters;
+use crate::models::error::ModelError;
 use std::f64::consts::PI;
-
-/// The engine cycle's parameters, SI units.
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-pub struct EngineCycleParameters {
-    /// m, cylinder bore B.
-    pub bore: f64,
-    /// m, stroke S (twice the crank radius).
-    pub stroke: f64,
-    /// m, connecting-rod length l (> S/2).
-    pub rod_length: f64,
-    /// ε = (V_c + V_d)/V_c, > 1.
-    pub compression_ratio: f64,
-    /// 1 = constant `polytropic_exponent`, 2 = temperature-dependent properties (NASA polynomials).
-    pub gas_properties: i32,
-    /// n of the compression and expansion with `gas_properties = 1`, > 1.
-    pub polytropic_exponent: f64,
-    /// 0 = none, 1 = Woschni, 2 = Hohenberg.
-    pub heat_transfer: i32,
-    /// K, wall temperature (head, crown and liner).
-    pub wall_temperature: f64,
-    /// Pa, absolute, during the intake stroke and at intake valve closing.
-    pub intake_pressure: f64,
-    /// K, charge temperature at intake valve closing.
-    pub intake_temperature: f64,
-    /// Mass fraction of burned gas in the charge at intake valve closing.
-    pub residual_gas_fraction: f64,
-    /// Pa, absolute, during the exhaust stroke.
-    pub exhaust_pressure: f64,
-    /// Pa, absolute; `gas_pressure` = cylinder pressure − this.
-    pub crankcase_pressure: f64,
-    /// J per cycle released by combustion (0: motored).
-    pub heat_release: f64,
-    /// J/kg, lower heating value of the fuel.
-    pub fuel_heating_value: f64,
-    /// y of the fuel CH_y.
-    pub fuel_hydrogen_carbon_ratio: f64,
-    /// rad, start of combustion ϑ_s relative to firing TDC.
-    pub burn_start: f64,
-    /// rad, combustion duration Δϑ.
-    pub burn_duration: f64,
-    /// Wiebe efficiency factor a.
-    pub wiebe_efficiency: f64,
-    /// Wiebe form factor m.
-    pub wiebe_form: i32,
-    /// rad, exhaust valve opening ϑ_EVO after firing TDC, in (0, π).
-    pub exhaust_valve_opening: f64,
-    /// rad/s, crank speed at the start time.
-    pub speed_start: f64,
-    /// rad/s, crank speed at the end of the ramp.
-    pub speed_end: f64,
-    /// s, duration of the linear ramp from `speed_start` to `speed_end` (0: constant `speed_start`).
-    pub ramp_time: f64,
-    /// rad, crank angle at the start time.
-    pub crank_angle_start: f64,
-}
-
-// The names the generated defaults, range checks and output check (from modelDescription/engine_cycle.xml) address.
-type Parameters = EngineCycleParameters;
-type Outputs = super::EngineCycleOutputs;
-include!(concat!(env!("OUT_DIR"), "/engine_cycle_contract.rs"));
 
 /// rad/s: below this the correlations, fitted on running engines, are not applied.
 pub const SLOWEST_HEAT_TRANSFER_SPEED: f64 = 10.0 * PI;
@@ -79,7 +20,7 @@ pub struct Volume {
 }
 
 impl EngineCycleParameters {
-    /// Every value finite and within its table range (modelDescription/variables_engine_cycle.xml), a rod longer
+    /// Every value finite and within its table range (modelDescription/engine_cycle.xml), a rod longer
     /// than the crank radius, and a running engine where heat transfer is on; the message names the parameter.
     /// The limits that depend on the charge (fuel, peak pressure and temperature) are checked by the cycle.
     pub fn validate(&self) -> Result<(), ModelError> {

@@ -119,7 +119,9 @@ impl Mixture {
 /// The charge: unburned air and the burned gas of one fuel at one equivalence ratio.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct Charge {
+    /// The unburned charge.
     pub air: Mixture,
+    /// The products of complete combustion at the charge's equivalence ratio.
     pub burned: Mixture,
 }
 

@@ -1,7 +1,7 @@
 //! What a model tells about its energy, so that a long run can check, window by window,
 //!   ΔE = ∫ (P_drive + P_gas − D − F) dt − Σ impact dissipation + Σ impulsive drive work,
 //! E the mechanical energy, D the joint damping's and F the liner friction's dissipation rate (the
-//! lubricated skirt's absorbed power with it) (`examples/soak.rs`).
+//! lubricated skirt's absorbed power with it) (`tools/soak.rs`).
 
 /// Rates of work on the moving parts at one instant, W.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

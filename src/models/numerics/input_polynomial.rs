@@ -9,6 +9,7 @@ use serde::{Deserialize, Serialize};
 pub struct InputPolynomial {
     /// t₀, s.
     pub time: f64,
+    /// u(t₀).
     pub value: f64,
     /// du/dt at t₀, per second.
     pub slope: f64,

@@ -40,17 +40,24 @@ pub enum SlidingRegion {
 /// A value and its first two derivatives with respect to τ.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Jet {
+    /// The value.
     pub value: f64,
+    /// Its first derivative.
     pub d1: f64,
+    /// Its second derivative.
     pub d2: f64,
 }
 
 /// The dimensionless mechanism of the thesis: ξ = r/l, α = m/M, β = J_r/(M l²).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 pub struct RollerMechanism {
+    /// ξ = r/l, crank radius over rod length.
     pub xi: f64,
+    /// α = m/M, rod over piston mass.
     pub alpha: f64,
+    /// β = J_r/(M l²), the rod's scaled inertia.
     pub beta: f64,
+    /// The side force's pattern.
     pub forcing: Forcing,
 }
 

@@ -57,6 +57,7 @@ pub struct RollerSystem {
     pub rho: f64,
     /// λ = c₂/(M l² Ω), held with the crank speed.
     pub lambda: f64,
+    /// Newton's restitution coefficient of the roller on the guide.
     pub restitution: f64,
     /// The mechanism's terms at the last crank angle evaluated (RK4's paired stages share it).
     #[serde(skip)]
@@ -64,6 +65,7 @@ pub struct RollerSystem {
 }
 
 impl RollerSystem {
+    /// The dimensionless mechanism.
     pub fn mechanism(&self) -> &RollerMechanism {
         &self.mechanism
     }

@@ -68,6 +68,7 @@ impl ImpactLog {
         }
     }
 
+    /// The file the log writes.
     pub fn path(&self) -> &str {
         &self.path
     }

@@ -8,7 +8,9 @@ use serde::{Deserialize, Serialize};
 #[derive(Clone, Debug, Serialize, Deserialize)]
 #[allow(clippy::large_enum_variant)]
 pub enum ModelVariant {
+    /// `model_variant = 1`.
     CrankTrain(CrankTrain),
+    /// `model_variant = 2`.
     Roller(Roller),
 }
 

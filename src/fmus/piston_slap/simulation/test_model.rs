@@ -24,6 +24,7 @@ pub struct Shuttle {
 
 impl EngineModel for Shuttle {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
+        params.validate()?;
         Ok(Self {
             time: start_time,
             x: 0.0,

@@ -1,9 +1,10 @@
-//! Small systems with closed-form behaviour, shared by the integration tests (`tests/core_*.rs`)
-//! and the benchmark (`benches/core.rs`). Public because a bench cannot see `cfg(test)` code;
-//! the engine models do not use them.
+//! Small systems with closed-form behaviour, shared by the integration tests (`tests/core/`) and the
+//! benchmark (`benches/core.rs`, which includes this file by path like every shared piece of `tests/common/`).
+// Each includer uses some of them.
+#![allow(dead_code)]
 
-use super::{Absorbed, Evaluation, System, Tangents};
 use nalgebra::{Matrix1, Matrix2, Matrix3, RowVector2, SMatrix, SVector, Vector1, Vector2, Vector3};
+use pistonslap::dynamics::{Absorbed, Evaluation, System, Tangents};
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
 
