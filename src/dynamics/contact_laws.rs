@@ -117,9 +117,11 @@ pub(super) fn impact<S: System<N, M>, const N: usize, const M: usize>(
     let lost = energy_lost(&jump.normal, &hd, &hd_plus) + energy_lost(&jump.tangent, &slip, &tangents.slip(&v_plus));
     // Friction's share: −Λ_T ξ_T / (1 + ε) = μ Λ_N |ξ_T| / (1 + ε) ≥ 0, the term the Coulomb
     // law contributes to ΔT (coulomb.rs); the work of Λ_T on the mean slip, −Λ_T (γ⁻ + γ⁺)/2,
-    // can be negative where the impulses couple the normal and tangential motion.
+    // can be negative where the impulses couple the normal and tangential motion. Taken as the
+    // magnitude |Λ_T ξ_T|: a sticking constraint's ξ_T is zero up to round-off, whose sign would
+    // otherwise make its share, and the friction books with it, −1e-19 J.
     let xi = tangents.slip(&v_plus) + eps.component_mul(&slip);
-    let friction_lost = SVector::<f64, M>::from_fn(|i, _| -jump.tangent[i] * xi[i] / (1.0 + eps[i]));
+    let friction_lost = SVector::<f64, M>::from_fn(|i, _| (jump.tangent[i] * xi[i]).abs() / (1.0 + eps[i]));
     Ok(Jump { normal: jump.normal, tangent: jump.tangent, v: v_plus, hd: hd_plus, lost, friction_lost })
 }
 

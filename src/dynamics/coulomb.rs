@@ -157,8 +157,12 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
     /// The first consistent modes for `choices`, by enumeration: fewest closed constraints
     /// first (as the frictionless law), and first among modes that decide beyond round-off (a
     /// slip from rest whose tangential acceleration has its direction, a stick strictly inside its
-    /// cone): a body at rest on several points sticks rather than slips nowhere. Only where none
-    /// decides so, modes at the edge, slipping before sticking (at the edge of the friction cone
+    /// cone): a body at rest on several points sticks rather than slips nowhere. Where none
+    /// decides so, modes that hold exactly (a slip's acceleration in its direction however small,
+    /// a stick within its cone): at a dead centre, where the slip reverses with the crank's
+    /// geometry and friction hardly changes its acceleration (a stick there is dependent), the
+    /// slip the motion takes, not the one it leaves, which would be watched crossing at once.
+    /// Only then modes at the edge, slipping before sticking (at the edge of the friction cone
     /// both are consistent, and the slip is what follows). `scale`: the magnitude of the rows'
     /// terms before cancellation, for the round-off tolerances.
     pub fn enumerate(
@@ -191,7 +195,7 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
                 }
             })
         };
-        for edge in [(-tol_x, -tol_y), (tol_x, tol_y)] {
+        for edge in [(-tol_x, -tol_y), (0.0, 0.0), (tol_x, tol_y)] {
             for closed in 0..=M {
                 let mut index = [0_usize; M];
                 loop {

@@ -61,15 +61,28 @@ pub(crate) struct Hermite5<const N: usize> {
 impl<const N: usize> Hermite5<N> {
     /// `(q, q̇)` at time `t ∈ [t0, t0 + dt]`.
     pub fn at(&self, t: f64) -> (SVector<f64, N>, SVector<f64, N>) {
-        let (dt, s) = (self.dt, (t - self.t0) / self.dt);
-        let (s2, s3, s4) = (s * s, s * s * s, s * s * s * s);
-        let d3 = 30.0 * s2 - 60.0 * s3 + 30.0 * s4;
-        let d1 = 1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4;
-        let d2 = s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4;
-        let d4 = -12.0 * s2 + 28.0 * s3 - 15.0 * s4;
-        let d5 = 1.5 * s2 - 4.0 * s3 + 2.5 * s4;
+        let ([d1, d2, d3, d4, d5], dt) = (self.velocity_weights(t), self.dt);
         let v = (self.q1 - self.q0) * (d3 / dt) + self.v0 * d1 + self.v1 * d4 + (self.a0 * d2 + self.a1 * d5) * dt;
         (self.position(t), v)
+    }
+
+    /// Component `i` of `q̇` at time `t`: the event search looks for the bottom of a gap's dip.
+    pub fn velocity_of(&self, i: usize, t: f64) -> f64 {
+        let ([d1, d2, d3, d4, d5], dt) = (self.velocity_weights(t), self.dt);
+        (self.q1[i] - self.q0[i]) * (d3 / dt) + self.v0[i] * d1 + self.v1[i] * d4 + (self.a0[i] * d2 + self.a1[i] * d5) * dt
+    }
+
+    /// The weights of `q̇₀`, `q̈₀ dt`, `(q₁ − q₀)/dt`, `q̇₁`, `q̈₁ dt` in `q̇(t)`.
+    fn velocity_weights(&self, t: f64) -> [f64; 5] {
+        let s = (t - self.t0) / self.dt;
+        let (s2, s3, s4) = (s * s, s * s * s, s * s * s * s);
+        [
+            1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4,
+            s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4,
+            30.0 * s2 - 60.0 * s3 + 30.0 * s4,
+            -12.0 * s2 + 28.0 * s3 - 15.0 * s4,
+            1.5 * s2 - 4.0 * s3 + 2.5 * s4,
+        ]
     }
 
     /// `q` alone at time `t`.

@@ -102,6 +102,52 @@ pub(crate) fn first_crossing<E>(
     Ok(None)
 }
 
+/// A dip between the scan's samples that `first_crossing` steps over (every sample above `−tol`,
+/// the part below narrower than a sample interval: a corner whose fall turns within a fraction
+/// of a step, e.g. in a rattle at e = 1): the dip's bottom, where the rate `dg` turns from
+/// negative to positive between two samples, located on `dg`; if `g` is below `−tol` there, the
+/// crossing before it, from the last point above `tol` (a sample, or the top of a rise between
+/// samples where `dg` turns from positive to negative), the start if there is none.
+pub(crate) fn dip_bottom<E>(
+    mut g: impl FnMut(f64) -> Result<f64, E>,
+    mut dg: impl FnMut(f64) -> Result<f64, E>,
+    (t0, g0): (f64, f64),
+    t1: f64,
+    tol: f64,
+) -> Result<Option<Start>, E> {
+    let mut positive = (g0 > tol).then_some((t0, g0));
+    let (mut lo, mut dg_lo) = (t0, dg(t0)?);
+    for k in 1..=SCAN_SAMPLES {
+        let t = if k == SCAN_SAMPLES { t1 } else { t0 + (t1 - t0) * k as f64 / SCAN_SAMPLES as f64 };
+        let dg_t = dg(t)?;
+        if (dg_lo < 0.0) != (dg_t < 0.0) {
+            // A turning point: the root of the rate (its sign made falling for Illinois's bracket).
+            let sign = if dg_lo < 0.0 { -1.0 } else { 1.0 };
+            let br = Bracket { lo, g_lo: sign * dg_lo, hi: t, g_hi: sign * dg_t };
+            let turn = match illinois(|t| Ok(sign * dg(t)?), br, 0.0, None)? {
+                Located::Root(t) => t,
+                Located::Collapsed(br) => br.lo,
+            };
+            let g_turn = g(turn)?;
+            if dg_lo < 0.0 && g_turn < -tol {
+                return Ok(Some(match positive {
+                    Some((lo, g_lo)) => Start::Within(Bracket { lo, g_lo, hi: turn, g_hi: g_turn }),
+                    None => Start::Immediate,
+                }));
+            }
+            if dg_lo >= 0.0 && g_turn > tol {
+                positive = Some((turn, g_turn));
+            }
+        }
+        let g_t = g(t)?;
+        if g_t > tol {
+            positive = Some((t, g_t));
+        }
+        (lo, dg_lo) = (t, dg_t);
+    }
+    Ok(None)
+}
+
 /// Illinois (regula falsi with halving of a twice-retained end), optionally starting from a
 /// good `guess`. Superlinear, and never leaves the bracket.
 pub(crate) fn illinois<E>(
@@ -212,6 +258,25 @@ mod tests {
             Some(Start::Within(b)) => assert!(b.lo < 0.4 && b.hi > 0.4 && b.hi <= 0.6),
             other => panic!("{other:?}"),
         }
+    }
+
+    /// A dip narrower than a sample interval between two samples above zero (the minimum −1e-9
+    /// at t = 0.2 + 1e-3, half a sample from both): the scan steps over it, the bottom search
+    /// finds it, bracketed from the sample before.
+    #[test]
+    fn the_bottom_search_finds_a_dip_the_samples_step_over() {
+        let (c, depth, width) = (0.2 + 1e-3, 1e-9, 1e-3);
+        let f = |t: f64| depth * ((t - c) * (t - c) / (width * width) - 1.0);
+        let df = |t: f64| depth * 2.0 * (t - c) / (width * width);
+        let (g, dg) = (|t| Ok::<_, Infallible>(f(t)), |t| Ok::<_, Infallible>(df(t)));
+        assert_eq!(first_crossing(g, (0.0, f(0.0)), (1.0, f(1.0)), 1e-12, false).unwrap(), None);
+        match dip_bottom(g, dg, (0.0, f(0.0)), 1.0, 1e-12).unwrap() {
+            Some(Start::Within(b)) => assert!(b.lo == 0.125 && (b.hi - c).abs() < 1e-12 && b.g_hi < -0.99e-9, "{b:?}"),
+            other => panic!("{other:?}"),
+        }
+        // A dip that stays above −tol is none.
+        let shallow = |t: f64| f(t) + depth - 1e-13;
+        assert_eq!(dip_bottom(|t| Ok::<_, Infallible>(shallow(t)), dg, (0.0, shallow(0.0)), 1.0, 1e-12).unwrap(), None);
     }
 
     /// A gap at zero and rising at the start whose flight ends before the first sample: the

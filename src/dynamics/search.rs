@@ -33,21 +33,14 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         // The step's quintic extensions, of the gaps and of the configuration, built once a scan
         // needs them (most steps scan nothing).
         let (gaps, configuration) = (OnceCell::new(), OnceCell::new());
+        let gap_extension = || {
+            let e = step_end;
+            gaps.get_or_init(|| Hermite5 { t0: s0.t, dt: e.t - s0.t, q0: s0.gap, v0: s0.hd, a0: s0.hdd, q1: e.gap, v1: e.hd, a1: e.hdd })
+        };
         let on_dense = |t: f64, i: usize, w: Watch| -> Result<f64, DynamicsError> {
             let e = step_end;
             match w {
-                Watch::Gap => Ok(gaps
-                    .get_or_init(|| Hermite5 {
-                        t0: s0.t,
-                        dt: e.t - s0.t,
-                        q0: s0.gap,
-                        v0: s0.hd,
-                        a0: s0.hdd,
-                        q1: e.gap,
-                        v1: e.hd,
-                        a1: e.hdd,
-                    })
-                    .position_of(i, t)),
+                Watch::Gap => Ok(gap_extension().position_of(i, t)),
                 Watch::Multiplier | Watch::Slip(_) | Watch::Stick(_) => {
                     let dense = configuration.get_or_init(|| Hermite5 {
                         t0: s0.t,
@@ -73,6 +66,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 }
             }
         };
+        // ḣᵢ on the gaps' extension, where a dip's bottom is sought.
+        let gap_rate = |t: f64, i: usize| -> Result<f64, DynamicsError> { Ok(gap_extension().velocity_of(i, t)) };
         // A located event is checked against the others at its own state; if one of them has
         // already crossed there, the search repeats on the shorter step, to that state (at most M times).
         let mut located: Option<Evaluated<N, M>> = None;
@@ -85,14 +80,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 // A gap rising at the step's end may have dipped inside it: one falling at the start
                 // within reach of the wall, or one rising at the start so slowly against its
                 // deceleration that it turns within the step at a height its fall then exceeds.
-                let dip = || {
-                    let (dt, hd0, hdd0) = (e.t - s0.t, s0.hd[i], s0.hdd[i]);
-                    w == Watch::Gap
-                        && e.hd[i] > 0.0
-                        && ((hd0 < 0.0 && g0.min(g1) < 2.0 * dt * -hd0)
-                            || (hd0 >= 0.0 && hdd0 < 0.0 && hd0 < -hdd0 * dt && g0 + hd0 * hd0 / (-2.0 * hdd0) < -hdd0 * dt * dt))
-                };
-                if g1 >= -tol && !dip() {
+                let (dt, hd0, hdd0) = (e.t - s0.t, s0.hd[i], s0.hdd[i]);
+                let dips = w == Watch::Gap
+                    && e.hd[i] > 0.0
+                    && ((hd0 < 0.0 && g0.min(g1) < 2.0 * dt * -hd0)
+                        || (hd0 >= 0.0 && hdd0 < 0.0 && hd0 < -hdd0 * dt && g0 + hd0 * hd0 / (-2.0 * hdd0) < -hdd0 * dt * dt));
+                if g1 >= -tol && !dips {
                     continue;
                 }
                 let start = match self.locator {
@@ -107,7 +100,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                             Watch::Multiplier => g0 < 0.0,
                             Watch::Stick(_) => false,
                         };
-                        root_finding::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (e.t, g1), tol, rising)?
+                        match root_finding::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (e.t, g1), tol, rising)? {
+                            None if dips => root_finding::dip_bottom(|t| on_dense(t, i, w), |t| gap_rate(t, i), (s0.t, g0), e.t, tol)?,
+                            found => found,
+                        }
                     }
                     EventLocator::StepHalving if g1 < -tol && g0 > 0.0 => {
                         Some(Start::Within(Bracket { lo: s0.t, g_lo: g0, hi: e.t, g_hi: g1 }))

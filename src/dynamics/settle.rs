@@ -32,21 +32,37 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// method is kept, and most steps need no projection (nor the evaluation it costs). `ev`: the
     /// evaluation at the state, if at hand; returns the one at the state afterwards, likewise.
     pub(super) fn stabilize(&mut self, ev: Option<Evaluation<N, M>>) -> Result<Option<Evaluation<N, M>>, DynamicsError> {
-        let (s, active) = (&self.state, self.contacts.held);
-        let (gap_tol, rate_tol) = (DRIFT_FRACTION * self.options.gap_tolerance, DRIFT_FRACTION * self.options.velocity_tolerance);
-        if members::<M>(active).all(|i| s.gap[i].abs() <= gap_tol && s.hd[i].abs() <= rate_tol) {
+        if !self.drifted(&self.state) {
             return Ok(ev);
         }
-        let (t, v) = (s.t, s.v);
-        let (q, ev, frame) = self.onto_contacts(t, s.q, &v, active, frame_at(&self.system, t, &s.q, &v, ev)?)?;
-        let hd = ev.gap_jacobian * v + ev.gap_time_rate;
-        let dependent = DynamicsError::DependentContacts { time: t, constraints: active };
-        let (before, v) = (v, v + frame.projection(&hd, active).ok_or(dependent)?.0);
+        let (q, v) = self.onto_held(&self.state, ev)?;
+        let t = self.state.t;
         let ev = self.system.evaluate(t, &q, &v);
-        let absorbed = self.absorbed_by_jump(t, &q, &before, &v);
+        let absorbed = self.absorbed_by_jump(t, &q, &self.state.v, &v);
         self.state = sample_of(&self.system, &ev, t, q, v, self.contacts)?.after(&self.state);
         self.state.absorbed_work += absorbed;
         Ok(Some(ev))
+    }
+
+    /// Whether a held constraint of `s` has drifted beyond `DRIFT_FRACTION` of its tolerances.
+    pub(super) fn drifted(&self, s: &Sample<N, M>) -> bool {
+        let (gap_tol, rate_tol) = (DRIFT_FRACTION * self.options.gap_tolerance, DRIFT_FRACTION * self.options.velocity_tolerance);
+        !members::<M>(self.contacts.held).all(|i| s.gap[i].abs() <= gap_tol && s.hd[i].abs() <= rate_tol)
+    }
+
+    /// `(q, q̇)` of `s` projected onto the held set's manifold, `h_A = 0` and `ḣ_A = 0`. `ev`: the
+    /// evaluation at `s`, if at hand.
+    #[allow(clippy::type_complexity)]
+    pub(super) fn onto_held(
+        &self,
+        s: &Sample<N, M>,
+        ev: Option<Evaluation<N, M>>,
+    ) -> Result<(SVector<f64, N>, SVector<f64, N>), DynamicsError> {
+        let (t, v, active) = (s.t, s.v, self.contacts.held);
+        let (q, ev, frame) = self.onto_contacts(t, s.q, &v, active, frame_at(&self.system, t, &s.q, &v, ev)?)?;
+        let hd = ev.gap_jacobian * v + ev.gap_time_rate;
+        let dependent = DynamicsError::DependentContacts { time: t, constraints: active };
+        Ok((q, v + frame.projection(&hd, active).ok_or(dependent)?.0))
     }
 
     /// The work the system's own forces take from the jump `before → after` at `(t, q)`, J.

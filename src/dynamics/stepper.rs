@@ -198,17 +198,32 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// nothing). `t` may lie before the current time: reading the point before a served one again
     /// puts the stepper back exactly as it was there, the point being a function of the step.
     pub fn serve(&mut self, t: f64) -> Result<(), DynamicsError> {
-        let Self { system, state, ahead, contacts, .. } = self;
-        let reason = match ahead {
-            Some(ahead) if state.t <= t && t < ahead.end.t => {
+        let reason = match &self.ahead {
+            Some(ahead) if self.state.t <= t && t < ahead.end.t => {
                 // Written once the sample is complete and finite: a failure changes nothing.
-                ahead.now = between(system, state, &ahead.end, t, *contacts)?;
+                let now = self.point(&ahead.end, t)?;
+                if let Some(ahead) = &mut self.ahead {
+                    ahead.now = now;
+                }
                 return Ok(());
             }
             Some(_) => "the time is outside the step ahead",
             None => "no step ahead to read the state from",
         };
         Err(DynamicsError::InvalidArgument { time: self.time(), reason })
+    }
+
+    /// The sample at `t` inside the step from the current state to `end`, on the held set's
+    /// manifold: the step's quintic extension leaves a held gap off zero by its interpolation
+    /// error, O(dt⁶) (1e-9 m on a 1 m crank at 4300 rpm, 7.2° steps), which the step's end
+    /// removes by projection; the point is projected likewise.
+    fn point(&self, end: &Sample<N, M>, t: f64) -> Result<Sample<N, M>, DynamicsError> {
+        let s = between(&self.system, &self.state, end, t, self.contacts)?;
+        if !self.drifted(&s) {
+            return Ok(s);
+        }
+        let (q, v) = self.onto_held(&s, None)?;
+        Ok(sample_of(&self.system, &self.system.evaluate_point(t, &q, &v), t, q, v, self.contacts)?.after(&s))
     }
 
     /// Puts the state at the current time on the RK4 map (the step ahead cut there), so that the
@@ -446,7 +461,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     self.stabilize(ev)?;
                 }
                 let end = std::mem::replace(&mut self.state, start);
-                let now = between(&self.system, &self.state, &end, t_end, self.contacts)?;
+                let now = self.point(&end, t_end)?;
                 self.ahead = Some(Ahead { end, now });
                 Ok(false)
             }

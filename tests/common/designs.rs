@@ -181,7 +181,7 @@ pub fn declared(r: &mut Random) -> Design {
             rod_mass,
             crank_mass,
             piston_inertia: inertia(r, piston_mass, d, 10.0),
-            rod_inertia: inertia(r, rod_mass, rod_length, 10.0),
+            rod_inertia: inertia(r, rod_mass, rod_length, 1.0),
             crank_inertia: inertia(r, crank_mass, crank_radius, 100.0),
             piston_diameter: d,
             skirt_length: skirt,

@@ -17,8 +17,17 @@ const DESIGNS: u64 = 250;
 const FOUND_BY_LARGER_SWEEPS: [u64; 6] = [5223, 2814, 34815, 81325, 92086, 95532];
 
 fn failures(make: fn(&mut Random) -> Design, check: impl Fn(&Design, &Finished) -> Result<(), String>) -> Vec<String> {
+    failures_among(FOUND_BY_LARGER_SWEEPS.into_iter(), make, check)
+}
+
+/// `failures` with the other seeds `found` beyond the first `DESIGNS`.
+fn failures_among(
+    found: impl Iterator<Item = u64>,
+    make: fn(&mut Random) -> Design,
+    check: impl Fn(&Design, &Finished) -> Result<(), String>,
+) -> Vec<String> {
     (0..DESIGNS)
-        .chain(FOUND_BY_LARGER_SWEEPS)
+        .chain(found)
         .filter_map(|seed| {
             let design = make(&mut Random::new(seed));
             run(&design).and_then(|finished| check(&design, &finished)).err().map(|e| format!("seed {seed}: {e}\n  {design:?}"))
@@ -73,25 +82,22 @@ fn random_rubbing_sliders_all_run_and_balance_their_energy() {
     assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
-/// Designs of the declared space that still break a per-step check (an open defect): a corner
-/// 1.1e-9–3.9e-9 m outside the bore at a communication point (seed 122 prescribed, 140 and 199 free
-/// crank, 227). Asserted exactly, so that a fix or a new failure shows.
-const DECLARED_OPEN: [u64; 4] = [122, 140, 199, 227];
+/// Declared designs beyond the first `DESIGNS` that a larger sweep found failing once: 436, 455
+/// and 539, two diagonal corners slipping together through a dead centre of the crank, where the
+/// slip reverses with the geometry and friction hardly changes its acceleration (the Coulomb law
+/// kept the slip the motion leaves, and its watch crossed again at once, 10⁴ times); 559, a held
+/// corner read 1e-9 m outside the bore at a communication point (as 122 below).
+const DECLARED_FOUND_BY_LARGER_SWEEPS: [u64; 4] = [436, 455, 539, 559];
 
 /// Designs drawn from the whole declared space (`designs::declared`), every output checked at
-/// every step: all run, none but `DECLARED_OPEN` contradicts the model.
+/// every step: all run, none contradicts the model. Among them seeds 122 (a 1 m crank at
+/// 4300 rpm), 140 and 199, whose held corners read from a step's quintic extension lay 1e-9 m
+/// outside the bore before a communication point was projected onto the held corners, and 227
+/// (e = 1), whose corner dipped 4e-9 m into the liner between two samples of the event scan.
 #[test]
 fn random_designs_of_the_declared_space_run_and_agree_with_the_model() {
-    let (mut failed, mut errors) = (Vec::new(), Vec::new());
-    for seed in 0..DESIGNS {
-        match run(&declared(&mut Random::new(seed))) {
-            Ok(_) => {}
-            Err(e) if e.contains("outside the bore") => failed.push(seed),
-            Err(e) => errors.push(format!("seed {seed}: {e}")),
-        }
-    }
-    assert!(errors.is_empty(), "{}", errors.join("\n"));
-    assert_eq!(failed, DECLARED_OPEN);
+    let failed = failures_among(DECLARED_FOUND_BY_LARGER_SWEEPS.into_iter(), declared, |_, _| Ok(()));
+    assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
 /// The speed of the fastest impact of a run, m/s.

@@ -25,8 +25,10 @@ pub const MAX_MASS_RATIO: f64 = 1e3;
 
 /// Bounds on each link's radius of gyration about its centre of mass, √(J/m), as multiples of its
 /// length (piston: `piston_diameter`, rod: `rod_length`, crank: `crank_radius`; the crank's upper
-/// bound is larger, for a flywheel on the shaft).
-const GYRATION: [(f64, f64); 3] = [(1e-3, 10.0), (1e-3, 10.0), (1e-3, 100.0)];
+/// bound is larger, for a flywheel on the shaft). A rod's mass lies within its length of its centre
+/// of mass, so its radius of gyration cannot exceed it: a rod of 10 × (a random design's) spun a
+/// light piston into a rattle between two corners that its crank fed until the state went non-finite.
+const GYRATION: [(f64, f64); 3] = [(1e-3, 10.0), (1e-3, 1.0), (1e-3, 100.0)];
 
 /// Crank angles over one revolution at which the contact problem's consistency is checked.
 const ANGLES: usize = 720;

@@ -464,7 +464,7 @@ mod tests {
 
     #[test]
     fn refuses_parameters_naming_them() {
-        let cases: [(Parameters, &str); 13] = [
+        let cases: [(Parameters, &str); 14] = [
             // The generic ranges.
             (Parameters { bore: 0.079, ..Parameters::default() }, "bore = 0.079 m must exceed piston_diameter = 0.08 m"),
             (Parameters { restitution: 1.2, ..Parameters::default() }, "restitution"),
@@ -484,6 +484,8 @@ mod tests {
             ),
             (Parameters { piston_mass: 0.0099, ..Parameters::default() }, "crank_mass (10 kg) and piston_mass (0.0099 kg)"),
             (Parameters { rod_inertia: 1e-9, ..Parameters::default() }, "rod_inertia (0.000000001 kg·m²) gives the rod"),
+            // A 1 kg rod 0.15 m long: √(J/m) = 0.151 m, just beyond its length.
+            (Parameters { rod_inertia: 0.0228, ..Parameters::default() }, "outside [0.001, 1] × rod_length (0.15 m)"),
         ];
         for (params, expected) in cases {
             let message = validate(&params).unwrap_err().0;
@@ -491,7 +493,7 @@ mod tests {
         }
         assert!(validate(&Parameters::default()).is_ok());
         // Exactly at the bounds: accepted.
-        let edges = Parameters { rod_length: 0.06, bore: 0.08 + 2e-6, piston_mass: 0.01, ..Parameters::default() };
+        let edges = Parameters { rod_length: 0.06, rod_inertia: 0.003, bore: 0.08 + 2e-6, piston_mass: 0.01, ..Parameters::default() };
         assert!(validate(&edges).is_ok(), "{:?}", validate(&edges));
     }
 
