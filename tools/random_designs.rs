@@ -6,7 +6,7 @@
 #[path = "../tests/common/designs.rs"]
 mod designs;
 
-use designs::{declared, engine, lubricated_engine, rubbing_engine, rubbing_slider, run, slider, Random};
+use designs::{declared, declared_ramped, engine, lubricated_engine, rubbing_engine, rubbing_slider, run, slider, Random};
 use std::time::Instant;
 
 fn main() {
@@ -19,6 +19,7 @@ fn main() {
         ("rubbing engine", rubbing_engine),
         ("rubbing slider", rubbing_slider),
         ("declared", declared),
+        ("declared ramped", declared_ramped),
         ("lubricated engine", lubricated_engine),
     ];
     for (family, make) in families.into_iter().filter(|(family, _)| only.as_deref().is_none_or(|o| o == *family)) {

@@ -3,7 +3,7 @@
 //! gas). Every design is one a user could type in: lengths, masses and clearances of real
 //! mechanisms, restitution anywhere in [0, 1].
 
-use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
+use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, Outputs, Parameters};
 use std::f64::consts::PI;
 
 /// The published parameters mapped onto the crank train (the benchmark file's table), frictionless
@@ -55,13 +55,36 @@ impl Random {
     }
 }
 
-/// A design, the inputs it runs with, and how long and in what steps it is run.
+/// A design, the inputs it runs with (their values at the start and their time derivatives, as a host
+/// sets them with fmi2SetRealInputDerivatives; zero: held), and how long and in what steps it is run.
 #[derive(Clone, Debug)]
 pub struct Design {
     pub params: Parameters,
     pub inputs: Inputs,
+    pub derivatives: InputDerivatives,
     pub duration: f64,
     pub step: f64,
+}
+
+impl Design {
+    /// The design with its crank speed ramping by up to ±20 % and its gas pressure input by up to ±50 %
+    /// over the run, at constant rates drawn from `r`, curvature included (a host's second derivatives).
+    fn ramped(self, r: &mut Random) -> Self {
+        let (u, t) = (&self.inputs, self.duration);
+        let [speed_rate, pressure_rate] = [u.crank_speed * r.between(-0.2, 0.2) / t, u.gas_pressure * r.between(-0.5, 0.5) / t];
+        let derivatives = InputDerivatives {
+            crank_speed: [speed_rate, speed_rate * r.between(-0.1, 0.1) / t],
+            gas_pressure: [pressure_rate, 0.0],
+            load_torque: [0.0, 0.0],
+        };
+        Self { derivatives, ..self }
+    }
+
+    /// The inputs a host sets at time `t`: the start values followed along their derivatives.
+    fn inputs_at(&self, t: f64) -> Inputs {
+        let [speed, pressure, load] = self.derivatives.polynomials(&self.inputs, 0.0).map(|u| u.at(t));
+        Inputs { crank_speed: speed, gas_pressure: pressure, load_torque: load }
+    }
 }
 
 /// An engine: 600–6000 rpm, 2–12 MPa peak pressure, 10–200 µm clearance, a pin offset up to 2 % of
@@ -94,7 +117,8 @@ pub fn engine(r: &mut Random) -> Design {
         ..Parameters::default()
     };
     let inputs = Inputs { crank_speed: speed, ..Inputs::default() };
-    Design { params, inputs, duration: 2.0 * 4.0 * PI / speed, step: [1e-3, 1e-4][(r.next() * 2.0) as usize] }
+    let step = [1e-3, 1e-4][(r.next() * 2.0) as usize];
+    Design { params, inputs, derivatives: InputDerivatives::default(), duration: 2.0 * 4.0 * PI / speed, step }
 }
 
 /// A light slider of the Flores benchmark's kind: its published links, a free crank started at
@@ -104,7 +128,7 @@ pub fn slider(r: &mut Random) -> Design {
     let com = r.between(-0.02, 0.02);
     let params = Parameters { bore: 0.05 + 2.0 * r.between(1e-4, 2e-3), restitution: r.next(), ..flores(com) };
     let inputs = Inputs { crank_speed: r.between(50.0, 300.0), gas_pressure: 0.0, load_torque: 0.0 };
-    Design { params, inputs, duration: 0.1, step: [1e-3, 1e-4][(r.next() * 2.0) as usize] }
+    Design { params, inputs, derivatives: InputDerivatives::default(), duration: 0.1, step: [1e-3, 1e-4][(r.next() * 2.0) as usize] }
 }
 
 /// An engine with liner friction μ ∈ [0, 0.3] and a cylinder tilted from the vertical (lateral
@@ -145,6 +169,13 @@ fn decades(r: &mut Random, lo: f64, hi: f64) -> f64 {
         u if u < 0.1 => hi,
         _ => lo * libm::pow(hi / lo, r.next()),
     }
+}
+
+/// A design of the declared space (as `declared` draws it from the same seed), its crank speed and gas
+/// pressure inputs ramping (`Design::ramped`, drawn after the design).
+pub fn declared_ramped(r: &mut Random) -> Design {
+    let design = declared(r);
+    design.ramped(r)
 }
 
 /// Any design of the declared space (the FMU documentation's "Declared space"): every model option
@@ -196,7 +227,7 @@ pub fn declared(r: &mut Random) -> Design {
         let inputs = Inputs { crank_speed: speed, gas_pressure: decades(r, 1e4, 1e7), load_torque: 0.0 };
         let step = decades(r, 1e-5, 1e-2);
         if CrankTrain::new(&params, 0.0).is_ok() {
-            return Design { params, inputs, duration, step };
+            return Design { params, inputs, derivatives: InputDerivatives::default(), duration, step };
         }
     }
 }
@@ -243,14 +274,31 @@ fn contradiction(model: &CrankTrain, before: &Outputs, now: &Outputs, events: &[
     }
 }
 
+/// Whether `model` saved and restored continues to `t_end` as `model` does: the same events and outputs,
+/// bit for bit (compared by their printed form, which shows every bit of an f64).
+fn continues_after_a_round_trip(model: &CrankTrain, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Result<(), String> {
+    let bytes = postcard::to_allocvec(model).map_err(|e| format!("state not saved: {e}"))?;
+    let mut restored: CrankTrain = postcard::from_bytes(&bytes).map_err(|e| format!("state not restored: {e}"))?;
+    let mut original = model.clone();
+    let continued = |m: &mut CrankTrain| {
+        let mut events = Vec::new();
+        let result = m.advance_interpolated(inputs, derivatives, t_end, &mut events).map_err(|e| e.to_string());
+        format!("{result:?} {events:?} {:?}", outputs(m))
+    };
+    let (expected, got) = (continued(&mut original), continued(&mut restored));
+    (expected == got).then_some(()).ok_or_else(|| format!("a restored state continues otherwise:\n  {got}\nnot\n  {expected}"))
+}
+
 fn outputs(model: &CrankTrain) -> Outputs {
     let mut out = Outputs::default();
     model.write_outputs(&mut out);
     out
 }
 
-/// Runs a design to its end through the model's `advance`, as an FMU host would; the first error
-/// as its message.
+/// Runs a design to its end through the model's `advance_interpolated`, as an FMU host would, the
+/// inputs set at each step's start with their derivatives; halfway, the model's state is saved as an
+/// FMU state is (serde, postcard), restored, and must continue bit for bit as the model itself does.
+/// The first error as its message.
 pub fn run(design: &Design) -> Result<Finished, String> {
     let mut model = CrankTrain::new(&design.params, 0.0).map_err(|e| format!("refused: {e}"))?;
     let mut events = Vec::new();
@@ -260,7 +308,12 @@ pub fn run(design: &Design) -> Result<Finished, String> {
     let mut before = outputs(&model);
     for k in 1..=steps {
         let first = events.len();
-        model.advance(&design.inputs, k as f64 * design.step, &mut events).map_err(|e| e.to_string())?;
+        let (t, t_end) = ((k - 1) as f64 * design.step, k as f64 * design.step);
+        let inputs = design.inputs_at(t);
+        if k == steps.div_ceil(2) {
+            continues_after_a_round_trip(&model, &inputs, &design.derivatives, t_end).map_err(|e| format!("at t = {t} s: {e}"))?;
+        }
+        model.advance_interpolated(&inputs, &design.derivatives, t_end, &mut events).map_err(|e| e.to_string())?;
         let now = outputs(&model);
         contradiction(&model, &before, &now, &events[first..]).map_or(Ok(()), |what| Err(format!("at t = {} s: {what}", model.time())))?;
         before = now;
