@@ -76,10 +76,12 @@ bench:
 # Long runs in release mode, not part of `test`: 10⁴ crank-train cycles (prescribed and free crank)
 # and 10⁶ roller revolutions (in a second thread), the energy balance checked every cycle and
 # revolution (about 10 minutes on the 2-CPU machine, the roller being the longest).
-# 10⁴ random designs of the declared space (tests/common/designs.rs `declared`), every output checked at every
-# step: the failures and the count (about 15 minutes on the 2-CPU machine).
+# 10⁴ random designs of the declared space (tests/common/designs.rs `declared`), then the same designs with ramping
+# inputs (`declared ramped`), every output checked at every step and each run's state restored halfway: the
+# failures and the count (about 30 minutes on the 2-CPU machine).
 designs:
 	cargo run --release --example random_designs -- 10000 0 declared
+	cargo run --release --example random_designs -- 10000 0 "declared ramped"
 
 soak:
 	cargo run --release --example soak -- 10000 1000000
