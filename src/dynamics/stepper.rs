@@ -5,7 +5,7 @@
 use super::complementarity::{bit, contains, select, Contacts};
 use super::options::{MAX_STEPS_PER_ADVANCE, PENETRATION_FACTOR, TOO_MANY_STEPS};
 use super::rk4::{local_error, rk4_step, rk4_to, Hermite5};
-use super::sample::{sample, sample_of, Evaluated, Sample};
+use super::sample::{sample, sample_of, Evaluated, Forces, Sample};
 use super::{Absorbed, DynamicsError, Evaluation, Event, StepCounts, StepperOptions, System, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
 use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
@@ -417,7 +417,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// the controller's size, shrunk until its local error is within `local_error`; the next
     /// size follows from this step's error (the usual `(tol/err)^¼` rule, bounded growth).
     /// `beyond`: the step may end past `t_end` (it is then not cut short there).
-    fn trial_step(&mut self, t_end: f64, beyond: bool) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
+    fn trial_step(&mut self, t_end: f64, beyond: bool) -> Result<(Sample<N, M>, Evaluation<N, M>, Forces<M>), DynamicsError> {
         let (t0, max, tol) = (self.state.t, self.options.step.min(self.system.largest_step(self.state.t)), self.options.local_error);
         let min = max * MIN_STEP_FRACTION;
         loop {
@@ -428,8 +428,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             if t1 <= t0 {
                 return Err(DynamicsError::InvalidArgument { time: t0, reason: "the step is below the time resolution at this time" });
             }
-            let (s1, ev, slopes) = rk4_step(&self.system, &self.state, t1, self.contacts)?;
-            let Some(tol) = tol else { return Ok((s1, ev)) };
+            let (s1, ev, slopes, middle) = rk4_step(&self.system, &self.state, t1, self.contacts)?;
+            let Some(tol) = tol else { return Ok((s1, ev, middle)) };
             let ratio = local_error(&self.state, (&s1, &ev), slopes, self.contacts.held, &self.system.coordinate_lengths())? / tol;
             if ratio.is_nan() {
                 return Err(DynamicsError::NonFinite { time: t1 });
@@ -440,7 +440,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             if ratio <= 1.0 || size <= min {
                 // A step cut short by `t_end` says nothing against a longer one.
                 self.step_size = if t1 == t_end { next.max(size) } else { next };
-                return Ok((s1, ev));
+                return Ok((s1, ev, middle));
             }
             self.count(|c| c.rejected += 1);
             self.step_size = next;
@@ -451,10 +451,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// `beyond`: an event-free step may end past `t_end`, kept as the step ahead; one with an event
     /// past `t_end` is taken again, cut short there.
     fn step(&mut self, t_end: f64, beyond: bool) -> Result<bool, DynamicsError> {
-        let (s1, ev1) = self.trial_step(t_end, beyond)?;
+        let (s1, ev1, middle) = self.trial_step(t_end, beyond)?;
         self.count(|c| c.accepted += 1);
         let active = self.contacts.held;
-        match self.first_event((s1, Some(ev1)))? {
+        match self.first_event((s1, Some(ev1)), &middle)? {
             StepEnd::Clear((s1, ev)) if s1.t > t_end => {
                 let start = std::mem::replace(&mut self.state, s1);
                 if active != 0 {
