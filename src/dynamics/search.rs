@@ -26,10 +26,24 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
 
     /// The earliest event in the step `self.state → s1`; `middle`: the held contacts' forces at
-    /// the step's middle.
-    pub(super) fn first_event(&self, s1: Evaluated<N, M>, middle: &Forces<M>) -> Result<StepEnd<N, M>, DynamicsError> {
+    /// the step's middle; `unmoved`: the step starts where an event changed nothing.
+    pub(super) fn first_event(&self, s1: Evaluated<N, M>, middle: &Forces<M>, unmoved: bool) -> Result<StepEnd<N, M>, DynamicsError> {
         let (sys, s0, contacts) = (&self.system, &self.state, self.contacts);
         let watches = self.watches();
+        // Where an event at this instant changed nothing, the laws accepted every held watch's value
+        // here within their own tolerances, relative to the problem's scale and wider than the
+        // search's: one already below −tol is watched for falling as far again, to where the laws
+        // decide otherwise, rather than found crossed at once, again and again (a stick 9e-7 N
+        // outside its cone, a slip reversed by 9e-9 m/s at a dead centre, 10⁴ times at one instant).
+        let shift = |i: usize, w: Watch| {
+            let (g0, tol) = (s0.watched(i, w), self.tolerance(w));
+            if unmoved && w != Watch::Gap && g0 < -tol {
+                2.0 * g0 + tol
+            } else {
+                0.0
+            }
+        };
+        let watched = |s: &Sample<N, M>, i: usize, w: Watch| s.watched(i, w) - shift(i, w);
         let step_end = &s1.0;
         // The step's quintic extensions, of the gaps and of the configuration, built once a scan
         // needs them (most steps scan nothing).
@@ -77,7 +91,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             for (i, w) in watches.clone() {
                 let tol = self.tolerance(w);
                 let e = located.as_ref().map_or(step_end, |l| &l.0);
-                let (g0, g1) = (s0.watched(i, w), e.watched(i, w));
+                let (g0, g1, lift) = (watched(s0, i, w), watched(e, i, w), shift(i, w));
                 // A gap rising at the step's end may have dipped inside it: one falling at the start
                 // within reach of the wall, or one rising at the start so slowly against its
                 // deceleration that it turns within the step at a height its fall then exceeds.
@@ -92,7 +106,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 // (the middle is an RK4 stage, off the motion by that much: a dip of 7 mN the
                 // quintic extension shows, and the outputs with it, had a stage value of +16 mN).
                 let held_dip = w != Watch::Gap && located.is_none() && {
-                    let gm = middle.watched(i, w);
+                    let gm = middle.watched(i, w) - lift;
                     lowest(g0, gm, g1) < (g0 - gm).abs() + (gm - g1).abs()
                 };
                 if g1 >= -tol && !dips && !held_dip {
@@ -110,7 +124,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                             Watch::Multiplier => g0 < 0.0,
                             Watch::Stick(_) => false,
                         };
-                        match root_finding::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (e.t, g1), tol, rising)? {
+                        match root_finding::first_crossing(|t| Ok(on_dense(t, i, w)? - lift), (s0.t, g0), (e.t, g1), tol, rising)? {
                             None if dips => root_finding::dip_bottom(|t| on_dense(t, i, w), |t| gap_rate(t, i), (s0.t, g0), e.t, tol)?,
                             found => found,
                         }
@@ -125,7 +139,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     None => continue,
                     Some(Start::Immediate) => s0.t,
                     Some(Start::Within(br)) => match self.locator {
-                        EventLocator::DenseOutput => pick(root_finding::illinois(|t| on_dense(t, i, w), br, 0.25 * tol, None)?, w),
+                        EventLocator::DenseOutput => {
+                            pick(root_finding::illinois(|t| Ok(on_dense(t, i, w)? - lift), br, 0.25 * tol, None)?, w)
+                        }
                         EventLocator::StepHalving => br.lo, // located on the RK4 map below
                     },
                 };
@@ -138,8 +154,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 Start::Immediate => return Ok(StepEnd::Event { at: (s0.clone(), None), constraint: i }),
                 Start::Within(br) => br,
             };
-            let (s, ev) = self.locate_on_rk4(br, estimate, i, w)?;
-            let crossed_before = watches.clone().any(|(j, v)| (j, v) != (i, w) && s.watched(j, v) < -self.tolerance(v));
+            let (s, ev) = self.locate_on_rk4(br, estimate, (i, w), shift(i, w))?;
+            let crossed_before = watches.clone().any(|(j, v)| (j, v) != (i, w) && watched(&s, j, v) < -self.tolerance(v));
             if !crossed_before {
                 return Ok(StepEnd::Event { at: (s, Some(ev)), constraint: i });
             }
@@ -147,7 +163,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         }
         // Only reachable with round-off ties between constraints: take the last located state.
         let end = located.unwrap_or(s1);
-        let j = watches.clone().find(|&(j, v)| end.0.watched(j, v) < 0.0).map_or(0, |(j, _)| j);
+        let j = watches.clone().find(|&(j, v)| watched(&end.0, j, v) < 0.0).map_or(0, |(j, _)| j);
         Ok(StepEnd::Event { at: end, constraint: j })
     }
 
@@ -157,9 +173,15 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         (tangents.jacobian.row(i) * s.acc)[0] + tangents.bias[i]
     }
 
-    /// The state where `g_i` crosses zero, on the RK4 map from the step start: Illinois started
-    /// at the dense-output estimate (usually accepted at once), or bisection (step halving).
-    fn locate_on_rk4(&self, br: Bracket, estimate: f64, i: usize, w: Watch) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
+    /// The state where `g_i − shift` crosses zero, on the RK4 map from the step start: Illinois
+    /// started at the dense-output estimate (usually accepted at once), or bisection (step halving).
+    fn locate_on_rk4(
+        &self,
+        br: Bracket,
+        estimate: f64,
+        (i, w): (usize, Watch),
+        shift: f64,
+    ) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
         let (sys, s0, contacts) = (&self.system, &self.state, self.contacts);
         let tol = self.tolerance(w);
         let mut last: Option<(Sample<N, M>, Evaluation<N, M>)> = None;
@@ -170,7 +192,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         };
         let mut g = |t: f64| -> Result<f64, DynamicsError> {
             let s = locating(t)?;
-            let gt = s.0.watched(i, w);
+            let gt = s.0.watched(i, w) - shift;
             last = Some(s);
             Ok(gt)
         };

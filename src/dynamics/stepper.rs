@@ -139,6 +139,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         // piles them up in a vanishing time, while a long span of ordinary impacts only needs more
         // windows.
         let (mut handled, mut steps, mut window_start) = (0, 0.0, self.state.t);
+        // The last event left time, contact set and record as they were (`first_event`).
+        let mut unmoved = false;
         loop {
             if let Some(ahead) = &self.ahead {
                 if t_end < ahead.end.t {
@@ -156,7 +158,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             if steps > MAX_STEPS_PER_ADVANCE {
                 return Err(DynamicsError::InvalidArgument { time: self.state.t, reason: TOO_MANY_STEPS });
             }
-            let event = self.step(t_end, beyond)?;
+            let before = (self.state.t, self.contacts, self.events.len());
+            let event = self.step(t_end, beyond, unmoved)?;
+            unmoved = event && before == (self.state.t, self.contacts, self.events.len());
             // A step that ran past `t_end` has the state there already.
             if self.ahead.is_some() {
                 return Ok(());
@@ -454,11 +458,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// One RK4 step towards `t_end`, stopping at the first event. Returns whether an event was handled.
     /// `beyond`: an event-free step may end past `t_end`, kept as the step ahead; one with an event
     /// past `t_end` is taken again, cut short there.
-    fn step(&mut self, t_end: f64, beyond: bool) -> Result<bool, DynamicsError> {
+    /// `unmoved`: as `first_event` takes it.
+    fn step(&mut self, t_end: f64, beyond: bool, unmoved: bool) -> Result<bool, DynamicsError> {
         let (s1, ev1, middle) = self.trial_step(t_end, beyond)?;
         self.count(|c| c.accepted += 1);
         let active = self.contacts.held;
-        match self.first_event((s1, Some(ev1)), &middle)? {
+        match self.first_event((s1, Some(ev1)), &middle, unmoved)? {
             StepEnd::Clear((s1, ev)) if s1.t > t_end => {
                 let start = std::mem::replace(&mut self.state, s1);
                 if active != 0 {
@@ -478,7 +483,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             }
             StepEnd::Event { at: (s, _), .. } if s.t > t_end => {
                 self.event_ahead = Some(s.t);
-                self.step(t_end, false)
+                self.step(t_end, false, unmoved)
             }
             StepEnd::Event { at: (s, mut ev), constraint: i } => {
                 // A free constraint crossing at the very start of the step: the last decision left it
