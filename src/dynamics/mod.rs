@@ -9,7 +9,7 @@
 //! - events: a free gap falling below `−ε_h`, an active multiplier below `−ε_λ`, located by
 //!   Illinois on a quintic Hermite extension of the step (of the gaps themselves, from `h`, `ḣ`,
 //!   `ḧ` at its ends; of `q` for the multipliers) and confirmed on the RK4 map
-//!   ([`EventLocator`]; the paper's step halving is kept for comparison);
+//!   (where the paper halves the step: `benches/core.rs` counts what that would cost);
 //! - at an event, the closed set (gaps within `ε_h`) is resolved together: the generalized Newton
 //!   impact as a complementarity problem (ARCHITECTURE.md §6.4; exactly eq 11 for one constraint), then
 //!   persistent contact for the constraints at rest as the sliding complementarity problem over
@@ -23,7 +23,7 @@
 //! Constraint sets are bitmasks, all matrices are fixed-size: no heap use but the event record.
 //!
 //! The files, from the loop down: `stepper.rs` (the loop, the state it keeps, the accessors),
-//! `search.rs` (the event search of one step) over `root_finding.rs` (scan, Illinois, bisection),
+//! `search.rs` (the event search of one step) over `root_finding.rs` (scan, Illinois),
 //! `settle.rs` (an event resolved, drift removed) over `contact_laws.rs` (the impact law and the
 //! laws of persistent contact), which reduce to `complementarity.rs` (constraint sets, the held
 //! set, `W`, the held acceleration, the LCP) and `coulomb.rs` (the friction problems by
@@ -53,6 +53,5 @@ pub use error::DynamicsError;
 pub use event::{Event, EventKind, StepCounts};
 pub use options::{StepperOptions, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
 pub use settle::ZENO_APEX_FACTOR;
-pub use stepper::EventLocator;
 pub use stepper::Stepper;
 pub use system::{Absorbed, Evaluation, System, Tangents};

@@ -4,7 +4,7 @@
 use super::rk4::{rk4_to, Hermite5};
 use super::root_finding::{self, Bracket, Located, Start};
 use super::sample::{acceleration, sample, Evaluated, Forces, Sample, Watch};
-use super::stepper::{EventLocator, StepEnd};
+use super::stepper::StepEnd;
 use super::system::friction_of;
 use super::{DynamicsError, Evaluation, Stepper, System};
 use std::cell::OnceCell;
@@ -112,38 +112,24 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 if g1 >= -tol && !dips && !held_dip {
                     continue;
                 }
-                let start = match self.locator {
-                    EventLocator::DenseOutput => {
-                        let rising = match w {
-                            Watch::Gap => s0.hd[i] > 0.0,
-                            // A slip the law just started from rest within ε_ḣ: its direction
-                            // is that of γ̇, so it grows before it can reverse.
-                            Watch::Slip(s) => g0 <= tol && s * self.slip_rate(s0, i) > 0.0,
-                            // A held constraint pulling at the start was kept on the trend of its
-                            // force (a tie, or a flight below the event resolution): it grows first.
-                            Watch::Multiplier => g0 < 0.0,
-                            Watch::Stick(_) => false,
-                        };
-                        match root_finding::first_crossing(|t| Ok(on_dense(t, i, w)? - lift), (s0.t, g0), (e.t, g1), tol, rising)? {
-                            None if dips => root_finding::dip_bottom(|t| on_dense(t, i, w), |t| gap_rate(t, i), (s0.t, g0), e.t, tol)?,
-                            found => found,
-                        }
-                    }
-                    EventLocator::StepHalving if g1 < -tol && g0 > 0.0 => {
-                        Some(Start::Within(Bracket { lo: s0.t, g_lo: g0, hi: e.t, g_hi: g1 }))
-                    }
-                    EventLocator::StepHalving if g1 < -tol => Some(Start::Immediate),
-                    EventLocator::StepHalving => None,
+                let rising = match w {
+                    Watch::Gap => s0.hd[i] > 0.0,
+                    // A slip the law just started from rest within ε_ḣ: its direction
+                    // is that of γ̇, so it grows before it can reverse.
+                    Watch::Slip(s) => g0 <= tol && s * self.slip_rate(s0, i) > 0.0,
+                    // A held constraint pulling at the start was kept on the trend of its
+                    // force (a tie, or a flight below the event resolution): it grows first.
+                    Watch::Multiplier => g0 < 0.0,
+                    Watch::Stick(_) => false,
+                };
+                let start = match root_finding::first_crossing(|t| Ok(on_dense(t, i, w)? - lift), (s0.t, g0), (e.t, g1), tol, rising)? {
+                    None if dips => root_finding::dip_bottom(|t| on_dense(t, i, w), |t| gap_rate(t, i), (s0.t, g0), e.t, tol)?,
+                    found => found,
                 };
                 let estimate = match start {
                     None => continue,
                     Some(Start::Immediate) => s0.t,
-                    Some(Start::Within(br)) => match self.locator {
-                        EventLocator::DenseOutput => {
-                            pick(root_finding::illinois(|t| Ok(on_dense(t, i, w)? - lift), br, 0.25 * tol, None)?, w)
-                        }
-                        EventLocator::StepHalving => br.lo, // located on the RK4 map below
-                    },
+                    Some(Start::Within(br)) => pick(root_finding::illinois(|t| Ok(on_dense(t, i, w)? - lift), br, 0.25 * tol, None)?, w),
                 };
                 if earliest.is_none_or(|(t, ..)| estimate < t) {
                     earliest = Some((estimate, i, w, start.expect("matched above")));
@@ -174,7 +160,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
 
     /// The state where `g_i − shift` crosses zero, on the RK4 map from the step start: Illinois
-    /// started at the dense-output estimate (usually accepted at once), or bisection (step halving).
+    /// started at the dense-output estimate (usually accepted at once).
     fn locate_on_rk4(
         &self,
         br: Bracket,
@@ -196,11 +182,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             last = Some(s);
             Ok(gt)
         };
-        let located = match self.locator {
-            EventLocator::DenseOutput => root_finding::illinois(&mut g, br, tol, Some(estimate))?,
-            EventLocator::StepHalving => root_finding::bisect(&mut g, br, tol)?,
-        };
-        let t = pick(located, w);
+        let t = pick(root_finding::illinois(&mut g, br, tol, Some(estimate))?, w);
         match last {
             Some(s) if s.0.t == t => Ok(s),
             _ => locating(t),

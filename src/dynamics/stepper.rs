@@ -11,18 +11,6 @@ use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
 
-/// How the time of an event inside a step is found.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
-pub enum EventLocator {
-    /// Illinois root finding on the quintic Hermite extension of the step (cheap: no RK4 steps),
-    /// then confirmed on the RK4 map itself, corrected there by Illinois if needed.
-    #[default]
-    DenseOutput,
-    /// The paper's scheme (A&K section 5): bisect the RK4 step until `|g| ≤ tol`. Like the
-    /// paper it sees only sign changes between the ends of a step, not a dip inside one.
-    StepHalving,
-}
-
 /// How a step ends: clear of events, or at the first one.
 pub(super) enum StepEnd<const N: usize, const M: usize> {
     /// No event: the step's end, with its evaluation.
@@ -50,7 +38,6 @@ const MAX_CONSTRAINTS: usize = 16;
 pub struct Stepper<S, const N: usize, const M: usize> {
     pub(super) system: S,
     pub(super) options: StepperOptions,
-    pub(super) locator: EventLocator,
     pub(super) event_budget: usize,
     /// The adaptive step's next size (≤ `options.step`).
     pub(super) step_size: f64,
@@ -96,7 +83,6 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             system,
             step_size: options.step,
             options,
-            locator: EventLocator::default(),
             event_budget: DEFAULT_EVENT_BUDGET,
             contacts: Contacts::default(),
             state,
@@ -367,14 +353,6 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// The tolerances and nominal step.
     pub fn options(&self) -> &StepperOptions {
         &self.options
-    }
-    /// How events are located.
-    pub fn locator(&self) -> EventLocator {
-        self.locator
-    }
-    /// Chooses how events are located (default: dense output).
-    pub fn set_locator(&mut self, locator: EventLocator) {
-        self.locator = locator;
     }
     /// Bounds the events handled while the time advances by less than `ACCUMULATION_WINDOW`
     /// nominal steps (default `DEFAULT_EVENT_BUDGET`); beyond it `advance` returns

@@ -1,8 +1,8 @@
-//! RK4 converges with order 4 between events; events are located within ε_h whichever locator.
+//! RK4 converges with order 4 between events; events are located within ε_h.
 
 use crate::common::testbeds::{Ball, DoublePendulum, Floor};
 use nalgebra::{Vector1, Vector2};
-use pistonslap::dynamics::{EventKind, EventLocator, Stepper, StepperOptions, System};
+use pistonslap::dynamics::{EventKind, Stepper, StepperOptions, System};
 
 fn pendulum(wall: f64, restitution: f64) -> DoublePendulum {
     DoublePendulum { masses: [1.0, 0.5], lengths: [1.0, 0.7], gravity: 9.81, wall, restitution }
@@ -29,42 +29,19 @@ fn rk4_has_order_four() {
     }
 }
 
-/// The same impacts of a double pendulum against a wall, located by Illinois on the dense
-/// output and by the paper's step halving: both within ε_h of the wall, at the same times.
+/// The impacts of a double pendulum against a wall, located on the dense output and confirmed on
+/// the RK4 map, lie within ε_h (1e-12 m) of the wall.
 #[test]
-fn locators_agree_within_tolerance() {
-    let run = |locator| {
-        let q0 = Vector2::new(0.6, 0.9);
-        let mut s =
-            Stepper::new(pendulum(-0.3, 0.8), 0.0, q0, Vector2::zeros(), StepperOptions { step: 1e-3, ..Default::default() }).unwrap();
-        s.set_locator(locator);
-        s.advance(5.0).unwrap();
-        for ev in s.events().iter().filter(|ev| ev.kind == EventKind::Impact) {
-            let gap = s.system().evaluate(ev.time, &ev.q, &Vector2::zeros()).gap[0];
-            assert!(gap.abs() <= 1e-12, "{locator:?}: gap {gap:e} at {}", ev.time);
-        }
-        s.events().to_vec()
-    };
-    let (dense, halving) = (run(EventLocator::DenseOutput), run(EventLocator::StepHalving));
-    assert!(dense.len() >= 4);
-    assert_eq!(dense.len(), halving.len());
-    for (a, b) in dense.iter().zip(&halving) {
-        assert_eq!((a.kind, a.constraint), (b.kind, b.constraint));
-        // |Δt| ≤ 2 ε_h / |ḣ⁻| plus the drift from earlier events.
-        assert!((a.time - b.time).abs() < 1e-9, "{} vs {}", a.time, b.time);
+fn impacts_are_located_on_the_wall() {
+    let q0 = Vector2::new(0.6, 0.9);
+    let mut s = Stepper::new(pendulum(-0.3, 0.8), 0.0, q0, Vector2::zeros(), StepperOptions { step: 1e-3, ..Default::default() }).unwrap();
+    s.advance(5.0).unwrap();
+    let impacts: Vec<_> = s.events().iter().filter(|ev| ev.kind == EventKind::Impact).collect();
+    assert!(impacts.len() >= 4, "{} impacts", impacts.len());
+    for ev in impacts {
+        let gap = s.system().evaluate(ev.time, &ev.q, &Vector2::zeros()).gap[0];
+        assert!(gap.abs() <= 1e-12, "gap {gap:e} at {}", ev.time);
     }
-}
-
-/// Ball impact times with step halving match the closed form as well.
-#[test]
-fn step_halving_locates_the_ball() {
-    let ball = Ball { mass: 1.0, gravity: 9.81, restitution: 1.0, floor: Floor::Fixed };
-    let mut s = Stepper::new(ball, 0.0, Vector1::new(1.0), Vector1::zeros(), StepperOptions { step: 1e-3, ..Default::default() }).unwrap();
-    s.set_locator(EventLocator::StepHalving);
-    s.advance(1.0).unwrap();
-    let t1 = (2.0 / 9.81f64).sqrt();
-    assert_eq!(s.events().len(), 1);
-    assert!((s.events()[0].time - t1).abs() < 1e-12 / (2.0 * 9.81f64).sqrt() + 1e-15);
 }
 
 /// A crossing and return inside one step (both ends of the step admissible): a ball thrown down

@@ -4,8 +4,8 @@
 //! stepper as a `dyn CrankStepper`: the one place the crank train looks at which drive it has.
 
 use super::drive::{Engine, FreeCrank, PrescribedCrank};
-use crate::dynamics::{Absorbed, DynamicsError, Event, EventKind, StepCounts, Stepper, System};
-use crate::models::InputPolynomial;
+use crate::dynamics::{Absorbed, DynamicsError, Event, StepCounts, Stepper, System};
+use crate::models::{EngineEvent, InputPolynomial, CYCLE};
 use nalgebra::{SVector, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -37,24 +37,10 @@ impl Drive {
     }
 }
 
-/// An event of either drive with the link angles φ = (φ1, φ2, φ3) at it.
+/// A core event of either drive as its impact-log row, with what the crank train books from it.
 pub(super) struct CrankEvent {
-    /// s.
-    pub time: f64,
-    /// φ at the event.
-    pub angles: Vector3<f64>,
-    /// What happened.
-    pub kind: EventKind,
-    /// The corner, 0..4.
-    pub constraint: usize,
-    /// m/s, the gap rate before and after.
-    pub velocity_before: f64,
-    /// m/s.
-    pub velocity_after: f64,
-    /// J, kinetic energy the normal impulses dissipated.
-    pub energy_lost: f64,
-    /// J, kinetic energy the friction impulses dissipated.
-    pub friction_energy: f64,
+    /// The impact-log row.
+    pub row: EngineEvent,
     /// N·s, the normal impulses per corner.
     pub impulses: Vector4<f64>,
     /// J, the work the drive did through the event's impulses (zero for a free crank, whose drive is a
@@ -192,8 +178,9 @@ pub(super) trait CrankStepper {
     fn advance(&mut self, t_end: f64) -> Result<(), DynamicsError>;
     /// Moves to `t` within the step taken.
     fn serve(&mut self, t: f64) -> Result<(), DynamicsError>;
-    /// Each event since the last `clear_events`, in order.
-    fn each_event(&self, each: &mut dyn FnMut(CrankEvent));
+    /// Each event since the last `clear_events`, in order, counting cycles from `cycles` whole
+    /// cycles removed from the crank angle.
+    fn each_event(&self, cycles: f64, each: &mut dyn FnMut(CrankEvent));
     /// Forgets the events.
     fn clear_events(&mut self);
     /// Pa, the gauge gas pressure now at crank angle `angle` within the cycle.
@@ -250,21 +237,23 @@ impl<S: CrankDrive<N>, const N: usize> CrankStepper for Stepper<S, N, 4> {
     fn serve(&mut self, t: f64) -> Result<(), DynamicsError> {
         Stepper::serve(self, t)
     }
-    fn each_event(&self, each: &mut dyn FnMut(CrankEvent)) {
+    fn each_event(&self, cycles: f64, each: &mut dyn FnMut(CrankEvent)) {
         let system = self.system();
         for e in self.events() {
-            each(CrankEvent {
+            let phi = system.angles(e.time, &e.q, &e.v).0;
+            let row = EngineEvent {
                 time: e.time,
-                angles: system.angles(e.time, &e.q, &e.v).0,
-                kind: e.kind,
-                constraint: e.constraint,
-                velocity_before: e.velocity_before,
-                velocity_after: e.velocity_after,
+                crank_angle: phi[0].rem_euclid(CYCLE),
+                cycle: (cycles + (phi[0] / CYCLE).floor()) as i64,
+                kind: e.kind.into(),
+                corner: e.constraint as u8 + 1,
+                normal_velocity_before: -e.velocity_before,
+                normal_velocity_after: e.velocity_after,
                 energy_lost: e.energy_lost,
                 friction_energy: e.friction_energy,
-                impulses: e.impulses,
-                drive_work: system.drive_work(e),
-            });
+                position: system.engine().linkage.pin(&phi).y,
+            };
+            each(CrankEvent { row, impulses: e.impulses, drive_work: system.drive_work(e) });
         }
     }
     fn clear_events(&mut self) {

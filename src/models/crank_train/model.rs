@@ -1,14 +1,14 @@
 //! Variant 1: the piston – connecting rod – crankshaft system of Awrejcewicz & Kudra on the core,
 //! as the FMU drives it (prescribed crank speed, or a free crank under a load torque).
 
-use super::crank_stepper::{CrankEvent, Drive};
+use super::crank_stepper::Drive;
 use super::design_space::{self, validate};
 use super::drive::{Engine, FreeCrank, PrescribedCrank};
 use super::energy::by_wall;
 use super::kinematics::SliderCrank;
 use super::linkage::LinkAngles;
 use crate::dynamics::{DynamicsError, StepCounts, Stepper, StepperOptions};
-use crate::models::{EngineEvent, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, CYCLE};
+use crate::models::{EngineEvent, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -252,23 +252,6 @@ impl CrankTrain {
     fn engine_mut(&mut self) -> Result<&mut Engine, ModelError> {
         self.drive.stepper_mut().engine_mut().map_err(dynamics_error)
     }
-
-    /// A core event as an impact-log row.
-    fn log(&self, e: &CrankEvent, events: &mut Vec<EngineEvent>) {
-        let phi = e.angles;
-        events.push(EngineEvent {
-            time: e.time,
-            crank_angle: phi[0].rem_euclid(CYCLE),
-            cycle: (self.cycles + (phi[0] / CYCLE).floor()) as i64,
-            kind: e.kind.into(),
-            corner: e.constraint as u8 + 1,
-            normal_velocity_before: -e.velocity_before,
-            normal_velocity_after: e.velocity_after,
-            energy_lost: e.energy_lost,
-            friction_energy: e.friction_energy,
-            position: self.engine().linkage.pin(&phi).y,
-        });
-    }
 }
 
 impl EngineModel for CrankTrain {
@@ -311,14 +294,14 @@ impl EngineModel for CrankTrain {
         stepper.advance(t_end).map_err(dynamics_error)?;
         let (mut impulse_work, mut singular) = (self.impulse_work, None);
         let (mut friction_energy, mut impulses) = (0.0, Vector4::zeros());
-        self.drive.stepper().each_event(&mut |e| {
-            self.log(&e, events);
+        self.drive.stepper().each_event(self.cycles, &mut |e| {
             match e.drive_work {
                 Some(work) => impulse_work += work,
-                None => singular = singular.or(Some(e.time)),
+                None => singular = singular.or(Some(e.row.time)),
             }
-            friction_energy += e.friction_energy;
+            friction_energy += e.row.friction_energy;
             impulses += e.impulses;
+            events.push(e.row);
         });
         if let Some(time) = singular {
             return Err(ModelError(format!("crank train: at t = {time} s: the rod and piston inertia is singular")));

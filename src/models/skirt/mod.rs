@@ -1,4 +1,4 @@
-//! The lubricated piston skirt (issue 32): film thickness from the piston's lateral position and tilt,
+//! The lubricated piston skirt: film thickness from the piston's lateral position and tilt,
 //! the Reynolds equation with the Reynolds (Swift–Stieber) cavitation condition solved as a linear
 //! complementarity problem, Greenwood–Tripp asperity contact, and the loads, damping and friction they
 //! put on the piston. Pure numerics: nothing here knows the crank train's state or the FMU.

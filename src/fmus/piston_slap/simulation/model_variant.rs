@@ -14,6 +14,16 @@ pub enum ModelVariant {
     Roller(Roller),
 }
 
+/// `$call` on whichever variant `$self` holds, bound to `$m`.
+macro_rules! on_variant {
+    ($self:ident, $m:ident => $call:expr) => {
+        match $self {
+            ModelVariant::CrankTrain($m) => $call,
+            ModelVariant::Roller($m) => $call,
+        }
+    };
+}
+
 impl EngineModel for ModelVariant {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         match params.model_variant {
@@ -30,37 +40,22 @@ impl EngineModel for ModelVariant {
         t_end: f64,
         events: &mut Vec<EngineEvent>,
     ) -> Result<(), ModelError> {
-        match self {
-            ModelVariant::CrankTrain(m) => m.advance_interpolated(inputs, derivatives, t_end, events),
-            ModelVariant::Roller(m) => m.advance_interpolated(inputs, derivatives, t_end, events),
-        }
+        on_variant!(self, m => m.advance_interpolated(inputs, derivatives, t_end, events))
     }
 
     fn prepare(&mut self, inputs: &Inputs) -> Result<(), ModelError> {
-        match self {
-            ModelVariant::CrankTrain(m) => m.prepare(inputs),
-            ModelVariant::Roller(m) => m.prepare(inputs),
-        }
+        on_variant!(self, m => m.prepare(inputs))
     }
 
     fn write_outputs(&self, out: &mut Outputs) {
-        match self {
-            ModelVariant::CrankTrain(m) => m.write_outputs(out),
-            ModelVariant::Roller(m) => m.write_outputs(out),
-        }
+        on_variant!(self, m => m.write_outputs(out))
     }
 
     fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
-        match self {
-            ModelVariant::CrankTrain(m) => m.serve(inputs, derivatives, t_end),
-            ModelVariant::Roller(m) => m.serve(inputs, derivatives, t_end),
-        }
+        on_variant!(self, m => m.serve(inputs, derivatives, t_end))
     }
 
     fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {
-        match self {
-            ModelVariant::CrankTrain(m) => m.serve_again(t),
-            ModelVariant::Roller(m) => m.serve_again(t),
-        }
+        on_variant!(self, m => m.serve_again(t))
     }
 }
