@@ -130,9 +130,14 @@ pub(crate) fn ties<const M: usize>(
     scale: f64,
     force_tolerance: f64,
 ) -> Set {
-    let w_max = members::<M>(candidates).fold(0.0_f64, |s, i| s.max(w[(i, i)]));
-    let tie_force = (TIE_FRACTION * scale / w_max).max(TIE_FORCE_FACTOR * force_tolerance);
+    let (tie_force, w_max) = tie_margin(w, candidates, scale, force_tolerance);
     candidates & select::<M>(|i| if contains(support, i) { lambda[i] <= tie_force } else { gap_acc[i] <= tie_force * w_max })
+}
+
+/// The tie margin on a force over `candidates`, N, and the largest `Wᵢᵢ` among them.
+pub(crate) fn tie_margin<const M: usize>(w: &SMatrix<f64, M, M>, candidates: Set, scale: f64, force_tolerance: f64) -> (f64, f64) {
+    let w_max = members::<M>(candidates).fold(0.0_f64, |s, i| s.max(w[(i, i)]));
+    ((TIE_FRACTION * scale / w_max).max(TIE_FORCE_FACTOR * force_tolerance), w_max)
 }
 
 /// Margin of an undecided contact, relative to the scale of the sliding law's terms: a contact

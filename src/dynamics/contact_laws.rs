@@ -4,7 +4,7 @@
 //! Coulomb law) with their tie rule. Each reduces to a complementarity problem
 //! (`complementarity.rs`, `coulomb.rs`); `settle.rs` applies them in turn.
 
-use super::complementarity::{contains, members, solve_lcp, solve_on, ties, Contacts, Frame, Mode, Set};
+use super::complementarity::{contains, members, select, solve_lcp, solve_on, tie_margin, ties, Contacts, Frame, Mode, Set};
 use super::coulomb::{Choice, Tangential};
 use super::system::friction_of;
 use super::{DynamicsError, Evaluation, System};
@@ -196,14 +196,19 @@ fn coulomb_law<S: System<N, M>, const N: usize, const M: usize>(
     let (modes, now) = frame.enumerate(&choices, (&b.0, &b.1), scale).ok_or(unresolved.clone())?;
     let contacts = Contacts::of(&modes);
     let w = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?.w;
-    let tied = ties(&w, (&now.normal, &now.y_normal), (candidates, contacts.held), scale, tol.multiplier);
+    // A stick at the edge of its cone is a tie too: the slip it may start has no acceleration
+    // yet, and the event search, which locates the edge to within ε_λ, would find it crossed at
+    // once and return here with nothing changed.
+    let (edge, _) = tie_margin(&w, candidates, scale, tol.multiplier);
+    let at_edge = select::<M>(|i| contains(contacts.stick, i) && mu[i] * now.normal[i] - now.tangent[i].abs() <= edge);
+    let tied = ties(&w, (&now.normal, &now.y_normal), (candidates, contacts.held), scale, tol.multiplier) | at_edge;
     if tied == 0 {
         return Ok((contacts, frame.motion(&free, &now)));
     }
     let (t_ahead, q_ahead, v_ahead, ev_ahead) = probe(contacts, TIE_PROBE)?;
     let (frame_ahead, _, b_ahead, scale_ahead, _) = at(t_ahead, &q_ahead, &v_ahead, &ev_ahead)?;
     let (ahead, _) = frame_ahead.enumerate(&choices, (&b_ahead.0, &b_ahead.1), scale_ahead).ok_or(unresolved)?;
-    if Contacts::of(&ahead).held == contacts.held {
+    if Contacts::of(&ahead) == contacts {
         return Ok((contacts, frame.motion(&free, &now)));
     }
     let dependent = DynamicsError::DependentContacts { time: t, constraints: Contacts::of(&ahead).held };

@@ -2,7 +2,7 @@
 //! and the step of a sample with its contacts held and that step's local error estimate.
 
 use super::complementarity::{Contacts, Frame, Set};
-use super::sample::{acceleration, dissipated, free_motion, motion, sample_of, Sample};
+use super::sample::{acceleration, dissipated, free_motion, motion, sample_of, Forces, Sample};
 use super::system::friction_of;
 use super::{Absorbed, DynamicsError, Evaluation, System};
 use nalgebra::SVector;
@@ -124,19 +124,22 @@ pub(super) fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
     t: f64,
     contacts: Contacts,
 ) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
-    let (s, ev, _) = rk4_step(sys, s0, t, contacts)?;
+    let (s, ev, ..) = rk4_step(sys, s0, t, contacts)?;
     Ok((s, ev))
 }
 
-/// `rk4_to`, with the end's evaluation and the step's last slopes (for `local_error`).
-#[allow(clippy::type_complexity)]
+/// What `rk4_step` gives: the end, its evaluation, the step's last slopes (for `local_error`) and
+/// the held contacts' forces at its third stage, the step's middle (zero in flight).
+pub(super) type Stepped<const N: usize, const M: usize> = (Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>), Forces<M>);
+
+/// `rk4_to`, with what `Stepped` adds.
 #[inline(always)]
 pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     s0: &Sample<N, M>,
     t: f64,
     contacts: Contacts,
-) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
+) -> Result<Stepped<N, M>, DynamicsError> {
     // A system that absorbs nothing gets a step without a trace of the absorbed power.
     if sys.absorbs() {
         rk4_step_of::<S, N, M, true>(sys, s0, t, contacts)
@@ -145,14 +148,13 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     }
 }
 
-#[allow(clippy::type_complexity)]
 #[inline(always)]
 fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: bool>(
     sys: &S,
     s0: &Sample<N, M>,
     t: f64,
     contacts: Contacts,
-) -> Result<(Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>)), DynamicsError> {
+) -> Result<Stepped<N, M>, DynamicsError> {
     let dt = t - s0.t;
     // Three monomorphizations of the step: a flight's stages need `M` and `f` alone, and
     // frictionless held stages the normal forces alone, neither adding friction work; rubbing
@@ -161,6 +163,7 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
     // Held stages also keep λ at stages 2–4 for the contact impulse, by the same weights.
     let by_weights = |first: SVector<f64, M>, [_, a, b, c]: [SVector<f64, M>; 4]| (first + (a + b) * 2.0 + c) * (dt / 6.0);
     let mut lambdas = [SVector::<f64, M>::zeros(); 4];
+    let mut middle = Forces::zeros();
     // The system's own absorbed power at stages 2–4, by the same weights, where it absorbs.
     let (mut absorbed, mut absorbing_stage) = ([Absorbed::zeros(); 4], 0);
     let mut absorb = |t, q: &SVector<f64, N>, v: &SVector<f64, N>, acc: &SVector<f64, N>| {
@@ -187,6 +190,7 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
             Ok(acc)
         };
         let end = step(held, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;
+        middle.lambda = lambdas[2];
         (end, s0.friction_work, s0.contact_impulse + by_weights(s0.lambda, lambdas))
     } else {
         let (mut powers, mut stage) = ([0.0; 4], 0);
@@ -196,6 +200,9 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
             stage += 1;
             powers[stage] = dissipated(&m.friction, &m.slip);
             lambdas[stage] = m.lambda;
+            if stage == 2 {
+                middle = Forces { lambda: m.lambda, friction: m.friction, slip: m.slip };
+            }
             Ok(m.acc)
         };
         let end = step(rubbing, s0.t, &s0.q, &s0.v, &s0.acc, dt)?;
@@ -209,7 +216,7 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
     if ABSORBS {
         s.absorbed_work += (s0.absorbed_power + (absorbed[1] + absorbed[2]) * 2.0 + absorbed[3]) * (dt / 6.0);
     }
-    Ok((s, ev, end.last_slopes))
+    Ok((s, ev, end.last_slopes, middle))
 }
 
 /// The local error of the RK4 step `s0 → s1` on the gaps, m: the embedded third-order estimate

@@ -97,6 +97,30 @@ impl<const N: usize, const M: usize> Sample<N, M> {
     pub(super) fn watched(&self, i: usize, w: Watch) -> f64 {
         match w {
             Watch::Gap => self.gap[i],
+            _ => Forces { lambda: self.lambda, friction: self.friction, slip: self.slip }.watched(i, w),
+        }
+    }
+}
+
+/// The contact forces and slips of a held set at one state: at a step's middle (its third RK4
+/// stage, at `t₀ + h/2`, which computes them anyway) they show a force or slip that dips through
+/// zero and back inside the step, which the values at its ends miss.
+#[derive(Clone, Copy, Debug)]
+pub(super) struct Forces<const M: usize> {
+    pub lambda: SVector<f64, M>,
+    pub friction: SVector<f64, M>,
+    pub slip: SVector<f64, M>,
+}
+
+impl<const M: usize> Forces<M> {
+    pub(super) fn zeros() -> Self {
+        Self { lambda: SVector::zeros(), friction: SVector::zeros(), slip: SVector::zeros() }
+    }
+
+    /// The function `w` watches of a held constraint `i` (a gap is not here: +∞, never crossed).
+    pub(super) fn watched(&self, i: usize, w: Watch) -> f64 {
+        match w {
+            Watch::Gap => f64::INFINITY,
             Watch::Multiplier => self.lambda[i],
             Watch::Slip(s) => s * self.slip[i],
             Watch::Stick(mu) => mu * self.lambda[i] - self.friction[i].abs(),

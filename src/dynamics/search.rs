@@ -3,7 +3,7 @@
 
 use super::rk4::{rk4_to, Hermite5};
 use super::root_finding::{self, Bracket, Located, Start};
-use super::sample::{acceleration, sample, Evaluated, Sample, Watch};
+use super::sample::{acceleration, sample, Evaluated, Forces, Sample, Watch};
 use super::stepper::StepEnd;
 use super::system::friction_of;
 use super::{DynamicsError, Evaluation, Stepper, System};
@@ -25,10 +25,25 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         Watch::all(self.contacts, mu)
     }
 
-    /// The earliest event in the step `self.state → s1`.
-    pub(super) fn first_event(&self, s1: Evaluated<N, M>) -> Result<StepEnd<N, M>, DynamicsError> {
+    /// The earliest event in the step `self.state → s1`; `middle`: the held contacts' forces at
+    /// the step's middle; `unmoved`: the step starts where an event changed nothing.
+    pub(super) fn first_event(&self, s1: Evaluated<N, M>, middle: &Forces<M>, unmoved: bool) -> Result<StepEnd<N, M>, DynamicsError> {
         let (sys, s0, contacts) = (&self.system, &self.state, self.contacts);
         let watches = self.watches();
+        // Where an event at this instant changed nothing, the laws accepted every held watch's value
+        // here within their own tolerances, relative to the problem's scale and wider than the
+        // search's: one already below −tol is watched for falling as far again, to where the laws
+        // decide otherwise, rather than found crossed at once, again and again (a stick 9e-7 N
+        // outside its cone, a slip reversed by 9e-9 m/s at a dead centre, 10⁴ times at one instant).
+        let shift = |i: usize, w: Watch| {
+            let (g0, tol) = (s0.watched(i, w), self.tolerance(w));
+            if unmoved && w != Watch::Gap && g0 < -tol {
+                2.0 * g0 + tol
+            } else {
+                0.0
+            }
+        };
+        let watched = |s: &Sample<N, M>, i: usize, w: Watch| s.watched(i, w) - shift(i, w);
         let step_end = &s1.0;
         // The step's quintic extensions, of the gaps and of the configuration, built once a scan
         // needs them (most steps scan nothing).
@@ -76,7 +91,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             for (i, w) in watches.clone() {
                 let tol = self.tolerance(w);
                 let e = located.as_ref().map_or(step_end, |l| &l.0);
-                let (g0, g1) = (s0.watched(i, w), e.watched(i, w));
+                let (g0, g1, lift) = (watched(s0, i, w), watched(e, i, w), shift(i, w));
                 // A gap rising at the step's end may have dipped inside it: one falling at the start
                 // within reach of the wall, or one rising at the start so slowly against its
                 // deceleration that it turns within the step at a height its fall then exceeds.
@@ -85,7 +100,16 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     && e.hd[i] > 0.0
                     && ((hd0 < 0.0 && g0.min(g1) < 2.0 * dt * -hd0)
                         || (hd0 >= 0.0 && hdd0 < 0.0 && hd0 < -hdd0 * dt && g0 + hd0 * hd0 / (-2.0 * hdd0) < -hdd0 * dt * dt));
-                if g1 >= -tol && !dips {
+                // A held constraint's force (or slip, or margin to the cone) may dip through zero
+                // and back inside the step: the scan below looks wherever the parabola through its
+                // values at the ends and the middle comes within the step's own variation of zero
+                // (the middle is an RK4 stage, off the motion by that much: a dip of 7 mN the
+                // quintic extension shows, and the outputs with it, had a stage value of +16 mN).
+                let held_dip = w != Watch::Gap && located.is_none() && {
+                    let gm = middle.watched(i, w) - lift;
+                    lowest(g0, gm, g1) < (g0 - gm).abs() + (gm - g1).abs()
+                };
+                if g1 >= -tol && !dips && !held_dip {
                     continue;
                 }
                 let rising = match w {
@@ -98,14 +122,14 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     Watch::Multiplier => g0 < 0.0,
                     Watch::Stick(_) => false,
                 };
-                let start = match root_finding::first_crossing(|t| on_dense(t, i, w), (s0.t, g0), (e.t, g1), tol, rising)? {
+                let start = match root_finding::first_crossing(|t| Ok(on_dense(t, i, w)? - lift), (s0.t, g0), (e.t, g1), tol, rising)? {
                     None if dips => root_finding::dip_bottom(|t| on_dense(t, i, w), |t| gap_rate(t, i), (s0.t, g0), e.t, tol)?,
                     found => found,
                 };
                 let estimate = match start {
                     None => continue,
                     Some(Start::Immediate) => s0.t,
-                    Some(Start::Within(br)) => pick(root_finding::illinois(|t| on_dense(t, i, w), br, 0.25 * tol, None)?, w),
+                    Some(Start::Within(br)) => pick(root_finding::illinois(|t| Ok(on_dense(t, i, w)? - lift), br, 0.25 * tol, None)?, w),
                 };
                 if earliest.is_none_or(|(t, ..)| estimate < t) {
                     earliest = Some((estimate, i, w, start.expect("matched above")));
@@ -116,8 +140,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 Start::Immediate => return Ok(StepEnd::Event { at: (s0.clone(), None), constraint: i }),
                 Start::Within(br) => br,
             };
-            let (s, ev) = self.locate_on_rk4(br, estimate, i, w)?;
-            let crossed_before = watches.clone().any(|(j, v)| (j, v) != (i, w) && s.watched(j, v) < -self.tolerance(v));
+            let (s, ev) = self.locate_on_rk4(br, estimate, (i, w), shift(i, w))?;
+            let crossed_before = watches.clone().any(|(j, v)| (j, v) != (i, w) && watched(&s, j, v) < -self.tolerance(v));
             if !crossed_before {
                 return Ok(StepEnd::Event { at: (s, Some(ev)), constraint: i });
             }
@@ -125,7 +149,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         }
         // Only reachable with round-off ties between constraints: take the last located state.
         let end = located.unwrap_or(s1);
-        let j = watches.clone().find(|&(j, v)| end.0.watched(j, v) < 0.0).map_or(0, |(j, _)| j);
+        let j = watches.clone().find(|&(j, v)| watched(&end.0, j, v) < 0.0).map_or(0, |(j, _)| j);
         Ok(StepEnd::Event { at: end, constraint: j })
     }
 
@@ -135,9 +159,15 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         (tangents.jacobian.row(i) * s.acc)[0] + tangents.bias[i]
     }
 
-    /// The state where `g_i` crosses zero, on the RK4 map from the step start: Illinois started
-    /// at the dense-output estimate (usually accepted at once).
-    fn locate_on_rk4(&self, br: Bracket, estimate: f64, i: usize, w: Watch) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
+    /// The state where `g_i − shift` crosses zero, on the RK4 map from the step start: Illinois
+    /// started at the dense-output estimate (usually accepted at once).
+    fn locate_on_rk4(
+        &self,
+        br: Bracket,
+        estimate: f64,
+        (i, w): (usize, Watch),
+        shift: f64,
+    ) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
         let (sys, s0, contacts) = (&self.system, &self.state, self.contacts);
         let tol = self.tolerance(w);
         let mut last: Option<(Sample<N, M>, Evaluation<N, M>)> = None;
@@ -148,7 +178,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         };
         let mut g = |t: f64| -> Result<f64, DynamicsError> {
             let s = locating(t)?;
-            let gt = s.0.watched(i, w);
+            let gt = s.0.watched(i, w) - shift;
             last = Some(s);
             Ok(gt)
         };
@@ -157,6 +187,17 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             Some(s) if s.0.t == t => Ok(s),
             _ => locating(t),
         }
+    }
+}
+
+/// The lowest value on `[0, 1]` of the parabola through `(0, g0)`, `(½, gm)`, `(1, g1)`.
+fn lowest(g0: f64, gm: f64, g1: f64) -> f64 {
+    let (slope, curvature) = (4.0 * gm - 3.0 * g0 - g1, 2.0 * (g0 + g1 - 2.0 * gm));
+    let s = -slope / (2.0 * curvature);
+    if curvature > 0.0 && s > 0.0 && s < 1.0 {
+        g0 + slope * s + curvature * s * s
+    } else {
+        g0.min(g1)
     }
 }
 

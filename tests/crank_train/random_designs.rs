@@ -90,8 +90,24 @@ fn random_rubbing_sliders_all_run_and_balance_their_energy() {
 /// and 539, two diagonal corners slipping together through a dead centre of the crank, where the
 /// slip reverses with the geometry and friction hardly changes its acceleration (the Coulomb law
 /// kept the slip the motion leaves, and its watch crossed again at once, 10⁴ times); 559, a held
-/// corner read 1e-9 m outside the bore at a communication point (as 122 below).
-const DECLARED_FOUND_BY_LARGER_SWEEPS: [u64; 4] = [436, 455, 539, 559];
+/// corner read 1e-9 m outside the bore at a communication point (as 122 below). From the 10⁴
+/// designs of `make designs`: 472, 1723, 1984, 3049, 3625, 3902, 3910, 4164, 4570, 5091, 7710, 8478,
+/// 8886 and 9093, a sticking corner at the edge of its friction cone, which the Coulomb law kept
+/// sticking while the event search found the edge crossed at once (10⁴ times at one instant: a tie
+/// now, decided a moment later along the motion); 1620, 4870, 5016, 5767 and 6439, a held corner's
+/// force that dipped through zero (−7 mN to −7.6 N) and back inside one step, seen at served
+/// communication points; 5179, friction work that fell by 9e-18 J of 1.2e-9 J where a step ahead
+/// was cut at a communication point and its own quadrature replaced the interpolation shown.
+const DECLARED_FOUND_BY_LARGER_SWEEPS: [u64; 24] = [
+    436, 455, 539, 559, 472, 1723, 1984, 3049, 3625, 3902, 3910, 4164, 4570, 5091, 7710, 8478, 8886, 9093, 1620, 4870, 5016, 5767, 6439,
+    5179,
+];
+
+/// Ramped declared designs beyond the first `RAMPED_DESIGNS` that `make designs` found failing: 718,
+/// 1734, 1827 and 1937, a sticking corner at the edge of its friction cone (as 472 above); 1635 and
+/// 3211, a stick of a diagonal pair of corners 3e-5 N and 9e-7 N outside its cone, within the
+/// Coulomb law's tolerance and beyond the event search's, found crossed again at every event.
+const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 6] = [718, 1734, 1827, 1937, 1635, 3211];
 
 /// Designs drawn from the whole declared space (`designs::declared`), every output checked at
 /// every step: all run, none contradicts the model. Among them seeds 122 (a 1 m crank at
@@ -111,6 +127,7 @@ fn random_designs_of_the_declared_space_run_and_agree_with_the_model() {
 #[test]
 fn declared_designs_with_ramping_inputs_run_and_agree_with_the_model() {
     let failed: Vec<String> = (0..RAMPED_DESIGNS)
+        .chain(RAMPED_FOUND_BY_LARGER_SWEEPS)
         .filter_map(|seed| {
             let design = declared_ramped(&mut Random::new(seed));
             run(&design).err().map(|e| format!("seed {seed}: {e}\n  {design:?}"))
