@@ -45,16 +45,24 @@ fn random_engines_all_run() {
     assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
+/// Lubricated designs beyond the first twelve that `random_designs 60 0 "lubricated engine"` found
+/// failing: 14, 35 and 36, a corner the laws released at rest on the liner, accelerating off it, that a
+/// step whose RK4 stages fell across a change of the film's cavitation set (its damping, and with it
+/// the acceleration, jumps there) sent below the liner at once; held, it pulled, and was released
+/// again at the same instant, 10⁴ times.
+const LUBRICATED_FOUND_BY_LARGER_SWEEPS: [u64; 3] = [14, 35, 36];
+
 /// On a lubricated skirt (each design's film solved thousands of times a cycle: fewer of them).
 #[test]
 fn random_lubricated_engines_all_run() {
     let failed: Vec<String> = (0..12)
+        .chain(LUBRICATED_FOUND_BY_LARGER_SWEEPS)
         .filter_map(|seed| {
             let design = lubricated_engine(&mut Random::new(seed));
             run(&design).err().map(|e| format!("seed {seed}: {e}\n  {design:?}"))
         })
         .collect();
-    assert!(failed.is_empty(), "{} of 12 failed:\n{}", failed.len(), failed.join("\n"));
+    assert!(failed.is_empty(), "{} of 15 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
 fn balanced(_: &Design, f: &Finished) -> Result<(), String> {
