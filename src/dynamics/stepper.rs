@@ -465,10 +465,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     && !contains(active, i)
                     && self.system.absorbs()
                     && self.options.local_error.is_some()
-                    && tried > self.smallest_step() =>
+                    && 0.25 * tried >= self.smallest_step() =>
             {
                 self.count(|c| c.rejected += 1);
-                self.step_size = (0.25 * tried).max(self.smallest_step());
+                self.step_size = 0.25 * tried;
                 self.step(t_end, beyond, unmoved)
             }
             StepEnd::Clear((s1, ev)) if s1.t > t_end => {
