@@ -1,11 +1,13 @@
 """The gasoline car preset: its US-customary source numbers converted to SI reproduce the source's own dimensionless
-groups, and the engine slaps on both walls at 3000 rpm with the piston kept within its clearance."""
+groups, the engine slaps on both walls at 3000 rpm with the piston kept within its clearance, and a pin offset toward
+the major-thrust side changes the power-stroke slap over as offset pistons are designed to."""
 
 import numpy as np
 import pytest
 
-from pistonslap.fmu import simulate
+from pistonslap.fmu import simulate, simulate_with_events
 from pistonslap.presets import PRESETS
+from pistonslap.tables import side_changes
 
 CAR = PRESETS["ford-gasoline"].values
 
@@ -34,3 +36,31 @@ def test_the_car_engine_slaps_on_both_walls_at_3000_rpm():
     assert last["cycle_slaps_thrust"] >= 1 and last["cycle_slaps_antithrust"] >= 1, last
     assert last["cycle_impacts"] >= last["cycle_slaps_thrust"] + last["cycle_slaps_antithrust"]
     assert np.abs(result["piston_lateral"]).max() <= 40e-6 + 1e-10
+
+
+def power_stroke_landing(pin_offset, rpm):
+    """The first landing on the major-thrust wall within 30° of the second firing TDC (one engine cycle after the
+    start, which is the first, the piston centred): (crank angle from that firing TDC in degrees, corner)."""
+    omega = rpm * np.pi / 30
+    cycle = 4 * np.pi / omega
+    window = np.radians(30) / omega
+    _, events = simulate_with_events(
+        start_values=dict(CAR, crank_speed=omega, pin_offset=pin_offset),
+        stop_time=cycle + window,
+        output_interval=1e-4,
+        output=["cycle_count"],
+    )
+    thrust = side_changes(events) & (events["corner"] >= 3) & (np.abs(events["time"] - cycle) < window)
+    first = events[thrust][0]
+    return np.degrees((first["time"] - cycle) * omega), first["corner"]
+
+
+@pytest.mark.parametrize("rpm", [1200, 3000])
+def test_a_thrust_side_pin_offset_changes_over_earlier_on_the_lower_skirt(rpm):
+    """Offsetting the pin 1 mm toward the major-thrust side (pin_offset > 0) is meant to move the power-stroke side
+    change earlier, toward the low pressure before combustion, the piston tilted so that the lower end of the skirt
+    (K4) reaches the thrust wall first. The centred pin and the opposite offset land later; the opposite offset
+    leads with the upper corner (K3)."""
+    toward, centred, away = (power_stroke_landing(offset, rpm) for offset in (1e-3, 0.0, -1e-3))
+    assert toward[0] < min(centred[0], away[0]) - 1.0, (toward, centred, away)
+    assert toward[1] == 4 and away[1] == 3, (toward, away)

@@ -404,7 +404,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// size follows from this step's error (the usual `(tol/err)^¼` rule, bounded growth).
     /// `beyond`: the step may end past `t_end` (it is then not cut short there).
     fn trial_step(&mut self, t_end: f64, beyond: bool) -> Result<(Sample<N, M>, Evaluation<N, M>, Forces<M>), DynamicsError> {
-        let (t0, max, tol) = (self.state.t, self.options.step.min(self.system.largest_step(self.state.t)), self.options.local_error);
+        let (t0, max) = (self.state.t, self.options.step.min(self.system.largest_step(self.state.t)));
+        let tol = self.options.local_error.map(|e| self.system.local_error(e, &self.state.gap));
         let min = max * MIN_STEP_FRACTION;
         loop {
             // Also repairs a size restored from bytes.

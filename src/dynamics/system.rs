@@ -86,6 +86,14 @@ pub trait System<const N: usize, const M: usize> {
         f64::INFINITY
     }
 
+    /// The bound on the local error of a step starting where the gaps are `gaps`, m, given the
+    /// options' bound `nominal` (`StepperOptions::local_error`): a system whose gaps are far from
+    /// closing, its motion carried by forces the gaps do not measure, may loosen it. `nominal`, the
+    /// default.
+    fn local_error(&self, nominal: f64, _gaps: &SVector<f64, M>) -> f64 {
+        nominal
+    }
+
     /// Whether the system has forces of its own that take energy from the motion beyond what its
     /// mechanical energy holds (`absorbed_power`), such as a lubricating film's. False, the
     /// default: the core never asks for their power, and takes its paths as without them.

@@ -131,6 +131,11 @@ impl Engine {
         self.lubrication.as_ref().map_or(f64::INFINITY, Lubrication::largest_step)
     }
 
+    /// The local-error bound of a step from corner gaps `gaps` (`Lubrication::local_error`; `nominal` dry).
+    fn local_error(&self, nominal: f64, gaps: &Vector4<f64>) -> f64 {
+        self.lubrication.as_ref().map_or(nominal, |l| l.local_error(nominal, gaps))
+    }
+
     /// What the lubricated skirt takes from the motion at (φ, φ̇, φ̈), W (`Lubrication::absorbed_power`).
     fn absorbed_power(&self, phi: &Vector3<f64>, trig: &LinkAngles, phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
         self.lubrication.as_ref().map_or(Absorbed::zeros(), |l| l.absorbed_power((phi, trig), phid, phidd))
@@ -349,6 +354,10 @@ impl System<2, 4> for PrescribedCrank {
         (MAX_STEP_ANGLE / self.speed.at(t).abs()).min(self.engine.largest_step())
     }
 
+    fn local_error(&self, nominal: f64, gaps: &Vector4<f64>) -> f64 {
+        self.engine.local_error(nominal, gaps)
+    }
+
     fn absorbs(&self) -> bool {
         self.engine.lubrication.is_some()
     }
@@ -418,6 +427,10 @@ impl System<3, 4> for FreeCrank {
 
     fn largest_step(&self, _t: f64) -> f64 {
         self.engine.largest_step()
+    }
+
+    fn local_error(&self, nominal: f64, gaps: &Vector4<f64>) -> f64 {
+        self.engine.local_error(nominal, gaps)
     }
 
     fn absorbs(&self) -> bool {
