@@ -30,8 +30,16 @@ fn failures_among(
     make: fn(&mut Random) -> Design,
     check: impl Fn(&Design, &Finished) -> Result<(), String>,
 ) -> Vec<String> {
-    (0..DESIGNS)
-        .chain(found)
+    failures_of((0..DESIGNS).chain(found), make, check)
+}
+
+/// Each of the designs `make` draws from `seeds` that fails to run or fails `check`, with its seed.
+fn failures_of(
+    seeds: impl Iterator<Item = u64>,
+    make: fn(&mut Random) -> Design,
+    check: impl Fn(&Design, &Finished) -> Result<(), String>,
+) -> Vec<String> {
+    seeds
         .filter_map(|seed| {
             let design = make(&mut Random::new(seed));
             run(&design).and_then(|finished| check(&design, &finished)).err().map(|e| format!("seed {seed}: {e}\n  {design:?}"))
@@ -55,13 +63,7 @@ const LUBRICATED_FOUND_BY_LARGER_SWEEPS: [u64; 3] = [14, 35, 36];
 /// On a lubricated skirt (each design's film solved thousands of times a cycle: fewer of them).
 #[test]
 fn random_lubricated_engines_all_run() {
-    let failed: Vec<String> = (0..12)
-        .chain(LUBRICATED_FOUND_BY_LARGER_SWEEPS)
-        .filter_map(|seed| {
-            let design = lubricated_engine(&mut Random::new(seed));
-            run(&design).err().map(|e| format!("seed {seed}: {e}\n  {design:?}"))
-        })
-        .collect();
+    let failed = failures_of((0..12).chain(LUBRICATED_FOUND_BY_LARGER_SWEEPS), lubricated_engine, |_, _| Ok(()));
     assert!(failed.is_empty(), "{} of 15 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
@@ -134,13 +136,7 @@ fn random_designs_of_the_declared_space_run_and_agree_with_the_model() {
 /// bit (as in every run).
 #[test]
 fn declared_designs_with_ramping_inputs_run_and_agree_with_the_model() {
-    let failed: Vec<String> = (0..RAMPED_DESIGNS)
-        .chain(RAMPED_FOUND_BY_LARGER_SWEEPS)
-        .filter_map(|seed| {
-            let design = declared_ramped(&mut Random::new(seed));
-            run(&design).err().map(|e| format!("seed {seed}: {e}\n  {design:?}"))
-        })
-        .collect();
+    let failed = failures_of((0..RAMPED_DESIGNS).chain(RAMPED_FOUND_BY_LARGER_SWEEPS), declared_ramped, |_, _| Ok(()));
     assert!(failed.is_empty(), "{} of {RAMPED_DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
