@@ -459,7 +459,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             // accelerating off the liner, below it at once, while a shorter step shows it rising. The
             // step is taken again a quarter as long before the corner is held (down to the smallest
             // step, with the adaptive step); held, it would pull and be released again, at the same
-            // instant, 10⁴ times (lubricated random designs 14, 35 and 36).
+            // instant, without end.
             StepEnd::Event { at: (s, _), constraint: i }
                 if s.t == self.state.t
                     && !contains(active, i)
