@@ -33,10 +33,12 @@ pub const MAX_MASS_RATIO: f64 = 1e3;
 /// have 0.63 and 0.58); the crank's bound is larger, for a flywheel on the shaft.
 const GYRATION: [(f64, f64); 3] = [(0.05, 1.0), (0.05, 1.0), (0.05, 100.0)];
 
-/// Least `piston_mass / piston_diameter³`, kg/m³: a piston carries the gas load on its crown, which
-/// weighs at least as much as an aluminium disc a fiftieth of the diameter thick (42 d³); the presets
-/// have 600–1000. A 22 g piston of 1 m under 94 bar spun a free crank to 10⁶ rad/s.
-pub const MIN_PISTON_DENSITY: f64 = 40.0;
+/// Bounds on `piston_mass / piston_diameter³`, kg/m³. Below: a piston carries the gas load on its
+/// crown, which weighs at least as much as an aluminium disc a fiftieth of the diameter thick (42 d³;
+/// a 22 g piston of 1 m under 94 bar spun a free crank to 10⁶ rad/s). Above: no piston outweighs a
+/// solid tungsten cylinder as long as its diameter (15 000 d³; a 49 kg piston of 38 mm was drawn).
+/// The presets have 600–1000.
+pub const PISTON_DENSITY: (f64, f64) = (40.0, 15_000.0);
 
 /// Crank angles over one revolution at which the contact problem's consistency is checked.
 const ANGLES: usize = 720;
@@ -89,7 +91,7 @@ pub(super) fn validate(p: &Parameters) -> Result<(), ModelError> {
 }
 
 /// The masses within `MAX_MASS_RATIO` of each other, the radii of gyration within `GYRATION`, the
-/// piston at least `MIN_PISTON_DENSITY`.
+/// piston's within `PISTON_DENSITY`.
 fn plausible_links(p: &Parameters) -> Result<(), ModelError> {
     let links = [
         ("piston", p.piston_mass, p.piston_inertia, p.piston_diameter, "piston_diameter"),
@@ -114,12 +116,13 @@ fn plausible_links(p: &Parameters) -> Result<(), ModelError> {
             )
         })?;
     }
-    let least = MIN_PISTON_DENSITY * p.piston_diameter.powi(3);
-    check(p.piston_mass >= least, || {
+    let cube = p.piston_diameter.powi(3);
+    let (least, most) = (PISTON_DENSITY.0 * cube, PISTON_DENSITY.1 * cube);
+    check((least..=most).contains(&p.piston_mass), || {
         format!(
-            "piston_mass ({} kg) must be at least {MIN_PISTON_DENSITY} kg/m³ × piston_diameter³ ({least} kg): a piston's crown, \
-             which carries the gas load, weighs more",
-            p.piston_mass
+            "piston_mass ({} kg) must lie within [{}, {}] kg/m³ × piston_diameter³ ([{least}, {most}] kg): a piston's crown, \
+             which carries the gas load, weighs more, and a solid tungsten cylinder as long as its diameter less",
+            p.piston_mass, PISTON_DENSITY.0, PISTON_DENSITY.1
         )
     })?;
     Ok(())

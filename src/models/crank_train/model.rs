@@ -452,7 +452,7 @@ mod tests {
 
     #[test]
     fn refuses_parameters_naming_them() {
-        let cases: [(Parameters, &str); 16] = [
+        let cases: [(Parameters, &str); 17] = [
             // The generic ranges.
             (Parameters { bore: 0.079, ..Parameters::default() }, "bore = 0.079 m must exceed piston_diameter = 0.08 m"),
             (Parameters { restitution: 1.2, ..Parameters::default() }, "restitution"),
@@ -478,8 +478,9 @@ mod tests {
             ),
             (
                 Parameters { piston_mass: 0.02, piston_inertia: 5e-5, ..Parameters::default() },
-                "piston_mass (0.02 kg) must be at least 40 kg/m³",
+                "piston_mass (0.02 kg) must lie within [40, 15000] kg/m³",
             ),
+            (Parameters { piston_mass: 8.0, ..Parameters::default() }, "piston_mass (8 kg) must lie within [40, 15000] kg/m³"),
             // A 1 kg rod 0.15 m long: √(J/m) = 0.151 m, just beyond its length.
             (Parameters { rod_inertia: 0.0228, ..Parameters::default() }, "outside [0.05, 1] × rod_length (0.15 m)"),
         ];
