@@ -63,47 +63,92 @@ impl Band {
         true
     }
 
-    /// Solves `L Lᵀ x = r` in place after [`Band::factor`].
-    pub(crate) fn solve(&self, r: &mut [f64]) {
+    /// Solves `L Lᵀ x = r` in place after [`Band::factor_from`] for `R` right-hand sides at once (column
+    /// c of every row is one of them): each column takes exactly the operations a lone solve would, the
+    /// columns interleaved so that their dependency chains overlap.
+    pub(crate) fn solve<const R: usize>(&self, r: &mut [[f64; R]]) {
         let (n, b, w) = (self.n, self.b, self.b + 1);
         for i in 0..n {
             let (row, first) = (i * w + b - i, i.saturating_sub(b));
-            let s = r[i] - dot(&self.data[row + first..row + i], &r[first..i]);
-            r[i] = s * self.inverse_diagonal[i];
+            let s = dot(&self.data[row + first..row + i], &r[first..i]);
+            for (x, s) in r[i].iter_mut().zip(s) {
+                *x = (*x - s) * self.inverse_diagonal[i];
+            }
         }
         for i in (0..n).rev() {
-            let s = r[i] * self.inverse_diagonal[i];
+            let s = r[i].map(|x| x * self.inverse_diagonal[i]);
             r[i] = s;
             let (row, first) = (i * w + b - i, i.saturating_sub(b));
-            for (x, l) in r[first..i].iter_mut().zip(&self.data[row + first..row + i]) {
-                *x -= l * s;
+            for (x, &l) in r[first..i].iter_mut().zip(&self.data[row + first..row + i]) {
+                for (x, s) in x.iter_mut().zip(s) {
+                    *x -= l * s;
+                }
             }
         }
     }
 }
 
-/// Σ aₖ bₖ in four interleaved partial sums (a fixed order, so every platform gets the same bits, and
+/// What [`dot`] sums: one number, or one per right-hand side.
+trait Lanes: Copy {
+    const ZERO: Self;
+    /// `self + a·b`, per column.
+    fn add_product(self, a: f64, b: Self) -> Self;
+    /// `self + other`, per column.
+    fn plus(self, other: Self) -> Self;
+}
+
+impl Lanes for f64 {
+    const ZERO: Self = 0.0;
+    #[inline(always)]
+    fn add_product(self, a: f64, b: Self) -> Self {
+        self + a * b
+    }
+    #[inline(always)]
+    fn plus(self, other: Self) -> Self {
+        self + other
+    }
+}
+
+impl<const R: usize> Lanes for [f64; R] {
+    const ZERO: Self = [0.0; R];
+    #[inline(always)]
+    fn add_product(mut self, a: f64, b: Self) -> Self {
+        for (x, b) in self.iter_mut().zip(b) {
+            *x += a * b;
+        }
+        self
+    }
+    #[inline(always)]
+    fn plus(mut self, other: Self) -> Self {
+        for (x, o) in self.iter_mut().zip(other) {
+            *x += o;
+        }
+        self
+    }
+}
+
+/// Σ aₖ bₖ (per column, for several right-hand sides) in four interleaved partial sums (a fixed order, so every platform gets the same bits, and
 /// one the compiler can keep in vector registers), then the last `len mod 4` terms in order. Indexed
 /// over slices cut to one length, so the short sums of a narrow band pay no iterator set-up.
 #[inline]
-fn dot(a: &[f64], b: &[f64]) -> f64 {
+fn dot<T: Lanes>(a: &[f64], b: &[T]) -> T {
     let n = a.len().min(b.len());
     let (a, b) = (&a[..n], &b[..n]);
     let whole = n & !3;
-    let mut acc = [0.0; 4];
+    let mut acc = [T::ZERO; 4];
     let mut k = 0;
     while k < whole {
-        acc[0] += a[k] * b[k];
-        acc[1] += a[k + 1] * b[k + 1];
-        acc[2] += a[k + 2] * b[k + 2];
-        acc[3] += a[k + 3] * b[k + 3];
+        acc[0] = acc[0].add_product(a[k], b[k]);
+        acc[1] = acc[1].add_product(a[k + 1], b[k + 1]);
+        acc[2] = acc[2].add_product(a[k + 2], b[k + 2]);
+        acc[3] = acc[3].add_product(a[k + 3], b[k + 3]);
         k += 4;
     }
-    let mut tail = 0.0;
+    let mut tail = T::ZERO;
     for k in whole..n {
-        tail += a[k] * b[k];
+        tail = tail.add_product(a[k], b[k]);
     }
-    (acc[0] + acc[1]) + (acc[2] + acc[3]) + tail
+    acc[0].plus(acc[1]).plus(acc[2].plus(acc[3])).plus(tail)
 }
 
 #[cfg(test)]
@@ -122,9 +167,9 @@ mod tests {
             }
         }
         assert!(a.factor_from(&[false; 9], 0));
-        let mut r = vec![1.0; n];
+        let mut r = vec![[1.0]; n];
         a.solve(&mut r);
-        for (i, x) in r.iter().enumerate() {
+        for (i, [x]) in r.iter().enumerate() {
             let k = (i + 1) as f64;
             assert!((x - k * (n as f64 + 1.0 - k) / 2.0).abs() < 1e-12, "{i}: {x}");
         }
