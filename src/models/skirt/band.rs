@@ -43,22 +43,29 @@ impl Band {
                 self.inverse_diagonal[i] = 1.0;
                 continue;
             }
-            let first = i.saturating_sub(b);
-            for (j, _) in identity.iter().enumerate().take(i + 1).skip(first).filter(|(_, &skip)| !skip) {
-                let start = first.max(j.saturating_sub(b));
-                let (row_i, row_j) = (i * w + b - i, j * w + b - j);
-                let s = self.data[row_i + j] - dot(&self.data[row_i + start..row_i + j], &self.data[row_j + start..row_j + j]);
-                if j < i {
-                    self.data[row_i + j] = s * self.inverse_diagonal[j];
-                } else {
-                    if s.is_nan() || s <= 0.0 {
-                        return false;
-                    }
-                    let d = s.sqrt();
-                    self.data[row_i + i] = d;
-                    self.inverse_diagonal[i] = 1.0 / d;
+            // Row i holds columns low ..= i from `offset` on; row j < i holds columns low .. j at
+            // `j·w + low + b − j ..`.
+            let low = i.saturating_sub(b);
+            let offset = low + b - i;
+            let (above, row) = self.data.split_at_mut(i * w);
+            let row = &mut row[offset..w];
+            for t in 0..i - low {
+                let j = low + t;
+                if identity[j] {
+                    continue;
                 }
+                let start = j * w + low + b - j;
+                let s = row[t] - dot(&row[..t], &above[start..start + t]);
+                row[t] = s * self.inverse_diagonal[j];
             }
+            let t = i - low;
+            let s = row[t] - dot(&row[..t], &row[..t]);
+            if s.is_nan() || s <= 0.0 {
+                return false;
+            }
+            let d = s.sqrt();
+            row[t] = d;
+            self.inverse_diagonal[i] = 1.0 / d;
         }
         true
     }
