@@ -1,4 +1,4 @@
-//! Cholesky factorisation of a symmetric positive definite band matrix, row by row.
+//! Cholesky factorisation of a symmetric positive definite band matrix, column by column (right-looking).
 
 /// A symmetric matrix of half bandwidth `b` (entries `(i, j)` with `|i − j| ≤ b`), stored by rows as
 /// its lower band, and factorised in place into `L Lᵀ`.
@@ -8,13 +8,15 @@ pub(crate) struct Band {
     b: usize,
     /// Row i holds columns i − b ..= i at `i·(b + 1) + (j + b − i)`.
     data: Vec<f64>,
-    /// 1 / L_ii after [`Band::factor`].
+    /// 1 / L_ii after [`Band::factor_from`].
     inverse_diagonal: Vec<f64>,
+    /// Column k of L below the diagonal while column k updates the rows below it.
+    column: Vec<f64>,
 }
 
 impl Band {
     pub(crate) fn new(n: usize, b: usize) -> Self {
-        Self { n, b, data: vec![0.0; n * (b + 1)], inverse_diagonal: vec![0.0; n] }
+        Self { n, b, data: vec![0.0; n * (b + 1)], inverse_diagonal: vec![0.0; n], column: vec![0.0; b] }
     }
 
     /// Clears every entry of rows `first..`.
@@ -29,43 +31,55 @@ impl Band {
     }
 
     /// Factorises into `L Lᵀ`; false if a pivot is not positive (the matrix is not positive definite).
-    /// Rows marked in `identity` must hold the identity (1 on the diagonal, 0 elsewhere): their work is
-    /// skipped, with the same result bit for bit (their rows of L are the identity's, and their columns
-    /// of L below them stay 0).
+    /// Right-looking: once column k of L is known, it updates the rows below it,
+    /// `a_ij −= L_ik·L_jk` for k < j ≤ i ≤ k + b (contiguous runs of a row, no chain of dependent
+    /// sums), so every entry takes its updates one by one in the order of k. Rows marked in
+    /// `identity` must hold the identity (1 on the diagonal, 0 elsewhere): their work is skipped
+    /// (their rows of L are the identity's, and their columns of L below them stay 0).
     ///
     /// Only rows `first..` are factorised: row i of L depends on rows ..= i of the matrix alone, so
     /// when the matrix changed from row `first` on since a factorisation, rows `..first` of that
-    /// factorisation stand and the result is the full factorisation's bit for bit.
+    /// factorisation stand; the columns `first − b .. first` then update the rows from `first` on
+    /// as they would in a full factorisation, in the same order, and the result is the full
+    /// factorisation's bit for bit.
     pub(crate) fn factor_from(&mut self, identity: &[bool], first: usize) -> bool {
         let (n, b, w) = (self.n, self.b, self.b + 1);
-        for i in first..n {
-            if identity[i] {
-                self.inverse_diagonal[i] = 1.0;
+        for k in first.saturating_sub(b)..n {
+            if identity[k] {
+                self.inverse_diagonal[k] = 1.0;
                 continue;
             }
-            // Row i holds columns low ..= i from `offset` on; row j < i holds columns low .. j at
-            // `j·w + low + b − j ..`.
-            let low = i.saturating_sub(b);
-            let offset = low + b - i;
-            let (above, row) = self.data.split_at_mut(i * w);
-            let row = &mut row[offset..w];
-            for t in 0..i - low {
-                let j = low + t;
-                if identity[j] {
+            if k >= first {
+                let s = self.data[k * w + b];
+                if s.is_nan() || s <= 0.0 {
+                    return false;
+                }
+                let d = s.sqrt();
+                self.data[k * w + b] = d;
+                self.inverse_diagonal[k] = 1.0 / d;
+            }
+            let inverse = self.inverse_diagonal[k];
+            let below = b.min(n - 1 - k);
+            // Row i = k + 1 + m holds column k at i·w + b − 1 − m; rows above `first` hold L already.
+            for m in 0..below {
+                let (i, at) = (k + 1 + m, (k + 1 + m) * w + b - 1 - m);
+                if i >= first {
+                    self.data[at] *= inverse;
+                }
+                self.column[m] = self.data[at];
+            }
+            for m in 0..below {
+                let i = k + 1 + m;
+                if i < first || identity[i] {
                     continue;
                 }
-                let start = j * w + low + b - j;
-                let s = row[t] - dot(&row[..t], &above[start..start + t]);
-                row[t] = s * self.inverse_diagonal[j];
+                let l = self.column[m];
+                // Columns k + 1 ..= i of row i.
+                let row = &mut self.data[i * w + b - m..i * w + w];
+                for (x, &c) in row.iter_mut().zip(&self.column[..=m]) {
+                    *x -= l * c;
+                }
             }
-            let t = i - low;
-            let s = row[t] - dot(&row[..t], &row[..t]);
-            if s.is_nan() || s <= 0.0 {
-                return false;
-            }
-            let d = s.sqrt();
-            row[t] = d;
-            self.inverse_diagonal[i] = 1.0 / d;
         }
         true
     }
