@@ -84,10 +84,10 @@ impl Band {
         true
     }
 
-    /// Solves `L Lᵀ x = r` in place after [`Band::factor_from`] for `R` right-hand sides at once (column
-    /// c of every row is one of them): each column takes exactly the operations a lone solve would, the
-    /// columns interleaved so that their dependency chains overlap.
-    pub(crate) fn solve<const R: usize>(&self, r: &mut [[f64; R]]) {
+    /// Forward substitution `L y = r` in place after [`Band::factor_from`], for `R` right-hand sides at
+    /// once (column c of every row is one of them): each column takes exactly the operations a lone one
+    /// would, the columns interleaved so that their dependency chains overlap.
+    pub(crate) fn forward<const R: usize>(&self, r: &mut [[f64; R]]) {
         let (n, b, w) = (self.n, self.b, self.b + 1);
         for i in 0..n {
             let (row, first) = (i * w + b - i, i.saturating_sub(b));
@@ -96,14 +96,18 @@ impl Band {
                 *x = (*x - s) * self.inverse_diagonal[i];
             }
         }
+    }
+
+    /// Back substitution `Lᵀ x = y` in place on column `c` of `r`: with [`Band::forward`] it solves
+    /// `L Lᵀ x = r`.
+    pub(crate) fn backward<const R: usize>(&self, r: &mut [[f64; R]], c: usize) {
+        let (n, b, w) = (self.n, self.b, self.b + 1);
         for i in (0..n).rev() {
-            let s = r[i].map(|x| x * self.inverse_diagonal[i]);
-            r[i] = s;
+            let s = r[i][c] * self.inverse_diagonal[i];
+            r[i][c] = s;
             let (row, first) = (i * w + b - i, i.saturating_sub(b));
             for (x, &l) in r[first..i].iter_mut().zip(&self.data[row + first..row + i]) {
-                for (x, s) in x.iter_mut().zip(s) {
-                    *x -= l * s;
-                }
+                x[c] -= l * s;
             }
         }
     }
@@ -189,7 +193,8 @@ mod tests {
         }
         assert!(a.factor_from(&[false; 9], 0));
         let mut r = vec![[1.0]; n];
-        a.solve(&mut r);
+        a.forward(&mut r);
+        a.backward(&mut r, 0);
         for (i, [x]) in r.iter().enumerate() {
             let k = (i + 1) as f64;
             assert!((x - k * (n as f64 + 1.0 - k) / 2.0).abs() < 1e-12, "{i}: {x}");

@@ -171,7 +171,7 @@ pub(crate) struct Reynolds {
     /// Face conductances `h³/(12μ)·(face length)/(node distance)`, x then z faces, as in [`Film`].
     cx: Vec<f64>,
     cz: Vec<f64>,
-    /// Band order: the pressure's right-hand side, then up to [`EXTRA`] others, solved together.
+    /// Band order: the pressure's right-hand side, then up to [`EXTRA`] others (forward-substituted only).
     work: Vec<[f64; 1 + EXTRA]>,
     /// Cavitated rows in band order (identity rows of the reduced matrix).
     identity: Vec<bool>,
@@ -179,6 +179,8 @@ pub(crate) struct Reynolds {
     pub pressure: Vec<f64>,
     /// The last solve's film nodes (false: cavitated, p = 0), the next solve's starting set.
     pub free: Vec<bool>,
+    /// The last solve's `rᵢᵀ A⁻¹ rⱼ` of its extra right-hand sides (0 beyond those given).
+    pub gram: [[f64; EXTRA]; EXTRA],
 }
 
 /// Right-hand sides a solve takes besides the pressure's (the skirt's two damping rates).
@@ -207,15 +209,17 @@ impl Reynolds {
             identity: vec![false; n],
             pressure: vec![0.0; n],
             free: vec![true; n],
+            gram: [[0.0; EXTRA]; EXTRA],
         }
     }
 
     /// Solves for the pressure (into `pressure`, node order j·nx + i) of `film` and right-hand side `b`,
-    /// the set of film nodes into `free`; then replaces each of `extra` (at most [`EXTRA`]) by the
-    /// solution of the same reduced system with it as the right-hand side (zero on cavitated nodes).
-    /// Every active-set step solves the extras beside the pressure, in one pass over the factor: the
-    /// last step's are the answer (most evaluations take one step). Returns the active-set steps taken.
-    pub(crate) fn solve(&mut self, film: &Film, viscosity: f64, b: &[f64], cavitation: Cavitation, extra: &mut [&mut [f64]]) -> usize {
+    /// the set of film nodes into `free`, and for `extra` (at most [`EXTRA`] right-hand sides r, zero on
+    /// cavitated nodes) the products `rᵢᵀ A⁻¹ rⱼ` of the reduced matrix A into `gram`: with A = L Lᵀ
+    /// they are `(L⁻¹rᵢ)·(L⁻¹rⱼ)`, a forward substitution each, taken in the same pass over the factor
+    /// as the pressure's on every active-set step (most evaluations take one). Returns the active-set
+    /// steps taken.
+    pub(crate) fn solve(&mut self, film: &Film, viscosity: f64, b: &[f64], cavitation: Cavitation, extra: &[&[f64]]) -> usize {
         assert!(extra.len() <= EXTRA, "at most {EXTRA} extra right-hand sides");
         self.conductances(film, viscosity);
         let (mut p, mut free) = (std::mem::take(&mut self.pressure), std::mem::take(&mut self.free));
@@ -223,12 +227,9 @@ impl Reynolds {
             free.fill(true);
         }
         let steps = self.active_set((b, extra), cavitation, &mut p, &mut free);
-        let g = &self.grid;
-        for (c, r) in extra.iter_mut().enumerate() {
-            for j in 0..g.nz {
-                for i in 0..g.nx {
-                    r[j * g.nx + i] = self.work[g.index(i, j)][1 + c];
-                }
+        for (a, row) in self.gram.iter_mut().enumerate() {
+            for (c, g) in row.iter_mut().enumerate() {
+                *g = self.work.iter().map(|y| y[1 + a] * y[1 + c]).sum();
             }
         }
         (self.pressure, self.free) = (p, free);
@@ -236,8 +237,8 @@ impl Reynolds {
     }
 
     /// The primal–dual active-set iteration from the set in `free`; the factorisation of the last set
-    /// stays in `matrix`, the last step's solutions (pressure, extras) in `work`.
-    fn active_set(&mut self, (b, extra): (&[f64], &[&mut [f64]]), cavitation: Cavitation, p: &mut [f64], free: &mut [bool]) -> usize {
+    /// stays in `matrix`, the last step's forward-substituted extras in `work`.
+    fn active_set(&mut self, (b, extra): (&[f64], &[&[f64]]), cavitation: Cavitation, p: &mut [f64], free: &mut [bool]) -> usize {
         let n = self.grid.len();
         let scale_b = b.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
         let mut steps = 0;
@@ -266,7 +267,8 @@ impl Reynolds {
                     self.work[g.index(i, j)] = column;
                 }
             }
-            self.matrix.solve(&mut self.work);
+            self.matrix.forward(&mut self.work);
+            self.matrix.backward(&mut self.work, 0);
             for j in 0..g.nz {
                 for i in 0..g.nx {
                     p[j * g.nx + i] = self.work[g.index(i, j)][0];

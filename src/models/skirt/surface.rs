@@ -164,9 +164,11 @@ impl Skirt {
                 }
             }
             s.film.add_wedge(&self.grid, (0.0, 0.5 * v), &mut s.rhs);
-            out.factorisations[side_index] =
-                s.reynolds[side_index].solve(&s.film, mu, &s.rhs, Cavitation::Reynolds, &mut [&mut s.rate_x, &mut s.rate_tilt]);
-            let (pressure, free) = (&s.reynolds[side_index].pressure, &s.reynolds[side_index].free);
+            let reynolds = &mut s.reynolds[side_index];
+            out.factorisations[side_index] = reynolds.solve(&s.film, mu, &s.rhs, Cavitation::Reynolds, &[&s.rate_x, &s.rate_tilt]);
+            // D = −∂(F, M)/∂(ẋ, φ̇3) = gᵀ A⁻¹ g with g = ∂(F, M)/∂p = (∂h/∂x, ∂h/∂φ3) ΔA = −(the rates' right-hand sides).
+            damping += Matrix2::from_fn(|a, c| reynolds.gram[a][c]);
+            let (pressure, free) = (&reynolds.pressure, &reynolds.free);
             for (j, &(_, (alpha, beta), z, r)) in node_rows.iter().enumerate() {
                 for (i, &(c, _)) in side.nodes.iter().enumerate() {
                     let k = j * nx + i;
@@ -174,10 +176,6 @@ impl Skirt {
                     let (dh_dx, dh_dtilt) = (-c, alpha + beta * c);
                     out.film_force += p * dh_dx * area;
                     out.moment += p * dh_dtilt * area;
-                    for (col, q) in [&s.rate_x, &s.rate_tilt].into_iter().enumerate() {
-                        damping[(0, col)] -= q[k] * dh_dx * area;
-                        damping[(1, col)] -= q[k] * dh_dtilt * area;
-                    }
                     out.squeeze_power += p * s.rhs[k];
                     // The pressure's net axial push on the profiled skirt along +y, ½ p ∂h/∂u (normal
                     // pressure on the slope plus the Poiseuille shear; its power is the wedge's work).
