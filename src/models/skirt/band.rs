@@ -98,16 +98,15 @@ impl Band {
         }
     }
 
-    /// Back substitution `Lᵀ x = y` in place on column `c` of `r`: with [`Band::forward`] it solves
-    /// `L Lᵀ x = r`.
-    pub(crate) fn backward<const R: usize>(&self, r: &mut [[f64; R]], c: usize) {
+    /// Back substitution `Lᵀ x = y` in place: after [`Band::forward`] it solves `L Lᵀ x = r`.
+    pub(crate) fn backward(&self, r: &mut [f64]) {
         let (n, b, w) = (self.n, self.b, self.b + 1);
         for i in (0..n).rev() {
-            let s = r[i][c] * self.inverse_diagonal[i];
-            r[i][c] = s;
+            let s = r[i] * self.inverse_diagonal[i];
+            r[i] = s;
             let (row, first) = (i * w + b - i, i.saturating_sub(b));
             for (x, &l) in r[first..i].iter_mut().zip(&self.data[row + first..row + i]) {
-                x[c] -= l * s;
+                *x -= l * s;
             }
         }
     }
@@ -194,8 +193,9 @@ mod tests {
         assert!(a.factor_from(&[false; 9], 0));
         let mut r = vec![[1.0]; n];
         a.forward(&mut r);
-        a.backward(&mut r, 0);
-        for (i, [x]) in r.iter().enumerate() {
+        let mut r: Vec<f64> = r.iter().map(|[x]| *x).collect();
+        a.backward(&mut r);
+        for (i, x) in r.iter().enumerate() {
             let k = (i + 1) as f64;
             assert!((x - k * (n as f64 + 1.0 - k) / 2.0).abs() < 1e-12, "{i}: {x}");
         }

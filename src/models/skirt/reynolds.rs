@@ -173,6 +173,8 @@ pub(crate) struct Reynolds {
     cz: Vec<f64>,
     /// Band order: the pressure's right-hand side, then up to [`EXTRA`] others (forward-substituted only).
     work: Vec<[f64; 1 + EXTRA]>,
+    /// Band order: the pressure's column of `work`, back-substituted on its own (contiguous).
+    back: Vec<f64>,
     /// Cavitated rows in band order (identity rows of the reduced matrix).
     identity: Vec<bool>,
     /// The last solve's pressures, Pa, node order j·nx + i.
@@ -206,6 +208,7 @@ impl Reynolds {
             cx,
             cz,
             work: vec![[0.0; 1 + EXTRA]; n],
+            back: vec![0.0; n],
             identity: vec![false; n],
             pressure: vec![0.0; n],
             free: vec![true; n],
@@ -268,10 +271,13 @@ impl Reynolds {
                 }
             }
             self.matrix.forward(&mut self.work);
-            self.matrix.backward(&mut self.work, 0);
+            for (x, y) in self.back.iter_mut().zip(&self.work) {
+                *x = y[0];
+            }
+            self.matrix.backward(&mut self.back);
             for j in 0..g.nz {
                 for i in 0..g.nx {
-                    p[j * g.nx + i] = self.work[g.index(i, j)][0];
+                    p[j * g.nx + i] = self.back[g.index(i, j)];
                 }
             }
             if cavitation == Cavitation::None || steps > n {
