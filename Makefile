@@ -78,10 +78,12 @@ bench:
 # revolution (about 10 minutes on the 2-CPU machine, the roller being the longest).
 # 10⁴ random designs of the declared space (tests/common/designs.rs `declared`), then the same designs with ramping
 # inputs (`declared ramped`), every output checked at every step and each run's state restored halfway: the
-# failures and the count (about 30 minutes on the 2-CPU machine).
+# failures and the count; then 10⁴ with nothing doing work on them (`declared conservative`): their worst energy
+# balance without and with friction (about an hour on the 2-CPU machine).
 designs:
 	cargo run --release --example random_designs -- 10000 0 declared
 	cargo run --release --example random_designs -- 10000 0 "declared ramped"
+	cargo run --release --example random_designs -- 10000 0 "declared conservative"
 
 soak:
 	cargo run --release --example soak -- 10000 1000000

@@ -1,12 +1,14 @@
 //! Runs N seeded random designs of each family (`tests/common/designs.rs`) and reports every one
-//! that fails, and the sliders' worst energy balance: the sweep behind the suite's smaller
-//! random-design test.
+//! that fails, and the worst energy balance of the families nothing does work on, without and with
+//! liner friction: the sweep behind the suite's smaller random-design test.
 //! `cargo run --release --example random_designs -- 2000 [first_seed [family]]`
 
 #[path = "../tests/common/designs.rs"]
 mod designs;
 
-use designs::{declared, declared_ramped, engine, lubricated_engine, rubbing_engine, rubbing_slider, run, slider, Random};
+use designs::{
+    declared, declared_conservative, declared_ramped, engine, lubricated_engine, rubbing_engine, rubbing_slider, run, slider, Random,
+};
 use std::time::Instant;
 
 fn main() {
@@ -20,16 +22,19 @@ fn main() {
         ("rubbing slider", rubbing_slider),
         ("declared", declared),
         ("declared ramped", declared_ramped),
+        ("declared conservative", declared_conservative),
         ("lubricated engine", lubricated_engine),
     ];
     for (family, make) in families.into_iter().filter(|(family, _)| only.as_deref().is_none_or(|o| o == *family)) {
-        let (start, mut failed, mut events, mut worst) = (Instant::now(), 0, 0, 0.0_f64);
+        // The worst |energy balance| of the designs without and with liner friction.
+        let (start, mut failed, mut events, mut worst) = (Instant::now(), 0, 0, [0.0_f64; 2]);
         for seed in first..first + n {
             let design = make(&mut Random::new(seed));
             match run(&design) {
                 Ok(finished) => {
                     events += finished.events.len();
-                    worst = worst.max(finished.energy_balance().abs());
+                    let rubbing = usize::from(design.params.friction > 0.0);
+                    worst[rubbing] = worst[rubbing].max(finished.energy_balance().abs());
                 }
                 Err(e) => {
                     failed += 1;
@@ -38,8 +43,13 @@ fn main() {
             }
         }
         let elapsed = start.elapsed().as_secs_f64();
-        // Only the sliders are free of damping, gas and gravity: the engines' balance holds their work.
-        let balance = if family.ends_with("slider") { format!(", worst |energy balance| {worst:.1e}") } else { String::new() };
+        // Only the sliders and the conservative declared designs are free of damping, gas and gravity:
+        // the engines' balance holds their work.
+        let balance = if family.ends_with("slider") || family.ends_with("conservative") {
+            format!(", worst |energy balance| {:.1e} frictionless, {:.1e} with friction", worst[0], worst[1])
+        } else {
+            String::new()
+        };
         println!("{family}: {n} designs, {failed} failed, {events} events{balance}, {elapsed:.1} s");
     }
 }

@@ -4,7 +4,8 @@
 //! and sliding starts dissipated. `tools/random_designs.rs` runs the same families by the thousand.
 
 use crate::common::designs::{
-    declared, declared_ramped, engine, lubricated_engine, rubbing_engine, rubbing_slider, run, slider, Design, Finished, Random,
+    declared, declared_conservative, declared_ramped, engine, lubricated_engine, rubbing_engine, rubbing_slider, run, slider, Design,
+    Finished, Random,
 };
 
 const DESIGNS: u64 = 250;
@@ -96,7 +97,9 @@ fn random_rubbing_sliders_all_run_and_balance_their_energy() {
     assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
-/// Declared designs beyond the first `DESIGNS` that a larger sweep found failing once: 436, 455
+/// Declared designs beyond the first `DESIGNS` that a larger sweep found failing once, while the
+/// declared radii of gyration reached down to 0.001 of a link's length (at 0.05 since, the seeds draw
+/// other designs, kept as a sample): 436, 455
 /// and 539, two diagonal corners slipping together through a dead centre of the crank, where the
 /// slip reverses with the geometry and friction hardly changes its acceleration (the Coulomb law
 /// kept the slip the motion leaves, and its watch crossed again at once, 10⁴ times); 559, a held
@@ -113,7 +116,8 @@ const DECLARED_FOUND_BY_LARGER_SWEEPS: [u64; 24] = [
     5179,
 ];
 
-/// Ramped declared designs beyond the first `RAMPED_DESIGNS` that `make designs` found failing: 718,
+/// Ramped declared designs beyond the first `RAMPED_DESIGNS` that `make designs` found failing (under
+/// the earlier bounds, as above): 718,
 /// 1734, 1827 and 1937, a sticking corner at the edge of its friction cone (as 472 above); 1635 and
 /// 3211, a stick of a diagonal pair of corners 3e-5 N and 9e-7 N outside its cone, within the
 /// Coulomb law's tolerance and beyond the event search's, found crossed again at every event.
@@ -138,6 +142,15 @@ fn random_designs_of_the_declared_space_run_and_agree_with_the_model() {
 fn declared_designs_with_ramping_inputs_run_and_agree_with_the_model() {
     let failed = failures_of((0..RAMPED_DESIGNS).chain(RAMPED_FOUND_BY_LARGER_SWEEPS), declared_ramped, |_, _| Ok(()));
     assert!(failed.is_empty(), "{} of {RAMPED_DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
+}
+
+/// Declared designs with nothing doing work on them (free crank, no load, gas, damping or gravity):
+/// their kinetic energy at the end plus what impacts and sliding dissipated is their energy at the
+/// start, with liner friction as without (`make designs` gives the worst of 10⁴).
+#[test]
+fn declared_designs_that_nothing_works_on_balance_their_energy() {
+    let failed = failures_of(0..DESIGNS, declared_conservative, balanced);
+    assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
 /// The speed of the fastest impact of a run, m/s.

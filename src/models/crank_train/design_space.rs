@@ -24,11 +24,14 @@ pub const MIN_CLEARANCE: f64 = 1e-6;
 pub const MAX_MASS_RATIO: f64 = 1e3;
 
 /// Bounds on each link's radius of gyration about its centre of mass, √(J/m), as multiples of its
-/// length (piston: `piston_diameter`, rod: `rod_length`, crank: `crank_radius`; the crank's upper
-/// bound is larger, for a flywheel on the shaft). A rod's mass lies within its length of its centre
-/// of mass, so its radius of gyration cannot exceed it: a rod of 10 × (a random design's) spun a
-/// light piston into a rattle between two corners that its crank fed until the state went non-finite.
-const GYRATION: [(f64, f64); 3] = [(1e-3, 10.0), (1e-3, 1.0), (1e-3, 100.0)];
+/// length (piston: `piston_diameter`, rod: `rod_length`, crank: `crank_radius`). Below: a link's
+/// mass spans its length (the crown its diameter, the rod its two eyes, the crank its journal and
+/// pin), so none of them has its mass within 5 % of that length of one point (the presets' smallest
+/// is the Flores slider's piston, 0.12). Such links made the slipping contact problem inconsistent
+/// off-centre, and a piston of 0.001 × d broke the event tolerances. Above: a piston's mass and a
+/// rod's lie within their length of their centre of mass, so √(J/m) cannot exceed it (the defaults
+/// have 0.63 and 0.58); the crank's bound is larger, for a flywheel on the shaft.
+const GYRATION: [(f64, f64); 3] = [(0.05, 1.0), (0.05, 1.0), (0.05, 100.0)];
 
 /// Crank angles over one revolution at which the contact problem's consistency is checked.
 const ANGLES: usize = 720;
@@ -128,32 +131,65 @@ pub(super) fn consistent_friction(linkage: &Linkage, p: &Parameters) -> Result<(
     )))
 }
 
-/// The first crank angle at which the slipping contact problem at `mu` is not a P-matrix, if any.
+/// The first crank angle at which the slipping contact problem at `mu` is not a P-matrix, with the
+/// piston centred or in one of its touching poses (`Linkage::touching_poses`), if any.
 fn inconsistency(linkage: &Linkage, p: &Parameters, mu: f64) -> Option<f64> {
     let geometry = SliderCrank { crank_radius: p.crank_radius, rod_length: p.rod_length, pin_offset: p.pin_offset };
     let free = if p.crank_mode == 1 { 1 } else { 0 };
-    let sets: [&[usize]; 8] = [&[0], &[1], &[2], &[3], &[0, 1], &[2, 3], &[0, 3], &[1, 2]];
     (0..ANGLES).map(|k| 2.0 * PI * k as f64 / ANGLES as f64).find(|&angle| {
-        let phi = Vector3::new(angle, geometry.at(angle).rod_angle, 0.0);
-        let ev = linkage.evaluate(&phi, &Vector3::zeros(), Loads { gas_force: 0.0, load_torque: 0.0 });
-        let tangents = linkage.tangents(&phi, &Vector3::zeros());
-        let n = 3 - free;
-        let mass = DMatrix::from_fn(n, n, |i, j| ev.mass[(i + free, j + free)]);
-        let normal = DMatrix::from_fn(4, n, |i, j| ev.gap_jacobian[(i, j + free)]);
-        let tangent = DMatrix::from_fn(4, n, |i, j| tangents.jacobian[(i, j + free)]);
-        let Some(inverse) = mass.try_inverse() else { return true };
-        let (w, t) = (&normal * &inverse * normal.transpose(), &normal * &inverse * tangent.transpose());
-        sets.iter().any(|set| {
-            (0..1 << set.len()).any(|signs: usize| {
-                let a = |r: usize, c: usize| {
-                    let s = if signs >> c & 1 == 1 { -1.0 } else { 1.0 };
-                    w[(set[r], set[c])] - mu * s * t[(set[r], set[c])]
-                };
-                match set.len() {
-                    1 => a(0, 0) <= 0.0,
-                    _ => a(0, 0) <= 0.0 || a(1, 1) <= 0.0 || a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0) <= 0.0,
-                }
-            })
+        let centred = Vector3::new(angle, geometry.at(angle).rod_angle, 0.0);
+        std::iter::once(centred).chain(linkage.touching_poses(angle)).any(|phi| inconsistent_at(linkage, &phi, free, mu))
+    })
+}
+
+/// Whether the slipping contact problem at pose `phi` and `mu` fails to be a P-matrix for some set
+/// and sign pattern; the first `free` coordinates are the ones the crank mode prescribes.
+fn inconsistent_at(linkage: &Linkage, phi: &Vector3<f64>, free: usize, mu: f64) -> bool {
+    let sets: [&[usize]; 8] = [&[0], &[1], &[2], &[3], &[0, 1], &[2, 3], &[0, 3], &[1, 2]];
+    let ev = linkage.evaluate(phi, &Vector3::zeros(), Loads { gas_force: 0.0, load_torque: 0.0 });
+    let tangents = linkage.tangents(phi, &Vector3::zeros());
+    let n = 3 - free;
+    let mass = DMatrix::from_fn(n, n, |i, j| ev.mass[(i + free, j + free)]);
+    let normal = DMatrix::from_fn(4, n, |i, j| ev.gap_jacobian[(i, j + free)]);
+    let tangent = DMatrix::from_fn(4, n, |i, j| tangents.jacobian[(i, j + free)]);
+    let Some(inverse) = mass.try_inverse() else { return true };
+    let (w, t) = (&normal * &inverse * normal.transpose(), &normal * &inverse * tangent.transpose());
+    sets.iter().any(|set| {
+        (0..1 << set.len()).any(|signs: usize| {
+            let a = |r: usize, c: usize| {
+                let s = if signs >> c & 1 == 1 { -1.0 } else { 1.0 };
+                w[(set[r], set[c])] - mu * s * t[(set[r], set[c])]
+            };
+            match set.len() {
+                1 => a(0, 0) <= 0.0,
+                _ => a(0, 0) <= 0.0 || a(1, 1) <= 0.0 || a(0, 0) * a(1, 1) - a(0, 1) * a(1, 0) <= 0.0,
+            }
         })
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The default piston has four touching poses at every crank angle: flat against either wall
+    /// and tilted across either diagonal, each with two corners on the liner and the other two about
+    /// the diametral clearance 2c off it.
+    #[test]
+    fn touching_poses_put_two_corners_on_the_liner_and_none_outside() {
+        let p = Parameters::default();
+        let linkage = Linkage::new(&p);
+        let clearance = 0.5 * (p.bore - p.piston_diameter);
+        for angle in [0.0, 0.7, 2.0, PI, 4.5] {
+            let poses = linkage.touching_poses(angle);
+            let touching: Vec<Vec<usize>> =
+                poses.iter().map(|pose| (0..4).filter(|&i| linkage.gaps(pose)[i] < 1e-12 * p.bore).collect()).collect();
+            assert_eq!(touching, [vec![0, 1], vec![0, 3], vec![1, 2], vec![2, 3]], "at {angle} rad");
+            for pose in &poses {
+                let gaps = linkage.gaps(pose);
+                // A tilted piston's projection is narrower: the free corners lie up to 1e-3 beyond 2c.
+                assert!(gaps.min() > -1e-15 && gaps.max() < 2.0 * clearance * 1.001, "at {angle} rad: {gaps:?}");
+            }
+        }
+    }
 }

@@ -196,6 +196,40 @@ impl Linkage {
         self.corner_gaps(-l1 * trig::sin_cos(phi[0]).0 - l2 * trig::small_sin_cos(phi[1]).0, s3, c3)
     }
 
+    /// The poses (φ2, φ3) at crank angle φ1 in which two corners touch the liner and none is outside
+    /// it: the vertices of the region the clearance leaves the piston (a wall's pair flat against it,
+    /// a diagonal pair at the largest tilt).
+    pub fn touching_poses(&self, phi1: f64) -> Vec<Vector3<f64>> {
+        let [l1, l2] = self.bodies.links;
+        let corners = self.bodies.corners;
+        let mut poses = Vec::new();
+        for i in 0..4 {
+            for j in i + 1..4 {
+                let ((zi, wi, si), (zj, wj, sj)) = (corners[i], corners[j]);
+                if zi == zj {
+                    continue; // Two corners at one height touch opposite walls only without clearance.
+                }
+                // Gap zero: x − z s3 = −R·side − w c3; solved for (x, s3), c3 from the s3 found.
+                let (mut x, mut s3, mut c3) = (0.0, 0.0, 1.0);
+                for _ in 0..3 {
+                    let (ri, rj) = (-0.5 * self.bodies.bore * si - wi * c3, -0.5 * self.bodies.bore * sj - wj * c3);
+                    s3 = (ri - rj) / (zj - zi);
+                    x = ri + zi * s3;
+                    c3 = (1.0 - s3 * s3).max(0.0).sqrt();
+                }
+                let rod = -(x + l1 * libm::sin(phi1)) / l2;
+                if rod.abs() >= 1.0 || s3.abs() >= 1.0 {
+                    continue;
+                }
+                let pose = Vector3::new(phi1, libm::asin(rod), libm::asin(s3));
+                if self.gaps(&pose).min() >= -1e-9 * self.bodies.bore {
+                    poses.push(pose);
+                }
+            }
+        }
+        poses
+    }
+
     /// Gaps from the pin's lateral position and the piston tilt's sine and cosine.
     fn corner_gaps(&self, x_pin: f64, s3: f64, c3: f64) -> Vector4<f64> {
         Vector4::from_fn(|i, _| {
