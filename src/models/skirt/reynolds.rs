@@ -16,8 +16,8 @@
 //! for an M-matrix ends in finitely many steps at the exact solution of the discrete problem, from any
 //! starting set (a solve starts from its workspace's last set); the last step is a direct (band
 //! Cholesky) solve on the converged set, so the result depends on the set alone, and the same
-//! factorisation solves the damping's right-hand sides. A step refactorises only from the first band
-//! row its set changes touch.
+//! factorisation gives the damping (`gᵀA⁻¹g = |L⁻¹g|²`, forward substitutions only). A step
+//! refactorises only from the first band row its set changes touch.
 //!
 //! Why not mass-conserving JFO (Elrod–Adams): the Reynolds condition places the rupture boundary where
 //! the film's pressure gradient vanishes, which is exact for rupture, but it does not conserve mass
