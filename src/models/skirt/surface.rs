@@ -154,12 +154,12 @@ impl Skirt {
             ((d.radius_bore - r * c3, -(m.lateral - z * s3 - a_pin * c3)), (r * s3, z * c3 - a_pin * s3), z, r)
         };
         let s = &mut *self.scratch.borrow_mut();
-        let fill = |target: &mut Vec<RowTerms>, rows: &[(f64, f64)]| {
+        let tabulate = |target: &mut Vec<RowTerms>, rows: &[(f64, f64)]| {
             target.clear();
             target.extend(rows.iter().map(terms));
         };
-        fill(&mut s.node_rows, &self.rows.nodes);
-        fill(&mut s.closed_rows, &self.rows.closed);
+        tabulate(&mut s.node_rows, &self.rows.nodes);
+        tabulate(&mut s.closed_rows, &self.rows.closed);
         s.film_rows.clear();
         s.film_rows.extend(s.node_rows.iter().map(|t| t.0));
         s.face_rows.clear();
