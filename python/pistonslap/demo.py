@@ -3,11 +3,13 @@
     pistonslap demo [--engine NAME] [--params FILE.toml] [--set NAME=VALUE ...] [--pressure-trace FILE]
                     [--firing-tdc DEG] [--friction MU] [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM]
                     [--restitution E] [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S] [--crank-0-720]
+                    [--skirt-map DEG]
 
 Values apply in that order, a later one over an earlier one: the engine preset, the parameter file, then the options.
 What none sets keeps the FMU's default (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
 """
 
+import os
 from pathlib import Path
 
 import fmpy
@@ -68,6 +70,13 @@ def _parser():
     parser.add_argument(
         "--slap-threshold", type=float, help="impacts faster than this count as slaps, mm/s (default 10)"
     )
+    parser.add_argument(
+        "--skirt-map",
+        type=float,
+        metavar="DEG",
+        help="lubricated skirt (skirt_model = 2): map its film pressure at this crank angle (0 = firing TDC) of the "
+        "last cycle into skirt_map.csv and skirt_map.png",
+    )
     return parser
 
 
@@ -86,6 +95,8 @@ def check(args):
         )
     if args.cycles < 1:
         raise Refusal(f"--cycles = {args.cycles}: give a whole number of engine cycles >= 1")
+    if args.skirt_map is not None:
+        number(args.skirt_map, "--skirt-map", unit="°", meaning="the crank angle of the skirt map")
     if args.firing_tdc is not None:
         if args.pressure_trace is None:
             raise Refusal("--firing-tdc places the firing TDC of a --pressure-trace: give the trace")
@@ -107,6 +118,11 @@ def all_start_values(args, md, defaults):
     if args.friction is not None:
         values["friction"] = number(args.friction, "--friction", low=0, meaning="the friction coefficient")
     values.update(parse_set(args.set, md))
+    if args.skirt_map is not None:
+        values.update(
+            skirt_map=str((args.out / "skirt_map.csv").resolve()),
+            skirt_map_crank_angle=np.radians(args.skirt_map % 720),
+        )
     return to_fmu(values, defaults), placed
 
 
@@ -163,13 +179,14 @@ def main(argv=None):
     args = _parser().parse_args(argv)
     check(args)
     try:
-        from . import plots
+        from . import plots, skirt_map
     except ImportError as e:
         raise Refusal(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
     md = fmpy.read_model_description(str(fmu_path()))
     defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
     values, placed = all_start_values(args, md, defaults)
-    check_start_values(values, fmu_path(), md)
+    # Checked before anything is written: the skirt map's file is the null device until the run.
+    check_start_values(dict(values, skirt_map=os.devnull) if "skirt_map" in values else values, fmu_path(), md)
     if placed:
         print(placed)
     p = dict(defaults, **values)
@@ -232,6 +249,11 @@ def main(argv=None):
     ]
     if p.get("skirt_model") == 2:
         written.append(plots.film(angle[cycle], result[cycle], args.out / "film.png", case, origin))
+    if args.skirt_map is not None:
+        written += [
+            args.out / "skirt_map.csv",
+            skirt_map.plot(skirt_map.read(args.out / "skirt_map.csv"), args.out / "skirt_map.png", case),
+        ]
     print(
         f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. " + summary(result[-1])
     )

@@ -8,8 +8,9 @@ from pathlib import Path
 
 import matplotlib.pyplot as plt
 import numpy as np
+import pytest
 
-from pistonslap import plots
+from pistonslap import plots, skirt_map
 
 PISTONSLAP = Path(sys.executable).parent / "pistonslap"
 NAMES = ("min_film_thickness_thrust", "min_film_thickness_antithrust", "skirt_friction_force", "skirt_friction_power")
@@ -43,11 +44,13 @@ def test_film_plot_draws_the_outputs_in_their_units(tmp_path, monkeypatch):
     plt.close(drawn["fig"])
 
 
-def test_the_demo_of_a_lubricated_engine_writes_the_film_plot(tmp_path):
-    """One cycle on a coarse film grid: film.png is written, and the film it draws lies within the clearance."""
+def test_the_demo_of_a_lubricated_engine_writes_the_film_plot_and_the_skirt_map(tmp_path):
+    """One cycle on a coarse film grid: film.png is written, and the film it draws lies within the clearance; the skirt
+    map asked for at -340° (380° in the FMU's 0...720° cycle) is the film of that crank angle in the cycle drawn, whose
+    pressures add up to the `film_force` output there."""
     out = tmp_path / "demo"
     grid = ("--set", "skirt_model=2", "--set", "skirt_grid_circumferential=6", "--set", "skirt_grid_axial=8")
-    args = [str(PISTONSLAP), "demo", *grid, "--cycles", "1", "--out", str(out)]
+    args = [str(PISTONSLAP), "demo", *grid, "--cycles", "1", "--out", str(out), "--skirt-map", "-340"]
     env = dict(os.environ, MPLBACKEND="Agg")
     printed = subprocess.run(args, cwd=tmp_path, env=env, check=True, capture_output=True, text=True).stdout
     assert f"wrote {out / 'film.png'}" in printed
@@ -57,3 +60,11 @@ def test_the_demo_of_a_lubricated_engine_writes_the_film_plot(tmp_path):
     for side in ("thrust", "antithrust"):
         film = data[:, header.index(f"min_film_thickness_{side} [m]")]
         assert np.all(film > 1e-6) and np.all(film < 80e-6)
+    assert f"wrote {out / 'skirt_map.png'}" in printed and (out / "skirt_map.png").stat().st_size > 1000
+    drawn = skirt_map.read(out / "skirt_map.csv")
+    # The first communication point at or after -340°, 0.36° apart.
+    assert -340 <= drawn["crank_angle_deg"] < -340 + 0.37
+    row = np.argmin(np.abs(data[:, header.index("time [s]")] - drawn["time"]))
+    bore = 0.08008
+    force = sum(skirt_map.film_force(drawn[side], bore) for side in ("thrust", "antithrust"))
+    assert force == pytest.approx(data[row, header.index("film_force [N]")], rel=1e-9)

@@ -1,5 +1,6 @@
 //! The interface the FMU drives a mechanism through, and the events it reports.
 
+use super::skirt::PressureMap;
 use super::{InputDerivatives, Inputs, ModelError, Outputs, Parameters};
 use crate::dynamics::EventKind;
 use serde::{Deserialize, Serialize};
@@ -91,6 +92,11 @@ pub trait EngineModel: Sized + Clone {
 
     /// Writes the kinematic and force outputs (everything but the impact statistics).
     fn write_outputs(&self, out: &mut Outputs);
+
+    /// The lubricated skirt's pressure and film fields now, where the model has one.
+    fn pressure_map(&self) -> Option<PressureMap> {
+        None
+    }
 
     /// Advances to `t_end` as [`Self::advance_interpolated`] would where that only reads the state
     /// there from a step already taken (no events): all or nothing, and a point the caller then

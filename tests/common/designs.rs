@@ -81,7 +81,7 @@ impl Design {
     }
 
     /// The inputs a host sets at time `t`: the start values followed along their derivatives.
-    fn inputs_at(&self, t: f64) -> Inputs {
+    pub fn inputs_at(&self, t: f64) -> Inputs {
         let [speed, pressure, load] = self.derivatives.polynomials(&self.inputs, 0.0).map(|u| u.at(t));
         Inputs { crank_speed: speed, gas_pressure: pressure, load_torque: load }
     }

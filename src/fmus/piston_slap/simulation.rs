@@ -4,6 +4,7 @@
 
 mod impact_log;
 mod model_variant;
+mod skirt_map;
 mod statistics;
 
 pub use impact_log::ImpactLog;
@@ -11,6 +12,7 @@ pub use model_variant::ModelVariant;
 
 use crate::models::{EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters};
 use serde::{Deserialize, Serialize};
+use skirt_map::SkirtMap;
 use statistics::ImpactStatistics;
 
 /// A running simulation of engine model `E` (the FMU runs [`ModelVariant`]).
@@ -25,6 +27,7 @@ pub struct Simulation<E = ModelVariant> {
     statistics: ImpactStatistics,
     step_events: Vec<EngineEvent>,
     log: Option<ImpactLog>,
+    map: Option<SkirtMap>,
     /// The event list of the step before last, lent to the next step (see [`Self::step`]).
     #[serde(skip)]
     spare_events: Scratch<Vec<EngineEvent>>,
@@ -67,6 +70,7 @@ impl<E: EngineModel> Simulation<E> {
             ),
             step_events: Vec::new(),
             log: None,
+            map: None,
             spare_events: Scratch::default(),
         };
         Self::write_outputs(&sim.model, &mut sim.statistics, Some(&[]), &mut sim.outputs);
@@ -82,13 +86,14 @@ impl<E: EngineModel> Simulation<E> {
         Ok(())
     }
 
-    /// Builds as [`Self::new`] and creates the impact log when `impact_log` names a file: an unwritable
-    /// path is an error here, not at the first impact.
+    /// Builds as [`Self::new`] and creates the impact log and the skirt map when `impact_log` and
+    /// `skirt_map` name files: an unwritable path is an error here, not at the first impact or pass.
     pub fn start(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         let mut sim = Self::new(params, start_time)?;
         if !params.impact_log.is_empty() {
             sim.log = Some(ImpactLog::create(&params.impact_log)?);
         }
+        sim.map = SkirtMap::of(params)?;
         Ok(sim)
     }
 
@@ -167,7 +172,7 @@ impl<E: EngineModel> Simulation<E> {
         let failed = |what: &str, e: &dyn std::fmt::Display| ModelError(format!("step from t = {} s to {t_end} s {what}: {e}", self.time));
         let advanced = served.unwrap_or_else(|| self.model.advance_interpolated(inputs, derivatives, t_end, events));
         advanced.map_err(|e| failed("failed", &e))?;
-        let before = self.outputs.liner_impulse_total;
+        let (before, crank_angle) = (self.outputs.liner_impulse_total, self.outputs.crank_angle);
         Self::write_outputs(&self.model, &mut self.statistics, Some(events), &mut self.outputs);
         // The liner's impulse during the step: the difference of its totals.
         let total = self.outputs.liner_impulse_total;
@@ -178,7 +183,13 @@ impl<E: EngineModel> Simulation<E> {
             // Cuts the file back and keeps its cursor when it fails.
             log.append(events)?;
         }
-        Ok(())
+        // The film is solved once more only at a pass.
+        match &self.map {
+            Some(map) if map.passed(crank_angle, self.outputs.crank_angle) => {
+                self.model.pressure_map().map_or(Ok(()), |fields| map.write(t_end, self.outputs.crank_angle, &fields))
+            }
+            _ => Ok(()),
+        }
     }
 
     /// What every state must satisfy (a restored one included): a finite time and finite outputs.

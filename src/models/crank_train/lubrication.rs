@@ -23,7 +23,7 @@
 use super::linkage::LinkAngles;
 use crate::dynamics::Absorbed;
 use crate::models::numerics::LastValue;
-use crate::models::skirt::{Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
+use crate::models::skirt::{PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
 use crate::models::{ModelError, Parameters};
 use nalgebra::{Matrix2x3, Matrix3, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -190,6 +190,11 @@ impl Lubrication {
         let damping = loads.damping * self.design.relaxation;
         *force += generalized(&k, &loads) - k.lateral.transpose() * (damping * k.bias);
         *mass += k.lateral.transpose() * damping * k.lateral;
+    }
+
+    /// Both sides' film and asperity pressure and film thickness at (φ, φ̇), for plots.
+    pub fn pressure_map(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>) -> PressureMap {
+        self.skirt.pressure_map(&self.kinematics(at, phid).motion)
     }
 
     /// The loads at (φ, φ̇), for the outputs.

@@ -8,6 +8,7 @@ use super::energy::by_wall;
 use super::kinematics::SliderCrank;
 use super::linkage::LinkAngles;
 use crate::dynamics::{DynamicsError, StepCounts, Stepper, StepperOptions};
+use crate::models::skirt::PressureMap;
 use crate::models::{EngineEvent, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -192,7 +193,7 @@ impl CrankTrain {
     }
 
     /// [`Self::state`] with the crank angle less the whole cycles taken off it.
-    fn state_within_cycle(&self) -> (Vector3<f64>, Vector3<f64>) {
+    pub(super) fn state_within_cycle(&self) -> (Vector3<f64>, Vector3<f64>) {
         self.drive.stepper().angles()
     }
 
@@ -332,6 +333,10 @@ impl EngineModel for CrankTrain {
         self.drive.stepper_mut().serve(t).map_err(dynamics_error)
     }
 
+    fn pressure_map(&self) -> Option<PressureMap> {
+        self.skirt_pressure_map()
+    }
+
     fn write_outputs(&self, out: &mut Outputs) {
         // The sines and cosines once, of the angle within the cycle (what the stepper holds).
         let (phi, phid) = self.state_within_cycle();
@@ -447,7 +452,7 @@ mod tests {
 
     #[test]
     fn refuses_parameters_naming_them() {
-        let cases: [(Parameters, &str); 14] = [
+        let cases: [(Parameters, &str); 16] = [
             // The generic ranges.
             (Parameters { bore: 0.079, ..Parameters::default() }, "bore = 0.079 m must exceed piston_diameter = 0.08 m"),
             (Parameters { restitution: 1.2, ..Parameters::default() }, "restitution"),
@@ -467,6 +472,14 @@ mod tests {
             ),
             (Parameters { piston_mass: 0.0099, ..Parameters::default() }, "crank_mass (10 kg) and piston_mass (0.0099 kg)"),
             (Parameters { rod_inertia: 1e-9, ..Parameters::default() }, "rod_inertia (0.000000001 kg·m²) gives the rod"),
+            (
+                Parameters { restitution: 1.0, friction: 0.1, ..Parameters::default() },
+                "restitution = 1 with friction (0.1) on a prescribed crank",
+            ),
+            (
+                Parameters { piston_mass: 0.02, piston_inertia: 5e-5, ..Parameters::default() },
+                "piston_mass (0.02 kg) must be at least 40 kg/m³",
+            ),
             // A 1 kg rod 0.15 m long: √(J/m) = 0.151 m, just beyond its length.
             (Parameters { rod_inertia: 0.0228, ..Parameters::default() }, "outside [0.05, 1] × rod_length (0.15 m)"),
         ];
@@ -480,11 +493,13 @@ mod tests {
             rod_length: 0.06,
             rod_inertia: 0.003,
             bore: 0.08 + 2e-6,
-            piston_mass: 0.01,
-            piston_inertia: 2.5e-5,
+            crank_mass: 400.0,
+            piston_mass: 0.4,
             ..Parameters::default()
         };
         assert!(validate(&edges).is_ok(), "{:?}", validate(&edges));
+        // Perfectly elastic with friction: on a free crank, whose energy is bounded.
+        assert!(validate(&Parameters { restitution: 1.0, friction: 0.1, crank_mode: 2, ..Parameters::default() }).is_ok());
     }
 
     /// The critical friction coefficient is a property of the design: 0.998 for the defaults (the

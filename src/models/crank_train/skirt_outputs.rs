@@ -5,10 +5,18 @@
 use super::linkage::LinkAngles;
 use super::model::CrankTrain;
 use crate::dynamics::Absorbed;
+use crate::models::skirt::PressureMap;
 use crate::models::Outputs;
 use nalgebra::{Vector3, Vector4};
 
 impl CrankTrain {
+    /// The lubricated skirt's film and asperity pressure and film thickness now; None dry.
+    pub(super) fn skirt_pressure_map(&self) -> Option<PressureMap> {
+        let lubrication = self.engine().lubrication.as_ref()?;
+        let (phi, phid) = self.state_within_cycle();
+        Some(lubrication.pressure_map((&phi, &LinkAngles::new(&phi)), &phid))
+    }
+
     /// What the skirt has absorbed: power now and work since the start, [all, friction] (zero dry).
     pub(super) fn absorbed(&self) -> (Absorbed, Absorbed) {
         self.drive.stepper().absorbed()

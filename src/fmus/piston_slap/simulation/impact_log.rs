@@ -125,7 +125,7 @@ fn row(e: &EngineEvent) -> String {
 }
 
 /// The crank angle `phase` ∈ [0, 4π) from firing TDC in degrees in [−360, 360): the cycle centred on firing TDC.
-fn degrees_from_firing_tdc(phase: f64) -> f64 {
+pub(super) fn degrees_from_firing_tdc(phase: f64) -> f64 {
     let degrees = phase.to_degrees();
     if degrees >= 360.0 {
         degrees - 720.0

@@ -1,6 +1,7 @@
 //! The model variants behind one type, chosen by `model_variant`: 1 → crank train (Awrejcewicz &
 //! Kudra), 2 → roller slider crank (Farahanchi).
 
+use crate::models::skirt::PressureMap;
 use crate::models::{CrankTrain, EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, Roller};
 use serde::{Deserialize, Serialize};
 
@@ -49,6 +50,10 @@ impl EngineModel for ModelVariant {
 
     fn write_outputs(&self, out: &mut Outputs) {
         on_variant!(self, m => m.write_outputs(out))
+    }
+
+    fn pressure_map(&self) -> Option<PressureMap> {
+        on_variant!(self, m => m.pressure_map())
     }
 
     fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
