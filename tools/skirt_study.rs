@@ -49,7 +49,7 @@ fn main() {
                 completed = out.cycle_count;
                 if completed >= 2 {
                     println!(
-                        "  cycle {completed}: slap energy anti-thrust {:.3e} J, thrust {:.3e} J, FMEP {:.4} bar, film {:.3e} J total",
+                        "  cycle {completed}: slap energy anti-thrust {:.6e} J, thrust {:.6e} J, FMEP {:.6} bar, film {:.6e} J total",
                         out.cycle_slap_energy_antithrust,
                         out.cycle_slap_energy_thrust,
                         out.cycle_skirt_fmep * 1e-5,
@@ -60,8 +60,8 @@ fn main() {
         }
         let wall = start.elapsed().as_secs_f64();
         println!(
-            "{rpm} rpm, skirt_model {skirt_model}: largest impact {fastest:.4} m/s, thinnest film thrust {:.2} µm, anti-thrust {:.2} µm, \
-             film side force up to {side:.0} N, skirt friction up to {friction:.1} N; {:.2}× real time",
+            "{rpm} rpm, skirt_model {skirt_model}: largest impact {fastest:.6} m/s, thinnest film thrust {:.4} µm, anti-thrust {:.4} µm, \
+             film side force up to {side:.2} N, skirt friction up to {friction:.3} N; {:.2}× real time",
             thinnest[0] * 1e6,
             thinnest[1] * 1e6,
             steps as f64 * step / wall

@@ -28,8 +28,8 @@ pub struct SkirtLoads {
     /// Moment on the piston about the pin, N·m, conjugate to φ3 (film and asperities, both sides).
     pub moment: f64,
     /// −∂(lateral_force, moment)/∂(lateral_rate, tilt_rate) at fixed position and sliding speed, in
-    /// (N·s/m, N·s, N·m·s/m, N·m·s): exact for the solved cavitation set (the same factorisation with
-    /// the rates' squeeze terms as right-hand sides).
+    /// (N·s/m, N·s, N·m·s/m, N·m·s): exact for the solved cavitation set (`gᵀA⁻¹g` from the same
+    /// factorisation, g the loads' weights per node), symmetric.
     pub damping: Matrix2<f64>,
     /// Axial force on the piston, N, + away from the crank: the film's shear on the skirt, the axial
     /// component of its pressure on the profiled skirt, and boundary friction on the asperity load.

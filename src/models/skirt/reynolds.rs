@@ -16,8 +16,8 @@
 //! for an M-matrix ends in finitely many steps at the exact solution of the discrete problem, from any
 //! starting set (a solve starts from its workspace's last set); the last step is a direct (band
 //! Cholesky) solve on the converged set, so the result depends on the set alone, and the same
-//! factorisation solves the damping's right-hand sides. A step refactorises only from the first band
-//! row its set changes touch.
+//! factorisation gives the damping (`gᵀA⁻¹g = |L⁻¹g|²`, forward substitutions only). A step
+//! refactorises only from the first band row its set changes touch.
 //!
 //! Why not mass-conserving JFO (Elrod–Adams): the Reynolds condition places the rupture boundary where
 //! the film's pressure gradient vanishes, which is exact for rupture, but it does not conserve mass
@@ -171,14 +171,22 @@ pub(crate) struct Reynolds {
     /// Face conductances `h³/(12μ)·(face length)/(node distance)`, x then z faces, as in [`Film`].
     cx: Vec<f64>,
     cz: Vec<f64>,
-    work: Vec<f64>,
+    /// Band order: the pressure's right-hand side, then up to [`EXTRA`] others (forward-substituted only).
+    work: Vec<[f64; 1 + EXTRA]>,
+    /// Band order: the pressure's column of `work`, back-substituted on its own (contiguous).
+    back: Vec<f64>,
     /// Cavitated rows in band order (identity rows of the reduced matrix).
     identity: Vec<bool>,
     /// The last solve's pressures, Pa, node order j·nx + i.
     pub pressure: Vec<f64>,
     /// The last solve's film nodes (false: cavitated, p = 0), the next solve's starting set.
     pub free: Vec<bool>,
+    /// The last solve's `rᵢᵀ A⁻¹ rⱼ` of its extra right-hand sides (0 beyond those given).
+    pub gram: [[f64; EXTRA]; EXTRA],
 }
+
+/// Right-hand sides a solve takes besides the pressure's (the skirt's two damping rates).
+pub(crate) const EXTRA: usize = 2;
 
 /// How a film may cavitate.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -194,35 +202,46 @@ impl Reynolds {
         let n = grid.len();
         let matrix = Band::new(n, grid.band());
         let (cx, cz) = (vec![0.0; (grid.nx + 1) * grid.nz], vec![0.0; grid.nx * (grid.nz + 1)]);
-        Self { grid, matrix, cx, cz, work: vec![0.0; n], identity: vec![false; n], pressure: vec![0.0; n], free: vec![true; n] }
+        Self {
+            grid,
+            matrix,
+            cx,
+            cz,
+            work: vec![[0.0; 1 + EXTRA]; n],
+            back: vec![0.0; n],
+            identity: vec![false; n],
+            pressure: vec![0.0; n],
+            free: vec![true; n],
+            gram: [[0.0; EXTRA]; EXTRA],
+        }
     }
 
     /// Solves for the pressure (into `pressure`, node order j·nx + i) of `film` and right-hand side `b`,
-    /// the set of film nodes into `free`; then replaces each of `extra` by the solution of
-    /// the same reduced system with it as the right-hand side (zero on cavitated nodes). Returns the
-    /// active-set steps taken.
-    pub(crate) fn solve(&mut self, film: &Film, viscosity: f64, b: &[f64], cavitation: Cavitation, extra: &mut [&mut [f64]]) -> usize {
+    /// the set of film nodes into `free`, and for `extra` (at most [`EXTRA`] right-hand sides r, zero on
+    /// cavitated nodes) the products `rᵢᵀ A⁻¹ rⱼ` of the reduced matrix A into `gram`: with A = L Lᵀ
+    /// they are `(L⁻¹rᵢ)·(L⁻¹rⱼ)`, a forward substitution each, taken in the same pass over the factor
+    /// as the pressure's on every active-set step (most evaluations take one). Returns the active-set
+    /// steps taken.
+    pub(crate) fn solve(&mut self, film: &Film, viscosity: f64, b: &[f64], cavitation: Cavitation, extra: &[&[f64]]) -> usize {
+        assert!(extra.len() <= EXTRA, "at most {EXTRA} extra right-hand sides");
         self.conductances(film, viscosity);
         let (mut p, mut free) = (std::mem::take(&mut self.pressure), std::mem::take(&mut self.free));
         if cavitation == Cavitation::None {
             free.fill(true);
         }
-        let steps = self.active_set(b, cavitation, &mut p, &mut free);
-        for r in extra.iter_mut() {
-            for (x, &film) in r.iter_mut().zip(&free) {
-                if !film {
-                    *x = 0.0;
-                }
+        let steps = self.active_set((b, extra), cavitation, &mut p, &mut free);
+        for (a, row) in self.gram.iter_mut().enumerate() {
+            for (c, g) in row.iter_mut().enumerate() {
+                *g = self.work.iter().map(|y| y[1 + a] * y[1 + c]).sum();
             }
-            self.solve_in_node_order(r);
         }
         (self.pressure, self.free) = (p, free);
         steps
     }
 
     /// The primal–dual active-set iteration from the set in `free`; the factorisation of the last set
-    /// stays in `matrix`.
-    fn active_set(&mut self, b: &[f64], cavitation: Cavitation, p: &mut [f64], free: &mut [bool]) -> usize {
+    /// stays in `matrix`, the last step's forward-substituted extras in `work`.
+    fn active_set(&mut self, (b, extra): (&[f64], &[&[f64]]), cavitation: Cavitation, p: &mut [f64], free: &mut [bool]) -> usize {
         let n = self.grid.len();
         let scale_b = b.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
         let mut steps = 0;
@@ -234,12 +253,33 @@ impl Reynolds {
             if !self.matrix.factor_from(&self.identity, first) {
                 // Only a non-finite film gets here (the callers keep h > 0): say so with NaN, never panic.
                 p.fill(f64::NAN);
+                self.work.fill([f64::NAN; 1 + EXTRA]);
                 return steps;
             }
-            for k in 0..n {
-                p[k] = if free[k] { b[k] } else { 0.0 };
+            let g = &self.grid;
+            for j in 0..g.nz {
+                for i in 0..g.nx {
+                    let k = j * g.nx + i;
+                    let mut column = [0.0; 1 + EXTRA];
+                    if free[k] {
+                        column[0] = b[k];
+                        for (x, r) in column[1..].iter_mut().zip(extra) {
+                            *x = r[k];
+                        }
+                    }
+                    self.work[g.index(i, j)] = column;
+                }
             }
-            self.solve_in_node_order(p);
+            self.matrix.forward(&mut self.work);
+            for (x, y) in self.back.iter_mut().zip(&self.work) {
+                *x = y[0];
+            }
+            self.matrix.backward(&mut self.back);
+            for j in 0..g.nz {
+                for i in 0..g.nx {
+                    p[j * g.nx + i] = self.back[g.index(i, j)];
+                }
+            }
             if cavitation == Cavitation::None || steps > n {
                 break;
             }
@@ -351,21 +391,5 @@ impl Reynolds {
             }
         }
         s
-    }
-
-    /// Solves with the factorised matrix, `r` in node order (permuted to band order and back).
-    fn solve_in_node_order(&mut self, r: &mut [f64]) {
-        let g = &self.grid;
-        for j in 0..g.nz {
-            for i in 0..g.nx {
-                self.work[g.index(i, j)] = r[j * g.nx + i];
-            }
-        }
-        self.matrix.solve(&mut self.work);
-        for j in 0..g.nz {
-            for i in 0..g.nx {
-                r[j * g.nx + i] = self.work[g.index(i, j)];
-            }
-        }
     }
 }

@@ -20,7 +20,7 @@ fn pressures(grid: Grid, (a, b, k): (f64, f64, f64), u: (f64, f64), ht: f64, cav
     let mut b = vec![-ht * area; grid.len()];
     film.add_wedge(&grid, u, &mut b);
     let mut solver = Reynolds::new(grid.clone());
-    solver.solve(&film, VISCOSITY, &b, cavitation, &mut []);
+    solver.solve(&film, VISCOSITY, &b, cavitation, &[]);
     (grid, solver.pressure, area)
 }
 

@@ -57,6 +57,10 @@ pub struct Skirt {
     scratch: RefCell<Scratch>,
 }
 
+/// A row's terms at one motion: (a, b) of h = a + b cos θ + ov(θ), (α, β) of ∂h/∂φ3 = α + β cos θ,
+/// the height z above the pin and the skirt radius r there.
+type RowTerms = ((f64, f64), (f64, f64), f64, f64);
+
 /// The per-evaluation workspace.
 #[derive(Clone, Debug)]
 struct Scratch {
@@ -66,13 +70,28 @@ struct Scratch {
     rhs: Vec<f64>,
     rate_x: Vec<f64>,
     rate_tilt: Vec<f64>,
+    /// [`RowTerms`] at the node rows and on the closed grid; (a, b) at the node rows and the z faces.
+    node_rows: Vec<RowTerms>,
+    closed_rows: Vec<RowTerms>,
+    film_rows: Vec<(f64, f64)>,
+    face_rows: Vec<(f64, f64)>,
 }
 
 impl Scratch {
     fn new(grid: &Grid) -> Self {
         let n = grid.len();
         let reynolds = [Reynolds::new(grid.clone()), Reynolds::new(grid.clone())];
-        Self { reynolds, film: Film::new(grid), rhs: vec![0.0; n], rate_x: vec![0.0; n], rate_tilt: vec![0.0; n] }
+        Self {
+            reynolds,
+            film: Film::new(grid),
+            rhs: vec![0.0; n],
+            rate_x: vec![0.0; n],
+            rate_tilt: vec![0.0; n],
+            node_rows: Vec::with_capacity(grid.nz),
+            closed_rows: Vec::with_capacity(grid.nz + 2),
+            film_rows: Vec::with_capacity(grid.nz),
+            face_rows: Vec::with_capacity(grid.nz + 1),
+        }
     }
 }
 
@@ -129,14 +148,22 @@ impl Skirt {
         let d = &self.design;
         let (s3, c3) = (libm::sin(m.tilt), libm::cos(m.tilt));
         let a_pin = d.pin_offset;
-        // Row terms of h = a + b cos θ + ov(θ), and of ∂h/∂φ3 = α + β cos θ (∂h/∂x = −cos θ).
+        // Row terms of h = a + b cos θ + ov(θ), and of ∂h/∂φ3 = α + β cos θ (∂h/∂x = −cos θ), once per motion.
         let terms = |&(u, r): &(f64, f64)| {
             let z = d.pin_from_top - u;
             ((d.radius_bore - r * c3, -(m.lateral - z * s3 - a_pin * c3)), (r * s3, z * c3 - a_pin * s3), z, r)
         };
-        let node_rows: Vec<_> = self.rows.nodes.iter().map(terms).collect();
-        let face_rows: Vec<(f64, f64)> = self.rows.faces.iter().map(|r| terms(r).0).collect();
-        let film_rows: Vec<(f64, f64)> = node_rows.iter().map(|t| t.0).collect();
+        let s = &mut *self.scratch.borrow_mut();
+        let tabulate = |target: &mut Vec<RowTerms>, rows: &[(f64, f64)]| {
+            target.clear();
+            target.extend(rows.iter().map(terms));
+        };
+        tabulate(&mut s.node_rows, &self.rows.nodes);
+        tabulate(&mut s.closed_rows, &self.rows.closed);
+        s.film_rows.clear();
+        s.film_rows.extend(s.node_rows.iter().map(|t| t.0));
+        s.face_rows.clear();
+        s.face_rows.extend(self.rows.faces.iter().map(|r| terms(r).0));
         let (nx, nz) = (self.grid.nx, self.grid.nz);
         let (dx, dz) = (self.grid.dx(), self.grid.dz());
         let area = dx * dz;
@@ -148,13 +175,12 @@ impl Skirt {
         } else {
             0.0
         };
-        let s = &mut *self.scratch.borrow_mut();
         let mut out = SkirtLoads::default();
         let mut damping = Matrix2::zeros();
         for (side_index, side) in self.sides.iter().enumerate() {
-            s.film.fill(&self.grid, (&film_rows, &face_rows), (&side.nodes, &side.faces), self.floor);
+            s.film.fill(&self.grid, (&s.film_rows, &s.face_rows), (&side.nodes, &side.faces), self.floor);
             // b = −ḣ ΔA + wedge; the rates' right-hand sides ∂b/∂ẋ = cos θ ΔA, ∂b/∂φ̇3 = −(α + β cos θ) ΔA.
-            for (j, &(_, (alpha, beta), _, _)) in node_rows.iter().enumerate() {
+            for (j, &(_, (alpha, beta), _, _)) in s.node_rows.iter().enumerate() {
                 for (i, &(c, _)) in side.nodes.iter().enumerate() {
                     let k = j * nx + i;
                     let tilt = alpha + beta * c;
@@ -164,20 +190,18 @@ impl Skirt {
                 }
             }
             s.film.add_wedge(&self.grid, (0.0, 0.5 * v), &mut s.rhs);
-            out.factorisations[side_index] =
-                s.reynolds[side_index].solve(&s.film, mu, &s.rhs, Cavitation::Reynolds, &mut [&mut s.rate_x, &mut s.rate_tilt]);
-            let (pressure, free) = (&s.reynolds[side_index].pressure, &s.reynolds[side_index].free);
-            for (j, &(_, (alpha, beta), z, r)) in node_rows.iter().enumerate() {
+            let reynolds = &mut s.reynolds[side_index];
+            out.factorisations[side_index] = reynolds.solve(&s.film, mu, &s.rhs, Cavitation::Reynolds, &[&s.rate_x, &s.rate_tilt]);
+            // D = −∂(F, M)/∂(ẋ, φ̇3) = gᵀ A⁻¹ g with g = ∂(F, M)/∂p = (∂h/∂x, ∂h/∂φ3) ΔA = −(the rates' right-hand sides).
+            damping += Matrix2::from_fn(|a, c| reynolds.gram[a][c]);
+            let (pressure, free) = (&reynolds.pressure, &reynolds.free);
+            for (j, &(_, (alpha, beta), z, r)) in s.node_rows.iter().enumerate() {
                 for (i, &(c, _)) in side.nodes.iter().enumerate() {
                     let k = j * nx + i;
                     let p = pressure[k];
                     let (dh_dx, dh_dtilt) = (-c, alpha + beta * c);
                     out.film_force += p * dh_dx * area;
                     out.moment += p * dh_dtilt * area;
-                    for (col, q) in [&s.rate_x, &s.rate_tilt].into_iter().enumerate() {
-                        damping[(0, col)] -= q[k] * dh_dx * area;
-                        damping[(1, col)] -= q[k] * dh_dtilt * area;
-                    }
                     out.squeeze_power += p * s.rhs[k];
                     // The pressure's net axial push on the profiled skirt along +y, ½ p ∂h/∂u (normal
                     // pressure on the slope plus the Poiseuille shear; its power is the wedge's work).
@@ -194,7 +218,7 @@ impl Skirt {
                 let mut carried = f64::INFINITY;
                 for step in 0..nz + 2 {
                     let jj = if v >= 0.0 { step } else { nz + 1 - step };
-                    let ((a, b), _, z, r) = terms(&self.rows.closed[jj]);
+                    let ((a, b), _, z, r) = s.closed_rows[jj];
                     let h = (a + b * c + ov).max(self.floor);
                     let inside = ii > 0 && ii <= nx && jj > 0 && jj <= nz;
                     let fill = if step == 0 || (inside && free[(jj - 1) * nx + ii - 1]) { 1.0 } else { (carried / h).min(1.0) };
@@ -213,8 +237,7 @@ impl Skirt {
                 position: self.rows.closed.iter().map(|r| r.0).collect(),
                 ..SideMap::default()
             });
-            for (jj, row) in self.rows.closed.iter().enumerate() {
-                let ((a, b), (alpha, beta), z, r) = terms(row);
+            for (jj, &((a, b), (alpha, beta), z, r)) in s.closed_rows.iter().enumerate() {
                 for (ii, &(c, ov)) in side.closed.iter().enumerate() {
                     let h = a + b * c + ov;
                     smallest = smallest.min(h);
