@@ -26,15 +26,17 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
 
     /// The earliest event in the step `self.state → s1`; `middle`: the held contacts' forces at
-    /// the step's middle; `unmoved`: the step starts where an event changed nothing.
+    /// the step's middle; `unmoved`: the step starts where an event changed nothing, or undid the one
+    /// before it (time and contact set as they were before that one).
     pub(super) fn first_event(&self, s1: Evaluated<N, M>, middle: &Forces<M>, unmoved: bool) -> Result<StepEnd<N, M>, DynamicsError> {
         let (sys, s0, contacts) = (&self.system, &self.state, self.contacts);
         let watches = self.watches();
-        // Where an event at this instant changed nothing, the laws accepted every held watch's value
-        // here within their own tolerances, relative to the problem's scale and wider than the
-        // search's: one already below −tol is watched for falling as far again, to where the laws
-        // decide otherwise, rather than found crossed at once, again and again (a stick 9e-7 N
-        // outside its cone, a slip reversed by 9e-9 m/s at a dead centre, 10⁴ times at one instant).
+        // Where an event at this instant changed nothing, or undid the one before it, the laws
+        // accepted every held watch's value here within their own tolerances, relative to the
+        // problem's scale and wider than the search's: one already below −tol is watched for falling
+        // as far again, to where the laws decide otherwise, rather than found crossed at once, again
+        // and again (a stick 9e-7 N outside its cone, a slip reversed by 9e-9 m/s at a dead centre;
+        // a corner released and closed again as sliding at round-off forces: 10⁴ times at one instant).
         let shift = |i: usize, w: Watch| {
             let (g0, tol) = (s0.watched(i, w), self.tolerance(w));
             if unmoved && w != Watch::Gap && g0 < -tol {

@@ -125,8 +125,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         // piles them up in a vanishing time, while a long span of ordinary impacts only needs more
         // windows.
         let (mut handled, mut steps, mut window_start) = (0, 0.0, self.state.t);
-        // The last event left time, contact set and record as they were (`first_event`).
+        // The last event left time, contact set and record as they were, or brought time and
+        // contact set back to where they were before the event preceding it (`first_event`).
         let mut unmoved = false;
+        let mut preceding: Option<(f64, Contacts)> = None;
         loop {
             if let Some(ahead) = &self.ahead {
                 if t_end < ahead.end.t {
@@ -146,7 +148,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             }
             let before = (self.state.t, self.contacts, self.events.len());
             let event = self.step(t_end, beyond, unmoved)?;
-            unmoved = event && before == (self.state.t, self.contacts, self.events.len());
+            let now = (self.state.t, self.contacts);
+            unmoved = event && (before == (now.0, now.1, self.events.len()) || preceding == Some(now));
+            preceding = event.then_some((before.0, before.1));
             // A step that ran past `t_end` has the state there already.
             if self.ahead.is_some() {
                 return Ok(());
