@@ -134,9 +134,11 @@ fn plausible_links(p: &Parameters) -> Result<(), ModelError> {
 /// sliding problem of some set has no solution or several (Painlevé's paradox). The FMU refuses
 /// such a design rather than change the law: the consistent alternative, an impact without
 /// collision (Génot & Brogliato), would make the piston jump where the papers' model slides, and
-/// the critical μ of real pistons lies far above the liner's friction. Checked with the piston
-/// centred and untilted over a revolution (`ANGLES`), for single corners, a wall's pair and
-/// the diagonal pairs; `W` in the coordinates the crank mode leaves free.
+/// the critical μ of real pistons lies far above the liner's friction. Checked over a revolution
+/// (`ANGLES`) with the piston centred and untilted and in each of its touching poses (the vertices
+/// of the region its clearance leaves it: centred alone missed one slipping corner's inconsistency
+/// off-centre), for single corners, a wall's pair and the diagonal pairs; `W` in the coordinates
+/// the crank mode leaves free.
 pub(super) fn consistent_friction(linkage: &Linkage, p: &Parameters) -> Result<(), ModelError> {
     if p.friction == 0.0 || inconsistency(linkage, p, p.friction).is_none() {
         return Ok(());
