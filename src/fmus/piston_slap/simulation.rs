@@ -159,8 +159,9 @@ impl<E: EngineModel> Simulation<E> {
     }
 
     /// The fallible part of [`Self::step`]: advances the model into `events` (unless it `served`
-    /// the point already), takes them into the statistics, writes the outputs, and appends them
-    /// to the impact log once nothing else can fail. On error `step` puts the rest back.
+    /// the point already), takes them into the statistics, writes the outputs and, at a pass of its
+    /// crank angle, the skirt map, and appends the events to the impact log once nothing else can
+    /// fail. On error `step` puts the rest back.
     fn try_step(
         &mut self,
         served: Option<Result<(), ModelError>>,
@@ -179,17 +180,18 @@ impl<E: EngineModel> Simulation<E> {
         [self.outputs.liner_impulse_antithrust_in_step, self.outputs.liner_impulse_thrust_in_step] =
             [total[0] - before[0], total[1] - before[1]];
         Self::valid(t_end, &self.outputs).map_err(|e| failed("refused", &e.0))?;
+        // The film is solved once more only at a pass. Before the log: its rows are the last thing
+        // a step writes.
+        if let Some(map) = self.map.as_ref().filter(|map| map.passed(crank_angle, self.outputs.crank_angle)) {
+            if let Some(fields) = self.model.pressure_map() {
+                map.write(t_end, self.outputs.crank_angle, &fields)?;
+            }
+        }
         if let Some(log) = &mut self.log {
             // Cuts the file back and keeps its cursor when it fails.
             log.append(events)?;
         }
-        // The film is solved once more only at a pass.
-        match &self.map {
-            Some(map) if map.passed(crank_angle, self.outputs.crank_angle) => {
-                self.model.pressure_map().map_or(Ok(()), |fields| map.write(t_end, self.outputs.crank_angle, &fields))
-            }
-            _ => Ok(()),
-        }
+        Ok(())
     }
 
     /// What every state must satisfy (a restored one included): a finite time and finite outputs.
