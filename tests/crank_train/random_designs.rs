@@ -148,12 +148,19 @@ fn declared_designs_with_ramping_inputs_run_and_agree_with_the_model() {
     assert!(failed.is_empty(), "{} of {RAMPED_DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
+/// Conservative declared designs beyond the first `DESIGNS` that `make designs` found failing:
+/// 7888 and 9941, a corner released and, its flight ending below the event resolution, held again
+/// at once while its force still pulled (−2e-4 N, growing): read inside that step, the force showed
+/// as negative in contact; 8641, a 2.4 t flywheel at 9000 rpm whose free crank took 0.36 rad steps
+/// with two corners held, which left them 4.6 µm off the liner and the others through the wall.
+const CONSERVATIVE_FOUND_BY_LARGER_SWEEPS: [u64; 3] = [7888, 9941, 8641];
+
 /// Declared designs with nothing doing work on them (free crank, no load, gas, damping or gravity):
 /// their kinetic energy at the end plus what impacts and sliding dissipated is their energy at the
 /// start, with liner friction as without (`make designs` gives the worst of 10⁴).
 #[test]
 fn declared_designs_that_nothing_works_on_balance_their_energy() {
-    let failed = failures_of(0..DESIGNS, declared_conservative, balanced);
+    let failed = failures_of((0..DESIGNS).chain(CONSERVATIVE_FOUND_BY_LARGER_SWEEPS), declared_conservative, balanced);
     assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
