@@ -124,8 +124,11 @@ const DECLARED_FOUND_BY_LARGER_SWEEPS: [u64; 25] = [
 /// 3211, a stick of a diagonal pair of corners 3e-5 N and 9e-7 N outside its cone, within the
 /// Coulomb law's tolerance and beyond the event search's, found crossed again at every event. Under
 /// the present bounds: 3336 and 9552, frictionless, a release and a closing alternating at one
-/// instant as 9273 above.
-const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 8] = [718, 1734, 1827, 1937, 1635, 3211, 3336, 9552];
+/// instant as 9273 above; 5806, 6174 and 9833, a free crank stalled with its piston wedged across
+/// the bore on two diagonal corners, whose stick had dependent rows and no solution, so that the
+/// pair slipped opposite ways at the edges of their cones and the slip reversed at once, 10⁴ times
+/// (`dynamics/wedge.rs`).
+const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 11] = [718, 1734, 1827, 1937, 1635, 3211, 3336, 9552, 5806, 6174, 9833];
 
 /// Designs drawn from the whole declared space (`designs::declared`), every output checked at
 /// every step: all run, none contradicts the model. Among them seeds 122 (a 1 m crank at
