@@ -8,4 +8,5 @@ mod common;
 mod core;
 mod crank_train;
 mod engine_cycle_fmu;
+mod fmu_random_designs;
 mod roller;

@@ -1,14 +1,25 @@
 //! Runs N seeded random designs of each family (`tests/common/designs.rs`) and reports every one
 //! that fails, and the worst energy balance of the families nothing does work on, without and with
-//! liner friction: the sweep behind the suite's smaller random-design test.
+//! liner friction: the sweep behind the suite's smaller random-design test. The families named
+//! "fmu …" run through the FMU's C functions in process (`tests/common/fmu_designs.rs`) and report the
+//! designs that fail and the number the FMU refused.
 //! `cargo run --release --example random_designs -- 2000 [first_seed [family]]`
 
 #[path = "../tests/common/designs.rs"]
 mod designs;
+#[path = "../tests/common/fmu_designs.rs"]
+mod fmu_designs;
+#[allow(dead_code)]
+#[path = "../tests/common/fmu_host.rs"]
+mod fmu_host;
+#[path = "../tests/common/output_checks.rs"]
+mod output_checks;
 
 use designs::{
-    declared, declared_conservative, declared_ramped, engine, lubricated_engine, rubbing_engine, rubbing_slider, run, slider, Random,
+    declared, declared_conservative, declared_ramped, engine, lubricated_engine, roller, rubbing_engine, rubbing_slider, run, slider,
+    Design, Random,
 };
+use fmu_designs::NotRun;
 use std::time::Instant;
 
 fn main() {
@@ -25,6 +36,29 @@ fn main() {
         ("declared conservative", declared_conservative),
         ("lubricated engine", lubricated_engine),
     ];
+    let through_the_fmu =
+        [("fmu declared", declared as fn(&mut Random) -> Design), ("fmu declared ramped", declared_ramped), ("fmu roller", roller)];
+    for (family, make) in through_the_fmu.into_iter().filter(|(family, _)| only.as_deref().is_none_or(|o| o == *family)) {
+        let (start, mut failed, mut refused, mut steps) = (Instant::now(), 0, 0, 0);
+        for seed in first..first + n {
+            let design = make(&mut Random::new(seed));
+            match fmu_designs::run(&design) {
+                Ok(taken) => steps += taken,
+                Err(NotRun::Refused(e)) => {
+                    refused += 1;
+                    println!("{family} seed {seed} refused: {e}");
+                }
+                Err(NotRun::Failed(e)) => {
+                    failed += 1;
+                    println!("{family} seed {seed}: {e}\n  {design:?}");
+                }
+            }
+        }
+        let elapsed = start.elapsed().as_secs_f64();
+        println!(
+            "{family}: {n} designs from seed {first}, {failed} failed, {refused} refused, {steps} communication steps, {elapsed:.1} s"
+        );
+    }
     for (family, make) in families.into_iter().filter(|(family, _)| only.as_deref().is_none_or(|o| o == *family)) {
         // The worst |energy balance| of the designs without and with liner friction, and their seeds.
         let (start, mut failed, mut events, mut worst) = (Instant::now(), 0, 0, [(0.0_f64, 0); 2]);

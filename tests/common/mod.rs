@@ -3,7 +3,9 @@
 #![allow(dead_code)]
 
 pub mod designs;
+pub mod fmu_designs;
 pub mod fmu_host;
+pub mod output_checks;
 pub mod testbeds;
 
 use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
