@@ -79,11 +79,17 @@ bench:
 # 10⁴ random designs of the declared space (tests/common/designs.rs `declared`), then the same designs with ramping
 # inputs (`declared ramped`), every output checked at every step and each run's state restored halfway: the
 # failures and the count; then 10⁴ with nothing doing work on them (`declared conservative`): their worst energy
-# balance without and with friction (about an hour on the 2-CPU machine).
+# balance without and with friction (about an hour on the 2-CPU machine). Then 10⁴ declared designs, 10⁴ ramped
+# and 10⁴ roller designs through the FMU's C functions (tests/common/fmu_designs.rs): every parameter set by
+# name, every output read and checked at every step, the state restored into a second instance halfway (about
+# 50 minutes each for the crank train, 20 for the roller).
 designs:
 	cargo run --release --example random_designs -- 10000 0 declared
 	cargo run --release --example random_designs -- 10000 0 "declared ramped"
 	cargo run --release --example random_designs -- 10000 0 "declared conservative"
+	cargo run --release --example random_designs -- 10000 0 "fmu declared"
+	cargo run --release --example random_designs -- 10000 0 "fmu declared ramped"
+	cargo run --release --example random_designs -- 10000 0 "fmu roller"
 
 soak:
 	cargo run --release --example soak -- 10000 1000000
