@@ -12,6 +12,8 @@ use std::time::Instant;
 
 #[path = "fmu/flop_count.rs"]
 mod flop_count;
+// The host also serves the random designs run through the FMU, whose methods the benchmark does not call.
+#[allow(dead_code)]
 #[path = "../tests/common/fmu_host.rs"]
 mod fmu_host;
 
