@@ -150,7 +150,7 @@ fn loads_are_repeatable_to_the_bit_and_match_the_map() {
     let again = s.loads(&MOTION);
     assert_eq!(super::SkirtLoads { factorisations: first.factorisations, ..again }, first);
     // The map's pressures integrate (interior nodes, cell areas) to the film force.
-    let map = s.pressure_map(&MOTION);
+    let map = s.pressure_map(&s.linearise(&MOTION), &MOTION);
     let (nc, na) = SkirtDesign::DEFAULT_GRID;
     let area = 0.04004 * 70f64.to_radians() / (nc + 1) as f64 * 0.08 / (na + 1) as f64;
     let force: f64 = map
