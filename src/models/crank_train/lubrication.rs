@@ -19,6 +19,9 @@
 //! with D → 0 the dry equations come back exactly. What the skirt takes from the motion,
 //! `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and at a velocity jump Δφ̇ the impulse `−τ Gᵀ D G Δφ̇`'s share, is
 //! booked by the core as the absorbed work (`System::absorbed_power`).
+//!
+//! Cost: the film is solved once per RK4 step (`Lubrication::begin_step`, from `System::begin_step`),
+//! its pressure's loads linear in the rates within the step (`Skirt::loads_with`).
 
 use super::linkage::LinkAngles;
 use crate::dynamics::Absorbed;
@@ -45,8 +48,9 @@ pub const CLEAR_GAP: f64 = 10e-6;
 /// See [`CLEAR_GAP`]; 100 (1e-9 m) moves the thinnest film by 0.55 %, more than the 12 × 18 grid's error.
 pub const CLEAR_ERROR_FACTOR: f64 = 10.0;
 
-/// Where in an RK4 step the film is solved, as a fraction of the step: its position is predicted
-/// there from the step's start, `φ0 + SOLVE_AT·h·φ̇0` (see [`Lubrication::begin_step`]).
+/// Where in an RK4 step the film is solved, as a fraction of the step ([`predicted`]): half a step
+/// in, the film's position errs to second order over the stages (at the start, first order: the
+/// default engine's peak side force then moved 0.60 % from the per-stage solve, against 0.31 %).
 pub const SOLVE_AT: f64 = 0.5;
 
 /// The skirt on the linkage: its film solver, the crank and rod lengths that place it, and τ.
@@ -282,7 +286,12 @@ impl Lubrication {
 /// order, `(q + q̇ s + q̈ s²/2, q̇ + q̈ s)`: the rates too, since the skirt's lateral rate is the small
 /// difference of the crank's and the rod's terms (`G(φ) φ̇`), which a position moved without its
 /// rates would spoil by ≈ l1 ω² s, several times the rate itself.
-pub fn predicted<const N: usize>(q: &SVector<f64, N>, qd: &SVector<f64, N>, qdd: &SVector<f64, N>, dt: f64) -> (f64, SVector<f64, N>, SVector<f64, N>) {
+pub fn predicted<const N: usize>(
+    q: &SVector<f64, N>,
+    qd: &SVector<f64, N>,
+    qdd: &SVector<f64, N>,
+    dt: f64,
+) -> (f64, SVector<f64, N>, SVector<f64, N>) {
     let s = SOLVE_AT * dt;
     (s, q + qd * s + qdd * (0.5 * s * s), qd + qdd * s)
 }

@@ -19,4 +19,4 @@ pub use asperity::Roughness;
 pub use design::SkirtDesign;
 pub use loads::{FilmLinear, PressureMap, SideMap, SkirtLoads, SkirtMotion};
 pub use profile::SkirtProfile;
-pub use surface::{Skirt, SOLVES};
+pub use surface::Skirt;

@@ -160,7 +160,6 @@ impl Skirt {
 
     /// Solves the film at `motion`: its cavitation set and the pressure's loads per unit rate.
     pub fn linearise(&self, motion: &SkirtMotion) -> FilmLinear {
-        SOLVES.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
         let s = &mut *self.scratch.borrow_mut();
         let mut linear = FilmLinear { at: *motion, ..FilmLinear::default() };
         for side in 0..2 {
@@ -319,9 +318,6 @@ impl Skirt {
 fn arm(z: f64, r: f64, c: f64, (s3, c3): (f64, f64), pin_offset: f64) -> f64 {
     -z * s3 + (r * c - pin_offset) * c3
 }
-
-/// TEMP: film solves so far.
-pub static SOLVES: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
 
 /// Trapezoid weight of closed-grid line `k` of `n` interior lines: ½ on the two edges.
 fn closed_weight(k: usize, n: usize) -> f64 {
