@@ -23,8 +23,9 @@
 
 use super::complementarity::{Mode, COMPLEMENTARITY_TOL, DEPENDENT_PIVOT};
 use super::inertia::Inertia;
+use super::wedge::{wedged, Margin};
 use super::{Evaluation, Tangents};
-use nalgebra::{SMatrix, SVector};
+use nalgebra::{DMatrix, DVector, SMatrix, SVector};
 
 /// What a contact problem may choose for each constraint.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -80,7 +81,8 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
 
     /// The forces of `modes` that zero the normal row of every closed constraint and the
     /// tangential row of every sticking one, with `b_N`, `b_T` the rows' values at zero force.
-    /// `None` when those rows are dependent (more than `N` of them, or a vanishing pivot).
+    /// Where those rows are dependent (more than `N` of them, or a vanishing pivot) but agree, and
+    /// a stick is among them, the forces `wedge.rs` chooses; `None` otherwise.
     ///
     /// Sticking constraints whose tangents act alike (equal columns of `M⁻¹ J_Tᵀ`: one body at
     /// rest on one surface at several points) have dependent tangential rows: the motion fixes
@@ -99,44 +101,55 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
             }
         }
         // Unknowns (constraint, direction: 0 normal, 1 tangential), each with its own row.
-        let mut unknowns = [(0, 0); N];
-        let mut r = 0;
-        for (i, mode) in modes.iter().enumerate() {
-            let directions: &[usize] = match mode {
-                Mode::Open => &[],
-                Mode::Slip(_) => &[0],
-                Mode::Stick if shares[i] != i => &[0],
-                Mode::Stick => &[0, 1],
-            };
-            for &d in directions {
-                *unknowns.get_mut(r)? = (i, d);
-                r += 1;
-            }
-        }
+        let unknowns = move || {
+            modes.iter().enumerate().flat_map(move |(i, mode)| {
+                let directions: &[usize] = match mode {
+                    Mode::Open => &[],
+                    Mode::Slip(_) => &[0],
+                    Mode::Stick if shares[i] != i => &[0],
+                    Mode::Stick => &[0, 1],
+                };
+                directions.iter().map(move |&d| (i, d))
+            })
+        };
         // The response of row (i, d) to a unit of unknown (j, e): a slipping constraint's normal
         // force brings its friction −μ s along.
         let response = |(i, d): (usize, usize), (j, e): (usize, usize)| match (modes[j], e) {
             (Mode::Slip(s), 0) => self.w[d][0][(i, j)] - self.mu[j] * s * self.w[d][1][(i, j)],
             _ => self.w[d][e][(i, j)],
         };
-        let mut a = SMatrix::<f64, N, N>::zeros();
-        let mut rhs = SVector::<f64, N>::zeros();
-        for k in 0..r {
-            let (i, d) = unknowns[k];
-            rhs[k] = -[b.0, b.1][d][i];
-            for l in 0..r {
-                a[(k, l)] = response(unknowns[k], unknowns[l]);
+        let rhs = |(i, d): (usize, usize)| -[b.0, b.1][d][i];
+        let r = unknowns().count();
+        let independent = (r <= N).then(|| {
+            let mut a = SMatrix::<f64, N, N>::zeros();
+            let mut y = SVector::<f64, N>::zeros();
+            for (k, u) in unknowns().enumerate() {
+                y[k] = rhs(u);
+                for (l, v) in unknowns().enumerate() {
+                    a[(k, l)] = response(u, v);
+                }
             }
-        }
-        let x = gauss(a, rhs, r)?;
+            gauss(a, y, r)
+        });
         let (mut normal, mut tangent) = (SVector::<f64, M>::zeros(), SVector::<f64, M>::zeros());
-        for k in 0..r {
-            let (i, d) = unknowns[k];
-            if d == 0 {
-                normal[i] = x[k];
-            } else {
-                tangent[i] = x[k];
-            }
+        let mut assign = |(i, d): (usize, usize), x: f64| if d == 0 { normal[i] = x } else { tangent[i] = x };
+        if let Some(Some(x)) = independent {
+            unknowns().enumerate().for_each(|(k, u)| assign(u, x[k]));
+        } else if unknowns().any(|(_, d)| d == 1) {
+            // Dependent rows with a stick among them (`wedge.rs`).
+            let list: Vec<(usize, usize)> = unknowns().collect();
+            let a = DMatrix::from_fn(r, r, |k, l| response(list[k], list[l]));
+            let index = |u: (usize, usize)| list.iter().position(|&v| v == u);
+            let margins: Vec<Margin> = (0..r)
+                .flat_map(|k| match list[k] {
+                    (_, 0) => vec![[(k, 1.0), (k, 0.0)]],
+                    (i, _) => index((i, 0)).map_or(vec![], |n| vec![[(n, self.mu[i]), (k, -1.0)], [(n, self.mu[i]), (k, 1.0)]]),
+                })
+                .collect();
+            let x = wedged(a, DVector::from_fn(r, |k, _| rhs(list[k])), &margins)?;
+            list.iter().enumerate().for_each(|(k, &u)| assign(u, x[k]));
+        } else {
+            return None;
         }
         for (i, mode) in modes.iter().enumerate() {
             if let Mode::Slip(s) = mode {

@@ -20,14 +20,15 @@
 //! - where the system did not change since the last `advance`, its last step may run past the
 //!   end: the end's state comes from the step's quintic extension, and the step goes on next time.
 //!
-//! Constraint sets are bitmasks, all matrices are fixed-size: no heap use but the event record.
+//! Constraint sets are bitmasks, all matrices are fixed-size: no heap use but the event record and
+//! a wedged stick's dependent rows (`wedge.rs`), whose count may exceed the degrees of freedom.
 //!
 //! The files, from the loop down: `stepper.rs` (the loop, the state it keeps, the accessors),
 //! `search.rs` (the event search of one step) over `root_finding.rs` (scan, Illinois),
 //! `settle.rs` (an event resolved, drift removed) over `contact_laws.rs` (the impact law and the
 //! laws of persistent contact), which reduce to `complementarity.rs` (constraint sets, the held
 //! set, `W`, the held acceleration, the LCP) and `coulomb.rs` (the friction problems by
-//! enumeration); `rk4.rs` (the RK4 step of a sample, its error estimate, its quintic extension)
+//! enumeration, `wedge.rs` where a stick's rows are dependent); `rk4.rs` (the RK4 step of a sample, its error estimate, its quintic extension)
 //! over `sample.rs` (the state the loop carries); `inertia.rs` (`M⁻¹`); `system.rs`,
 //! `options.rs`, `event.rs`, `error.rs` (what the core takes, is told, records and refuses). The
 //! closed-form systems the tests and benches run it on are `tests/common/testbeds.rs`.
@@ -48,6 +49,7 @@ mod stepper;
 mod system;
 #[cfg(test)]
 mod test_random;
+mod wedge;
 
 pub use error::DynamicsError;
 pub use event::{Event, EventKind, StepCounts};

@@ -279,9 +279,13 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     pub fn in_contact(&self, i: usize) -> bool {
         i < M && contains(self.contacts.held, i)
     }
-    /// λ at the current state (0 for open constraints).
+    /// λ at the current state (0 for open constraints). A held constraint pulls only where the
+    /// laws left it so at a decision: held through a flight below the event resolution, or a tie,
+    /// its force growing first. Inside a step that started so, it shows 0, what the liner exerts
+    /// through the flight; a held constraint pulling otherwise shows its force as it is.
     pub fn multipliers(&self) -> SVector<f64, M> {
-        self.current().lambda
+        let start = &self.state.lambda;
+        self.current().lambda.zip_map(start, |now, start| if start < 0.0 { now.max(0.0) } else { now })
     }
     /// The tangential (friction) forces λ_T at the current state (0 without friction).
     pub fn friction_forces(&self) -> SVector<f64, M> {
@@ -405,7 +409,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
 
     /// The largest RK4 step from the current state, s: the options' and the system's bound.
     fn largest_step(&self) -> f64 {
-        self.options.step.min(self.system.largest_step(self.state.t))
+        self.options.step.min(self.system.largest_step(self.state.t, &self.state.v))
     }
 
     /// The adaptive step's smallest size from the current state, s.

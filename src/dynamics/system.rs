@@ -84,11 +84,12 @@ pub trait System<const N: usize, const M: usize> {
         SVector::zeros()
     }
 
-    /// The largest RK4 step the motion allows at `t`, s (the stepper takes the smaller of this and
-    /// `StepperOptions::step`). A system driven by a prescribed motion the error control cannot see,
-    /// being no coordinate, bounds it here so that the steps and their dense output follow that
-    /// motion. Infinite, the default: no bound of the system's own.
-    fn largest_step(&self, _t: f64) -> f64 {
+    /// The largest RK4 step the motion allows at `t` with velocities `q̇`, s (the stepper takes the
+    /// smaller of this and `StepperOptions::step`). A system whose motion the error control cannot
+    /// see (a prescribed motion, being no coordinate; a coordinate the held constraints leave alone
+    /// moving at a speed RK4 follows exactly while the held ones drift) bounds it here so that the
+    /// steps and their dense output follow that motion. Infinite, the default: no bound of its own.
+    fn largest_step(&self, _t: f64, _qd: &SVector<f64, N>) -> f64 {
         f64::INFINITY
     }
 

@@ -126,7 +126,7 @@ impl System<1, 1> for DampedBall {
         ev.force[0] -= self.damping * qd[0];
         ev
     }
-    fn largest_step(&self, _t: f64) -> f64 {
+    fn largest_step(&self, _t: f64, _qd: &Vector1<f64>) -> f64 {
         self.relaxation
     }
     fn absorbs(&self) -> bool {

@@ -124,8 +124,11 @@ const DECLARED_FOUND_BY_LARGER_SWEEPS: [u64; 25] = [
 /// 3211, a stick of a diagonal pair of corners 3e-5 N and 9e-7 N outside its cone, within the
 /// Coulomb law's tolerance and beyond the event search's, found crossed again at every event. Under
 /// the present bounds: 3336 and 9552, frictionless, a release and a closing alternating at one
-/// instant as 9273 above.
-const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 8] = [718, 1734, 1827, 1937, 1635, 3211, 3336, 9552];
+/// instant as 9273 above; 5806, 6174 and 9833, a free crank stalled with its piston wedged across
+/// the bore on two diagonal corners, whose stick had dependent rows and no solution, so that the
+/// pair slipped opposite ways at the edges of their cones and the slip reversed at once, 10⁴ times
+/// (`dynamics/wedge.rs`).
+const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 11] = [718, 1734, 1827, 1937, 1635, 3211, 3336, 9552, 5806, 6174, 9833];
 
 /// Designs drawn from the whole declared space (`designs::declared`), every output checked at
 /// every step: all run, none contradicts the model. Among them seeds 122 (a 1 m crank at
@@ -148,12 +151,19 @@ fn declared_designs_with_ramping_inputs_run_and_agree_with_the_model() {
     assert!(failed.is_empty(), "{} of {RAMPED_DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
+/// Conservative declared designs beyond the first `DESIGNS` that `make designs` found failing:
+/// 7888 and 9941, a corner released and, its flight ending below the event resolution, held again
+/// at once while its force still pulled (−2e-4 N, growing): read inside that step, the force showed
+/// as negative in contact; 8641, a 2.4 t flywheel at 9000 rpm whose free crank took 0.36 rad steps
+/// with two corners held, which left them 4.6 µm off the liner and the others through the wall.
+const CONSERVATIVE_FOUND_BY_LARGER_SWEEPS: [u64; 3] = [7888, 9941, 8641];
+
 /// Declared designs with nothing doing work on them (free crank, no load, gas, damping or gravity):
 /// their kinetic energy at the end plus what impacts and sliding dissipated is their energy at the
 /// start, with liner friction as without (`make designs` gives the worst of 10⁴).
 #[test]
 fn declared_designs_that_nothing_works_on_balance_their_energy() {
-    let failed = failures_of(0..DESIGNS, declared_conservative, balanced);
+    let failed = failures_of((0..DESIGNS).chain(CONSERVATIVE_FOUND_BY_LARGER_SWEEPS), declared_conservative, balanced);
     assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
 }
 
