@@ -26,15 +26,18 @@ fn main() {
         ("lubricated engine", lubricated_engine),
     ];
     for (family, make) in families.into_iter().filter(|(family, _)| only.as_deref().is_none_or(|o| o == *family)) {
-        // The worst |energy balance| of the designs without and with liner friction.
-        let (start, mut failed, mut events, mut worst) = (Instant::now(), 0, 0, [0.0_f64; 2]);
+        // The worst |energy balance| of the designs without and with liner friction, and their seeds.
+        let (start, mut failed, mut events, mut worst) = (Instant::now(), 0, 0, [(0.0_f64, 0); 2]);
         for seed in first..first + n {
             let design = make(&mut Random::new(seed));
             match run(&design) {
                 Ok(finished) => {
                     events += finished.events.len();
                     let rubbing = usize::from(design.params.friction > 0.0);
-                    worst[rubbing] = worst[rubbing].max(finished.energy_balance().abs());
+                    let balance = finished.energy_balance().abs();
+                    if balance > worst[rubbing].0 {
+                        worst[rubbing] = (balance, seed);
+                    }
                 }
                 Err(e) => {
                     failed += 1;
@@ -46,7 +49,8 @@ fn main() {
         // Only the sliders and the conservative declared designs are free of damping, gas and gravity:
         // the engines' balance holds their work.
         let balance = if family.ends_with("slider") || family.ends_with("conservative") {
-            format!(", worst |energy balance| {:.1e} frictionless, {:.1e} with friction", worst[0], worst[1])
+            let [(without, a), (with, b)] = worst;
+            format!(", worst |energy balance| {without:.1e} frictionless (seed {a}), {with:.1e} with friction (seed {b})")
         } else {
             String::new()
         };

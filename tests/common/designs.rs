@@ -56,7 +56,8 @@ impl Random {
 }
 
 /// A design, the inputs it runs with (their values at the start and their time derivatives, as a host
-/// sets them with fmi2SetRealInputDerivatives; zero: held), and how long and in what steps it is run.
+/// sets them with fmi2SetRealInputDerivatives; zero: held), and how long and in what steps it is run:
+/// `step` each, or, `variable`, each drawn from 0.1–3 times `step` (log-uniform, seeded by `step`).
 #[derive(Clone, Debug)]
 pub struct Design {
     pub params: Parameters,
@@ -64,11 +65,13 @@ pub struct Design {
     pub derivatives: InputDerivatives,
     pub duration: f64,
     pub step: f64,
+    pub variable: bool,
 }
 
 impl Design {
     /// The design with its crank speed ramping by up to ±20 % and its gas pressure input by up to ±50 %
-    /// over the run, at constant rates drawn from `r`, curvature included (a host's second derivatives).
+    /// over the run, at constant rates drawn from `r`, curvature included (a host's second derivatives),
+    /// in communication steps of variable length.
     fn ramped(self, r: &mut Random) -> Self {
         let (u, t) = (&self.inputs, self.duration);
         let [speed_rate, pressure_rate] = [u.crank_speed * r.between(-0.2, 0.2) / t, u.gas_pressure * r.between(-0.5, 0.5) / t];
@@ -77,7 +80,19 @@ impl Design {
             gas_pressure: [pressure_rate, 0.0],
             load_torque: [0.0, 0.0],
         };
-        Self { derivatives, ..self }
+        Self { derivatives, variable: true, ..self }
+    }
+
+    /// The communication points after the start: every `step` up to the first at or past `duration`.
+    fn points(&self) -> Vec<f64> {
+        if !self.variable {
+            return (1..=(self.duration / self.step).ceil() as usize).map(|k| k as f64 * self.step).collect();
+        }
+        let (mut lengths, mut points) = (Random::new(self.step.to_bits()), vec![0.0]);
+        while points[points.len() - 1] < self.duration {
+            points.push(points[points.len() - 1] + self.step * libm::pow(30.0, lengths.next()) / 10.0);
+        }
+        points.split_off(1)
     }
 
     /// The inputs a host sets at time `t`: the start values followed along their derivatives.
@@ -118,7 +133,7 @@ pub fn engine(r: &mut Random) -> Design {
     };
     let inputs = Inputs { crank_speed: speed, ..Inputs::default() };
     let step = [1e-3, 1e-4][(r.next() * 2.0) as usize];
-    Design { params, inputs, derivatives: InputDerivatives::default(), duration: 2.0 * 4.0 * PI / speed, step }
+    Design { params, inputs, derivatives: InputDerivatives::default(), duration: 2.0 * 4.0 * PI / speed, step, variable: false }
 }
 
 /// A light slider of the Flores benchmark's kind: its published links, a free crank started at
@@ -128,7 +143,14 @@ pub fn slider(r: &mut Random) -> Design {
     let com = r.between(-0.02, 0.02);
     let params = Parameters { bore: 0.05 + 2.0 * r.between(1e-4, 2e-3), restitution: r.next(), ..flores(com) };
     let inputs = Inputs { crank_speed: r.between(50.0, 300.0), gas_pressure: 0.0, load_torque: 0.0 };
-    Design { params, inputs, derivatives: InputDerivatives::default(), duration: 0.1, step: [1e-3, 1e-4][(r.next() * 2.0) as usize] }
+    Design {
+        params,
+        inputs,
+        derivatives: InputDerivatives::default(),
+        duration: 0.1,
+        step: [1e-3, 1e-4][(r.next() * 2.0) as usize],
+        variable: false,
+    }
 }
 
 /// An engine with liner friction μ ∈ [0, 0.3] and a cylinder tilted from the vertical (lateral
@@ -227,7 +249,7 @@ pub fn declared(r: &mut Random) -> Design {
         let inputs = Inputs { crank_speed: speed, gas_pressure: decades(r, 1e4, 1e7), load_torque: 0.0 };
         let step = decades(r, 1e-5, 1e-2);
         if CrankTrain::new(&params, 0.0).is_ok() {
-            return Design { params, inputs, derivatives: InputDerivatives::default(), duration, step };
+            return Design { params, inputs, derivatives: InputDerivatives::default(), duration, step, variable: false };
         }
     }
 }
@@ -328,13 +350,13 @@ pub fn run(design: &Design) -> Result<Finished, String> {
     let mut events = Vec::new();
     model.advance(&design.inputs, 0.0, &mut events).map_err(|e| e.to_string())?;
     let initial_energy = outputs(&model).kinetic_energy;
-    let steps = (design.duration / design.step).ceil() as usize;
+    let points = design.points();
     let mut before = outputs(&model);
-    for k in 1..=steps {
+    for (k, &t_end) in points.iter().enumerate() {
         let first = events.len();
-        let (t, t_end) = ((k - 1) as f64 * design.step, k as f64 * design.step);
+        let t = if k == 0 { 0.0 } else { points[k - 1] };
         let inputs = design.inputs_at(t);
-        if k == steps.div_ceil(2) {
+        if k + 1 == points.len().div_ceil(2) {
             continues_after_a_round_trip(&model, &inputs, &design.derivatives, t_end).map_err(|e| format!("at t = {t} s: {e}"))?;
         }
         model.advance_interpolated(&inputs, &design.derivatives, t_end, &mut events).map_err(|e| e.to_string())?;
