@@ -1,5 +1,6 @@
 //! `cargo bench --bench film`: time per `Skirt::loads` call (the lubricated skirt's Reynolds solve on
-//! both sides, asperities, damping) over a cycle of motions, at the default grid and its neighbours,
+//! both sides with its loads per unit rate, `Skirt::linearise`, then the loads, asperities and Couette
+//! shear at the motion, `Skirt::loads_with`) over a cycle of motions, at the default grid and its neighbours,
 //! against the evaluation's flop count. Each figure is the median of several runs.
 
 use pistonslap::models::skirt::{Skirt, SkirtDesign, SkirtMotion, SkirtProfile};
@@ -52,11 +53,12 @@ fn main() {
         let time = times[RUNS / 2];
         // Flops: a band Cholesky of n unknowns, half band b, takes ≈ n·b² (n·b²/2 multiply-adds); a
         // forward or back substitution 2·n·b. Each active-set step factorises and substitutes forward
-        // three right-hand sides (the pressure's and the two damping rates') and back the pressure's.
+        // five right-hand sides (the pressure's and the four of `FilmLinear`'s loads per unit rate) and
+        // back the pressure's.
         // An upper bound: a partial refactorisation and the cavitated rows' work are less.
         let (n, b) = ((grid.0 * grid.1) as f64, grid.0.min(grid.1) as f64);
         let per_call = factorisations as f64 / motions.len() as f64;
-        let flops = per_call * (n * b * b + 4.0 * 2.0 * n * b);
+        let flops = per_call * (n * b * b + 6.0 * 2.0 * n * b);
         let marker = if grid == SkirtDesign::DEFAULT_GRID { " (default)" } else { "" };
         println!(
             "grid {:>2}×{:<2}{marker:<10} {:>8.1} µs/call  {:>4.2} factorisations/call  {:>6.2} Mflop/call  {:>5.2} Gflop/s",

@@ -179,6 +179,8 @@ fn coulomb_law<S: System<N, M>, const N: usize, const M: usize>(
     let at = |t: f64, q: &SVector<f64, N>, v: &SVector<f64, N>, ev: &Evaluation<N, M>| {
         let tangents = sys.tangents(t, q, v);
         let (frame, free) = Tangential::at(ev, &tangents, mu).ok_or(DynamicsError::SingularMass { time: t })?;
+        let lengths = sys.coordinate_lengths();
+        let frame = frame.wedging((0..N).all(|k| (v[k] * lengths[k]).abs() <= tol.velocity));
         let b = (Frame::gap_acceleration(ev, &free), tangents.jacobian * free + tangents.bias);
         let scale = members::<M>(candidates).fold(0.0_f64, |s, i| {
             s.max((ev.gap_jacobian.row(i) * free)[0].abs() + ev.gap_bias[i].abs())

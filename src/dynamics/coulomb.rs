@@ -46,6 +46,10 @@ pub(crate) struct Tangential<const N: usize, const M: usize> {
     /// `J_N M⁻¹ J_Nᵀ`, `J_N M⁻¹ J_Tᵀ`, `J_T M⁻¹ J_Nᵀ`, `J_T M⁻¹ J_Tᵀ`.
     w: [[SMatrix<f64, M, M>; 2]; 2],
     mu: SVector<f64, M>,
+    /// Whether a stick with more rows than degrees of freedom is solved (`wedge.rs`): only with the
+    /// whole system at rest, where a wedge can hold; moving (the crank turning through a dead
+    /// centre, where the piston is at axial rest) it would have to stop the motion at once.
+    wedge: bool,
 }
 
 /// A solution of a contact problem: the forces (or impulses) and the resulting normal and
@@ -64,7 +68,12 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
     pub fn new(ev: &Evaluation<N, M>, tangents: &Tangents<N, M>, inertia: &Inertia<N>, mu: SVector<f64, M>) -> Self {
         let (jn, jt) = (&ev.gap_jacobian, &tangents.jacobian);
         let (normal, tangent) = (inertia.solve(&jn.transpose()), inertia.solve(&jt.transpose()));
-        Self { w: [[jn * normal, jn * tangent], [jt * normal, jt * tangent]], normal, tangent, mu }
+        Self { w: [[jn * normal, jn * tangent], [jt * normal, jt * tangent]], normal, tangent, mu, wedge: false }
+    }
+
+    /// This geometry, solving a wedged stick where `wedge`.
+    pub fn wedging(self, wedge: bool) -> Self {
+        Self { wedge, ..self }
     }
 
     /// `new` with `M` factored here, and the acceleration without contact forces `M⁻¹ f`; `None`
@@ -81,8 +90,8 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
 
     /// The forces of `modes` that zero the normal row of every closed constraint and the
     /// tangential row of every sticking one, with `b_N`, `b_T` the rows' values at zero force.
-    /// Where those rows are dependent (more than `N` of them, or a vanishing pivot) but agree, and
-    /// a stick is among them, the forces `wedge.rs` chooses; `None` otherwise.
+    /// Where there are more than `N` of those rows, they agree, and a stick is among them, the
+    /// forces `wedge.rs` chooses; `None` for other dependent rows (a vanishing pivot).
     ///
     /// Sticking constraints whose tangents act alike (equal columns of `M⁻¹ J_Tᵀ`: one body at
     /// rest on one surface at several points) have dependent tangential rows: the motion fixes
@@ -133,10 +142,13 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
         });
         let (mut normal, mut tangent) = (SVector::<f64, M>::zeros(), SVector::<f64, M>::zeros());
         let mut assign = |(i, d): (usize, usize), x: f64| if d == 0 { normal[i] = x } else { tangent[i] = x };
-        if let Some(Some(x)) = independent {
+        if let Some(x) = independent {
+            let x = x?;
             unknowns().enumerate().for_each(|(k, u)| assign(u, x[k]));
-        } else if unknowns().any(|(_, d)| d == 1) {
-            // Dependent rows with a stick among them (`wedge.rs`).
+        } else if self.wedge && unknowns().any(|(_, d)| d == 1) {
+            // More rows than degrees of freedom with a stick among them (`wedge.rs`). Fewer rows
+            // with a vanishing pivot are a singular pose (a dead centre), dependent at an instant
+            // only: refused as before, so that the laws choose modes that the motion can keep.
             let list: Vec<(usize, usize)> = unknowns().collect();
             let a = DMatrix::from_fn(r, r, |k, l| response(list[k], list[l]));
             let index = |u: (usize, usize)| list.iter().position(|&v| v == u);

@@ -156,6 +156,7 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
     contacts: Contacts,
 ) -> Result<Stepped<N, M>, DynamicsError> {
     let dt = t - s0.t;
+    sys.begin_step(s0.t, (&s0.q, &s0.v, &s0.acc), dt);
     // Three monomorphizations of the step: a flight's stages need `M` and `f` alone, and
     // frictionless held stages the normal forces alone, neither adding friction work; rubbing
     // stages keep the friction power at stages 2–4 (the first is `s0`'s) for its integral by the

@@ -154,7 +154,8 @@ pub(super) fn motion<S: System<N, M>, const N: usize, const M: usize>(
     if contacts.held == 0 {
         return Ok(Motion { acc: free_acc, lambda: SVector::zeros(), friction: SVector::zeros(), slip });
     }
-    let frame = Tangential::new(ev, &tangents, &inertia, mu);
+    // A wedge held is one the laws found at rest.
+    let frame = Tangential::new(ev, &tangents, &inertia, mu).wedging(true);
     let modes = std::array::from_fn(|i| contacts.mode(i));
     let b = (Frame::gap_acceleration(ev, &free_acc), tangents.jacobian * free_acc + tangents.bias);
     let s = frame.solve(&modes, (&b.0, &b.1)).ok_or(DynamicsError::DependentContacts { time: t, constraints: contacts.held })?;

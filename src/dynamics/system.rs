@@ -70,6 +70,12 @@ pub trait System<const N: usize, const M: usize> {
         (ev.mass, ev.force)
     }
 
+    /// Called at the start `(t, q, q̇)` of every RK4 step of length `dt`, before its stages, with
+    /// the start's acceleration `q̈`: a system may prepare terms its stages share (the lubricated
+    /// skirt solves its film here, once per step). What it prepares must be a function of these
+    /// arguments (a step taken again from the same start is the same step). Nothing, the default.
+    fn begin_step(&self, _t: f64, _state: (&SVector<f64, N>, &SVector<f64, N>, &SVector<f64, N>), _dt: f64) {}
+
     /// Lengths `L_k` (m per unit of coordinate `k`) that turn an error of coordinate `k` into a
     /// displacement of the mechanism. With constraints held, the adaptive step bounds `|L_k δq_k|`
     /// on the motion left along them, which the gaps do not see (a crank turning while the piston

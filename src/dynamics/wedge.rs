@@ -6,32 +6,34 @@
 //! opposite ways at the edges of their cones remains, whose slip grows from round-off the wrong
 //! way and is found reversed at once, again and again at one instant.
 //!
-//! The forces taken: the least-squares solution, moved along the one-dimensional null space to
-//! the set whose smallest margin (each closed constraint's normal force, each stick's distance to
-//! the edges of its cone) is largest, which keeps every stick as far inside its cone as the others.
+//! The forces taken: the least-norm solution, moved along the one-dimensional null space to the
+//! set whose smallest margin (each closed constraint's normal force, each stick's distance to the
+//! edges of its cone) is largest, which keeps every stick as far inside its cone as the others.
 //! Where the margins grow without bound along it (a wedge that locks: μ above the skirt length
-//! over the diameter), the admissible set nearest the least-squares one, the least squeeze. Heap
-//! matrices: the rows may outnumber the degrees of freedom, and this runs only while a wedge holds.
+//! over the diameter), the admissible set nearest the least-norm one, the least squeeze. Solved by
+//! Gaussian elimination with full pivoting: arithmetic only, so that every platform gets the same
+//! bits (a decomposition through `hypot` would call the system's libm). Heap matrices: the rows may
+//! outnumber the degrees of freedom, and this runs only while a wedge holds.
 
 use super::complementarity::{COMPLEMENTARITY_TOL, DEPENDENT_PIVOT};
 use nalgebra::{DMatrix, DVector};
 
+/// The last but one pivot, relative to the first, below which a wedge is not held: a second
+/// dependence (a wedge at a dead centre of the crank, where the rank changes along the motion),
+/// left to the other modes, for held the stick would lose its solution within a step.
+const WELL_POSED: f64 = 1e-6;
+
 /// One linear margin `c · x ≥ 0` over the unknowns: `(unknown, coefficient)` pairs.
 pub(crate) type Margin = [(usize, f64); 2];
 
-/// The unknowns `x` of `a x = rhs` (square, rank one short) chosen as the module says, over the
-/// `margins`; `None` when the rank is lower or the rows disagree beyond round-off.
+/// The unknowns `x` of `a x = rhs` (square, more rows than degrees of freedom: one dependent)
+/// chosen as the module says, over the `margins`; `None` when a second row is dependent or the rows
+/// disagree beyond round-off.
 pub(crate) fn wedged(a: DMatrix<f64>, rhs: DVector<f64>, margins: &[Margin]) -> Option<DVector<f64>> {
-    let scale = rhs.amax();
-    let svd = a.clone().svd(true, true);
-    let largest = svd.singular_values.max();
-    let nulls: Vec<usize> = (0..svd.singular_values.len()).filter(|&k| svd.singular_values[k] <= DEPENDENT_PIVOT * largest).collect();
-    let [null] = nulls[..] else { return None };
-    let x0 = svd.solve(&rhs, DEPENDENT_PIVOT * largest).ok()?;
-    if (&a * &x0 - &rhs).amax() > COMPLEMENTARITY_TOL * (scale + a.amax() * x0.amax()) {
+    let (x0, n) = solutions(&a, &rhs)?;
+    if (&a * &x0 - &rhs).amax() > COMPLEMENTARITY_TOL * (rhs.amax() + a.amax() * x0.amax()) {
         return None;
     }
-    let n = svd.v_t?.row(null).transpose();
     let value = |x: &DVector<f64>, m: &Margin| m.iter().map(|&(k, c)| c * x[k]).sum::<f64>();
     // Each margin along x0 + t n: a + b t.
     let lines: Vec<(f64, f64)> = margins.iter().map(|m| (value(&x0, m), value(&n, m))).collect();
@@ -61,6 +63,60 @@ pub(crate) fn wedged(a: DMatrix<f64>, rhs: DVector<f64>, margins: &[Margin]) -> 
         0.0_f64.clamp(lo, hi)
     };
     Some(x0 + n * t)
+}
+
+/// A solution of `a x = rhs` whose last pivot (full pivoting) vanishes, of least norm, and the null
+/// vector; `None` where the last but one pivot is small too.
+fn solutions(a: &DMatrix<f64>, rhs: &DVector<f64>) -> Option<(DVector<f64>, DVector<f64>)> {
+    let r = a.nrows();
+    let (mut u, mut y, mut columns) = (a.clone(), rhs.clone(), (0..r).collect::<Vec<usize>>());
+    let mut first = 0.0;
+    for k in 0..r {
+        let (mut p, mut q) = (k, k);
+        for i in k..r {
+            for j in k..r {
+                if u[(i, j)].abs() > u[(p, q)].abs() {
+                    (p, q) = (i, j);
+                }
+            }
+        }
+        u.swap_rows(k, p);
+        y.swap_rows(k, p);
+        u.swap_columns(k, q);
+        columns.swap(k, q);
+        let pivot = u[(k, k)].abs();
+        if k == 0 {
+            first = pivot;
+        }
+        // (A NaN pivot fails too.)
+        let small = |fraction: f64| pivot.partial_cmp(&(fraction * first)) != Some(std::cmp::Ordering::Greater);
+        if (k + 2 == r && small(WELL_POSED)) || (k + 1 == r && !small(DEPENDENT_PIVOT)) {
+            return None;
+        }
+        for i in k + 1..r {
+            let factor = u[(i, k)] / u[(k, k)];
+            for j in k..r {
+                u[(i, j)] -= factor * u[(k, j)];
+            }
+            y[i] -= factor * y[k];
+        }
+    }
+    // Back substitution over the first r − 1 unknowns, the last (free) one put to `free`.
+    let solve = |y: &DVector<f64>, free: f64| {
+        let mut z = DVector::zeros(r);
+        z[r - 1] = free;
+        for k in (0..r - 1).rev() {
+            z[k] = (y[k] - (k + 1..r).map(|j| u[(k, j)] * z[j]).sum::<f64>()) / u[(k, k)];
+        }
+        let mut x = DVector::zeros(r);
+        for (k, &c) in columns.iter().enumerate() {
+            x[c] = z[k];
+        }
+        x
+    };
+    let (particular, null) = (solve(&y, 0.0), solve(&DVector::zeros(r), 1.0));
+    let least = &particular - &null * (particular.dot(&null) / null.dot(&null));
+    Some((least, null))
 }
 
 #[cfg(test)]

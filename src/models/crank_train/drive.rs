@@ -8,7 +8,7 @@
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
 use super::linkage::{LinkAngles, Linkage, Loads};
-use super::lubrication::Lubrication;
+use super::lubrication::{predicted, Lubrication};
 use super::model::MAX_STEP_ANGLE;
 use crate::dynamics::{Absorbed, Evaluation, System, Tangents};
 use crate::models::gas::GasPressure;
@@ -124,6 +124,14 @@ impl Engine {
             lubrication.apply((phi, &trig), phid, (&mut mass, &mut force));
         }
         (mass, force)
+    }
+
+    /// An RK4 step begins: the lubricated skirt solves its film at the state (φ, φ̇) predicted into
+    /// it (`Lubrication::begin_step`).
+    fn begin_step(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) {
+        if let Some(lubrication) = &self.lubrication {
+            lubrication.begin_step(phi, phid);
+        }
     }
 
     /// The largest step the lubricated skirt allows (infinite without one), s.
@@ -341,6 +349,14 @@ impl System<2, 4> for PrescribedCrank {
         self.reduced(t, &mass, &force)
     }
 
+    fn begin_step(&self, t: f64, (q, qd, qdd): (&Vector2<f64>, &Vector2<f64>, &Vector2<f64>), dt: f64) {
+        if self.engine.lubrication.is_some() {
+            let (s, q, qd) = predicted(q, qd, qdd, dt);
+            let (phi, phid) = self.full_state(t + s, &q, &qd);
+            self.engine.begin_step(&phi, &phid);
+        }
+    }
+
     fn coordinate_lengths(&self) -> Vector2<f64> {
         let lengths = self.engine.linkage.lengths();
         Vector2::new(lengths[1], lengths[2])
@@ -419,6 +435,13 @@ impl System<3, 4> for FreeCrank {
 
     fn inertia_and_force(&self, t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> (Matrix3<f64>, Vector3<f64>) {
         self.engine.inertia_and_force(t, q, qd, self.load_torque.at(t), self.engine.crank(q[0]))
+    }
+
+    fn begin_step(&self, _t: f64, (q, qd, qdd): (&Vector3<f64>, &Vector3<f64>, &Vector3<f64>), dt: f64) {
+        if self.engine.lubrication.is_some() {
+            let (_, phi, phid) = predicted(q, qd, qdd, dt);
+            self.engine.begin_step(&phi, &phid);
+        }
     }
 
     fn coordinate_lengths(&self) -> Vector3<f64> {

@@ -1,6 +1,6 @@
 //! What goes into and comes out of a skirt evaluation.
 
-use nalgebra::Matrix2;
+use nalgebra::{Matrix2, Matrix4x3};
 
 /// The skirt's motion relative to the liner, in the crank train's coordinates.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -51,6 +51,24 @@ pub struct SkirtLoads {
     /// Smallest film thickness per side, m: [thrust (+x), anti-thrust (−x)].
     pub min_film: [f64; 2],
     /// Band Cholesky factorisations per side (active-set steps): the evaluation's cost.
+    pub factorisations: [usize; 2],
+}
+
+/// The film solved at one motion (`Skirt::linearise`): for that position and cavitation set the
+/// pressure is linear in the right-hand side, i.e. in the rates r = (ẋ, φ̇3, V) (squeeze and
+/// wedge), and so are its loads, `(F, M, F_a, M_a) = −gram · r` exactly.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct FilmLinear {
+    /// The motion solved at.
+    pub at: SkirtMotion,
+    /// `gᵀ A⁻¹ b_c` summed over both sides: rows g the pressure's weights in (F, M, F_a, M_a) (minus
+    /// the extra right-hand sides: ∂b/∂ẋ, ∂b/∂φ̇3, ∂b/∂V and the axial moment's), columns b_c the
+    /// right-hand side per unit rate. Its upper-left 2 × 2 is the damping, its upper 3 × 3 the
+    /// Poiseuille dissipation's quadratic form; symmetric there.
+    pub gram: Matrix4x3<f64>,
+    /// Per side, the film nodes (node order; false: cavitated).
+    pub free: [Vec<bool>; 2],
+    /// Band Cholesky factorisations per side.
     pub factorisations: [usize; 2],
 }
 

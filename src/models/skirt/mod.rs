@@ -17,6 +17,6 @@ mod surface_tests;
 
 pub use asperity::Roughness;
 pub use design::SkirtDesign;
-pub use loads::{PressureMap, SideMap, SkirtLoads, SkirtMotion};
+pub use loads::{FilmLinear, PressureMap, SideMap, SkirtLoads, SkirtMotion};
 pub use profile::SkirtProfile;
 pub use surface::Skirt;

@@ -185,8 +185,9 @@ pub(crate) struct Reynolds {
     pub gram: [[f64; EXTRA]; EXTRA],
 }
 
-/// Right-hand sides a solve takes besides the pressure's (the skirt's two damping rates).
-pub(crate) const EXTRA: usize = 2;
+/// Right-hand sides a solve takes besides the pressure's (the skirt's: its two squeeze rates, the
+/// sliding speed's wedge and the axial friction moment's weights).
+pub(crate) const EXTRA: usize = 4;
 
 /// How a film may cavitate.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -195,6 +196,9 @@ pub(crate) enum Cavitation {
     None,
     /// The Reynolds condition as the complementarity problem above.
     Reynolds,
+    /// The film nodes held as `free` holds them (a set solved before): one direct solve, negative
+    /// pressures kept.
+    Held,
 }
 
 impl Reynolds {
@@ -280,7 +284,7 @@ impl Reynolds {
                     p[j * g.nx + i] = self.back[g.index(i, j)];
                 }
             }
-            if cavitation == Cavitation::None || steps > n {
+            if cavitation != Cavitation::Reynolds || steps > n {
                 break;
             }
             // w = A p − b on the cavitated nodes; a node joins the film where w < 0 (oil would flow in),

@@ -12,9 +12,9 @@
 
 use super::asperity::Asperity;
 use super::reynolds::{Cavitation, Film, Grid, Reynolds};
-use super::{PressureMap, SideMap, SkirtDesign, SkirtLoads, SkirtMotion};
+use super::{FilmLinear, PressureMap, SideMap, SkirtDesign, SkirtLoads, SkirtMotion};
 use crate::models::ModelError;
-use nalgebra::Matrix2;
+use nalgebra::{Matrix4x3, Vector3};
 use std::cell::RefCell;
 
 /// Per side: column terms (cos θ, ovality·sin²θ) at the node columns, the x faces, and the closed grid
@@ -70,6 +70,8 @@ struct Scratch {
     rhs: Vec<f64>,
     rate_x: Vec<f64>,
     rate_tilt: Vec<f64>,
+    wedge: Vec<f64>,
+    arm_wedge: Vec<f64>,
     /// [`RowTerms`] at the node rows and on the closed grid; (a, b) at the node rows and the z faces.
     node_rows: Vec<RowTerms>,
     closed_rows: Vec<RowTerms>,
@@ -87,6 +89,8 @@ impl Scratch {
             rhs: vec![0.0; n],
             rate_x: vec![0.0; n],
             rate_tilt: vec![0.0; n],
+            wedge: vec![0.0; n],
+            arm_wedge: vec![0.0; n],
             node_rows: Vec::with_capacity(grid.nz),
             closed_rows: Vec::with_capacity(grid.nz + 2),
             film_rows: Vec::with_capacity(grid.nz),
@@ -134,39 +138,103 @@ impl Skirt {
 
     /// Film and asperity loads, their damping, friction and dissipation at `motion`.
     pub fn loads(&self, motion: &SkirtMotion) -> SkirtLoads {
-        self.evaluate(motion, None)
+        self.loads_with(&self.linearise(motion), motion)
     }
 
-    /// The pressure and film fields of both sides at `motion`, for plots.
-    pub fn pressure_map(&self, motion: &SkirtMotion) -> PressureMap {
+    /// The loads at `motion` with the film's pressure of `linear`: the film at `linear`'s position
+    /// and cavitation set, linear in `motion`'s rates; the Couette shear (over `linear`'s film set),
+    /// the asperities and the thinnest film at `motion`'s position. At `linear`'s own motion, the
+    /// loads of [`Skirt::loads`].
+    pub fn loads_with(&self, linear: &FilmLinear, motion: &SkirtMotion) -> SkirtLoads {
+        self.evaluate(linear, motion, None)
+    }
+
+    /// The pressure and film fields of both sides at `motion` with `linear` as in
+    /// [`Skirt::loads_with`], for plots: the pressure `linear`'s at `motion`'s rates (so that it sums
+    /// to the loads), the film and asperity fields at `motion`'s position.
+    pub fn pressure_map(&self, linear: &FilmLinear, motion: &SkirtMotion) -> PressureMap {
         let mut map = PressureMap::default();
-        self.evaluate(motion, Some(&mut map));
+        self.evaluate(linear, motion, Some(&mut map));
         map
     }
 
-    fn evaluate(&self, m: &SkirtMotion, mut map: Option<&mut PressureMap>) -> SkirtLoads {
+    /// Solves the film at `motion`: its cavitation set and the pressure's loads per unit rate.
+    pub fn linearise(&self, motion: &SkirtMotion) -> FilmLinear {
+        let s = &mut *self.scratch.borrow_mut();
+        let mut linear = FilmLinear { at: *motion, ..FilmLinear::default() };
+        for side in 0..2 {
+            linear.factorisations[side] = self.solve_side(s, side, motion, Cavitation::Reynolds);
+            let reynolds = &s.reynolds[side];
+            linear.gram += Matrix4x3::from_fn(|a, c| reynolds.gram[a][c]);
+            linear.free[side].clone_from(&reynolds.free);
+        }
+        linear
+    }
+
+    /// The row terms of the pose (lateral position, tilt) of `m` at rows (u, r).
+    fn pose(&self, m: &SkirtMotion) -> impl Fn(&(f64, f64)) -> RowTerms + '_ {
         let d = &self.design;
         let (s3, c3) = (libm::sin(m.tilt), libm::cos(m.tilt));
-        let a_pin = d.pin_offset;
-        // Row terms of h = a + b cos θ + ov(θ), and of ∂h/∂φ3 = α + β cos θ (∂h/∂x = −cos θ), once per motion.
-        let terms = |&(u, r): &(f64, f64)| {
+        let (lateral, a_pin) = (m.lateral, d.pin_offset);
+        move |&(u, r): &(f64, f64)| {
             let z = d.pin_from_top - u;
-            ((d.radius_bore - r * c3, -(m.lateral - z * s3 - a_pin * c3)), (r * s3, z * c3 - a_pin * s3), z, r)
-        };
-        let s = &mut *self.scratch.borrow_mut();
-        let tabulate = |target: &mut Vec<RowTerms>, rows: &[(f64, f64)]| {
-            target.clear();
-            target.extend(rows.iter().map(terms));
-        };
-        tabulate(&mut s.node_rows, &self.rows.nodes);
-        tabulate(&mut s.closed_rows, &self.rows.closed);
+            ((d.radius_bore - r * c3, -(lateral - z * s3 - a_pin * c3)), (r * s3, z * c3 - a_pin * s3), z, r)
+        }
+    }
+
+    /// One side's Reynolds solve at `m`: the film at its pose, `b = −ḣ ΔA + wedge` at its rates, and
+    /// the extra right-hand sides ∂b/∂ẋ = cos θ ΔA, ∂b/∂φ̇3 = −(α + β cos θ) ΔA, ∂b/∂V (the wedge per
+    /// unit speed, −½ ∂h/∂u ΔA: minus the axial push's weights) and that times the axial force's arm
+    /// (minus the axial moment's weights). Returns the active-set steps.
+    fn solve_side(&self, s: &mut Scratch, side_index: usize, m: &SkirtMotion, cavitation: Cavitation) -> usize {
+        let pose = self.pose(m);
+        s.node_rows.clear();
+        s.node_rows.extend(self.rows.nodes.iter().map(&pose));
         s.film_rows.clear();
         s.film_rows.extend(s.node_rows.iter().map(|t| t.0));
         s.face_rows.clear();
-        s.face_rows.extend(self.rows.faces.iter().map(|r| terms(r).0));
+        s.face_rows.extend(self.rows.faces.iter().map(|r| pose(r).0));
+        let side = &self.sides[side_index];
+        let (nx, area) = (self.grid.nx, self.grid.dx() * self.grid.dz());
+        s.film.fill(&self.grid, (&s.film_rows, &s.face_rows), (&side.nodes, &side.faces), self.floor);
+        s.wedge.fill(0.0);
+        s.film.add_wedge(&self.grid, (0.0, 0.5), &mut s.wedge);
+        let (s3, c3) = (libm::sin(m.tilt), libm::cos(m.tilt));
+        for (j, &(_, (alpha, beta), z, r)) in s.node_rows.iter().enumerate() {
+            for (i, &(c, _)) in side.nodes.iter().enumerate() {
+                let k = j * nx + i;
+                s.rate_x[k] = c * area;
+                s.rate_tilt[k] = -(alpha + beta * c) * area;
+                s.arm_wedge[k] = s.wedge[k] * arm(z, r, c, (s3, c3), self.design.pin_offset);
+                s.rhs[k] = s.rate_x[k] * m.lateral_rate + s.rate_tilt[k] * m.tilt_rate + s.wedge[k] * m.sliding_speed;
+            }
+        }
+        s.reynolds[side_index].solve(&s.film, self.design.viscosity, &s.rhs, cavitation, &[&s.rate_x, &s.rate_tilt, &s.wedge, &s.arm_wedge])
+    }
+
+    fn evaluate(&self, linear: &FilmLinear, m: &SkirtMotion, mut map: Option<&mut PressureMap>) -> SkirtLoads {
+        let d = &self.design;
+        let rates = Vector3::new(m.lateral_rate, m.tilt_rate, m.sliding_speed);
+        // The pressure's loads g_aᵀ p with g_a = −(the a-th extra right-hand side), p = A⁻¹ Σ r_c b_c.
+        let film = -linear.gram * rates;
+        let squeeze = linear.gram.fixed_rows::<3>(0);
+        let mut out = SkirtLoads {
+            film_force: film[0],
+            moment: film[1],
+            friction_force: film[2],
+            friction_moment: film[3],
+            damping: linear.gram.fixed_view::<2, 2>(0, 0).into_owned(),
+            squeeze_power: rates.dot(&(squeeze * rates)),
+            factorisations: linear.factorisations,
+            ..SkirtLoads::default()
+        };
+        let s = &mut *self.scratch.borrow_mut();
+        let (s3, c3) = (libm::sin(m.tilt), libm::cos(m.tilt));
+        let pose = self.pose(m);
+        s.closed_rows.clear();
+        s.closed_rows.extend(self.rows.closed.iter().map(&pose));
         let (nx, nz) = (self.grid.nx, self.grid.nz);
-        let (dx, dz) = (self.grid.dx(), self.grid.dz());
-        let area = dx * dz;
+        let area = self.grid.dx() * self.grid.dz();
         let (mu, v) = (d.viscosity, m.sliding_speed);
         let sign_v = if v > 0.0 {
             1.0
@@ -175,40 +243,17 @@ impl Skirt {
         } else {
             0.0
         };
-        let mut out = SkirtLoads::default();
-        let mut damping = Matrix2::zeros();
         for (side_index, side) in self.sides.iter().enumerate() {
-            s.film.fill(&self.grid, (&s.film_rows, &s.face_rows), (&side.nodes, &side.faces), self.floor);
-            // b = −ḣ ΔA + wedge; the rates' right-hand sides ∂b/∂ẋ = cos θ ΔA, ∂b/∂φ̇3 = −(α + β cos θ) ΔA.
-            for (j, &(_, (alpha, beta), _, _)) in s.node_rows.iter().enumerate() {
-                for (i, &(c, _)) in side.nodes.iter().enumerate() {
-                    let k = j * nx + i;
-                    let tilt = alpha + beta * c;
-                    s.rhs[k] = -(-c * m.lateral_rate + tilt * m.tilt_rate) * area;
-                    s.rate_x[k] = c * area;
-                    s.rate_tilt[k] = -tilt * area;
-                }
-            }
-            s.film.add_wedge(&self.grid, (0.0, 0.5 * v), &mut s.rhs);
-            let reynolds = &mut s.reynolds[side_index];
-            out.factorisations[side_index] = reynolds.solve(&s.film, mu, &s.rhs, Cavitation::Reynolds, &[&s.rate_x, &s.rate_tilt]);
-            // D = −∂(F, M)/∂(ẋ, φ̇3) = gᵀ A⁻¹ g with g = ∂(F, M)/∂p = (∂h/∂x, ∂h/∂φ3) ΔA = −(the rates' right-hand sides).
-            damping += Matrix2::from_fn(|a, c| reynolds.gram[a][c]);
-            let (pressure, free) = (&reynolds.pressure, &reynolds.free);
-            for (j, &(_, (alpha, beta), z, r)) in s.node_rows.iter().enumerate() {
-                for (i, &(c, _)) in side.nodes.iter().enumerate() {
-                    let k = j * nx + i;
-                    let p = pressure[k];
-                    let (dh_dx, dh_dtilt) = (-c, alpha + beta * c);
-                    out.film_force += p * dh_dx * area;
-                    out.moment += p * dh_dtilt * area;
-                    out.squeeze_power += p * s.rhs[k];
-                    // The pressure's net axial push on the profiled skirt along +y, ½ p ∂h/∂u (normal
-                    // pressure on the slope plus the Poiseuille shear; its power is the wedge's work).
-                    let axial = 0.5 * p * (s.film.face_z[(j + 1) * nx + i] - s.film.face_z[j * nx + i]) * dx;
-                    out.friction_force += axial;
-                    out.friction_moment += axial * (-z * s3 + (r * c - a_pin) * c3);
-                }
+            let free = &linear.free[side_index];
+            let mut side_map = map.as_ref().map(|_| SideMap {
+                angle: side.angles.clone(),
+                position: self.rows.closed.iter().map(|r| r.0).collect(),
+                ..SideMap::default()
+            });
+            if side_map.is_some() {
+                s.reynolds[side_index].free.clone_from(free);
+                let held = SkirtMotion { lateral: linear.at.lateral, tilt: linear.at.tilt, ..*m };
+                self.solve_side(s, side_index, &held, Cavitation::Held);
             }
             // Oil fills a cavitated point as far as the film carried into it along the liner's motion
             // (+u for V > 0) allows: at a Reynolds rupture the pressure flow vanishes, so the Couette
@@ -227,16 +272,12 @@ impl Skirt {
                     let axial = -fill * mu * v / h * weight;
                     out.shear_power -= axial * v;
                     out.friction_force += axial;
-                    out.friction_moment += axial * (-z * s3 + (r * c - a_pin) * c3);
+                    out.friction_moment += axial * arm(z, r, c, (s3, c3), d.pin_offset);
                 }
             }
             // Asperities on the closed grid (trapezoid weights), with the true film thickness.
             let mut smallest = f64::INFINITY;
-            let mut side_map = map.as_ref().map(|_| SideMap {
-                angle: side.angles.clone(),
-                position: self.rows.closed.iter().map(|r| r.0).collect(),
-                ..SideMap::default()
-            });
+            let pressure = &s.reynolds[side_index].pressure;
             for (jj, &((a, b), (alpha, beta), z, r)) in s.closed_rows.iter().enumerate() {
                 for (ii, &(c, ov)) in side.closed.iter().enumerate() {
                     let h = a + b * c + ov;
@@ -258,7 +299,7 @@ impl Skirt {
                     out.moment += load * (alpha + beta * c);
                     let axial = -d.boundary_friction * load * sign_v;
                     out.friction_force += axial;
-                    out.friction_moment += axial * (-z * s3 + (r * c - a_pin) * c3);
+                    out.friction_moment += axial * arm(z, r, c, (s3, c3), d.pin_offset);
                     out.asperity_friction_power += d.boundary_friction * load * v.abs();
                 }
             }
@@ -268,9 +309,14 @@ impl Skirt {
             }
         }
         out.lateral_force += out.film_force;
-        out.damping = damping;
         out
     }
+}
+
+/// The arm about the pin of an axial force on the skirt surface at height z, radius r and cos θ = c,
+/// conjugate to φ3 (`(sin φ3, cos φ3)` the tilt's), m.
+fn arm(z: f64, r: f64, c: f64, (s3, c3): (f64, f64), pin_offset: f64) -> f64 {
+    -z * s3 + (r * c - pin_offset) * c3
 }
 
 /// Trapezoid weight of closed-grid line `k` of `n` interior lines: ½ on the two edges.
