@@ -143,8 +143,8 @@ fn random_designs_of_the_declared_space_run_and_agree_with_the_model() {
 
 /// The first designs of the declared space again, their crank speed and gas pressure inputs ramping
 /// (first and second derivatives set as a host sets them, drawn after the design, so that the designs
-/// are the same): all run, none contradicts the model, and a state restored halfway continues bit for
-/// bit (as in every run).
+/// are the same), in communication steps of variable length: all run, none contradicts the model, and
+/// a state restored halfway continues bit for bit (as in every run).
 #[test]
 fn declared_designs_with_ramping_inputs_run_and_agree_with_the_model() {
     let failed = failures_of((0..RAMPED_DESIGNS).chain(RAMPED_FOUND_BY_LARGER_SWEEPS), declared_ramped, |_, _| Ok(()));
