@@ -2,9 +2,8 @@
 //! bore at rest, sticking at two diagonal corners, has four rows (two normal, two tangential) on
 //! the crank train's three degrees of freedom. The motion then fixes the forces only up to a set
 //! that balances itself: the wedge's squeeze, both normal forces with the friction couple that
-//! holds them. Without this, no stick of such a pair is solvable, and only the pair slipping
-//! opposite ways at the edges of their cones remains, whose slip grows from round-off the wrong
-//! way and is found reversed at once, again and again at one instant.
+//! holds them. Without a solution for the stick, only the pair slipping opposite ways at the edges
+//! of their cones would be consistent, a slip the motion reverses at once.
 //!
 //! The forces taken: the least-norm solution, moved along the one-dimensional null space to the
 //! set whose smallest margin (each closed constraint's normal force, each stick's distance to the
