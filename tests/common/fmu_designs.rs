@@ -43,7 +43,8 @@ pub fn run(design: &Design) -> Result<usize, NotRun> {
             if continued.iter().zip(&now).any(|(a, b)| a.to_bits() != b.to_bits()) {
                 return Err(failed(t_end)(format!("a restored state continues otherwise:\n  {continued:?}\nnot\n  {now:?}")));
             }
-            if k + 1 == points.len().div_ceil(2) + CONTINUED_STEPS {
+            // The twin was made at k + 1 == half: after its last step, dropped.
+            if k + 2 == points.len().div_ceil(2) + CONTINUED_STEPS {
                 twin = None;
             }
         }
