@@ -148,7 +148,7 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
         } else if self.wedge && unknowns().any(|(_, d)| d == 1) {
             // More rows than degrees of freedom with a stick among them (`wedge.rs`). Fewer rows
             // with a vanishing pivot are a singular pose (a dead centre), dependent at an instant
-            // only: refused as before, so that the laws choose modes that the motion can keep.
+            // only: refused (`None`), so that the laws choose modes the motion can keep.
             let list: Vec<(usize, usize)> = unknowns().collect();
             let a = DMatrix::from_fn(r, r, |k, l| response(list[k], list[l]));
             let index = |u: (usize, usize)| list.iter().position(|&v| v == u);
