@@ -5,11 +5,22 @@
 use crate::common::designs::{declared, declared_ramped, roller, Design, Random};
 use crate::common::fmu_designs::{run, NotRun};
 
-/// Each of the first `n` designs `make` draws that fails through the FMU, with its seed, and how many
-/// the FMU refused at initialization.
-fn failures(n: u64, make: fn(&mut Random) -> Design) -> (Vec<String>, u64) {
+/// Designs each family's first `DESIGNS` left out that `make designs` found failing: an impact whose
+/// impulses pushed a corner leaving the liner returned energy, so `impact_energy_in_step` read below
+/// zero (declared 604, 1485, 3646, 6391: −1e-4 J with e = 1 and no friction, −1.86 J with friction,
+/// whose share exceeded the whole loss; ramped 553), and ramped 249, whose impact solve at a 1e-8 m/s
+/// approach gave a normal impulse of −3e-12 N·s (round-off within its tolerance).
+const DECLARED_FOUND_BY_LARGER_SWEEPS: [u64; 4] = [604, 1485, 3646, 6391];
+const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 2] = [249, 553];
+
+/// Random designs per family in `make test`.
+const DESIGNS: u64 = 60;
+
+/// Each design of `seeds` that `make` draws and that fails through the FMU, with its seed, and how
+/// many the FMU refused at initialization.
+fn failures(seeds: impl Iterator<Item = u64>, make: fn(&mut Random) -> Design) -> (Vec<String>, u64) {
     let (mut failed, mut refused) = (Vec::new(), 0);
-    for seed in 0..n {
+    for seed in seeds {
         let design = make(&mut Random::new(seed));
         match run(&design) {
             Ok(_) => {}
@@ -20,27 +31,27 @@ fn failures(n: u64, make: fn(&mut Random) -> Design) -> (Vec<String>, u64) {
     (failed, refused)
 }
 
-fn all_run(n: u64, make: fn(&mut Random) -> Design) {
-    let (failed, refused) = failures(n, make);
-    assert!(failed.is_empty(), "{} of {n} failed:\n{}", failed.len(), failed.join("\n"));
+fn all_run(found: &[u64], make: fn(&mut Random) -> Design) {
+    let (failed, refused) = failures((0..DESIGNS).chain(found.iter().copied()), make);
+    assert!(failed.is_empty(), "{} of {DESIGNS} failed:\n{}", failed.len(), failed.join("\n"));
     // The generators redraw what the model refuses: the FMU, which builds the same model, refuses none.
-    assert_eq!(refused, 0, "the FMU refused {refused} of {n} designs the model accepts");
+    assert_eq!(refused, 0, "the FMU refused {refused} of {DESIGNS} designs the model accepts");
 }
 
 /// Crank train (model_variant 1), every crank mode and pressure source.
 #[test]
 fn declared_designs_run_through_the_fmu() {
-    all_run(60, declared);
+    all_run(&DECLARED_FOUND_BY_LARGER_SWEEPS, declared);
 }
 
 /// Crank train, inputs ramping (fmi2SetRealInputDerivatives), communication steps of variable length.
 #[test]
 fn declared_designs_with_ramping_inputs_run_through_the_fmu() {
-    all_run(60, declared_ramped);
+    all_run(&RAMPED_FOUND_BY_LARGER_SWEEPS, declared_ramped);
 }
 
 /// The roller (model_variant 2), either forcing, communication steps of variable length.
 #[test]
 fn roller_designs_run_through_the_fmu() {
-    all_run(60, roller);
+    all_run(&[], roller);
 }

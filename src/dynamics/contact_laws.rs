@@ -41,27 +41,29 @@ pub(super) struct Jump<const N: usize, const M: usize> {
     pub friction_lost: SVector<f64, M>,
 }
 
-/// Impulses `Λ` of an impact over the closed set `C`:
-/// `Λ ≥ 0`, `ġ⁺ + e·min(ġ⁻, 0) ≥ 0`, `Λᵢ (ġ⁺ᵢ + eᵢ min(ġ⁻ᵢ, 0)) = 0`, with `ġ⁺ = ġ⁻ + W Λ`.
+/// Impulses `Λ` of an impact over the closed set `C`: with one coefficient `e`
+/// for them all, `Λ ≥ 0`, `ξ = ġ⁺ + e ġ⁻ ≥ 0`, `Λᵢ ξᵢ = 0`, with `ġ⁺ = ġ⁻ + W Λ`.
 ///
-/// Closed constraints that are sliding or separating (`ġ⁻ ≥ 0`) only get an impulse if the others
-/// would push them in, and then leave with `ġ⁺ ≥ 0`. With one closed constraint this is exactly
-/// eq 11: `Λ = −(1 + e) ḣ⁻ / W`, the percussion `M⁻¹∇h Λ` along the gradient in the metric of `M`
-/// (eq 5 keeps the M-weighted tangential velocity, so the Euclidean one jumps with inertia
+/// The one `e` makes the law dissipative however the constraints couple (Glocker 2013, energetic
+/// consistency of Newton-type impact laws): `Λᵀξ = 0` gives `Λᵀ(ġ⁻ + ġ⁺) = −(1 − e)/(1 + e) ΛᵀWΛ
+/// ≤ 0`. A coefficient per constraint is not (a held or resting one pushed by another's impulse,
+/// taken with `e = 0`, would return `Λ ġ⁻/2` of energy). With one closed constraint this is
+/// exactly eq 11: `Λ = −(1 + e) ḣ⁻ / W`, the percussion `M⁻¹∇h Λ` along the gradient in the metric
+/// of `M` (eq 5 keeps the M-weighted tangential velocity, so the Euclidean one jumps with inertia
 /// coupling) and `ḣ⁺ = −e ḣ⁻` with `ḣ` including `∂h/∂t` (eq 7).
 /// `None` is the paper's "multiple impact exception": no impulse set satisfies the law.
 fn newton_impulses<const N: usize, const M: usize>(
     frame: &Frame<N, M>,
     hd_minus: &SVector<f64, M>,
-    restitution: &SVector<f64, M>,
-    closed: Set,
+    restitution: f64,
+    set: Set,
 ) -> Option<SVector<f64, M>> {
     let mut b = SVector::<f64, M>::zeros();
-    for i in members::<M>(closed) {
-        b[i] = hd_minus[i] + restitution[i] * hd_minus[i].min(0.0);
+    for i in members::<M>(set) {
+        b[i] = (1.0 + restitution) * hd_minus[i];
     }
-    let scale = members::<M>(closed).fold(0.0_f64, |s, i| s.max(hd_minus[i].abs()));
-    solve_lcp(&frame.w, &b, closed, scale).map(|(impulse, _)| impulse)
+    let scale = members::<M>(set).fold(0.0_f64, |s, i| s.max(hd_minus[i].abs()));
+    solve_lcp(&frame.w, &b, set, scale).map(|(impulse, _)| impulse)
 }
 
 /// The energy each impulse dissipates, `−Λᵢ (ḣ⁻ᵢ + ḣ⁺ᵢ) / 2` with `ḣ = J q̇ + ∂h/∂t`: the work
@@ -77,20 +79,20 @@ pub(super) fn energy_lost<const M: usize>(
     -impulse.component_mul(&(hd_minus + hd_plus)) * 0.5
 }
 
-/// The impact over `closed` at `(t, q, q̇)`: the generalized Newton law, or where the system has
-/// friction the Newton–Coulomb law (`coulomb.rs`).
+/// The impact over `set` at `(t, q, q̇)`: the generalized Newton law, or where the system has
+/// friction the Newton–Coulomb law (`coulomb.rs`), with the system's one `e` for every member.
 pub(super) fn impact<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
     ev: &Evaluation<N, M>,
     frame: &Frame<N, M>,
-    closed: Set,
+    set: Set,
 ) -> Result<Jump<N, M>, DynamicsError> {
-    let refused = DynamicsError::MultipleImpact { time: t, constraints: closed };
-    let e = SVector::<f64, M>::from_fn(|i, _| sys.restitution(i));
+    let refused = DynamicsError::MultipleImpact { time: t, constraints: set };
+    let e = sys.restitution();
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let Some(mu) = friction_of(sys) else {
-        let impulse = newton_impulses(frame, &hd, &e, closed).ok_or(refused)?;
+        let impulse = newton_impulses(frame, &hd, e, set).ok_or(refused)?;
         let hd_plus = hd + frame.w * impulse;
         let lost = energy_lost(&impulse, &hd, &hd_plus);
         return Ok(Jump {
@@ -105,23 +107,29 @@ pub(super) fn impact<S: System<N, M>, const N: usize, const M: usize>(
     let tangents = sys.tangents(t, q, v);
     let (coulomb, _) = Tangential::at(ev, &tangents, mu).ok_or(DynamicsError::SingularMass { time: t })?;
     let slip = tangents.slip(v);
-    // ξ = γ⁺ + ε γ⁻ in both directions, ε = e for an approaching constraint, 0 for another
-    // closed one (as without friction).
-    let eps = SVector::<f64, M>::from_fn(|i, _| if hd[i] < 0.0 { e[i] } else { 0.0 });
-    let b = (hd + eps.component_mul(&hd), slip + eps.component_mul(&slip));
-    let choices = std::array::from_fn(|i| if contains(closed, i) { Choice::AtRest } else { Choice::Open });
-    let scale = members::<M>(closed).fold(0.0_f64, |s, i| s.max(hd[i].abs()).max(slip[i].abs()));
-    let (_, jump) = coulomb.enumerate(&choices, (&b.0, &b.1), scale).ok_or(refused)?;
+    // ξ = γ⁺ + e γ⁻ in both directions, for every member.
+    let b = (hd * (1.0 + e), slip * (1.0 + e));
+    let choices = std::array::from_fn(|i| if contains(set, i) { Choice::AtRest } else { Choice::Open });
+    let scale = members::<M>(set).fold(0.0_f64, |s, i| s.max(hd[i].abs()).max(slip[i].abs()));
+    let (_, mut jump) = coulomb.enumerate(&choices, (&b.0, &b.1), scale).ok_or(refused)?;
+    // A normal impulse below zero is the solve's round-off, within its tolerance: none, and no
+    // friction with it (else it returns energy, −1e-13 J against 1e-8 m/s approaches).
+    for i in members::<M>(set) {
+        if jump.normal[i] < 0.0 {
+            (jump.normal[i], jump.tangent[i]) = (0.0, 0.0);
+        }
+    }
     let v_plus = coulomb.motion(v, &jump);
     let hd_plus = ev.gap_jacobian * v_plus + ev.gap_time_rate;
     let lost = energy_lost(&jump.normal, &hd, &hd_plus) + energy_lost(&jump.tangent, &slip, &tangents.slip(&v_plus));
-    // Friction's share: −Λ_T ξ_T / (1 + ε) = μ Λ_N |ξ_T| / (1 + ε) ≥ 0, the term the Coulomb
-    // law contributes to ΔT (coulomb.rs); the work of Λ_T on the mean slip, −Λ_T (γ⁻ + γ⁺)/2,
+    // Friction's share: −Λ_T ξ_T / (1 + e) = μ Λ_N |ξ_T| / (1 + e) ≥ 0. With the normal share
+    // (1 − e)/(2(1 + e)) ΛᵀGΛ ≥ 0 (G the Delassus operator of both directions) it makes up the
+    // whole loss, as in `newton_impulses`; the work of Λ_T on the mean slip, −Λ_T (γ⁻ + γ⁺)/2,
     // can be negative where the impulses couple the normal and tangential motion. Taken as the
     // magnitude |Λ_T ξ_T|: a sticking constraint's ξ_T is zero up to round-off, whose sign would
     // otherwise make its share, and the friction books with it, −1e-19 J.
-    let xi = tangents.slip(&v_plus) + eps.component_mul(&slip);
-    let friction_lost = SVector::<f64, M>::from_fn(|i, _| (jump.tangent[i] * xi[i]).abs() / (1.0 + eps[i]));
+    let xi = tangents.slip(&v_plus) + slip * e;
+    let friction_lost = SVector::<f64, M>::from_fn(|i, _| (jump.tangent[i] * xi[i]).abs() / (1.0 + e));
     Ok(Jump { normal: jump.normal, tangent: jump.tangent, v: v_plus, hd: hd_plus, lost, friction_lost })
 }
 
@@ -201,9 +209,13 @@ fn coulomb_law<S: System<N, M>, const N: usize, const M: usize>(
     // A stick at the edge of its cone is a tie too: the slip it may start has no acceleration
     // yet, and the event search, which locates the edge to within ε_λ, would find it crossed at
     // once and return here with nothing changed.
-    let (edge, _) = tie_margin(&w, candidates, scale, tol.multiplier);
+    let (edge, w_max) = tie_margin(&w, candidates, scale, tol.multiplier);
     let at_edge = select::<M>(|i| contains(contacts.stick, i) && mu[i] * now.normal[i] - now.tangent[i].abs() <= edge);
-    let tied = ties(&w, (&now.normal, &now.y_normal), (candidates, contacts.held), scale, tol.multiplier) | at_edge;
+    // So is a slip the law starts from rest with no acceleration yet: the motion, not the sign
+    // of a round-off γ̇, decides its way.
+    let unstarted =
+        select::<M>(|i| choices[i] == Choice::AtRest && matches!(modes[i], Mode::Slip(_)) && now.y_tangent[i].abs() <= edge * w_max);
+    let tied = ties(&w, (&now.normal, &now.y_normal), (candidates, contacts.held), scale, tol.multiplier) | at_edge | unstarted;
     if tied == 0 {
         return Ok((contacts, frame.motion(&free, &now)));
     }

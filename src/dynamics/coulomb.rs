@@ -9,11 +9,12 @@
 //!   (`γ̇ = 0`, `|λ_T| ≤ μ λ_N`) or starts to slip (`λ_T = −μ λ_N sign γ̇`): the planar friction
 //!   complementarity conditions, solved by enumerating the modes ([`Mode`]) of the constraints;
 //! - **impacts**: Glocker's Newton–Coulomb law with the velocities `ξ_N = γ_N⁺ + ε γ_N⁻`,
-//!   `ξ_T = γ_T⁺ + ε γ_T⁻` (the same ε, the constraint's restitution, in both directions):
+//!   `ξ_T = γ_T⁺ + ε γ_T⁻` (the same ε, the system's restitution, in both directions and at
+//!   every contact of the impact):
 //!   `Λ_N ≥ 0 ⊥ ξ_N ≥ 0` and `−Λ_T ∈ μ Λ_N Sign ξ_T`. With `γ⁺ = γ⁻ + W Λ` (W over both
 //!   directions, positive semi-definite) the kinetic energy changes by
-//!   `ΔT = Λᵀξ / (1 + ε) − (1 − ε) ΛᵀWΛ / (2 (1 + ε))`, and `Λᵀξ = −Σ μ Λ_N |ξ_T| ≤ 0`: where the
-//!   contacts of an impact share one ε (always, for one contact) it cannot create energy for any
+//!   `ΔT = Λᵀξ / (1 + ε) − (1 − ε) ΛᵀWΛ / (2 (1 + ε))`, and `Λᵀξ = −Σ μ Λ_N |ξ_T| ≤ 0`: as the
+//!   contacts of an impact share one ε it cannot create energy for any
 //!   μ ≥ 0 and ε ∈ [0, 1] (C. Glocker, "Energetic consistency conditions for standard impacts",
 //!   Multibody System Dynamics 29 (2013)). A sticking impact reverses `γ_T` by ε like `γ_N`;
 //!   Newton's law with `ε_T = 0` instead is known to gain energy (Kane's example).

@@ -25,6 +25,10 @@ const DRIFT_FRACTION: f64 = 0.1;
 /// Newton steps `onto_contacts` takes at most (quadratic convergence: two or three reach round-off).
 const MAX_PROJECTIONS: usize = 4;
 
+/// Impacts at one instant, each turning back a constraint the last one's impulses pushed onto the
+/// liner, beyond which the accumulation counts as unresolved (`DynamicsError::EventBudget`).
+const IMPACT_ROUNDS: usize = 1000;
+
 impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// Keeps active constraints on the manifold against RK4 drift: once `h_A` or `ḣ_A` has drifted
     /// beyond `DRIFT_FRACTION` of its tolerance, one M-metric Newton projection of `q` onto
@@ -133,7 +137,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
 
     /// Resolves the closed constraints at the current instant (Fig. 1 at a discontinuity point):
     /// 1. if any approaches (`ḣ < −ε_ḣ`), the generalized Newton impact over all of `closed`
-    ///    (with friction, Newton–Coulomb);
+    ///    (with friction, Newton–Coulomb), again while it leaves one approaching;
     /// 2. persistent contact for those now at rest (`|ḣ| < ε_ḣ`, or caught by the Zeno guard)
     ///    as the sliding complementarity problem over all of them decides (`sliding_law`): one
     ///    whose multiplier just crossed zero is not released on its own word, since the others'
@@ -160,12 +164,15 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let mut impacted: Set = 0;
         let zeno_apex = ZENO_APEX_FACTOR * opts.gap_tolerance;
         let contacts = loop {
-            if approaching != 0 {
+            let mut rounds = 0;
+            while approaching != 0 {
+                // The impact law over every closed constraint, with one `e`, so that it dissipates
+                // (`newton_impulses`): one leaving the liner may return at up to e times its
+                // speed, and strikes it in the next round.
                 let jump = impact(&self.system, (t, &q, &v), &ev, &frame, closed)?;
                 // Recorded: the approaching constraints. Another closed one that takes an impulse
-                // (held, at rest, or moving off the liner) is pushed, not struck: its share of the
-                // losses, −Λᵢ (ḣ⁻ᵢ + ḣ⁺ᵢ)/2 ≤ 0 as it leaves faster, goes with its friction share to
-                // the first recorded event, so that the record's losses add up and each is ≥ 0.
+                // (held, at rest, or leaving) is pushed, not struck: its share of the losses goes with its
+                // friction share to the first recorded event, so that the record's losses add up.
                 let recorded = approaching;
                 let (mut lost, mut friction_lost) = (jump.lost, jump.friction_lost);
                 let (first, unrecorded) = (recorded.trailing_zeros() as usize, closed & !recorded);
@@ -179,6 +186,13 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 (v, hd) = (jump.v, jump.hd);
                 (ev, frame) = frame_at(&self.system, t, &q, &v, None)?;
                 impacted |= approaching;
+                // Turned back: approaching now, not before. One still approaching that was struck
+                // is what the law accepts within its tolerance; persistent contact takes it.
+                approaching = closed & !approaching & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
+                rounds += 1;
+                if rounds > IMPACT_ROUNDS {
+                    return Err(DynamicsError::EventBudget { time: t, events: IMPACT_ROUNDS });
+                }
             }
 
             let mut candidates = closed & ((hold & !impacted) | select::<M>(|i| hd[i] < opts.velocity_tolerance));

@@ -124,8 +124,10 @@ pub trait System<const N: usize, const M: usize> {
         Absorbed::zeros()
     }
 
-    /// Newton restitution coefficient `e_i ∈ [0, 1]` of constraint `i`.
-    fn restitution(&self, constraint: usize) -> f64;
+    /// Newton's restitution coefficient `e ∈ [0, 1]`, one for every constraint: an impact's
+    /// law is dissipative for any coupling of its constraints only with one `e`
+    /// (`contact_laws::newton_impulses`).
+    fn restitution(&self) -> f64;
 
     /// Coulomb friction coefficient `μ_i ≥ 0` of constraint `i`; zero, the default: frictionless
     /// (the core then takes its frictionless paths and never asks for `tangents`).

@@ -29,8 +29,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> System<N, M> for Counted<S
         self.evaluations.set(self.evaluations.get() + 1);
         self.inner.evaluate(t, q, qd)
     }
-    fn restitution(&self, i: usize) -> f64 {
-        self.inner.restitution(i)
+    fn restitution(&self) -> f64 {
+        self.inner.restitution()
     }
     fn friction(&self, i: usize) -> f64 {
         self.inner.friction(i)
@@ -99,7 +99,7 @@ impl System<1, 1> for Ball {
             gap_bias: Vector1::new(-af),
         }
     }
-    fn restitution(&self, _: usize) -> f64 {
+    fn restitution(&self) -> f64 {
         self.restitution
     }
 }
@@ -139,7 +139,7 @@ impl System<1, 1> for DampedBall {
     fn absorbed_by_jump(&self, _t: f64, _q: &Vector1<f64>, before: &Vector1<f64>, after: &Vector1<f64>) -> Absorbed {
         Absorbed::repeat(self.relaxation * self.damping * (after[0] - before[0]) * 0.5 * (after[0] + before[0]))
     }
-    fn restitution(&self, _: usize) -> f64 {
+    fn restitution(&self) -> f64 {
         self.ball.restitution
     }
 }
@@ -187,7 +187,7 @@ impl System<3, 2> for Rod {
             gap_bias: Vector2::new(spin - af, -spin - af),
         }
     }
-    fn restitution(&self, _: usize) -> f64 {
+    fn restitution(&self) -> f64 {
         self.restitution
     }
     fn friction(&self, _: usize) -> f64 {
@@ -236,7 +236,7 @@ impl System<2, 2> for Wedge {
             gap_bias: Vector2::zeros(),
         }
     }
-    fn restitution(&self, _: usize) -> f64 {
+    fn restitution(&self) -> f64 {
         self.restitution
     }
 }
@@ -289,7 +289,7 @@ impl System<2, 1> for DoublePendulum {
             gap_bias: Vector1::new(-l1 * s1 * qd[0] * qd[0] - l2 * s2 * qd[1] * qd[1]),
         }
     }
-    fn restitution(&self, _: usize) -> f64 {
+    fn restitution(&self) -> f64 {
         self.restitution
     }
 }
@@ -328,7 +328,7 @@ impl System<2, 2> for Plank {
             gap_bias: Vector2::new(a * s * qd[1] * qd[1], -a * s * qd[1] * qd[1]),
         }
     }
-    fn restitution(&self, _: usize) -> f64 {
+    fn restitution(&self) -> f64 {
         0.5
     }
 }
@@ -363,7 +363,7 @@ impl System<2, 1> for Block {
             gap_bias: Vector1::zeros(),
         }
     }
-    fn restitution(&self, _: usize) -> f64 {
+    fn restitution(&self) -> f64 {
         self.restitution
     }
     fn friction(&self, _: usize) -> f64 {

@@ -124,11 +124,13 @@ const DECLARED_FOUND_BY_LARGER_SWEEPS: [u64; 25] = [
 /// 3211, a stick of a diagonal pair of corners 3e-5 N and 9e-7 N outside its cone, within the
 /// Coulomb law's tolerance and beyond the event search's, found crossed again at every event. Under
 /// the present bounds: 3336 and 9552, frictionless, a release and a closing alternating at one
-/// instant as 9273 above; 5806, 6174 and 9833, a free crank stalled with its piston wedged across
-/// the bore on two diagonal corners, whose stick had dependent rows and no solution, so that the
-/// pair slipped opposite ways at the edges of their cones and the slip reversed at once, 10⁴ times
-/// (`dynamics/wedge.rs`).
-const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 11] = [718, 1734, 1827, 1937, 1635, 3211, 3336, 9552, 5806, 6174, 9833];
+/// instant as 9273 above; 5806 and 9833, a free crank stalled with its piston wedged across the
+/// bore on two diagonal corners, whose stick had dependent rows and no solution, so that the pair
+/// slipped opposite ways at the edges of their cones and the slip reversed at once, 10⁴ times
+/// (`dynamics/wedge.rs`); 9895 and 8474, a free crank creeping at a dead centre (μm/s) with such a
+/// pair, where the law started a slip with no acceleration the way round-off pointed and the motion
+/// reversed it at once (now a tie, decided by the motion: `contact_laws::coulomb_law`).
+const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 12] = [718, 1734, 1827, 1937, 1635, 3211, 3336, 9552, 5806, 9833, 9895, 8474];
 
 /// Designs drawn from the whole declared space (`designs::declared`), every output checked at
 /// every step: all run, none contradicts the model. Among them seeds 122 (a 1 m crank at
@@ -174,15 +176,18 @@ fn fastest_impact(finished: &Finished) -> f64 {
 
 /// Rubbing engine 10362 (e = 0.984, μ = 0.297, a pin 28 mm below a 92 mm skirt's top): each
 /// impact's friction impulse, taken from the prescribed crank, spins the piston against the other
-/// wall faster than the nearly elastic impacts dissipate, and the rattle grows to 664 m/s, impacts
+/// wall faster than the nearly elastic impacts dissipate, and the rattle grows past 500 m/s, impacts
 /// tens of nanoseconds apart. That is a motion, not an accumulation: it runs at 1 ms and 0.1 ms
-/// communication steps alike, to the same fastest impact.
+/// communication steps alike. Its impacts amplify the integrator's local error as a rattle of
+/// nearly elastic impacts does (the 100th impact's speed differs by 0.7 % between 1 ms and 10 µs
+/// steps), so the fastest is not the same at every step (664 m/s at 1, 0.5, 0.2 and 0.01 ms steps,
+/// 527 m/s at 0.1 ms).
 #[test]
 fn a_rattle_pumped_by_friction_runs_at_every_communication_step() {
     let design = rubbing_engine(&mut Random::new(10362));
     let fastest = |step: f64| fastest_impact(&run(&Design { step, ..design.clone() }).unwrap_or_else(|e| panic!("at {step} s steps: {e}")));
     let (coarse, fine) = (fastest(1e-3), fastest(1e-4));
-    assert!(coarse > 100.0 && (coarse / fine - 1.0).abs() < 1e-6, "fastest impacts {coarse} and {fine} m/s");
+    assert!(coarse > 500.0 && fine > 500.0, "fastest impacts {coarse} and {fine} m/s");
 }
 
 /// Rubbing engine 95532: corner K2 rises off the liner at 5 µm/s against a deceleration of

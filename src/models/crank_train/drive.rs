@@ -391,7 +391,7 @@ impl System<2, 4> for PrescribedCrank {
         self.engine.absorbed_by_jump(&phi, &LinkAngles::with_crank((crank.sin, crank.cos), &phi), &before, &after)
     }
 
-    fn restitution(&self, _constraint: usize) -> f64 {
+    fn restitution(&self) -> f64 {
         self.engine.restitution
     }
 
@@ -471,7 +471,7 @@ impl System<3, 4> for FreeCrank {
         self.engine.absorbed_by_jump(q, &LinkAngles::new(q), before, after)
     }
 
-    fn restitution(&self, _constraint: usize) -> f64 {
+    fn restitution(&self) -> f64 {
         self.engine.restitution
     }
 

@@ -86,7 +86,7 @@ impl System<1, 2> for RollerSystem {
         }
     }
 
-    fn restitution(&self, _constraint: usize) -> f64 {
+    fn restitution(&self) -> f64 {
         self.restitution
     }
 }
