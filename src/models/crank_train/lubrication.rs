@@ -274,7 +274,7 @@ impl Lubrication {
     pub fn pressure_map(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>) -> PressureMap {
         let motion = self.kinematics(at, phid).motion;
         match self.frozen.borrow().as_ref() {
-            Some(f) => self.skirt.pressure_map(&f.current, &motion),
+            Some(f) => f.pressure_map(&self.skirt, &motion),
             None => self.skirt.pressure_map(&self.skirt.linearise(&motion), &motion),
         }
     }

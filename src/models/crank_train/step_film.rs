@@ -13,7 +13,7 @@
 //! Films under `CLEAR_GAP` are solved at every step, as the corners' events need.
 
 use super::lubrication::CLEAR_GAP;
-use crate::models::skirt::{FilmLinear, Skirt, SkirtMotion};
+use crate::models::skirt::{FilmLinear, PressureMap, Skirt, SkirtMotion};
 use nalgebra::{Vector2, Vector3};
 
 /// How far the piston's middle of a step may lie from the last solve's position for that solve to be
@@ -65,12 +65,14 @@ pub(super) struct StepFilm {
     pub current: FilmLinear,
     pub latest: Solved,
     pub previous: Option<Solved>,
+    /// How far along the secant `current`'s `Γ` lies beyond the latest solve, in secants (0: held).
+    reach: f64,
 }
 
 impl StepFilm {
     /// The film of a step solved at its middle, `previous` the solve before.
     pub fn solved(latest: Solved, previous: Option<Solved>) -> Self {
-        Self { current: latest.linear.clone(), latest, previous }
+        Self { current: latest.linear.clone(), latest, previous, reach: 0.0 }
     }
 
     /// Prepares a step whose middle is at `motion`: true if the current film serves (the same
@@ -84,17 +86,46 @@ impl StepFilm {
             return false;
         }
         let b = &self.latest.linear;
-        self.current.gram = b.gram;
+        self.reach = 0.0;
         if let Some(a) = self.previous.as_ref().map(|p| &p.linear).filter(|a| a.free == b.free) {
             let pose = |m: &SkirtMotion| Vector2::new(m.lateral, arm * m.tilt);
             let (secant, ahead) = (pose(&b.at) - pose(&a.at), pose(motion) - pose(&b.at));
             let reach = ahead.dot(&secant) / secant.norm_squared();
             if reach.abs() <= SECANT_REACH {
-                self.current.gram += (b.gram - a.gram) * reach;
+                self.reach = reach;
             }
         }
+        self.current.gram = self.along_secant(b.gram, |p| p.linear.gram);
         self.current.at = *motion;
         true
+    }
+
+    /// `x` of the latest solve moved along the secant to `current` (`of` reads it from a solve).
+    fn along_secant<T>(&self, latest: T, of: impl Fn(&Solved) -> T) -> T
+    where
+        T: Copy + std::ops::Add<Output = T> + std::ops::Sub<Output = T> + std::ops::Mul<f64, Output = T>,
+    {
+        match self.previous.as_ref().filter(|_| self.reach != 0.0) {
+            Some(previous) => latest + (latest - of(previous)) * self.reach,
+            None => latest,
+        }
+    }
+
+    /// Both sides' fields at `motion` for plots, the pressure the one whose loads are `current`'s:
+    /// the solves' pressures at `motion`'s rates (on their own cavitation set) moved along the
+    /// secant as `Γ` was. Where that extrapolation dips below zero (a node near the set's edge) it
+    /// is drawn as zero.
+    pub fn pressure_map(&self, skirt: &Skirt, motion: &SkirtMotion) -> PressureMap {
+        let mut map = skirt.pressure_map(&self.latest.linear, motion);
+        if let Some(previous) = self.previous.as_ref().filter(|_| self.reach != 0.0) {
+            let before = skirt.pressure_map(&previous.linear, motion);
+            for (side, old) in map.sides.iter_mut().zip(&before.sides) {
+                for (p, a) in side.pressure.iter_mut().zip(&old.pressure) {
+                    *p = self.along_secant(*p, |_| *a).max(0.0);
+                }
+            }
+        }
+        map
     }
 }
 
