@@ -130,7 +130,8 @@ impl TryFrom<Saved> for Lubrication {
             let solve = |m: &[f64; 5]| Solved::at(&lubrication.skirt, &motion(m));
             let previous = film.previous.as_ref().map(solve);
             let mut step = StepFilm::solved(solve(&film.latest), previous);
-            step.carry_to(&motion(&film.current), lubrication.arm());
+            // A current film other than the latest solve was carried there.
+            step.carry_to(&motion(&film.current), lubrication.arm(), true);
             *lubrication.frozen.borrow_mut() = Some(step);
         }
         Ok(lubrication)
@@ -227,15 +228,18 @@ impl Lubrication {
         Kinematics { motion, lateral, axial, bias }
     }
 
-    /// Prepares the film for an RK4 step at (φ, φ̇), the state [`predicted`] [`SOLVE_AT`] into it:
-    /// the last solve carried on where `StepFilm::carry_to` allows, otherwise solved there. Until
-    /// the next step begins, every evaluation takes the film's loads linear in its own rates from
-    /// it (`Skirt::loads_with`). A step taken again from the same start and length (an event's
-    /// search) takes the same film.
-    pub fn begin_step(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) {
+    /// Prepares the film for an RK4 step at (φ, φ̇), the state [`predicted`] [`SOLVE_AT`] into it,
+    /// where the corners' gaps are `gaps`: while every corner is more than [`CLEAR_GAP`] off the
+    /// liner, the last solve carried on where `StepFilm::carry_to` allows; otherwise solved there
+    /// (near the liner, where the corners' events are, each step has its own solve). Until the next
+    /// step begins, every evaluation takes the film's loads linear in its own rates from it
+    /// (`Skirt::loads_with`). A step taken again from the same start and length (an event's search)
+    /// takes the same film.
+    pub fn begin_step(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, gaps: &Vector4<f64>) {
         let motion = self.kinematics((phi, &LinkAngles::new(phi)), phid).motion;
         let mut frozen = self.frozen.borrow_mut();
-        if !frozen.as_mut().is_some_and(|f| f.carry_to(&motion, self.arm())) {
+        let clear = gaps.min() > CLEAR_GAP;
+        if !frozen.as_mut().is_some_and(|f| f.carry_to(&motion, self.arm(), clear)) {
             let previous = frozen.take().map(|f| f.latest);
             *frozen = Some(StepFilm::solved(Solved::at(&self.skirt, &motion), previous));
         }

@@ -10,7 +10,8 @@
 //! film's own dissipation norm (`Γ`'s upper 3 × 3). `Γ` is then moved to the step's middle along the
 //! secant of the last two solves when both have the same cavitation set, so that the error left is
 //! second order in the move (the position's first-order change taken out); otherwise it is held.
-//! Films under `CLEAR_GAP` are solved at every step, as the corners' events need.
+//! Near the liner (a corner or the thinnest film within `CLEAR_GAP`), where the corners' events
+//! are, every step is solved.
 
 use super::lubrication::CLEAR_GAP;
 use crate::models::skirt::{FilmLinear, PressureMap, Skirt, SkirtMotion};
@@ -76,13 +77,13 @@ impl StepFilm {
     }
 
     /// Prepares a step whose middle is at `motion`: true if the current film serves (the same
-    /// middle, a step taken again) or the latest solve is carried to it; false if the step needs a
-    /// solve of its own.
-    pub fn carry_to(&mut self, motion: &SkirtMotion, arm: f64) -> bool {
+    /// middle, a step taken again) or, `carry` allowing, the latest solve is carried to it; false if
+    /// the step needs a solve of its own.
+    pub fn carry_to(&mut self, motion: &SkirtMotion, arm: f64, carry: bool) -> bool {
         if key(&self.current.at).map(f64::to_bits) == key(motion).map(f64::to_bits) {
             return true;
         }
-        if !self.latest.carries_to(motion, arm) {
+        if !carry || !self.latest.carries_to(motion, arm) {
             return false;
         }
         let b = &self.latest.linear;
@@ -189,9 +190,9 @@ mod tests {
             let fresh = -skirt.linearise(&at).gram * rates(&at);
             let error = |previous: Option<Solved>| {
                 let mut film = StepFilm::solved(b.clone(), previous);
-                assert!(film.carry_to(&at, arm) == (delta <= CARRY_MOVE * thinnest), "δ {delta}: carried iff within the bound");
+                assert!(film.carry_to(&at, arm, true) == (delta <= CARRY_MOVE * thinnest), "δ {delta}: carried iff within the bound");
                 film.latest.thinnest = f64::INFINITY;
-                assert!(film.carry_to(&at, arm));
+                assert!(film.carry_to(&at, arm, true));
                 (-film.current.gram * rates(&at) - fresh).amax() / fresh.amax()
             };
             (delta / thinnest, error(None), error(Some(a)))
