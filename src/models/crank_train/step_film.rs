@@ -163,11 +163,6 @@ mod tests {
         (Skirt::new(d).expect("the default skirt"), arm)
     }
 
-    /// The pressure's loads `−Γ r` at the motion's rates.
-    fn loads(linear: &FilmLinear, m: &SkirtMotion) -> nalgebra::Vector4<f64> {
-        -linear.gram * rates(m)
-    }
-
     #[test]
     fn a_carried_film_is_the_fresh_solve_to_second_order_in_the_move() {
         // The piston pressed toward the thrust wall and closing on it while it slides (mid-stroke):
