@@ -261,20 +261,24 @@ impl Skirt {
             // flooded. Couette shear acts on the filled part, on the closed grid (trapezoid weights).
             for (ii, &(c, ov)) in side.closed.iter().enumerate() {
                 let mut carried = f64::INFINITY;
+                // The column's Σ w·fill/h and Σ w·fill/h·arm, scaled by −μV and its weight after.
+                let (mut force, mut moment) = (0.0, 0.0);
                 for step in 0..nz + 2 {
                     let jj = if v >= 0.0 { step } else { nz + 1 - step };
                     let ((a, b), _, z, r) = s.closed_rows[jj];
                     let h = (a + b * c + ov).max(self.floor);
                     let inside = ii > 0 && ii <= nx && jj > 0 && jj <= nz;
-                    // The film's content `fill·h` is min(carried, h), and the shear `fill·μV/h` is
-                    // `carried·μV/h²`: the chain from node to node is a min, one division off it.
+                    // The film's content `fill·h` is min(carried, h), and `fill/h` is `carried/h²`:
+                    // the chain from node to node is a min, one division off it.
                     carried = if step == 0 || (inside && free[(jj - 1) * nx + ii - 1]) { h } else { carried.min(h) };
-                    let weight = closed_weight(ii, nx) * closed_weight(jj, nz) * area;
-                    let axial = -carried / (h * h) * mu * v * weight;
-                    out.shear_power -= axial * v;
-                    out.friction_force += axial;
-                    out.friction_moment += axial * arm(z, r, c, (s3, c3), d.pin_offset);
+                    let unit = carried / (h * h) * closed_weight(jj, nz);
+                    force += unit;
+                    moment += unit * arm(z, r, c, (s3, c3), d.pin_offset);
                 }
+                let scale = -mu * v * closed_weight(ii, nx) * area;
+                out.shear_power -= scale * force * v;
+                out.friction_force += scale * force;
+                out.friction_moment += scale * moment;
             }
             // Asperities on the closed grid (trapezoid weights), with the true film thickness; a side
             // whose thinnest film is beyond their reach has none.
