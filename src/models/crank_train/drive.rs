@@ -126,11 +126,11 @@ impl Engine {
         (mass, force)
     }
 
-    /// An RK4 step begins: the lubricated skirt solves its film at the state (φ, φ̇) predicted into
-    /// it (`Lubrication::begin_step`).
+    /// An RK4 step begins: the lubricated skirt prepares its film at the state (φ, φ̇) predicted
+    /// into it, with the corners' gaps there (`Lubrication::begin_step`).
     fn begin_step(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) {
         if let Some(lubrication) = &self.lubrication {
-            lubrication.begin_step(phi, phid);
+            lubrication.begin_step(phi, phid, &self.linkage.gaps(phi));
         }
     }
 

@@ -20,13 +20,16 @@
 //! `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and at a velocity jump Δφ̇ the impulse `−τ Gᵀ D G Δφ̇`'s share, is
 //! booked by the core as the absorbed work (`System::absorbed_power`).
 //!
-//! Cost: the film is solved once per RK4 step (`Lubrication::begin_step`, from `System::begin_step`),
-//! its pressure's loads linear in the rates within the step (`Skirt::loads_with`).
+//! Cost: the film is solved at most once per RK4 step (`Lubrication::begin_step`, from
+//! `System::begin_step`), its pressure's loads linear in the rates within the step
+//! (`Skirt::loads_with`), and carried on to the next steps while the piston moves little
+//! (`step_film`).
 
 use super::linkage::LinkAngles;
+use super::step_film::{key, Solved, StepFilm};
 use crate::dynamics::Absorbed;
 use crate::models::numerics::LastValue;
-use crate::models::skirt::{FilmLinear, PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
+use crate::models::skirt::{PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
 use crate::models::{ModelError, Parameters};
 use nalgebra::{Matrix2x3, Matrix3, SVector, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -59,19 +62,27 @@ pub const SOLVE_AT: f64 = 0.5;
 pub struct Lubrication {
     design: Design,
     skirt: Skirt,
-    /// The film solved for the current RK4 step ([`Lubrication::begin_step`]), whose loads every
+    /// The film of the current RK4 step ([`Lubrication::begin_step`]), whose loads every
     /// evaluation takes until the next step begins; none before the first: each motion solved.
-    frozen: RefCell<Option<FilmLinear>>,
+    frozen: RefCell<Option<StepFilm>>,
     /// The loads at the last motion and film evaluated: an RK4 stage's absorbed power reads its evaluation's.
     last: LastValue<SkirtLoads, 10>,
 }
 
-/// What a lubricated skirt is saved as: its design and the motion its current film was solved at
-/// (solved again on restoring: the same film, the discrete problem's unique solution).
+/// What a lubricated skirt is saved as: its design and the motions of the current step's film
+/// (solved again on restoring: the same films, the discrete problem's unique solutions).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 struct Saved {
     design: Design,
-    frozen: Option<[f64; 5]>,
+    film: Option<SavedFilm>,
+}
+
+/// A [`StepFilm`]'s motions: the solve before the latest, the latest, the current step's middle.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+struct SavedFilm {
+    previous: Option<[f64; 5]>,
+    latest: [f64; 5],
+    current: [f64; 5],
 }
 
 /// What a lubricated skirt is built from (and saved as), SI.
@@ -101,8 +112,12 @@ impl PartialEq for Lubrication {
 
 impl From<Lubrication> for Saved {
     fn from(lubrication: Lubrication) -> Self {
-        let frozen = lubrication.frozen.borrow().as_ref().map(|f| key(&f.at));
-        Self { design: lubrication.design, frozen }
+        let film = lubrication.frozen.borrow().as_ref().map(|f| SavedFilm {
+            previous: f.previous.as_ref().map(|p| key(&p.linear.at)),
+            latest: key(&f.latest.linear.at),
+            current: key(&f.current.at),
+        });
+        Self { design: lubrication.design, film }
     }
 }
 
@@ -111,9 +126,13 @@ impl TryFrom<Saved> for Lubrication {
 
     fn try_from(saved: Saved) -> Result<Self, ModelError> {
         let lubrication = Self::try_from(saved.design)?;
-        if let Some([lateral, tilt, lateral_rate, tilt_rate, sliding_speed]) = saved.frozen {
-            let at = SkirtMotion { lateral, tilt, lateral_rate, tilt_rate, sliding_speed };
-            *lubrication.frozen.borrow_mut() = Some(lubrication.skirt.linearise(&at));
+        if let Some(film) = saved.film {
+            let solve = |m: &[f64; 5]| Solved::at(&lubrication.skirt, &motion(m));
+            let previous = film.previous.as_ref().map(solve);
+            let mut step = StepFilm::solved(solve(&film.latest), previous);
+            // A current film other than the latest solve was carried there.
+            step.carry_to(&motion(&film.current), lubrication.arm(), true);
+            *lubrication.frozen.borrow_mut() = Some(step);
         }
         Ok(lubrication)
     }
@@ -209,25 +228,37 @@ impl Lubrication {
         Kinematics { motion, lateral, axial, bias }
     }
 
-    /// Solves the film for an RK4 step at (φ, φ̇), the state [`predicted`] [`SOLVE_AT`] into it.
-    /// Until the next step begins, every evaluation takes the film's loads linear in its own rates
-    /// from this solve (`Skirt::loads_with`): exact for the solved position and cavitation set. A
-    /// step taken again from the same start and length (an event's search) reuses it.
-    pub fn begin_step(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) {
+    /// Prepares the film for an RK4 step at (φ, φ̇), the state [`predicted`] [`SOLVE_AT`] into it,
+    /// where the corners' gaps are `gaps`: while every corner is more than [`CLEAR_GAP`] off the
+    /// liner, the last solve carried on where `StepFilm::carry_to` allows; otherwise solved there
+    /// (near the liner, where the corners' events are, each step has its own solve). Until the next
+    /// step begins, every evaluation takes the film's loads linear in its own rates from it
+    /// (`Skirt::loads_with`). A step taken again from the same start and length (an event's search)
+    /// takes the same film.
+    pub fn begin_step(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, gaps: &Vector4<f64>) {
         let motion = self.kinematics((phi, &LinkAngles::new(phi)), phid).motion;
         let mut frozen = self.frozen.borrow_mut();
-        if frozen.as_ref().is_none_or(|f| key(&f.at).map(f64::to_bits) != key(&motion).map(f64::to_bits)) {
-            *frozen = Some(self.skirt.linearise(&motion));
+        let clear = gaps.min() > CLEAR_GAP;
+        if !frozen.as_mut().is_some_and(|f| f.carry_to(&motion, self.arm(), clear)) {
+            let previous = frozen.take().map(|f| f.latest);
+            *frozen = Some(StepFilm::solved(Solved::at(&self.skirt, &motion), previous));
         }
+    }
+
+    /// The skirt's longest distance from the pin, m (axially, plus the pin's offset): a tilt δφ3
+    /// changes no node's film by more than this times δφ3.
+    fn arm(&self) -> f64 {
+        let [_, _, length, pin_from_top, pin_offset] = self.design.geometry;
+        pin_from_top.abs().max((length - pin_from_top).abs()) + pin_offset.abs()
     }
 
     /// The film's loads at `motion` from the current step's film (solved at `motion` before the first).
     fn loads(&self, motion: &SkirtMotion) -> SkirtLoads {
         let frozen = self.frozen.borrow();
         let [x, y, z, u, v] = key(motion);
-        let [a, b, c, d, e] = frozen.as_ref().map_or(key(motion), |f| key(&f.at));
+        let [a, b, c, d, e] = frozen.as_ref().map_or(key(motion), |f| key(&f.current.at));
         self.last.get_or([x, y, z, u, v, a, b, c, d, e], || match frozen.as_ref() {
-            Some(linear) => self.skirt.loads_with(linear, motion),
+            Some(f) => self.skirt.loads_with(&f.current, motion),
             None => self.skirt.loads(motion),
         })
     }
@@ -247,7 +278,7 @@ impl Lubrication {
     pub fn pressure_map(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>) -> PressureMap {
         let motion = self.kinematics(at, phid).motion;
         match self.frozen.borrow().as_ref() {
-            Some(linear) => self.skirt.pressure_map(linear, &motion),
+            Some(f) => f.pressure_map(&self.skirt, &motion),
             None => self.skirt.pressure_map(&self.skirt.linearise(&motion), &motion),
         }
     }
@@ -296,9 +327,9 @@ pub fn predicted<const N: usize>(
     (s, q + qd * s + qdd * (0.5 * s * s), qd + qdd * s)
 }
 
-/// A motion's five numbers.
-fn key(m: &SkirtMotion) -> [f64; 5] {
-    [m.lateral, m.tilt, m.lateral_rate, m.tilt_rate, m.sliding_speed]
+/// The motion of five numbers (`key`'s inverse).
+fn motion(&[lateral, tilt, lateral_rate, tilt_rate, sliding_speed]: &[f64; 5]) -> SkirtMotion {
+    SkirtMotion { lateral, tilt, lateral_rate, tilt_rate, sliding_speed }
 }
 
 /// `Q = Gᵀ (F, M + M_a) + g F_a`.

@@ -12,6 +12,7 @@ pub mod linkage;
 pub mod lubrication;
 mod model;
 mod skirt_outputs;
+mod step_film;
 
 pub use efficiency::{EfficiencyCalibration, EfficiencyTarget};
 pub use model::{CrankTrain, LOCAL_ERROR, MAX_STEP, MAX_STEP_ANGLE};

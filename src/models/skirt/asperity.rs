@@ -120,6 +120,11 @@ impl Asperity {
         (2.0 * t3 - 3.0 * t2 + 1.0) * f0 + (t3 - 2.0 * t2 + t) * Self::STEP * d0 + (-2.0 * t3 + 3.0 * t2) * f1 + (t3 - t2) * Self::STEP * d1
     }
 
+    /// Whether a film of thickness `h` carries asperity pressure (it is zero from λ = 8 up).
+    pub(crate) fn touches(&self, h: f64) -> bool {
+        h * self.inverse_sigma < Self::HIGH
+    }
+
     /// Nominal asperity pressure at film thickness `h`, Pa.
     pub(crate) fn pressure(&self, h: f64) -> f64 {
         self.stiffness * self.f52(h * self.inverse_sigma)

@@ -261,24 +261,33 @@ impl Skirt {
             // flooded. Couette shear acts on the filled part, on the closed grid (trapezoid weights).
             for (ii, &(c, ov)) in side.closed.iter().enumerate() {
                 let mut carried = f64::INFINITY;
+                // The column's Σ w·fill/h and Σ w·fill/h·arm, scaled by −μV and its weight after.
+                let (mut force, mut moment) = (0.0, 0.0);
                 for step in 0..nz + 2 {
                     let jj = if v >= 0.0 { step } else { nz + 1 - step };
                     let ((a, b), _, z, r) = s.closed_rows[jj];
                     let h = (a + b * c + ov).max(self.floor);
                     let inside = ii > 0 && ii <= nx && jj > 0 && jj <= nz;
-                    let fill = if step == 0 || (inside && free[(jj - 1) * nx + ii - 1]) { 1.0 } else { (carried / h).min(1.0) };
-                    carried = fill * h;
-                    let weight = closed_weight(ii, nx) * closed_weight(jj, nz) * area;
-                    let axial = -fill * mu * v / h * weight;
-                    out.shear_power -= axial * v;
-                    out.friction_force += axial;
-                    out.friction_moment += axial * arm(z, r, c, (s3, c3), d.pin_offset);
+                    // The film's content `fill·h` is min(carried, h), and `fill/h` is `carried/h²`:
+                    // the chain from node to node is a min, one division off it.
+                    carried = if step == 0 || (inside && free[(jj - 1) * nx + ii - 1]) { h } else { carried.min(h) };
+                    let unit = carried / (h * h) * closed_weight(jj, nz);
+                    force += unit;
+                    moment += unit * arm(z, r, c, (s3, c3), d.pin_offset);
                 }
+                let scale = -mu * v * closed_weight(ii, nx) * area;
+                out.shear_power -= scale * force * v;
+                out.friction_force += scale * force;
+                out.friction_moment += scale * moment;
             }
-            // Asperities on the closed grid (trapezoid weights), with the true film thickness.
-            let mut smallest = f64::INFINITY;
+            // Asperities on the closed grid (trapezoid weights), with the true film thickness; a side
+            // whose thinnest film is beyond their reach has none.
+            let film_at = |&((a, b), ..): &RowTerms, &(c, ov): &(f64, f64)| a + b * c + ov;
+            let mut smallest =
+                s.closed_rows.iter().flat_map(|row| side.closed.iter().map(move |col| film_at(row, col))).fold(f64::INFINITY, f64::min);
             let pressure = &s.reynolds[side_index].pressure;
-            for (jj, &((a, b), (alpha, beta), z, r)) in s.closed_rows.iter().enumerate() {
+            let rows = if side_map.is_some() || self.asperity.touches(smallest) { &s.closed_rows[..] } else { &[] };
+            for (jj, &((a, b), (alpha, beta), z, r)) in rows.iter().enumerate() {
                 for (ii, &(c, ov)) in side.closed.iter().enumerate() {
                     let h = a + b * c + ov;
                     smallest = smallest.min(h);
