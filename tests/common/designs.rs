@@ -324,9 +324,10 @@ impl Finished {
 
 /// What the outputs `now` after `before` and the step's `events` say against the model, if anything:
 /// a corner outside the bore beyond `GAP_TOLERANCE` by the model's own gaps, what the outputs say
-/// (`output_checks::contradiction`), an impact on a corner that was not approaching. (An impact's loss
-/// may be negative: the generalized Newton law with ε = 0 on the closed corners that do not approach can
-/// gain energy; the balance counts it.)
+/// (`output_checks::contradiction`), an impact on a corner that was not approaching. (An impact's
+/// loss is ≥ 0 as a whole, one e for all its corners; where two corners are struck at once each
+/// event carries its own share, which the tangential impulses can make negative. The balance
+/// counts them all.)
 fn contradiction(model: &CrankTrain, params: &Parameters, before: &[f64], now: &[f64], events: &[EngineEvent]) -> Option<String> {
     let gap = model.gaps().min();
     let receding = events.iter().find(|e| e.kind == EngineEventKind::Impact && e.normal_velocity_before < 0.0);
