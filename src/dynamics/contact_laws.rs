@@ -56,14 +56,14 @@ fn newton_impulses<const N: usize, const M: usize>(
     frame: &Frame<N, M>,
     hd_minus: &SVector<f64, M>,
     restitution: f64,
-    set: Set,
+    closed: Set,
 ) -> Option<SVector<f64, M>> {
     let mut b = SVector::<f64, M>::zeros();
-    for i in members::<M>(set) {
+    for i in members::<M>(closed) {
         b[i] = (1.0 + restitution) * hd_minus[i];
     }
-    let scale = members::<M>(set).fold(0.0_f64, |s, i| s.max(hd_minus[i].abs()));
-    solve_lcp(&frame.w, &b, set, scale).map(|(impulse, _)| impulse)
+    let scale = members::<M>(closed).fold(0.0_f64, |s, i| s.max(hd_minus[i].abs()));
+    solve_lcp(&frame.w, &b, closed, scale).map(|(impulse, _)| impulse)
 }
 
 /// The energy each impulse dissipates, `−Λᵢ (ḣ⁻ᵢ + ḣ⁺ᵢ) / 2` with `ḣ = J q̇ + ∂h/∂t`: the work
@@ -79,20 +79,20 @@ pub(super) fn energy_lost<const M: usize>(
     -impulse.component_mul(&(hd_minus + hd_plus)) * 0.5
 }
 
-/// The impact over `set` at `(t, q, q̇)`: the generalized Newton law, or where the system has
+/// The impact over `closed` at `(t, q, q̇)`: the generalized Newton law, or where the system has
 /// friction the Newton–Coulomb law (`coulomb.rs`), with the system's one `e` for every member.
 pub(super) fn impact<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
     ev: &Evaluation<N, M>,
     frame: &Frame<N, M>,
-    set: Set,
+    closed: Set,
 ) -> Result<Jump<N, M>, DynamicsError> {
-    let refused = DynamicsError::MultipleImpact { time: t, constraints: set };
+    let refused = DynamicsError::MultipleImpact { time: t, constraints: closed };
     let e = sys.restitution();
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let Some(mu) = friction_of(sys) else {
-        let impulse = newton_impulses(frame, &hd, e, set).ok_or(refused)?;
+        let impulse = newton_impulses(frame, &hd, e, closed).ok_or(refused)?;
         let hd_plus = hd + frame.w * impulse;
         let lost = energy_lost(&impulse, &hd, &hd_plus);
         return Ok(Jump {
@@ -109,12 +109,12 @@ pub(super) fn impact<S: System<N, M>, const N: usize, const M: usize>(
     let slip = tangents.slip(v);
     // ξ = γ⁺ + e γ⁻ in both directions, for every member.
     let b = (hd * (1.0 + e), slip * (1.0 + e));
-    let choices = std::array::from_fn(|i| if contains(set, i) { Choice::AtRest } else { Choice::Open });
-    let scale = members::<M>(set).fold(0.0_f64, |s, i| s.max(hd[i].abs()).max(slip[i].abs()));
+    let choices = std::array::from_fn(|i| if contains(closed, i) { Choice::AtRest } else { Choice::Open });
+    let scale = members::<M>(closed).fold(0.0_f64, |s, i| s.max(hd[i].abs()).max(slip[i].abs()));
     let (_, mut jump) = coulomb.enumerate(&choices, (&b.0, &b.1), scale).ok_or(refused)?;
     // A normal impulse below zero is the solve's round-off, within its tolerance: none, and no
     // friction with it (else it returns energy, −1e-13 J against 1e-8 m/s approaches).
-    for i in members::<M>(set) {
+    for i in members::<M>(closed) {
         if jump.normal[i] < 0.0 {
             (jump.normal[i], jump.tangent[i]) = (0.0, 0.0);
         }
