@@ -10,9 +10,11 @@ use crate::common::fmu_designs::{run, NotRun};
 /// zero (declared 604, 1485, 3646, 6391: −1e-4 J with e = 1 and no friction, −1.86 J with friction,
 /// whose share exceeded the whole loss; ramped 553), and ramped 249, whose impact solve at a 1e-8 m/s
 /// approach gave a normal impulse of −3e-12 N·s (round-off within its tolerance); declared 9703
-/// (e = 1), whose impact's round-off, −3.5e-20 J, exceeded a 1e-9 part of the kinetic energy left.
+/// (e = 1), whose impact's round-off, −3.5e-20 J, exceeded a 1e-9 part of the kinetic energy left;
+/// ramped 1586 and 6174, a free crank creeping into a dead centre with its piston held on a
+/// diagonal pair (as in `crank_train/random_designs.rs`).
 const DECLARED_FOUND_BY_LARGER_SWEEPS: [u64; 5] = [604, 1485, 3646, 6391, 9703];
-const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 2] = [249, 553];
+const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 4] = [249, 553, 1586, 6174];
 
 /// Random designs per family in `make test`.
 const DESIGNS: u64 = 60;

@@ -171,6 +171,44 @@ pub(super) fn sliding_law<S: System<N, M>, const N: usize, const M: usize>(
     Ok((Contacts::frictionless(ahead.support), acc(lambda.map(|x| x.max(0.0)))))
 }
 
+/// The velocity jump that puts `(t, q, q̇)` on the manifold of `contacts` where one sticks: `ḣ = 0`
+/// on every held constraint and `γ = 0` on every sticking one, by impulses the modes allow (a
+/// slipping constraint's normal impulse brings its friction along). A stick the law finds within
+/// ε_ḣ of rest may still move the system: near a dead centre of the crank the slip is the crank's
+/// speed times a lever that vanishes there, and a creeping crank held at γ̇ = 0 would have to
+/// speed up as the lever shrinks. The tangential impulse stops that motion (an impact without
+/// collision); what it dissipates is friction's. `None` without friction, without a stick, or
+/// where the rows disagree (dependent): the normal projection alone is then left to the caller.
+pub(super) fn stick_jump<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    tol: Tolerances,
+    (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
+    ev: &Evaluation<N, M>,
+    contacts: Contacts,
+) -> Option<Jump<N, M>> {
+    let mu = friction_of(sys)?;
+    if contacts.stick & contacts.held == 0 {
+        return None;
+    }
+    let tangents = sys.tangents(t, q, v);
+    let (frame, _) = Tangential::at(ev, &tangents, mu)?;
+    let lengths = sys.coordinate_lengths();
+    let frame = frame.wedging((0..N).all(|k| (v[k] * lengths[k]).abs() <= tol.velocity));
+    let (hd, slip) = (ev.gap_jacobian * v + ev.gap_time_rate, tangents.slip(v));
+    let modes = std::array::from_fn(|i| contacts.mode(i));
+    let jump = frame.solve(&modes, (&hd, &slip))?;
+    let v_plus = frame.motion(v, &jump);
+    let (hd_plus, slip_plus) = (ev.gap_jacobian * v_plus + ev.gap_time_rate, tangents.slip(&v_plus));
+    // The loss, ½ΛᵀGΛ plus a slipping constraint's friction work (≥ 0: every row the jump zeroes
+    // ends at ξ = 0), is what stopping the slip took, the normal rows being at rest within ε_ḣ
+    // already: friction's, put on the first sticking constraint, since the works of the single
+    // impulses −Λᵢ(uᵢ⁻ + uᵢ⁺)/2 need not each be ≥ 0.
+    let total = (energy_lost(&jump.normal, &hd, &hd_plus) + energy_lost(&jump.tangent, &slip, &slip_plus)).sum();
+    let first = (contacts.stick & contacts.held).trailing_zeros() as usize;
+    let lost = SVector::<f64, M>::from_fn(|i, _| if i == first { total.max(0.0) } else { 0.0 });
+    Some(Jump { normal: jump.normal, tangent: jump.tangent, v: v_plus, hd: hd_plus, lost, friction_lost: lost })
+}
+
 /// The sliding law with Coulomb friction (`coulomb.rs`): the modes of the candidates by
 /// enumeration, a candidate slipping faster than ε_ḣ keeping its direction, one slower
 /// sticking or starting to slip as its tangential row decides; ties in the normal direction

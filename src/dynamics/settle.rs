@@ -3,7 +3,7 @@
 //! of held contacts removed between events.
 
 use super::complementarity::{members, select, Contacts, Frame, Set};
-use super::contact_laws::{energy_lost, impact, sliding_law, Tolerances};
+use super::contact_laws::{energy_lost, impact, sliding_law, stick_jump, Jump, Tolerances};
 use super::sample::{frame_at, sample, sample_of, Sample};
 use super::system::friction_of;
 use super::{Absorbed, DynamicsError, Evaluation, Event, EventKind, Stepper, System};
@@ -232,24 +232,28 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         // that set is dependent, the contacts alone.
         let below = closed & !support & select::<M>(|i| ev.gap[i] < -opts.gap_tolerance);
         let onto = if members::<M>(support | below).count() <= N { support | below } else { support };
+        let mut stick_losses = (SVector::zeros(), SVector::zeros());
         let state = if onto == 0 {
             // Nothing held or moved: q and q̇ are those `ev` was made at (after any impact).
             sample_of(&self.system, &ev, t, q, v, contacts)?
         } else {
             let (q, ev, frame) = self.onto_contacts(t, q, &v, onto, (ev, frame))?;
             let hd = ev.gap_jacobian * v + ev.gap_time_rate;
-            let (dv, impulse) = frame.projection(&hd, support).ok_or(DynamicsError::DependentContacts { time: t, constraints: support })?;
-            let hd_after = hd + frame.w * impulse;
-            let lost = energy_lost(&impulse, &hd, &hd_after);
-            self.record(
-                (EventKind::Slide, &v),
-                support & !was_active,
-                (&hd, &hd_after),
-                (&lost, &SVector::zeros()),
-                (impulse, SVector::zeros()),
-            );
-            absorbed += self.absorbed_by_jump(t, &q, &v, &(v + dv));
-            sample(&self.system, t, q, v + dv, contacts)?
+            let jump = match stick_jump(&self.system, tol, (t, &q, &v), &ev, contacts) {
+                Some(jump) => jump,
+                None => {
+                    let (dv, normal) =
+                        frame.projection(&hd, support).ok_or(DynamicsError::DependentContacts { time: t, constraints: support })?;
+                    let hd_after = hd + frame.w * normal;
+                    let lost = energy_lost(&normal, &hd, &hd_after);
+                    Jump { normal, tangent: SVector::zeros(), v: v + dv, hd: hd_after, lost, friction_lost: SVector::zeros() }
+                }
+            };
+            let losses = (&jump.lost, &jump.friction_lost);
+            self.record((EventKind::Slide, &v), support & !was_active, (&hd, &jump.hd), losses, (jump.normal, jump.tangent));
+            stick_losses = (jump.lost, jump.friction_lost);
+            absorbed += self.absorbed_by_jump(t, &q, &v, &jump.v);
+            sample(&self.system, t, q, jump.v, contacts)?
         };
         let none = SVector::zeros();
         self.record((EventKind::Release, &v), was_active & !support, (&hd, &hd), (&none, &none), (none, none));
@@ -257,7 +261,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let kept = was_active & support;
         let (stuck, slipping) =
             (kept & contacts.stick & !before.stick, kept & !contacts.stick & (before.stick | (before.back ^ contacts.back)));
-        self.record((EventKind::Stick, &v), stuck, (&hd, &hd), (&none, &none), (none, none));
+        // Those that came to stick carry what stopping their slip dissipated (`stick_jump`).
+        self.record((EventKind::Stick, &v), stuck, (&hd, &hd), (&stick_losses.0, &stick_losses.1), (none, none));
         self.record((EventKind::Slip, &v), slipping, (&hd, &hd), (&none, &none), (none, none));
         self.contacts = contacts;
         self.state = state.after(&self.state);

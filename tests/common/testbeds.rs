@@ -373,3 +373,57 @@ impl System<2, 1> for Block {
         Tangents { jacobian: RowVector2::new(1.0, 0.0), time_rate: Vector1::new(-self.belt), bias: Vector1::zeros() }
     }
 }
+
+/// A flywheel (angle φ, inertia `inertia`) driving a block on the floor through a lever: the block
+/// sits at x = −L cos φ, so that it slips at `γ = L sin φ φ̇`, a lever that vanishes at the dead
+/// centre φ = 0, as the piston's axial motion does at a dead centre of the crank. `q = (φ, y)`,
+/// `h = y`; Coulomb friction μ on the floor. Kinetic energy `½ (I + m L² sin²φ) φ̇² + ½ m ẏ²`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Toggle {
+    /// The flywheel's, kg·m².
+    pub inertia: f64,
+    /// The block's, kg.
+    pub mass: f64,
+    /// The lever L, m.
+    pub lever: f64,
+    /// m/s², downward.
+    pub gravity: f64,
+    /// Coulomb's μ on the floor.
+    pub friction: f64,
+}
+
+impl Toggle {
+    /// `I + m L² sin²φ`, kg·m²: the flywheel's inertia with the block's carried along.
+    pub fn inertia_at(&self, phi: f64) -> f64 {
+        self.inertia + self.mass * (self.lever * libm::sin(phi)).powi(2)
+    }
+}
+
+impl System<2, 1> for Toggle {
+    fn evaluate(&self, _t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 1> {
+        let (s, c) = libm::sincos(q[0]);
+        let (m, l) = (self.mass, self.lever);
+        Evaluation {
+            mass: Matrix2::new(self.inertia_at(q[0]), 0.0, 0.0, m),
+            force: Vector2::new(-m * l * l * s * c * qd[0] * qd[0], -m * self.gravity),
+            gap: Vector1::new(q[1]),
+            gap_jacobian: RowVector2::new(0.0, 1.0),
+            gap_time_rate: Vector1::zeros(),
+            gap_bias: Vector1::zeros(),
+        }
+    }
+    fn restitution(&self) -> f64 {
+        0.0
+    }
+    fn friction(&self, _: usize) -> f64 {
+        self.friction
+    }
+    fn tangents(&self, _t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Tangents<2, 1> {
+        let (s, c) = libm::sincos(q[0]);
+        Tangents {
+            jacobian: RowVector2::new(self.lever * s, 0.0),
+            time_rate: Vector1::zeros(),
+            bias: Vector1::new(self.lever * c * qd[0] * qd[0]),
+        }
+    }
+}

@@ -4,7 +4,7 @@
 //! push still exceeds the cone slips back for an instant shorter than the step's samples, and a
 //! rod flat on the floor slides on both ends, then sticks on both.
 
-use crate::common::testbeds::{Block, Floor, Rod};
+use crate::common::testbeds::{Block, Floor, Rod, Toggle};
 use nalgebra::{Vector2, Vector3};
 use pistonslap::dynamics::{EventKind, Stepper, StepperOptions};
 
@@ -128,4 +128,42 @@ fn a_rod_flat_on_the_floor_slides_then_sticks_on_both_ends() {
     assert!((s.position()[0] - x).abs() < 1e-9 && s.position()[2].abs() < 1e-12, "{:?} vs x {x}", s.position());
     let (_, work) = s.friction_dissipation();
     assert!((work - 0.5 * m * v0 * v0).abs() < 1e-9, "dissipated {work} J");
+}
+
+/// A flywheel (I = 1e-4 kg·m²) drives a 2 kg block on the floor (μ = 0.5) through a lever L sin φ
+/// (`Toggle`, L = 5 cm), 1e-5 rad before the dead centre. Turning at 1e-4 rad/s it slips the block at
+/// 5e-11 m/s, within ε_ḣ: neither slip is consistent (friction, μ m g L sin φ on the flywheel,
+/// reverses either), and the stick's rows are dependent to 5e-9. The stick taken stops the
+/// flywheel by its tangential impulse (an impact without collision): it stays at rest where it
+/// was, as real friction stops it within I φ̇² / (2 μ m g L |sin φ|) = 1e-7 rad, and friction has
+/// dissipated its kinetic energy. Turning at 1 rad/s it passes the dead centre, the block's slip
+/// reversing there with the lever, and friction takes μ m g times the distance slid.
+#[test]
+fn a_flywheel_creeping_into_a_dead_centre_is_stopped_by_the_stick_a_fast_one_passes() {
+    let toggle = Toggle { inertia: 1e-4, mass: 2.0, lever: 0.05, gravity: G, friction: 0.5 };
+    let phi0 = -1e-5;
+    let options = StepperOptions { step: 1e-4, ..Default::default() };
+    let start = |speed: f64| Stepper::new(toggle.clone(), 0.0, Vector2::new(phi0, 0.0), Vector2::new(speed, 0.0), options.clone()).unwrap();
+
+    let slow = 1e-4;
+    let mut s = start(slow);
+    s.advance(0.01).unwrap();
+    assert!(s.sticking(0) && s.velocity()[0] == 0.0 && s.position()[0] == phi0, "{:?}, {:?}", s.position(), s.velocity());
+    let stop: f64 = s.events().iter().map(|e| e.friction_energy).sum();
+    let kinetic = 0.5 * toggle.inertia_at(phi0) * slow * slow;
+    assert!((stop - kinetic).abs() < 1e-9 * kinetic, "the stop dissipated {stop:e} J, the flywheel had {kinetic:e} J");
+
+    let fast = 1.0;
+    let mut s = start(fast);
+    let t = 1e-3;
+    s.advance(t).unwrap();
+    let phi = s.position()[0];
+    assert!(phi > 0.9 * fast * t && !s.sticking(0), "passed the dead centre: φ {phi}");
+    let slid = toggle.lever * ((1.0 - libm::cos(phi0)) + (1.0 - libm::cos(phi)));
+    let (_, work) = s.friction_dissipation();
+    let cone = 0.5 * toggle.mass * G;
+    assert!((work - cone * slid).abs() < 1e-6 * cone * slid, "friction work {work:e} J vs μ m g × {slid:e} m");
+    let kinetic = |phi: f64, speed: f64| 0.5 * toggle.inertia_at(phi) * speed * speed;
+    let lost = kinetic(phi0, fast) - kinetic(phi, s.velocity()[0]);
+    assert!((lost - work).abs() < 1e-6 * work, "kinetic energy lost {lost:e} J vs friction work {work:e} J");
 }

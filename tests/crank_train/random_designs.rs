@@ -129,8 +129,13 @@ const DECLARED_FOUND_BY_LARGER_SWEEPS: [u64; 25] = [
 /// slipped opposite ways at the edges of their cones and the slip reversed at once, 10⁴ times
 /// (`dynamics/wedge.rs`); 9895 and 8474, a free crank creeping at a dead centre (μm/s) with such a
 /// pair, where the law started a slip with no acceleration the way round-off pointed and the motion
-/// reversed it at once (now a tie, decided by the motion: `contact_laws::coulomb_law`).
-const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 12] = [718, 1734, 1827, 1937, 1635, 3211, 3336, 9552, 5806, 9833, 9895, 8474];
+/// reversed it at once (now a tie, decided by the motion: `contact_laws::coulomb_law`); 1586 and
+/// 6174, a free crank creeping into a dead centre (0.025 and 3e-4 rad/s) with a diagonal pair held,
+/// whose stick kept the slip found within ε_ḣ while the crank turned on, so that the crank had to
+/// speed up as the lever shrank: the stick's rows, dependent to 1e-10, lost their solution within
+/// the step (1586), or the slip reversed 10⁴ times (6174). A stick now stops that motion
+/// (`contact_laws::stick_jump`).
+const RAMPED_FOUND_BY_LARGER_SWEEPS: [u64; 14] = [718, 1734, 1827, 1937, 1635, 3211, 3336, 9552, 5806, 9833, 9895, 8474, 1586, 6174];
 
 /// Designs drawn from the whole declared space (`designs::declared`), every output checked at
 /// every step: all run, none contradicts the model. Among them seeds 122 (a 1 m crank at
