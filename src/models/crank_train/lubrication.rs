@@ -18,7 +18,9 @@
 //! `λ = −c/(m + τ c) ≥ −1/τ`, inside RK4's stability region for steps up to τ whatever the film;
 //! with D → 0 the dry equations come back exactly. What the skirt takes from the motion,
 //! `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and at a velocity jump Δφ̇ the impulse `−τ Gᵀ D G Δφ̇`'s share, is
-//! booked by the core as the absorbed work (`System::absorbed_power`).
+//! booked by the core as the absorbed work (`System::absorbed_power`); each wall's push, its side's
+//! share of the lateral force with its share of the implicit term (and of the impulse at a jump), as
+//! two further channels: the film's and asperities' impulse on the liner.
 //!
 //! Cost: the film is solved at most once per RK4 step (`Lubrication::begin_step`, from
 //! `System::begin_step`), its pressure's loads linear in the rates within the step
