@@ -112,10 +112,10 @@ pub trait System<const N: usize, const M: usize> {
     }
 
     /// The power those forces take from the motion at `(t, q, q̇)` with the acceleration `q̈`, W
-    /// (every channel of [`Absorbed`]). `q̈` is given because a force made linearly implicit
-    /// through `M` (a stiff damper `−D q̇` applied as `−D (q̇ + τ q̈)`, its `τ D` added to the
-    /// inertia) does work, and acts, through it. The stepper integrates it along each step with the step's own
-    /// weights; asked for only where [`Self::absorbs`].
+    /// (and the reported forces, N: every channel of [`Absorbed`]). `q̈` is given because a force
+    /// made linearly implicit through `M` (a stiff damper `−D q̇` applied as `−D (q̇ + τ q̈)`, its
+    /// `τ D` added to the inertia) does work, and acts, through it. The stepper integrates it along
+    /// each step with the step's own weights; asked for only where [`Self::absorbs`].
     fn absorbed_power(&self, _t: f64, _q: &SVector<f64, N>, _qd: &SVector<f64, N>, _qdd: &SVector<f64, N>) -> Absorbed {
         Absorbed::zeros()
     }

@@ -293,7 +293,7 @@ impl Lubrication {
     /// What the skirt takes from the motion at (φ, φ̇, φ̈), W: all of it, `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and
     /// the axial friction's share, `−(F_a ẏ + M_a φ̇3)`; and the anti-thrust and the thrust wall's
     /// push as the motion takes it, N: each wall's share of the lateral force with the implicit term,
-    /// `P + τ ∂P/∂(ẋ, φ̇3) (G φ̈ + Ġ φ̇)` (`SkirtLoads::wall_push`, whose rates' rows sum to D's).
+    /// `P + τ ∂P/∂(ẋ, φ̇3) (G φ̈ + Ġ φ̇)` (`SkirtLoads::wall_push`, whose rates' rows differ by D's first row).
     pub fn absorbed_power(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
         let k = self.kinematics(at, phid);
         let loads = self.loads(&k.motion);

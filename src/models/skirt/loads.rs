@@ -74,8 +74,8 @@ pub struct FilmLinear {
     /// right-hand side per unit rate. Its upper-left 2 × 2 is the damping, its upper 3 × 3 the
     /// Poiseuille dissipation's quadratic form; symmetric there.
     pub gram: Matrix4x3<f64>,
-    /// Each side's share of `gram`'s first row, [thrust, anti-thrust]: its pressure's lateral force
-    /// per unit rate (negated), which the two rows sum to.
+    /// Each side's share of `gram`'s first row, [thrust, anti-thrust]: minus its pressure's lateral
+    /// force per unit rate. The two rows sum to `gram`'s first.
     pub lateral_by_side: Matrix2x3<f64>,
     /// Per side, the film nodes (node order; false: cavitated).
     pub free: [Vec<bool>; 2],
