@@ -1,11 +1,14 @@
 //! What the core integrates: the system's interface and the terms it evaluates.
 
-use nalgebra::{SMatrix, SVector, Vector2};
+use nalgebra::{SMatrix, SVector, Vector4};
 
-/// Powers (W) or works (J) of the forces a system absorbs (`System::absorbed_power`), in two
-/// channels: `[0]` all of them, what the energy books need; `[1]` a share of it the system reports
-/// apart (the crank train: the skirt's friction).
-pub type Absorbed = Vector2<f64>;
+/// Rates and their integrals along the motion of the forces a system absorbs
+/// (`System::absorbed_power`), in four channels: `[0]` their power (W; work, J), all of it, what the
+/// energy books need; `[1]` a share of it the system reports apart (the crank train: the skirt's
+/// friction); `[2]`, `[3]` two forces (N; impulses, N·s) the system reports (the crank train: the
+/// push of the anti-thrust and the thrust wall's film and asperities). The core integrates each
+/// alike, with every step's own weights.
+pub type Absorbed = Vector4<f64>;
 
 /// Everything one RK4 stage, one impact or one sliding solve needs, evaluated at `(t, q, q̇)`.
 ///
@@ -109,16 +112,17 @@ pub trait System<const N: usize, const M: usize> {
     }
 
     /// The power those forces take from the motion at `(t, q, q̇)` with the acceleration `q̈`, W
-    /// (both channels of [`Absorbed`]). `q̈` is given because a force made linearly implicit
-    /// through `M` (a stiff damper `−D q̇` applied as `−D (q̇ + τ q̈)`, its `τ D` added to the
-    /// inertia) does work through it. The stepper integrates it along each step with the step's own
-    /// weights; asked for only where [`Self::absorbs`].
+    /// (and the reported forces, N: every channel of [`Absorbed`]). `q̈` is given because a force
+    /// made linearly implicit through `M` (a stiff damper `−D q̇` applied as `−D (q̇ + τ q̈)`, its
+    /// `τ D` added to the inertia) does work, and acts, through it. The stepper integrates it along
+    /// each step with the step's own weights; asked for only where [`Self::absorbs`].
     fn absorbed_power(&self, _t: f64, _q: &SVector<f64, N>, _qd: &SVector<f64, N>, _qdd: &SVector<f64, N>) -> Absorbed {
         Absorbed::zeros()
     }
 
     /// The work those forces take from a velocity jump `q̇⁻ → q̇⁺` at `(t, q)` (an impact, a
-    /// projection onto held contacts), J: a force implicit in `q̈` takes an impulse at a jump.
+    /// projection onto held contacts), J, and the impulses of the reported forces, N·s: a force
+    /// implicit in `q̈` takes an impulse at a jump.
     /// Asked for only where [`Self::absorbs`].
     fn absorbed_by_jump(&self, _t: f64, _q: &SVector<f64, N>, _before: &SVector<f64, N>, _after: &SVector<f64, N>) -> Absorbed {
         Absorbed::zeros()

@@ -54,8 +54,9 @@ outputs_struct! {
         /// J, the piston–liner friction work since the start (corners and skirt; no variable: the
         /// statistics take `cycle_skirt_fmep` from its cycles' differences).
         pub liner_friction_work: f64,
-        /// N·s, the liner's impulse on the piston since the start per wall [anti-thrust, major thrust],
-        /// impacts and contact forces (no variable: the `_in_step` outputs are its steps' differences).
+        /// N·s, the liner's impulse on the piston since the start per wall [anti-thrust, major thrust]:
+        /// impacts and contact forces and, lubricated, the wall's film and asperity push (no variable:
+        /// the `_in_step` outputs are its steps' differences).
         pub liner_impulse_total: [f64; 2],
     }
 }

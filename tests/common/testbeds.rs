@@ -132,12 +132,15 @@ impl System<1, 1> for DampedBall {
     fn absorbs(&self) -> bool {
         true
     }
-    /// All of it in both channels.
+    /// All of it in both power channels; the damper's force on the ball, `−c (ẏ + τ ÿ)`, in the third.
     fn absorbed_power(&self, _t: f64, _q: &Vector1<f64>, qd: &Vector1<f64>, qdd: &Vector1<f64>) -> Absorbed {
-        Absorbed::repeat(self.damping * (qd[0] + self.relaxation * qdd[0]) * qd[0])
+        let force = -self.damping * (qd[0] + self.relaxation * qdd[0]);
+        Absorbed::new(-force * qd[0], -force * qd[0], force, 0.0)
     }
     fn absorbed_by_jump(&self, _t: f64, _q: &Vector1<f64>, before: &Vector1<f64>, after: &Vector1<f64>) -> Absorbed {
-        Absorbed::repeat(self.relaxation * self.damping * (after[0] - before[0]) * 0.5 * (after[0] + before[0]))
+        let impulse = -self.relaxation * self.damping * (after[0] - before[0]);
+        let work = -impulse * 0.5 * (after[0] + before[0]);
+        Absorbed::new(work, work, impulse, 0.0)
     }
     fn restitution(&self) -> f64 {
         self.ball.restitution

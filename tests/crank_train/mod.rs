@@ -4,6 +4,7 @@
 mod angle;
 mod energy;
 mod flores_benchmark;
+mod liner_impulse;
 mod lubricated;
 mod paper;
 mod random_designs;

@@ -18,7 +18,9 @@
 //! `λ = −c/(m + τ c) ≥ −1/τ`, inside RK4's stability region for steps up to τ whatever the film;
 //! with D → 0 the dry equations come back exactly. What the skirt takes from the motion,
 //! `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and at a velocity jump Δφ̇ the impulse `−τ Gᵀ D G Δφ̇`'s share, is
-//! booked by the core as the absorbed work (`System::absorbed_power`).
+//! booked by the core as the absorbed work (`System::absorbed_power`); each wall's push, its side's
+//! share of the lateral force with its share of the implicit term (and of the impulse at a jump), as
+//! two further channels: the film's and asperities' impulse on the liner.
 //!
 //! Cost: the film is solved at most once per RK4 step (`Lubrication::begin_step`, from
 //! `System::begin_step`), its pressure's loads linear in the rates within the step
@@ -289,21 +291,28 @@ impl Lubrication {
     }
 
     /// What the skirt takes from the motion at (φ, φ̇, φ̈), W: all of it, `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and
-    /// the axial friction's share, `−(F_a ẏ + M_a φ̇3)`.
+    /// the axial friction's share, `−(F_a ẏ + M_a φ̇3)`; and the anti-thrust and the thrust wall's
+    /// push as the motion takes it, N: each wall's share of the lateral force with the implicit term,
+    /// `P + τ ∂P/∂(ẋ, φ̇3) (G φ̈ + Ġ φ̇)` (`SkirtLoads::wall_push`, whose rates' rows differ by D's first row).
     pub fn absorbed_power(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
         let k = self.kinematics(at, phid);
         let loads = self.loads(&k.motion);
-        let implicit = (k.lateral * phid).dot(&(loads.damping * (k.lateral * phidd + k.bias))) * self.design.relaxation;
-        Absorbed::new(implicit - generalized(&k, &loads).dot(phid), -friction_power(&k, &loads))
+        let acceleration = k.lateral * phidd + k.bias;
+        let implicit = (k.lateral * phid).dot(&(loads.damping * acceleration)) * self.design.relaxation;
+        let [thrust, antithrust] = (loads.wall_push + loads.wall_push_rates * acceleration * self.design.relaxation).into();
+        Absorbed::new(implicit - generalized(&k, &loads).dot(phid), -friction_power(&k, &loads), antithrust, thrust)
     }
 
     /// What the implicit film impulse `−τ Gᵀ D G Δφ̇` of a jump `before → after` at φ takes, J:
-    /// the negative of its work on the mean velocity (D at the velocity before).
+    /// the negative of its work on the mean velocity (D at the velocity before); and each wall's
+    /// share of its lateral impulse, `τ ∂P/∂(ẋ, φ̇3) G Δφ̇`, N·s (anti-thrust, thrust).
     pub fn absorbed_by_jump(&self, at: (&Vector3<f64>, &LinkAngles), before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
         let k = self.kinematics(at, before);
-        let damping = self.loads(&k.motion).damping * self.design.relaxation;
+        let loads = self.loads(&k.motion);
+        let (jump, tau) = (k.lateral * (after - before), self.design.relaxation);
         let mean = (before + after) * 0.5;
-        Absorbed::new((k.lateral * mean).dot(&(damping * (k.lateral * (after - before)))), 0.0)
+        let [thrust, antithrust] = (loads.wall_push_rates * jump * tau).into();
+        Absorbed::new((k.lateral * mean).dot(&(loads.damping * tau * jump)), 0.0, antithrust, thrust)
     }
 
     /// The axial friction's power at (φ, φ̇), W (≥ 0 where it opposes the sliding).

@@ -17,14 +17,16 @@ impl CrankTrain {
         Some(lubrication.pressure_map((&phi, &LinkAngles::new(&phi)), &phid))
     }
 
-    /// What the skirt has absorbed: power now and work since the start, [all, friction] (zero dry).
+    /// What the skirt has absorbed: power now and work since the start, [all, friction], and its
+    /// walls' push now and impulse since the start, [anti-thrust, thrust] (zero dry).
     pub(super) fn absorbed(&self) -> (Absorbed, Absorbed) {
         self.drive.stepper().absorbed()
     }
 
     /// Writes the skirt's outputs and `side_force` at (φ, φ̇), the corners' gaps `gaps` and contact
     /// forces `forces` (K1, K2 on the −D/2 wall push toward +x, K3, K4 toward −x); after the
-    /// corners' friction outputs, which `liner_friction_work` adds to.
+    /// corners' friction outputs and impulses, which `liner_friction_work` and
+    /// `liner_impulse_total` add to.
     pub(super) fn write_skirt(
         &self,
         (phi, trig, phid): (&Vector3<f64>, &LinkAngles, &Vector3<f64>),
@@ -48,5 +50,7 @@ impl CrankTrain {
         out.skirt_friction_power = lubrication.friction_power((phi, trig), phid);
         out.film_energy_total = work[0];
         out.liner_friction_work = out.friction_energy_total + work[1];
+        // The walls' film and asperity impulses join the corners' (anti-thrust, thrust).
+        out.liner_impulse_total = [out.liner_impulse_total[0] + work[2], out.liner_impulse_total[1] + work[3]];
     }
 }

@@ -1,6 +1,6 @@
 //! What goes into and comes out of a skirt evaluation.
 
-use nalgebra::{Matrix2, Matrix4x3};
+use nalgebra::{Matrix2, Matrix2x3, Matrix4x3, Vector2};
 
 /// The skirt's motion relative to the liner, in the crank train's coordinates.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -50,6 +50,14 @@ pub struct SkirtLoads {
     pub asperity_friction_power: f64,
     /// Smallest film thickness per side, m: [thrust (+x), anti-thrust (−x)].
     pub min_film: [f64; 2],
+    /// Each wall's lateral push on the piston, N, [thrust, anti-thrust]: film and asperities on that
+    /// side, the thrust wall's along −x and the anti-thrust wall's along +x, so that
+    /// `lateral_force = wall_push[1] − wall_push[0]` (≥ 0 where the side's pressure is).
+    pub wall_push: Vector2<f64>,
+    /// `∂wall_push/∂(lateral_rate, tilt_rate)` at fixed position and sliding speed, rows by wall
+    /// (the film's; the asperities' load depends on the position alone): the walls' shares of
+    /// `damping`, whose first row is `wall_push_rates` row 0 − row 1.
+    pub wall_push_rates: Matrix2<f64>,
     /// Band Cholesky factorisations per side (active-set steps): the evaluation's cost.
     pub factorisations: [usize; 2],
 }
@@ -66,6 +74,9 @@ pub struct FilmLinear {
     /// right-hand side per unit rate. Its upper-left 2 × 2 is the damping, its upper 3 × 3 the
     /// Poiseuille dissipation's quadratic form; symmetric there.
     pub gram: Matrix4x3<f64>,
+    /// Each side's share of `gram`'s first row, [thrust, anti-thrust]: minus its pressure's lateral
+    /// force per unit rate. The two rows sum to `gram`'s first.
+    pub lateral_by_side: Matrix2x3<f64>,
     /// Per side, the film nodes (node order; false: cavitated).
     pub free: [Vec<bool>; 2],
     /// Band Cholesky factorisations per side.

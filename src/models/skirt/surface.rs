@@ -14,7 +14,7 @@ use super::asperity::Asperity;
 use super::reynolds::{Cavitation, Film, Grid, Reynolds};
 use super::{FilmLinear, PressureMap, SideMap, SkirtDesign, SkirtLoads, SkirtMotion};
 use crate::models::ModelError;
-use nalgebra::{Matrix4x3, Vector3};
+use nalgebra::{Matrix2, Matrix4x3, RowVector3, Vector3};
 use std::cell::RefCell;
 
 /// Per side: column terms (cos θ, ovality·sin²θ) at the node columns, the x faces, and the closed grid
@@ -166,6 +166,7 @@ impl Skirt {
             linear.factorisations[side] = self.solve_side(s, side, motion, Cavitation::Reynolds);
             let reynolds = &s.reynolds[side];
             linear.gram += Matrix4x3::from_fn(|a, c| reynolds.gram[a][c]);
+            linear.lateral_by_side.set_row(side, &RowVector3::from_fn(|_, c| reynolds.gram[0][c]));
             linear.free[side].clone_from(&reynolds.free);
         }
         linear
@@ -218,6 +219,8 @@ impl Skirt {
         // The pressure's loads g_aᵀ p with g_a = −(the a-th extra right-hand side), p = A⁻¹ Σ r_c b_c.
         let film = -linear.gram * rates;
         let squeeze = linear.gram.fixed_rows::<3>(0);
+        // Each wall's push is its side's pressure's lateral force, negated on the thrust side (−x).
+        let walls = Matrix2::new(1.0, 0.0, 0.0, -1.0) * linear.lateral_by_side;
         let mut out = SkirtLoads {
             film_force: film[0],
             moment: film[1],
@@ -225,6 +228,8 @@ impl Skirt {
             friction_moment: film[3],
             damping: linear.gram.fixed_view::<2, 2>(0, 0).into_owned(),
             squeeze_power: rates.dot(&(squeeze * rates)),
+            wall_push: walls * rates,
+            wall_push_rates: walls.fixed_columns::<2>(0).into_owned(),
             factorisations: linear.factorisations,
             ..SkirtLoads::default()
         };
@@ -245,6 +250,9 @@ impl Skirt {
         };
         for (side_index, side) in self.sides.iter().enumerate() {
             let free = &linear.free[side_index];
+            // A load at cos θ = c pushes the piston by −c along x: the thrust wall's push is +c times it.
+            let toward_wall = [1.0, -1.0][side_index];
+            let mut pushed = 0.0;
             let mut side_map = map.as_ref().map(|_| SideMap {
                 angle: side.angles.clone(),
                 position: self.rows.closed.iter().map(|r| r.0).collect(),
@@ -305,6 +313,7 @@ impl Skirt {
                     let load = pa * weight;
                     out.asperity_force += load;
                     out.lateral_force += load * -c;
+                    pushed += load * c;
                     out.moment += load * (alpha + beta * c);
                     let axial = -d.boundary_friction * load * sign_v;
                     out.friction_force += axial;
@@ -313,6 +322,7 @@ impl Skirt {
                 }
             }
             out.min_film[side_index] = smallest;
+            out.wall_push[side_index] += toward_wall * pushed;
             if let (Some(mm), Some(sm)) = (map.as_deref_mut(), side_map) {
                 mm.sides[side_index] = sm;
             }

@@ -115,6 +115,56 @@ fn damping_is_the_derivative_of_the_loads_in_the_rates() {
 }
 
 #[test]
+fn each_walls_push_is_its_sides_pressure_and_asperities_and_their_rates_share_the_damping() {
+    // Each wall's push is its side's pressure (the map's, interior nodes, cell areas) times |cos θ|,
+    // ≥ 0 (p ≥ 0 on an arc within ±90° of its wall); the two make the lateral force; a collapsed
+    // film's asperities push their wall. The pushes' rates are their central differences (as the
+    // damping's, same steps) and differ by the damping's first row.
+    let s = skirt();
+    let (nc, na) = SkirtDesign::DEFAULT_GRID;
+    let area = 0.04004 * 70f64.to_radians() / (nc + 1) as f64 * 0.08 / (na + 1) as f64;
+    let clearance = 0.04004 - 0.04;
+    let collapsed = SkirtMotion { lateral: clearance + 0.2e-6, sliding_speed: -3.0, ..SkirtMotion::default() };
+    for m in [MOTION, SkirtMotion { lateral: -10e-6, tilt: -3e-4, lateral_rate: -0.05, tilt_rate: 2.0, sliding_speed: -7.0 }, collapsed] {
+        let l = s.loads(&m);
+        assert!(l.wall_push.iter().all(|&p| p >= 0.0) && close(l.wall_push[1] - l.wall_push[0], l.lateral_force, 1e-12), "{l:?}");
+        let map = s.pressure_map(&s.linearise(&m), &m);
+        let film = |side: usize| {
+            let toward = [1.0, -1.0][side];
+            let sm = &map.sides[side];
+            sm.pressure.iter().enumerate().map(|(k, p)| toward * p * libm::cos(sm.angle[k % (nc + 2)]) * area).sum::<f64>()
+        };
+        // The asperities (on the thrust side only) add their load's x-component, at most the load.
+        let asperities = l.wall_push[0] - film(0);
+        assert!(close(film(1), l.wall_push[1], 1e-9), "{} vs {}", film(1), l.wall_push[1]);
+        assert!(if l.asperity_force == 0.0 {
+            close(film(0), l.wall_push[0], 1e-9)
+        } else {
+            asperities > 0.9 * l.asperity_force && asperities <= l.asperity_force
+        });
+        for col in 0..2 {
+            let step = [1e-6, 1e-5][col];
+            let shifted = |sign: f64| {
+                let mut moved = m;
+                *[&mut moved.lateral_rate, &mut moved.tilt_rate][col] += sign * step;
+                s.loads(&moved).wall_push
+            };
+            let fd = (shifted(1.0) - shifted(-1.0)) / (2.0 * step);
+            // (Not across the collapsed film's cavitation set, which its zero rates sit on.)
+            for row in (0..2).filter(|_| l.asperity_force == 0.0) {
+                assert!(
+                    close(fd[row], l.wall_push_rates[(row, col)], 1e-6),
+                    "{m:?} ({row}, {col}): {} vs {}",
+                    fd[row],
+                    l.wall_push_rates[(row, col)]
+                );
+            }
+            assert!(close(l.wall_push_rates[(0, col)] - l.wall_push_rates[(1, col)], l.damping[(0, col)], 1e-12));
+        }
+    }
+}
+
+#[test]
 fn film_dissipation_is_the_power_taken_from_the_motion() {
     // No asperity contact (films ≥ 8σ): shear + squeeze power = −(F ẋ + M φ̇3 + F_axial V), exactly
     // for the discretisation (the Poiseuille part is pᵀAp = pᵀb).
