@@ -16,7 +16,7 @@ use super::shear::{self, arm, closed_weight, RowTerms, Shear};
 use super::{FilmLinear, PressureMap, SideMap, SkirtDesign, SkirtLoads, SkirtMotion};
 use crate::models::ModelError;
 use nalgebra::{Matrix2, Matrix4x3, RowVector3, Vector2, Vector3};
-use std::cell::RefCell;
+use std::cell::{RefCell, RefMut};
 
 /// Per side: column terms (cos θ, ovality·sin²θ) at the node columns, the x faces, and the closed grid
 /// (edges included, for the asperities, the smallest film and the plots).
@@ -63,7 +63,27 @@ pub struct Skirt {
     floor: f64,
     /// The workspace, lent to each evaluation: every entry is written before it is read, so an
     /// evaluation's result does not depend on the one before.
-    scratch: RefCell<Scratch>,
+    scratch: Workspace,
+}
+
+/// A skirt's workspace, made at its first use. A clone starts without one: the model is cloned at
+/// every communication step to be put back if the step fails, and a copy of the solver's band
+/// matrices cost 8 % of a lubricated run. The clone's first solves start cold, which changes their
+/// active-set steps, not their result (the discrete problem's unique solution).
+#[derive(Debug, Default)]
+struct Workspace(RefCell<Option<Box<Scratch>>>);
+
+impl Clone for Workspace {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl Workspace {
+    /// The workspace for `grid`, made if there is none yet.
+    fn lend(&self, grid: &Grid) -> RefMut<'_, Scratch> {
+        RefMut::map(self.0.borrow_mut(), |s| &mut **s.get_or_insert_with(|| Box::new(Scratch::new(grid))))
+    }
 }
 
 /// The per-evaluation workspace.
@@ -134,7 +154,7 @@ impl Skirt {
         };
         let asperity = Asperity::new(&design.roughness);
         let floor = 0.1 * design.roughness.sigma;
-        let scratch = RefCell::new(Scratch::new(&grid));
+        let scratch = Workspace::default();
         Ok(Self { sides: [side(0.0), side(std::f64::consts::PI)], rows, asperity, floor, grid, design, scratch })
     }
 
@@ -175,7 +195,8 @@ impl Skirt {
 
     /// Solves the film at `motion`: its cavitation set and the pressure's loads per unit rate.
     pub fn linearise(&self, motion: &SkirtMotion) -> FilmLinear {
-        let s = &mut *self.scratch.borrow_mut();
+        let mut workspace = self.scratch.lend(&self.grid);
+        let s = &mut *workspace;
         let mut linear = FilmLinear { at: *motion, ..FilmLinear::default() };
         for side in 0..2 {
             linear.factorisations[side] = self.solve_side(s, side, motion, Cavitation::Reynolds);
@@ -258,7 +279,8 @@ impl Skirt {
             factorisations: linear.factorisations,
             ..SkirtLoads::default()
         };
-        let s = &mut *self.scratch.borrow_mut();
+        let mut workspace = self.scratch.lend(&self.grid);
+        let s = &mut *workspace;
         let (s3, c3) = (libm::sin(m.tilt), libm::cos(m.tilt));
         let pose = self.pose(m);
         s.closed_rows.clear();
