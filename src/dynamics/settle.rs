@@ -169,7 +169,14 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 // The impact law over every closed constraint, with one `e`, so that it dissipates
                 // (`newton_impulses`): one leaving the liner may return at up to e times its
                 // speed, and strikes it in the next round.
-                let jump = impact(&self.system, (t, &q, &v), &ev, &frame, closed)?;
+                let jump = if self.system.absorbs() {
+                    // Through the inertia without the implicit forces', which take no impulse.
+                    let ev = Evaluation { mass: self.system.impact_mass(t, &q, &v, &ev), ..ev.clone() };
+                    let frame = Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: t })?;
+                    impact(&self.system, (t, &q, &v), &ev, &frame, closed)?
+                } else {
+                    impact(&self.system, (t, &q, &v), &ev, &frame, closed)?
+                };
                 // Recorded: the approaching constraints. Another closed one that takes an impulse
                 // (held, at rest, or leaving) is pushed, not struck: its share of the losses goes with its
                 // friction share to the first recorded event, so that the record's losses add up.
@@ -182,7 +189,6 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                     (lost[first], friction_lost[first]) = (lost[first] + lost[i], friction_lost[first] + friction_lost[i]);
                 }
                 self.record((EventKind::Impact, &v), recorded, (&hd, &jump.hd), (&lost, &friction_lost), (jump.normal, jump.tangent));
-                absorbed += self.absorbed_by_jump(t, &q, &v, &jump.v);
                 (v, hd) = (jump.v, jump.hd);
                 (ev, frame) = frame_at(&self.system, t, &q, &v, None)?;
                 impacted |= approaching;

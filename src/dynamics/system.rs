@@ -120,9 +120,20 @@ pub trait System<const N: usize, const M: usize> {
         Absorbed::zeros()
     }
 
-    /// The work those forces take from a velocity jump `q̇⁻ → q̇⁺` at `(t, q)` (an impact, a
-    /// projection onto held contacts), J, and the impulses of the reported forces, N·s: a force
-    /// implicit in `q̈` takes an impulse at a jump.
+    /// The inertia an impact acts through at `(t, q, q̇)`, the evaluation there `ev`: `ev.mass`, the
+    /// default. A system that adds to its inertia a force made linearly implicit (a stiff damper's
+    /// `τ D`, see [`Self::absorbed_power`]) returns its inertia without it: that force is finite, so
+    /// it takes no impulse in an instantaneous impact. (Through `M + τ D`, Newton's law dissipates
+    /// in that metric, not in the kinetic energy's: a piston rocking between two corners on a thin
+    /// film, whose D turns between the impacts, gained energy at each and blew up.)
+    fn impact_mass(&self, _t: f64, _q: &SVector<f64, N>, _qd: &SVector<f64, N>, ev: &Evaluation<N, M>) -> SMatrix<f64, N, N> {
+        ev.mass
+    }
+
+    /// The work those forces take from a velocity jump `q̇⁻ → q̇⁺` at `(t, q)` through the
+    /// evaluation's inertia (a projection onto held contacts; an impact acts through
+    /// [`Self::impact_mass`] and is not asked), J, and the impulses of the reported forces, N·s: a
+    /// force implicit in `q̈` takes an impulse at such a jump.
     /// Asked for only where [`Self::absorbs`].
     fn absorbed_by_jump(&self, _t: f64, _q: &SVector<f64, N>, _before: &SVector<f64, N>, _after: &SVector<f64, N>) -> Absorbed {
         Absorbed::zeros()

@@ -107,8 +107,9 @@ impl System<1, 1> for Ball {
 /// A [`Ball`] with a viscous damper to the ground, `−c ẏ`, made linearly implicit over the time
 /// `relaxation` τ as a stiff film is: `M = m + τ c` and `f = −m g − c ẏ`, so that the damper acts
 /// as `−c (ẏ + τ ÿ)` and its mode relaxes over ≈ τ whatever c. The damper's work, through `ÿ` and
-/// at jumps, is absorbed (`System::absorbed_power`); steps are bounded by τ. With c = 0 it is the
-/// `Ball`, bit for bit.
+/// at the projections onto a resting contact, is absorbed (`System::absorbed_power`); an impact acts
+/// through m alone (`System::impact_mass`: the damper is a finite force). Steps are bounded by τ.
+/// With c = 0 it is the `Ball`, bit for bit.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct DampedBall {
     /// The ball, floor and restitution.
@@ -136,6 +137,9 @@ impl System<1, 1> for DampedBall {
     fn absorbed_power(&self, _t: f64, _q: &Vector1<f64>, qd: &Vector1<f64>, qdd: &Vector1<f64>) -> Absorbed {
         let force = -self.damping * (qd[0] + self.relaxation * qdd[0]);
         Absorbed::new(-force * qd[0], -force * qd[0], force, 0.0)
+    }
+    fn impact_mass(&self, _t: f64, _q: &Vector1<f64>, _qd: &Vector1<f64>, _ev: &Evaluation<1, 1>) -> Matrix1<f64> {
+        Matrix1::new(self.ball.mass)
     }
     fn absorbed_by_jump(&self, _t: f64, _q: &Vector1<f64>, before: &Vector1<f64>, after: &Vector1<f64>) -> Absorbed {
         let impulse = -self.relaxation * self.damping * (after[0] - before[0]);

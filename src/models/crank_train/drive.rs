@@ -126,6 +126,12 @@ impl Engine {
         (mass, force)
     }
 
+    /// The linkage's inertia at φ, without the film's implicit `τ Gᵀ D G` (`System::impact_mass`).
+    fn impact_mass(&self, t: f64, phi: &Vector3<f64>, phid: &Vector3<f64>, crank: Crank) -> Matrix3<f64> {
+        let (trig, loads) = self.trig_and_loads(t, phi, 0.0, &crank);
+        self.linkage.inertia_and_force_with(&trig, phid, loads).0
+    }
+
     /// An RK4 step begins: the lubricated skirt prepares its film at the state (φ, φ̇) predicted
     /// into it, with the corners' gaps there (`Lubrication::begin_step`).
     fn begin_step(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) {
@@ -384,6 +390,11 @@ impl System<2, 4> for PrescribedCrank {
         self.engine.absorbed_power(&phi, &LinkAngles::with_crank((crank.sin, crank.cos), &phi), &phid, &phidd)
     }
 
+    fn impact_mass(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>, _ev: &Evaluation<2, 4>) -> Matrix2<f64> {
+        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
+        self.engine.impact_mass(t, &phi, &phid, crank).fixed_view::<2, 2>(1, 1).into_owned()
+    }
+
     /// The crank keeps its speed through a jump.
     fn absorbed_by_jump(&self, t: f64, q: &Vector2<f64>, before: &Vector2<f64>, after: &Vector2<f64>) -> Absorbed {
         let (phi, before, crank) = self.full_state_and_crank(t, q, before);
@@ -465,6 +476,10 @@ impl System<3, 4> for FreeCrank {
 
     fn absorbed_power(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>, qdd: &Vector3<f64>) -> Absorbed {
         self.engine.absorbed_power(q, &LinkAngles::new(q), qd, qdd)
+    }
+
+    fn impact_mass(&self, t: f64, q: &Vector3<f64>, qd: &Vector3<f64>, _ev: &Evaluation<3, 4>) -> Matrix3<f64> {
+        self.engine.impact_mass(t, q, qd, self.engine.crank(q[0]))
     }
 
     fn absorbed_by_jump(&self, _t: f64, q: &Vector3<f64>, before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {

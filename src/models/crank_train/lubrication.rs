@@ -17,10 +17,12 @@
 //! `m v̇ = −c v` then relaxes at
 //! `λ = −c/(m + τ c) ≥ −1/τ`, inside RK4's stability region for steps up to τ whatever the film;
 //! with D → 0 the dry equations come back exactly. What the skirt takes from the motion,
-//! `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and at a velocity jump Δφ̇ the impulse `−τ Gᵀ D G Δφ̇`'s share, is
-//! booked by the core as the absorbed work (`System::absorbed_power`); each wall's push, its side's
-//! share of the lateral force with its share of the implicit term (and of the impulse at a jump), as
-//! two further channels: the film's and asperities' impulse on the liner.
+//! `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and at a projection onto held corners (a jump Δφ̇) the impulse
+//! `−τ Gᵀ D G Δφ̇`'s share, is booked by the core as the absorbed work (`System::absorbed_power`);
+//! each wall's push, its side's share of the lateral force with its share of the implicit term (and
+//! of the impulse at a projection), as two further channels: the film's and asperities' impulse on
+//! the liner. An impact acts through the linkage's inertia alone (`System::impact_mass`): the film,
+//! a finite force, takes no impulse in it.
 //!
 //! Cost: the film is solved at most once per RK4 step (`Lubrication::begin_step`, from
 //! `System::begin_step`), its pressure's loads linear in the rates within the step
@@ -296,7 +298,7 @@ impl Lubrication {
         Absorbed::new(implicit - generalized(&k, &loads).dot(phid), -friction_power(&k, &loads), antithrust, thrust)
     }
 
-    /// What the implicit film impulse `−τ Gᵀ D G Δφ̇` of a jump `before → after` at φ takes, J:
+    /// What the implicit film impulse `−τ Gᵀ D G Δφ̇` of a projection `before → after` at φ takes, J:
     /// the negative of its work on the mean velocity (D at the velocity before); and each wall's
     /// share of its lateral impulse, `τ ∂P/∂(ẋ, φ̇3) G Δφ̇`, N·s (anti-thrust, thrust).
     pub fn absorbed_by_jump(&self, at: (&Vector3<f64>, &LinkAngles), before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
