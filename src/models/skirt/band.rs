@@ -90,7 +90,8 @@ impl Band {
                 continue;
             }
             let (row, start) = (self.at(i), self.start[i]);
-            let s = dot(&self.data[row + start..row + i], &r[start..i]);
+            // The right-hand sides are independent chains: a plain sum in order.
+            let s = self.data[row + start..row + i].iter().zip(&r[start..i]).fold([0.0; R], |s, (&l, y)| s.add_product(l, *y));
             for (x, s) in r[i].iter_mut().zip(s) {
                 *x = (*x - s) * self.inverse_diagonal[i];
             }
