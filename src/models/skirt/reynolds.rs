@@ -91,16 +91,6 @@ impl Grid {
         }
     }
 
-    /// Node (i, j) of unknown index `row`: [`Grid::index`]'s inverse.
-    #[inline]
-    pub(crate) fn node(&self, row: usize) -> (usize, usize) {
-        if self.nx <= self.nz {
-            (row % self.nx, row / self.nx)
-        } else {
-            (row / self.nz, row % self.nz)
-        }
-    }
-
     /// Half bandwidth of A in [`Grid::index`] order.
     fn band(&self) -> usize {
         self.nx.min(self.nz)
@@ -170,6 +160,8 @@ impl Film {
 pub(crate) struct Reynolds {
     pub grid: Grid,
     matrix: Band,
+    /// Each node's band row (node order j·nx + i).
+    order: Vec<usize>,
     /// Band order: the sum of a node's four face conductances `h³/(12μ)·(face length)/(node distance)`,
     /// and the conductances of its faces toward rows − 1 and − band (0 where there is none).
     diagonal: Vec<f64>,
@@ -210,9 +202,11 @@ impl Reynolds {
     pub(crate) fn new(grid: Grid) -> Self {
         let n = grid.len();
         let matrix = Band::new(n, grid.band());
+        let order = (0..n).map(|k| grid.index(k % grid.nx, k / grid.nx)).collect();
         Self {
             grid,
             matrix,
+            order,
             diagonal: vec![0.0; n],
             lower: vec![[0.0; 2]; n],
             rhs: vec![0.0; n],
@@ -234,16 +228,12 @@ impl Reynolds {
     pub(crate) fn solve(&mut self, film: &Film, viscosity: f64, b: &[f64], cavitation: Cavitation, extra: &[&[f64]]) -> usize {
         assert!(extra.len() <= EXTRA, "at most {EXTRA} extra right-hand sides");
         self.conductances(film, viscosity);
-        let g = &self.grid;
-        for (k, &v) in b.iter().enumerate() {
-            let row = g.index(k % g.nx, k / g.nx);
-            self.rhs[row] = v;
+        for (k, &row) in self.order.iter().enumerate() {
+            self.rhs[row] = b[k];
             self.identity[row] = cavitation != Cavitation::None && !self.free[k];
         }
         let steps = self.active_set(extra, cavitation);
-        let g = &self.grid;
-        for k in 0..g.len() {
-            let row = g.index(k % g.nx, k / g.nx);
+        for (k, &row) in self.order.iter().enumerate() {
             self.free[k] = !self.identity[row];
             // Negative pressures under the Reynolds condition are round-off below its tolerance.
             let p = self.back[row];
@@ -280,12 +270,10 @@ impl Reynolds {
                 self.work.fill([f64::NAN; 1 + EXTRA]);
                 return steps;
             }
-            let g = &self.grid;
-            for (row, column) in self.work.iter_mut().enumerate() {
+            for (k, &row) in self.order.iter().enumerate() {
+                let column = &mut self.work[row];
                 *column = [0.0; 1 + EXTRA];
                 if !self.identity[row] {
-                    let (i, j) = g.node(row);
-                    let k = j * g.nx + i;
                     column[0] = self.rhs[row];
                     for (x, r) in column[1..].iter_mut().zip(extra) {
                         *x = r[k];
