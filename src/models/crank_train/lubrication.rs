@@ -133,7 +133,7 @@ impl TryFrom<Saved> for Lubrication {
             let previous = film.previous.as_ref().map(solve);
             let mut step = StepFilm::solved(solve(&film.latest), previous);
             // A current film other than the latest solve was carried there.
-            step.carry_to(&motion(&film.current), lubrication.arm(), true);
+            step.carry_to(&motion(&film.current), lubrication.skirt.arm(), true);
             *lubrication.frozen.borrow_mut() = Some(step);
         }
         Ok(lubrication)
@@ -241,17 +241,10 @@ impl Lubrication {
         let motion = self.kinematics((phi, &LinkAngles::new(phi)), phid).motion;
         let mut frozen = self.frozen.borrow_mut();
         let clear = gaps.min() > CLEAR_GAP;
-        if !frozen.as_mut().is_some_and(|f| f.carry_to(&motion, self.arm(), clear)) {
+        if !frozen.as_mut().is_some_and(|f| f.carry_to(&motion, self.skirt.arm(), clear)) {
             let previous = frozen.take().map(|f| f.latest);
             *frozen = Some(StepFilm::solved(Solved::at(&self.skirt, &motion), previous));
         }
-    }
-
-    /// The skirt's longest distance from the pin, m (axially, plus the pin's offset): a tilt δφ3
-    /// changes no node's film by more than this times δφ3.
-    fn arm(&self) -> f64 {
-        let [_, _, length, pin_from_top, pin_offset] = self.design.geometry;
-        pin_from_top.abs().max((length - pin_from_top).abs()) + pin_offset.abs()
     }
 
     /// The film's loads at `motion` from the current step's film (solved at `motion` before the first).

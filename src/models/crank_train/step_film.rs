@@ -160,8 +160,9 @@ mod tests {
             p.oil_viscosity,
         );
         d.profile = p.skirt_profile.parse::<SkirtProfile>().expect("the default profile");
-        let arm = p.pin_height.max(p.skirt_length - p.pin_height) + p.pin_offset.abs();
-        (Skirt::new(d).expect("the default skirt"), arm)
+        let skirt = Skirt::new(d).expect("the default skirt");
+        let arm = skirt.arm();
+        (skirt, arm)
     }
 
     #[test]

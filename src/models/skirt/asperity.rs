@@ -7,6 +7,7 @@
 
 use crate::models::ModelError;
 use std::f64::consts::PI;
+use std::sync::OnceLock;
 
 /// Roughness of the piston–liner pair for the Greenwood–Tripp asperity pressure.
 ///
@@ -78,8 +79,10 @@ pub(crate) struct Asperity {
     /// 1/σ, 1/m.
     inverse_sigma: f64,
     stiffness: f64,
-    /// F_5/2 and its derivative −(5/2)·F_3/2 at λ = LOW + k·STEP.
-    table: Vec<(f64, f64)>,
+    /// F_5/2 and its derivative −(5/2)·F_3/2 at λ = LOW + k·STEP: the same for every roughness,
+    /// tabulated once per process (≈ 4.6e5 exponentials, 15 ms: before, at every skirt built, an FMU
+    /// state restored included).
+    table: &'static [(f64, f64)],
 }
 
 impl Asperity {
@@ -89,13 +92,16 @@ impl Asperity {
     const STEP: f64 = 1.0 / 32.0;
 
     pub(crate) fn new(r: &Roughness) -> Self {
-        let count = ((Self::HIGH - Self::LOW) / Self::STEP) as usize + 1;
-        let table = (0..count)
-            .map(|k| {
-                let lambda = Self::LOW + k as f64 * Self::STEP;
-                (gaussian_moment(2.5, lambda), -2.5 * gaussian_moment(1.5, lambda))
-            })
-            .collect();
+        static TABLE: OnceLock<Vec<(f64, f64)>> = OnceLock::new();
+        let table = TABLE.get_or_init(|| {
+            let count = ((Self::HIGH - Self::LOW) / Self::STEP) as usize + 1;
+            (0..count)
+                .map(|k| {
+                    let lambda = Self::LOW + k as f64 * Self::STEP;
+                    (gaussian_moment(2.5, lambda), -2.5 * gaussian_moment(1.5, lambda))
+                })
+                .collect()
+        });
         Self { inverse_sigma: 1.0 / r.sigma, stiffness: r.stiffness(), table }
     }
 

@@ -1,5 +1,6 @@
 //! What goes into and comes out of a skirt evaluation.
 
+use super::Shear;
 use nalgebra::{Matrix2, Matrix2x3, Matrix4x3, Vector2};
 
 /// The skirt's motion relative to the liner, in the crank train's coordinates.
@@ -79,6 +80,8 @@ pub struct FilmLinear {
     pub lateral_by_side: Matrix2x3<f64>,
     /// Per side, the film nodes (node order; false: cavitated).
     pub free: [Vec<bool>; 2],
+    /// Both sides' Couette shear sums at the solve's pose and their gradient there.
+    pub shear: Shear,
     /// Band Cholesky factorisations per side.
     pub factorisations: [usize; 2],
 }

@@ -11,6 +11,7 @@ mod profile;
 mod reynolds;
 #[cfg(test)]
 mod reynolds_tests;
+mod shear;
 mod surface;
 #[cfg(test)]
 mod surface_tests;
@@ -19,4 +20,5 @@ pub use asperity::Roughness;
 pub use design::SkirtDesign;
 pub use loads::{FilmLinear, PressureMap, SideMap, SkirtLoads, SkirtMotion};
 pub use profile::SkirtProfile;
+pub use shear::Shear;
 pub use surface::Skirt;

@@ -12,10 +12,11 @@
 
 use super::asperity::Asperity;
 use super::reynolds::{Cavitation, Film, Grid, Reynolds};
+use super::shear::{self, arm, closed_weight, RowTerms, Shear};
 use super::{FilmLinear, PressureMap, SideMap, SkirtDesign, SkirtLoads, SkirtMotion};
 use crate::models::ModelError;
-use nalgebra::{Matrix2, Matrix4x3, RowVector3, Vector3};
-use std::cell::RefCell;
+use nalgebra::{Matrix2, Matrix4x3, RowVector3, Vector2, Vector3};
+use std::cell::{RefCell, RefMut};
 
 /// Per side: column terms (cos θ, ovality·sin²θ) at the node columns, the x faces, and the closed grid
 /// (edges included, for the asperities, the smallest film and the plots).
@@ -25,6 +26,8 @@ struct Side {
     faces: Vec<(f64, f64)>,
     closed: Vec<(f64, f64)>,
     angles: Vec<f64>,
+    /// The closed columns where some row's film can be least (`lower_envelope`).
+    envelope: Vec<(f64, f64)>,
 }
 
 /// Per axial row: (u, radius r(u) = d/2 − drop(u)) at the node rows, z faces and closed grid.
@@ -34,6 +37,12 @@ struct Rows {
     faces: Vec<(f64, f64)>,
     closed: Vec<(f64, f64)>,
 }
+
+/// How far (as a fraction of the thinnest film) an evaluation's pose may lie from its film solve's
+/// for the solve's Couette shear sums to serve it to first order (`Shear::sums_at`): the carried
+/// solves of a run move at most `step_film::CARRY_MOVE` (1 %) plus half a step, where the sums err
+/// by ≈ 1e-4 of themselves; farther away (tests, plots) they are walked at the pose.
+const SHEAR_REACH: f64 = 0.02;
 
 /// A skirt ready to evaluate: the design checked and its grids and tables built.
 ///
@@ -54,12 +63,28 @@ pub struct Skirt {
     floor: f64,
     /// The workspace, lent to each evaluation: every entry is written before it is read, so an
     /// evaluation's result does not depend on the one before.
-    scratch: RefCell<Scratch>,
+    scratch: Workspace,
 }
 
-/// A row's terms at one motion: (a, b) of h = a + b cos θ + ov(θ), (α, β) of ∂h/∂φ3 = α + β cos θ,
-/// the height z above the pin and the skirt radius r there.
-type RowTerms = ((f64, f64), (f64, f64), f64, f64);
+/// A skirt's workspace, made at its first use. A clone starts without one: the model is cloned at
+/// every communication step to be put back if the step fails, and a copy of the solver's band
+/// matrices cost 8 % of a lubricated run. The clone's first solves start cold, which changes their
+/// active-set steps, not their result (the discrete problem's unique solution).
+#[derive(Debug, Default)]
+struct Workspace(RefCell<Option<Box<Scratch>>>);
+
+impl Clone for Workspace {
+    fn clone(&self) -> Self {
+        Self::default()
+    }
+}
+
+impl Workspace {
+    /// The workspace for `grid`, made if there is none yet.
+    fn lend(&self, grid: &Grid) -> RefMut<'_, Scratch> {
+        RefMut::map(self.0.borrow_mut(), |s| &mut **s.get_or_insert_with(|| Box::new(Scratch::new(grid))))
+    }
+}
 
 /// The per-evaluation workspace.
 #[derive(Clone, Debug)]
@@ -112,10 +137,12 @@ impl Skirt {
                 let (s, c) = (libm::sin(theta), libm::cos(theta));
                 (theta, (c, design.ovality * s * s))
             };
+            let closed: Vec<_> = (0..nc + 2).map(|i| column(i as f64 * dx).1).collect();
             Side {
                 nodes: (0..nc).map(|i| column(grid.x(i)).1).collect(),
                 faces: (0..=nc).map(|i| column((i as f64 + 0.5) * dx).1).collect(),
-                closed: (0..nc + 2).map(|i| column(i as f64 * dx).1).collect(),
+                envelope: lower_envelope(&closed),
+                closed,
                 angles: (0..nc + 2).map(|i| column(i as f64 * dx).0).collect(),
             }
         };
@@ -127,8 +154,16 @@ impl Skirt {
         };
         let asperity = Asperity::new(&design.roughness);
         let floor = 0.1 * design.roughness.sigma;
-        let scratch = RefCell::new(Scratch::new(&grid));
+        let scratch = Workspace::default();
         Ok(Self { sides: [side(0.0), side(std::f64::consts::PI)], rows, asperity, floor, grid, design, scratch })
+    }
+
+    /// The skirt's longest distance from the pin, m (axially, plus the pin's offset): a tilt change δφ3
+    /// moves no node's film by more than this times δφ3 (to first order in the tilt, which the
+    /// clearance keeps at a few mrad).
+    pub fn arm(&self) -> f64 {
+        let d = &self.design;
+        d.pin_from_top.abs().max((d.length - d.pin_from_top).abs()) + d.pin_offset.abs()
     }
 
     /// The design this skirt was built from.
@@ -160,7 +195,8 @@ impl Skirt {
 
     /// Solves the film at `motion`: its cavitation set and the pressure's loads per unit rate.
     pub fn linearise(&self, motion: &SkirtMotion) -> FilmLinear {
-        let s = &mut *self.scratch.borrow_mut();
+        let mut workspace = self.scratch.lend(&self.grid);
+        let s = &mut *workspace;
         let mut linear = FilmLinear { at: *motion, ..FilmLinear::default() };
         for side in 0..2 {
             linear.factorisations[side] = self.solve_side(s, side, motion, Cavitation::Reynolds);
@@ -168,6 +204,16 @@ impl Skirt {
             linear.gram += Matrix4x3::from_fn(|a, c| reynolds.gram[a][c]);
             linear.lateral_by_side.set_row(side, &RowVector3::from_fn(|_, c| reynolds.gram[0][c]));
             linear.free[side].clone_from(&reynolds.free);
+        }
+        let pose = self.pose(motion);
+        s.closed_rows.clear();
+        s.closed_rows.extend(self.rows.closed.iter().map(&pose));
+        let (tilt, forward) = ((libm::sin(motion.tilt), libm::cos(motion.tilt)), motion.sliding_speed >= 0.0);
+        linear.shear = Shear { at: Vector2::new(motion.lateral, motion.tilt), forward, ..Shear::default() };
+        for side in 0..2 {
+            let (sums, gradient) = self.shear_walk::<true>(&s.closed_rows, side, &linear.free[side], forward, tilt);
+            linear.shear.sums += sums;
+            linear.shear.gradient += gradient;
         }
         linear
     }
@@ -233,14 +279,15 @@ impl Skirt {
             factorisations: linear.factorisations,
             ..SkirtLoads::default()
         };
-        let s = &mut *self.scratch.borrow_mut();
+        let mut workspace = self.scratch.lend(&self.grid);
+        let s = &mut *workspace;
         let (s3, c3) = (libm::sin(m.tilt), libm::cos(m.tilt));
         let pose = self.pose(m);
         s.closed_rows.clear();
         s.closed_rows.extend(self.rows.closed.iter().map(&pose));
         let (nx, nz) = (self.grid.nx, self.grid.nz);
         let area = self.grid.dx() * self.grid.dz();
-        let (mu, v) = (d.viscosity, m.sliding_speed);
+        let v = m.sliding_speed;
         let sign_v = if v > 0.0 {
             1.0
         } else if v < 0.0 {
@@ -248,8 +295,19 @@ impl Skirt {
         } else {
             0.0
         };
+        let smallest = self.sides.each_ref().map(|side| thinnest(&s.closed_rows, &side.envelope));
+        // The Couette shear: the solve's sums to first order in the pose where they serve, walked here otherwise.
+        let at = Vector2::new(m.lateral, m.tilt);
+        let reach = SHEAR_REACH * smallest[0].min(smallest[1]);
+        let shear = if map.is_none() && linear.shear.serves(v, at, self.arm(), reach) {
+            linear.shear.sums_at(at)
+        } else {
+            (0..2).map(|side| self.shear_walk::<false>(&s.closed_rows, side, &linear.free[side], v >= 0.0, (s3, c3)).0).sum()
+        };
+        out.friction_force -= d.viscosity * v * shear[0];
+        out.friction_moment -= d.viscosity * v * shear[1];
+        out.shear_power = d.viscosity * v * v * shear[0];
         for (side_index, side) in self.sides.iter().enumerate() {
-            let free = &linear.free[side_index];
             // A load at cos θ = c pushes the piston by −c along x: the thrust wall's push is +c times it.
             let toward_wall = [1.0, -1.0][side_index];
             let mut pushed = 0.0;
@@ -259,46 +317,17 @@ impl Skirt {
                 ..SideMap::default()
             });
             if side_map.is_some() {
-                s.reynolds[side_index].free.clone_from(free);
+                s.reynolds[side_index].free.clone_from(&linear.free[side_index]);
                 let held = SkirtMotion { lateral: linear.at.lateral, tilt: linear.at.tilt, ..*m };
                 self.solve_side(s, side_index, &held, Cavitation::Held);
             }
-            // Oil fills a cavitated point as far as the film carried into it along the liner's motion
-            // (+u for V > 0) allows: at a Reynolds rupture the pressure flow vanishes, so the Couette
-            // flux V·h_r/2 goes on as streamers filling h_r/h of a thicker gap. The upstream edge is
-            // flooded. Couette shear acts on the filled part, on the closed grid (trapezoid weights).
-            for (ii, &(c, ov)) in side.closed.iter().enumerate() {
-                let mut carried = f64::INFINITY;
-                // The column's Σ w·fill/h and Σ w·fill/h·arm, scaled by −μV and its weight after.
-                let (mut force, mut moment) = (0.0, 0.0);
-                for step in 0..nz + 2 {
-                    let jj = if v >= 0.0 { step } else { nz + 1 - step };
-                    let ((a, b), _, z, r) = s.closed_rows[jj];
-                    let h = (a + b * c + ov).max(self.floor);
-                    let inside = ii > 0 && ii <= nx && jj > 0 && jj <= nz;
-                    // The film's content `fill·h` is min(carried, h), and `fill/h` is `carried/h²`:
-                    // the chain from node to node is a min, one division off it.
-                    carried = if step == 0 || (inside && free[(jj - 1) * nx + ii - 1]) { h } else { carried.min(h) };
-                    let unit = carried / (h * h) * closed_weight(jj, nz);
-                    force += unit;
-                    moment += unit * arm(z, r, c, (s3, c3), d.pin_offset);
-                }
-                let scale = -mu * v * closed_weight(ii, nx) * area;
-                out.shear_power -= scale * force * v;
-                out.friction_force += scale * force;
-                out.friction_moment += scale * moment;
-            }
             // Asperities on the closed grid (trapezoid weights), with the true film thickness; a side
             // whose thinnest film is beyond their reach has none.
-            let film_at = |&((a, b), ..): &RowTerms, &(c, ov): &(f64, f64)| a + b * c + ov;
-            let mut smallest =
-                s.closed_rows.iter().flat_map(|row| side.closed.iter().map(move |col| film_at(row, col))).fold(f64::INFINITY, f64::min);
             let pressure = &s.reynolds[side_index].pressure;
-            let rows = if side_map.is_some() || self.asperity.touches(smallest) { &s.closed_rows[..] } else { &[] };
+            let rows = if side_map.is_some() || self.asperity.touches(smallest[side_index]) { &s.closed_rows[..] } else { &[] };
             for (jj, &((a, b), (alpha, beta), z, r)) in rows.iter().enumerate() {
                 for (ii, &(c, ov)) in side.closed.iter().enumerate() {
                     let h = a + b * c + ov;
-                    smallest = smallest.min(h);
                     let pa = self.asperity.pressure(h);
                     if let Some(sm) = side_map.as_mut() {
                         let inside = ii > 0 && ii <= nx && jj > 0 && jj <= nz;
@@ -321,7 +350,7 @@ impl Skirt {
                     out.asperity_friction_power += d.boundary_friction * load * v.abs();
                 }
             }
-            out.min_film[side_index] = smallest;
+            out.min_film[side_index] = smallest[side_index];
             out.wall_push[side_index] += toward_wall * pushed;
             if let (Some(mm), Some(sm)) = (map.as_deref_mut(), side_map) {
                 mm.sides[side_index] = sm;
@@ -330,19 +359,43 @@ impl Skirt {
         out.lateral_force += out.film_force;
         out
     }
-}
 
-/// The arm about the pin of an axial force on the skirt surface at height z, radius r and cos θ = c,
-/// conjugate to φ3 (`(sin φ3, cos φ3)` the tilt's), m.
-fn arm(z: f64, r: f64, c: f64, (s3, c3): (f64, f64), pin_offset: f64) -> f64 {
-    -z * s3 + (r * c - pin_offset) * c3
-}
-
-/// Trapezoid weight of closed-grid line `k` of `n` interior lines: ½ on the two edges.
-fn closed_weight(k: usize, n: usize) -> f64 {
-    if k == 0 || k == n + 1 {
-        0.5
-    } else {
-        1.0
+    /// One side's Couette shear sums (and with `GRADIENT` their gradient) at the pose of `rows`.
+    fn shear_walk<const GRADIENT: bool>(
+        &self,
+        rows: &[RowTerms],
+        side: usize,
+        free: &[bool],
+        forward: bool,
+        tilt: (f64, f64),
+    ) -> (Vector2<f64>, Matrix2<f64>) {
+        let area = self.grid.dx() * self.grid.dz();
+        shear::walk::<GRADIENT>(rows, &self.sides[side].closed, free, forward, self.floor, tilt, self.design.pin_offset, area)
     }
+}
+
+/// The smallest film over the closed grid at the pose of `rows`: on each row `a + b c + ov` is least
+/// at a column of the lower envelope of the lines `b ↦ b c + ov`, `envelope`.
+fn thinnest(rows: &[RowTerms], envelope: &[(f64, f64)]) -> f64 {
+    rows.iter().flat_map(|&((a, b), ..)| envelope.iter().map(move |&(c, ov)| a + b * c + ov)).fold(f64::INFINITY, f64::min)
+}
+
+/// The columns `(c, ov)` on the lower envelope of the lines `b ↦ b c + ov`: the lower convex hull of
+/// the points (c, ov) (monotone chain), the only columns where some row's film can be least.
+fn lower_envelope(columns: &[(f64, f64)]) -> Vec<(f64, f64)> {
+    let mut points = columns.to_vec();
+    points.sort_by(|p, q| p.0.total_cmp(&q.0).then(p.1.total_cmp(&q.1)));
+    points.dedup_by(|q, p| q.0 == p.0);
+    let mut hull: Vec<(f64, f64)> = Vec::with_capacity(points.len());
+    for p in points {
+        while let [.., o, a] = hull[..] {
+            // Drop `a` unless o → a → p turns left (a lies strictly below the chord o–p).
+            if (a.0 - o.0) * (p.1 - o.1) - (a.1 - o.1) * (p.0 - o.0) > 0.0 {
+                break;
+            }
+            hull.pop();
+        }
+        hull.push(p);
+    }
+    hull
 }

@@ -292,3 +292,51 @@ fn a_solved_film_is_exact_at_other_rates_on_its_cavitation_set() {
     assert_ne!(s.linearise(&reversed).free, linear.free, "squeeze reversed: another set");
     assert!(!close(s.loads(&reversed).lateral_force, s.loads_with(&linear, &reversed).lateral_force, 1e-3));
 }
+
+/// The thinnest film is taken on each row's envelope columns only: it is the least film of the whole
+/// closed grid (the map's film field) bit for bit, round or oval, at any pose.
+#[test]
+fn the_thinnest_film_is_the_least_over_the_closed_grid() {
+    for ovality in [0.0, 30e-6] {
+        let s = Skirt::new(SkirtDesign { ovality, ..design(SkirtDesign::DEFAULT_GRID) }).expect("valid design");
+        for (lateral, tilt) in [(25e-6, 2e-4), (-35e-6, -6e-4), (0.0, 0.0), (10e-6, -9e-4)] {
+            let m = SkirtMotion { lateral, tilt, ..MOTION };
+            let (loads, map) = (s.loads(&m), s.pressure_map(&s.linearise(&m), &m));
+            for (side, film) in map.sides.iter().zip(loads.min_film) {
+                assert_eq!(side.film.iter().copied().fold(f64::INFINITY, f64::min), film, "ovality {ovality}, pose {lateral}, {tilt}");
+            }
+        }
+    }
+}
+
+/// A solve's Couette shear serves the poses near it to first order (`Shear::sums_at`): against the
+/// shear walked at the moved pose, the axial force and moment err by the square of the move (the
+/// error quarters as the move halves: a wrong gradient would only halve it), ≤ 4e-5 of themselves at
+/// a move of 1 % of the thinnest film, the carried solves' largest (`step_film::CARRY_MOVE`).
+#[test]
+fn the_shear_of_a_solve_serves_nearby_poses_to_second_order() {
+    let s = skirt();
+    let linear = s.linearise(&MOTION);
+    let thinnest = s.loads(&MOTION).min_film.into_iter().fold(f64::INFINITY, f64::min);
+    // The same solve with its shear out of reach: walked at each pose.
+    let mut walked = linear.clone();
+    walked.shear.at[0] += 1.0;
+    let couette = |l: &super::FilmLinear, m: &SkirtMotion| {
+        let loads = s.loads_with(l, m);
+        [loads.friction_force, loads.friction_moment, loads.shear_power]
+    };
+    for direction in [(1.0, 0.0), (0.0, 1.0 / s.arm()), (-0.6, 0.4 / s.arm())] {
+        let error = |fraction: f64| {
+            let move_by = fraction * thinnest;
+            let m = SkirtMotion { lateral: MOTION.lateral + direction.0 * move_by, tilt: MOTION.tilt + direction.1 * move_by, ..MOTION };
+            let (fast, exact) = (couette(&linear, &m), couette(&walked, &m));
+            [0, 1, 2].map(|k| ((fast[k] - exact[k]) / exact[k]).abs())
+        };
+        let (whole, half) = (error(0.01), error(0.005));
+        for k in 0..3 {
+            eprintln!("direction {direction:?}, load {k}: relative error {:.2e} at 1 %, {:.2e} at 0.5 %", whole[k], half[k]);
+            assert!(whole[k] < 1e-4, "{direction:?} {k}: {whole:?}");
+            assert!(whole[k] / half[k] > 3.0 && whole[k] / half[k] < 5.0, "{direction:?} {k}: {whole:?} against {half:?}");
+        }
+    }
+}
