@@ -1,4 +1,5 @@
-//! Cholesky factorisation of a symmetric positive definite band matrix, column by column (right-looking).
+//! Cholesky factorisation of a symmetric positive definite band matrix, row by row (up-looking), within
+//! each row's envelope.
 
 /// A symmetric matrix of half bandwidth `b` (entries `(i, j)` with `|i − j| ≤ b`), stored by rows as
 /// its lower band, and factorised in place into `L Lᵀ`.
@@ -6,92 +7,91 @@
 pub(crate) struct Band {
     n: usize,
     b: usize,
-    /// Row i holds columns i − b ..= i at `i·(b + 1) + (j + b − i)`.
+    /// Row i holds columns i − b ..= i at `i·(b + 1) + (j + b − i)` (those left of column 0 stay 0).
     data: Vec<f64>,
     /// 1 / L_ii after [`Band::factor_from`].
     inverse_diagonal: Vec<f64>,
-    /// Column k of L below the diagonal while column k updates the rows below it.
-    column: Vec<f64>,
+    /// The first column of row i's envelope (its first non-zero entry) after [`Band::factor_from`].
+    start: Vec<usize>,
 }
 
 impl Band {
     pub(crate) fn new(n: usize, b: usize) -> Self {
-        Self { n, b, data: vec![0.0; n * (b + 1)], inverse_diagonal: vec![0.0; n], column: vec![0.0; b] }
+        Self { n, b, data: vec![0.0; n * (b + 1)], inverse_diagonal: vec![0.0; n], start: (0..n).collect() }
     }
 
-    /// Clears every entry of rows `first..`.
-    pub(crate) fn clear_from(&mut self, first: usize) {
-        self.data[first * (self.b + 1)..].fill(0.0);
-    }
-
-    /// Adds `v` to entry (i, j), j ≤ i ≤ j + b.
+    /// Row i's `b + 1` entries, columns i − b ..= i (the diagonal last), to be written in full.
     #[inline]
-    pub(crate) fn add(&mut self, i: usize, j: usize, v: f64) {
-        self.data[i * (self.b + 1) + j + self.b - i] += v;
+    pub(crate) fn row_mut(&mut self, i: usize) -> &mut [f64] {
+        let w = self.b + 1;
+        &mut self.data[i * w..i * w + w]
+    }
+
+    /// Where column j of row i lies in `data`: `at(i) + j`.
+    #[inline]
+    fn at(&self, i: usize) -> usize {
+        i * self.b + self.b
     }
 
     /// Factorises into `L Lᵀ`; false if a pivot is not positive (the matrix is not positive definite).
-    /// Right-looking: once column k of L is known, it updates the rows below it,
-    /// `a_ij −= L_ik·L_jk` for k < j ≤ i ≤ k + b (contiguous runs of a row, no chain of dependent
-    /// sums), so every entry takes its updates one by one in the order of k. Rows marked in
-    /// `identity` must hold the identity (1 on the diagonal, 0 elsewhere): their work is skipped
-    /// (their rows of L are the identity's, and their columns of L below them stay 0).
+    /// Up-looking: row i of L is `L_ij = (a_ij − Σₖ L_ik L_jk) / L_jj` for j < i, then
+    /// `L_ii = √(a_ii − Σₖ L_ik²)`, each sum a [`dot`] over the columns k < j where both rows' envelopes
+    /// (from their first non-zero entry on; L has no fill outside the envelope of A) overlap. Rows
+    /// marked in `identity` must hold the identity (1 on the diagonal, 0 elsewhere): their rows of L
+    /// are the identity's and their columns of L stay 0, so they and their columns are skipped.
     ///
     /// Only rows `first..` are factorised: row i of L depends on rows ..= i of the matrix alone, so
     /// when the matrix changed from row `first` on since a factorisation, rows `..first` of that
-    /// factorisation stand; the columns `first − b .. first` then update the rows from `first` on
-    /// as they would in a full factorisation, in the same order, and the result is the full
-    /// factorisation's bit for bit.
+    /// factorisation stand, and the rows from `first` on take exactly the operations of a full
+    /// factorisation: the result is the full factorisation's bit for bit.
     pub(crate) fn factor_from(&mut self, identity: &[bool], first: usize) -> bool {
-        let (n, b, w) = (self.n, self.b, self.b + 1);
-        for k in first.saturating_sub(b)..n {
-            if identity[k] {
-                self.inverse_diagonal[k] = 1.0;
+        let (b, w) = (self.b, self.b + 1);
+        for i in first..self.n {
+            if identity[i] {
+                self.inverse_diagonal[i] = 1.0;
+                self.start[i] = i;
                 continue;
             }
-            if k >= first {
-                let s = self.data[k * w + b];
-                if s.is_nan() || s <= 0.0 {
-                    return false;
-                }
-                let d = s.sqrt();
-                self.data[k * w + b] = d;
-                self.inverse_diagonal[k] = 1.0 / d;
-            }
-            let inverse = self.inverse_diagonal[k];
-            let below = b.min(n - 1 - k);
-            // Row i = k + 1 + m holds column k at i·w + b − 1 − m; rows above `first` hold L already.
-            for m in 0..below {
-                let (i, at) = (k + 1 + m, (k + 1 + m) * w + b - 1 - m);
-                if i >= first {
-                    self.data[at] *= inverse;
-                }
-                self.column[m] = self.data[at];
-            }
-            for m in 0..below {
-                let i = k + 1 + m;
-                if i < first || identity[i] {
+            // Row i (offset m holds column i − b + m) against the rows above it, all factorised.
+            let (done, rest) = self.data.split_at_mut(i * w);
+            let row = &mut rest[..w];
+            let lowest = b.saturating_sub(i);
+            let start = (lowest..b).find(|&m| row[m] != 0.0).unwrap_or(b);
+            self.start[i] = i + start - b;
+            for m in start..b {
+                let j = i + m - b;
+                if identity[j] {
                     continue;
                 }
-                let l = self.column[m];
-                // Columns k + 1 ..= i of row i.
-                let row = &mut self.data[i * w + b - m..i * w + w];
-                for (x, &c) in row.iter_mut().zip(&self.column[..=m]) {
-                    *x -= l * c;
-                }
+                // Row j holds column i − b + t at offset t + b − m.
+                let from = start.max((self.start[j] + b).saturating_sub(i));
+                let other = &done[j * w + b - m..j * w + b];
+                let s = dot(&row[from..m], &other[from..m]);
+                row[m] = (row[m] - s) * self.inverse_diagonal[j];
             }
+            let s = row[b] - dot(&row[start..b], &row[start..b]);
+            if s.is_nan() || s <= 0.0 {
+                return false;
+            }
+            let d = s.sqrt();
+            row[b] = d;
+            self.inverse_diagonal[i] = 1.0 / d;
         }
         true
     }
 
     /// Forward substitution `L y = r` in place after [`Band::factor_from`], for `R` right-hand sides at
     /// once (column c of every row is one of them): each column takes exactly the operations a lone one
-    /// would, the columns interleaved so that their dependency chains overlap.
-    pub(crate) fn forward<const R: usize>(&self, r: &mut [[f64; R]]) {
-        let (n, b, w) = (self.n, self.b, self.b + 1);
-        for i in 0..n {
-            let (row, first) = (i * w + b - i, i.saturating_sub(b));
-            let s = dot(&self.data[row + first..row + i], &r[first..i]);
+    /// would, the columns interleaved so that their dependency chains overlap. Identity rows keep their
+    /// entries (rows of L with nothing left of the diagonal).
+    pub(crate) fn forward<const R: usize>(&self, identity: &[bool], r: &mut [[f64; R]]) {
+        for i in 0..self.n {
+            if identity[i] {
+                continue;
+            }
+            let (row, start) = (self.at(i), self.start[i]);
+            // The right-hand sides are independent chains: a plain sum in order.
+            let s = self.data[row + start..row + i].iter().zip(&r[start..i]).fold([0.0; R], |s, (&l, y)| s.add_product(l, *y));
             for (x, s) in r[i].iter_mut().zip(s) {
                 *x = (*x - s) * self.inverse_diagonal[i];
             }
@@ -99,13 +99,15 @@ impl Band {
     }
 
     /// Back substitution `Lᵀ x = y` in place: after [`Band::forward`] it solves `L Lᵀ x = r`.
-    pub(crate) fn backward(&self, r: &mut [f64]) {
-        let (n, b, w) = (self.n, self.b, self.b + 1);
-        for i in (0..n).rev() {
+    pub(crate) fn backward(&self, identity: &[bool], r: &mut [f64]) {
+        for i in (0..self.n).rev() {
+            if identity[i] {
+                continue;
+            }
             let s = r[i] * self.inverse_diagonal[i];
             r[i] = s;
-            let (row, first) = (i * w + b - i, i.saturating_sub(b));
-            for (x, &l) in r[first..i].iter_mut().zip(&self.data[row + first..row + i]) {
+            let (row, start) = (self.at(i), self.start[i]);
+            for (x, &l) in r[start..i].iter_mut().zip(&self.data[row + start..row + i]) {
                 *x -= l * s;
             }
         }
@@ -152,25 +154,21 @@ impl<const R: usize> Lanes for [f64; R] {
 }
 
 /// Σ aₖ bₖ (per column, for several right-hand sides) in four interleaved partial sums (a fixed order, so every platform gets the same bits, and
-/// one the compiler can keep in vector registers), then the last `len mod 4` terms in order. Indexed
-/// over slices cut to one length, so the short sums of a narrow band pay no iterator set-up.
+/// one the compiler can keep in vector registers), and the last `len mod 4` terms in order, over
+/// chunks of four (no bounds checks in the loop).
 #[inline]
 fn dot<T: Lanes>(a: &[f64], b: &[T]) -> T {
     let n = a.len().min(b.len());
-    let (a, b) = (&a[..n], &b[..n]);
-    let whole = n & !3;
-    let mut acc = [T::ZERO; 4];
-    let mut k = 0;
-    while k < whole {
-        acc[0] = acc[0].add_product(a[k], b[k]);
-        acc[1] = acc[1].add_product(a[k + 1], b[k + 1]);
-        acc[2] = acc[2].add_product(a[k + 2], b[k + 2]);
-        acc[3] = acc[3].add_product(a[k + 3], b[k + 3]);
-        k += 4;
-    }
+    let (a, b) = (a[..n].chunks_exact(4), b[..n].chunks_exact(4));
     let mut tail = T::ZERO;
-    for k in whole..n {
-        tail = tail.add_product(a[k], b[k]);
+    for (&x, &y) in a.remainder().iter().zip(b.remainder()) {
+        tail = tail.add_product(x, y);
+    }
+    let mut acc = [T::ZERO; 4];
+    for (x, y) in a.zip(b) {
+        for t in 0..4 {
+            acc[t] = acc[t].add_product(x[t], y[t]);
+        }
     }
     acc[0].plus(acc[1]).plus(acc[2].plus(acc[3])).plus(tail)
 }
@@ -179,22 +177,28 @@ fn dot<T: Lanes>(a: &[f64], b: &[T]) -> T {
 mod tests {
     use super::Band;
 
+    /// Adds `v` to entry (i, j), j ≤ i ≤ j + b.
+    fn add(a: &mut Band, i: usize, j: usize, v: f64) {
+        let b = a.b;
+        a.row_mut(i)[j + b - i] += v;
+    }
+
     #[test]
     fn solves_a_tridiagonal_system_exactly() {
         // −x_{i−1} + 2 x_i − x_{i+1} = r with x = i(n+1−i)/2 … the discrete Poisson solution: r = 1.
         let n = 9;
         let mut a = Band::new(n, 1);
         for i in 0..n {
-            a.add(i, i, 2.0);
+            add(&mut a, i, i, 2.0);
             if i > 0 {
-                a.add(i, i - 1, -1.0);
+                add(&mut a, i, i - 1, -1.0);
             }
         }
         assert!(a.factor_from(&[false; 9], 0));
         let mut r = vec![[1.0]; n];
-        a.forward(&mut r);
+        a.forward(&[false; 9], &mut r);
         let mut r: Vec<f64> = r.iter().map(|[x]| *x).collect();
-        a.backward(&mut r);
+        a.backward(&[false; 9], &mut r);
         for (i, x) in r.iter().enumerate() {
             let k = (i + 1) as f64;
             assert!((x - k * (n as f64 + 1.0 - k) / 2.0).abs() < 1e-12, "{i}: {x}");
@@ -202,8 +206,8 @@ mod tests {
     }
 
     /// A band matrix of half band 4 on 30 unknowns, diagonally dominant (so positive definite), entries
-    /// from a fixed pseudo-random sequence, rows in `identity` the identity's; `shift` changes rows
-    /// from 12 on.
+    /// from a fixed pseudo-random sequence, rows in `identity` the identity's, every fifth row's
+    /// envelope shorter than the band; `shift` changes rows from 12 on.
     fn matrix(identity: &[bool], shift: f64) -> Band {
         let (n, b) = (identity.len(), 4);
         let mut a = Band::new(n, b);
@@ -217,14 +221,15 @@ mod tests {
         for i in 0..n {
             let change = if i >= 12 { shift } else { 0.0 };
             if identity[i] {
-                a.add(i, i, 1.0);
+                add(&mut a, i, i, 1.0);
                 continue;
             }
-            a.add(i, i, 2.0 * b as f64 + 1.0 + change);
+            add(&mut a, i, i, 2.0 * b as f64 + 1.0 + change);
             for (j, &cavitated) in identity.iter().enumerate().take(i).skip(i.saturating_sub(b)) {
                 let v = next();
-                if !cavitated {
-                    a.add(i, j, v + change);
+                // Every fifth row's envelope starts two columns left of its diagonal.
+                if !cavitated && (i % 5 != 0 || j + 2 >= i) {
+                    add(&mut a, i, j, v + change);
                 }
             }
         }
@@ -236,9 +241,8 @@ mod tests {
         let identity: Vec<bool> = (0..30).map(|i| i % 7 == 3).collect();
         let mut partial = matrix(&identity, 0.0);
         assert!(partial.factor_from(&identity, 0));
-        // Rows 12.. change: cleared, assembled again, refactorised from row 12.
+        // Rows 12.. change: assembled again, refactorised from row 12.
         let changed = matrix(&identity, 0.25);
-        partial.clear_from(12);
         partial.data[12 * 5..].copy_from_slice(&changed.data[12 * 5..]);
         assert!(partial.factor_from(&identity, 12));
         let mut full = changed.clone();
@@ -247,9 +251,9 @@ mod tests {
         // And L Lᵀ x = r solves A x = r: the residual against the unfactorised matrix, to round-off.
         let r: Vec<f64> = (0..30).map(|i| if identity[i] { 0.0 } else { 1.0 + 0.1 * i as f64 }).collect();
         let mut y: Vec<[f64; 1]> = r.iter().map(|&x| [x]).collect();
-        full.forward(&mut y);
+        full.forward(&identity, &mut y);
         let mut x: Vec<f64> = y.iter().map(|[v]| *v).collect();
-        full.backward(&mut x);
+        full.backward(&identity, &mut x);
         let entry = |i: usize, j: usize| {
             if i.abs_diff(j) > 4 {
                 0.0

@@ -91,16 +91,6 @@ impl Grid {
         }
     }
 
-    /// Node (i, j) of unknown index `row`: [`Grid::index`]'s inverse.
-    #[inline]
-    pub(crate) fn node(&self, row: usize) -> (usize, usize) {
-        if self.nx <= self.nz {
-            (row % self.nx, row / self.nx)
-        } else {
-            (row / self.nz, row % self.nz)
-        }
-    }
-
     /// Half bandwidth of A in [`Grid::index`] order.
     fn band(&self) -> usize {
         self.nx.min(self.nz)
@@ -163,14 +153,21 @@ impl Film {
     }
 }
 
-/// The LCP solver's workspace for one grid.
+/// The LCP solver's workspace for one grid. The unknowns are in band order ([`Grid::index`]): lines of
+/// `band` nodes along the shorter direction, so row − 1 is a node's neighbour along its line (none at
+/// a line's start) and row − band its neighbour on the line before.
 #[derive(Clone, Debug)]
 pub(crate) struct Reynolds {
     pub grid: Grid,
     matrix: Band,
-    /// Face conductances `h³/(12μ)·(face length)/(node distance)`, x then z faces, as in [`Film`].
-    cx: Vec<f64>,
-    cz: Vec<f64>,
+    /// Each node's band row (node order j·nx + i).
+    order: Vec<usize>,
+    /// Band order: the sum of a node's four face conductances `h³/(12μ)·(face length)/(node distance)`,
+    /// and the conductances of its faces toward rows − 1 and − band (0 where there is none).
+    diagonal: Vec<f64>,
+    lower: Vec<[f64; 2]>,
+    /// Band order: the pressure's right-hand side.
+    rhs: Vec<f64>,
     /// Band order: the pressure's right-hand side, then up to [`EXTRA`] others (forward-substituted only).
     work: Vec<[f64; 1 + EXTRA]>,
     /// Band order: the pressure's column of `work`, back-substituted on its own (contiguous).
@@ -205,12 +202,14 @@ impl Reynolds {
     pub(crate) fn new(grid: Grid) -> Self {
         let n = grid.len();
         let matrix = Band::new(n, grid.band());
-        let (cx, cz) = (vec![0.0; (grid.nx + 1) * grid.nz], vec![0.0; grid.nx * (grid.nz + 1)]);
+        let order = (0..n).map(|k| grid.index(k % grid.nx, k / grid.nx)).collect();
         Self {
             grid,
             matrix,
-            cx,
-            cz,
+            order,
+            diagonal: vec![0.0; n],
+            lower: vec![[0.0; 2]; n],
+            rhs: vec![0.0; n],
             work: vec![[0.0; 1 + EXTRA]; n],
             back: vec![0.0; n],
             identity: vec![false; n],
@@ -229,170 +228,152 @@ impl Reynolds {
     pub(crate) fn solve(&mut self, film: &Film, viscosity: f64, b: &[f64], cavitation: Cavitation, extra: &[&[f64]]) -> usize {
         assert!(extra.len() <= EXTRA, "at most {EXTRA} extra right-hand sides");
         self.conductances(film, viscosity);
-        let (mut p, mut free) = (std::mem::take(&mut self.pressure), std::mem::take(&mut self.free));
-        if cavitation == Cavitation::None {
-            free.fill(true);
+        for (k, &row) in self.order.iter().enumerate() {
+            self.rhs[row] = b[k];
+            self.identity[row] = cavitation != Cavitation::None && !self.free[k];
         }
-        let steps = self.active_set((b, extra), cavitation, &mut p, &mut free);
-        for (a, row) in self.gram.iter_mut().enumerate() {
-            for (c, g) in row.iter_mut().enumerate() {
-                *g = self.work.iter().map(|y| y[1 + a] * y[1 + c]).sum();
+        let steps = self.active_set(extra, cavitation);
+        for (k, &row) in self.order.iter().enumerate() {
+            self.free[k] = !self.identity[row];
+            // Negative pressures under the Reynolds condition are round-off below its tolerance.
+            let p = self.back[row];
+            self.pressure[k] = if cavitation == Cavitation::Reynolds && p < 0.0 { 0.0 } else { p };
+        }
+        // Σ over the film rows (the cavitated ones' are 0) of the outer product, in row order.
+        let mut gram = [[0.0; EXTRA]; EXTRA];
+        for (y, _) in self.work.iter().zip(&self.identity).filter(|(_, &cavitated)| !cavitated) {
+            for (a, row) in gram.iter_mut().enumerate() {
+                for (c, g) in row.iter_mut().enumerate() {
+                    *g += y[1 + a] * y[1 + c];
+                }
             }
         }
-        (self.pressure, self.free) = (p, free);
+        self.gram = gram;
         steps
     }
 
-    /// The primal–dual active-set iteration from the set in `free`; the factorisation of the last set
-    /// stays in `matrix`, the last step's forward-substituted extras in `work`.
-    fn active_set(&mut self, (b, extra): (&[f64], &[&[f64]]), cavitation: Cavitation, p: &mut [f64], free: &mut [bool]) -> usize {
+    /// The primal–dual active-set iteration from the set in `identity` (band order), the pressure into
+    /// `back` (band order); the factorisation of the last set stays in `matrix`, the last step's
+    /// forward-substituted extras in `work`.
+    fn active_set(&mut self, extra: &[&[f64]], cavitation: Cavitation) -> usize {
         let n = self.grid.len();
-        let scale_b = b.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+        let scale_b = self.rhs.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
         let mut steps = 0;
         // The first band row whose matrix row changed since the last factorisation (all at first).
         let mut first = 0;
         loop {
             steps += 1;
-            self.assemble(free, first);
+            self.assemble(first);
             if !self.matrix.factor_from(&self.identity, first) {
                 // Only a non-finite film gets here (the callers keep h > 0): say so with NaN, never panic.
-                p.fill(f64::NAN);
+                self.back.fill(f64::NAN);
                 self.work.fill([f64::NAN; 1 + EXTRA]);
                 return steps;
             }
-            let g = &self.grid;
-            for j in 0..g.nz {
-                for i in 0..g.nx {
-                    let k = j * g.nx + i;
-                    let mut column = [0.0; 1 + EXTRA];
-                    if free[k] {
-                        column[0] = b[k];
-                        for (x, r) in column[1..].iter_mut().zip(extra) {
-                            *x = r[k];
-                        }
+            for (k, &row) in self.order.iter().enumerate() {
+                let column = &mut self.work[row];
+                *column = [0.0; 1 + EXTRA];
+                if !self.identity[row] {
+                    column[0] = self.rhs[row];
+                    for (x, r) in column[1..].iter_mut().zip(extra) {
+                        *x = r[k];
                     }
-                    self.work[g.index(i, j)] = column;
                 }
             }
-            self.matrix.forward(&mut self.work);
+            self.matrix.forward(&self.identity, &mut self.work);
             for (x, y) in self.back.iter_mut().zip(&self.work) {
                 *x = y[0];
             }
-            self.matrix.backward(&mut self.back);
-            for j in 0..g.nz {
-                for i in 0..g.nx {
-                    p[j * g.nx + i] = self.back[g.index(i, j)];
-                }
-            }
+            self.matrix.backward(&self.identity, &mut self.back);
             if cavitation != Cavitation::Reynolds || steps > n {
                 break;
             }
             // w = A p − b on the cavitated nodes; a node joins the film where w < 0 (oil would flow in),
             // leaves it where p < 0. Tolerances far below the solution's scale stop round-off cycling.
             // A node's change alters its own row and its higher-indexed neighbours' rows.
-            let scale_p = p.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let scale_p = self.back.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
             first = n;
-            for k in 0..n {
-                let now = if free[k] { p[k] >= -1e-12 * scale_p } else { self.residual(p, k) - b[k] < -1e-12 * scale_b };
-                if now != free[k] {
-                    free[k] = now;
-                    first = first.min(self.grid.index(k % self.grid.nx, k / self.grid.nx));
+            for row in 0..n {
+                let free = if self.identity[row] {
+                    self.residual(row) - self.rhs[row] < -1e-12 * scale_b
+                } else {
+                    self.back[row] >= -1e-12 * scale_p
+                };
+                if free == self.identity[row] {
+                    self.identity[row] = !free;
+                    first = first.min(row);
                 }
             }
             if first == n {
                 break;
             }
         }
-        if cavitation == Cavitation::Reynolds {
-            // Round-off below the tolerance only.
-            for v in p.iter_mut() {
-                *v = v.max(0.0);
-            }
-        }
         steps
     }
 
+    /// The face conductances in band order (see [`Reynolds::diagonal`]).
     fn conductances(&mut self, film: &Film, viscosity: f64) {
         let g = &self.grid;
-        let (dx, dz) = (g.dx(), g.dz());
+        let (nx, nz, dx, dz) = (g.nx, g.nz, g.dx(), g.dz());
         let k = |h: f64| h * h * h / (12.0 * viscosity);
-        for (c, &h) in self.cx.iter_mut().zip(&film.face_x) {
-            *c = k(h) * dz / dx;
-        }
-        if !g.long {
-            for (c, &h) in self.cz.iter_mut().zip(&film.face_z) {
-                *c = k(h) * dx / dz;
+        // The x faces left and right of node (i, j), and the z faces below and above it.
+        let (x_scale, z_scale) = (dz / dx, if g.long { 0.0 } else { dx / dz });
+        for j in 0..nz {
+            let (x_faces, z_faces) = (&film.face_x[j * (nx + 1)..], &film.face_z[j * nx..]);
+            let mut east = k(x_faces[0]) * x_scale;
+            for i in 0..nx {
+                let west = east;
+                east = k(x_faces[i + 1]) * x_scale;
+                let (south, north) = (k(z_faces[i]) * z_scale, k(z_faces[i + nx]) * z_scale);
+                let row = g.index(i, j);
+                self.diagonal[row] = west + east + south + north;
+                // Along a line (row − 1) and to the line before (row − band).
+                self.lower[row] = if nx <= nz {
+                    [if i == 0 { 0.0 } else { west }, if j == 0 { 0.0 } else { south }]
+                } else {
+                    [if j == 0 { 0.0 } else { south }, if i == 0 { 0.0 } else { west }]
+                };
             }
         }
     }
 
     /// The reduced matrix, band rows `first..`: rows and columns of cavitated nodes replaced by the identity.
-    fn assemble(&mut self, free: &[bool], first: usize) {
-        let g = &self.grid;
-        let (nx, nz) = (g.nx, g.nz);
-        self.matrix.clear_from(first);
-        for row in first..g.len() {
-            let (i, j) = g.node(row);
-            let k = j * nx + i;
-            self.identity[row] = !free[k];
-            if !free[k] {
-                self.matrix.add(row, row, 1.0);
+    fn assemble(&mut self, first: usize) {
+        let b = self.grid.band();
+        for row in first..self.grid.len() {
+            let entries = self.matrix.row_mut(row);
+            entries.fill(0.0);
+            if self.identity[row] {
+                entries[b] = 1.0;
                 continue;
             }
-            let (west, east) = (self.cx[j * (nx + 1) + i], self.cx[j * (nx + 1) + i + 1]);
-            let mut diagonal = west + east;
-            if !g.long {
-                diagonal += self.cz[j * nx + i] + self.cz[(j + 1) * nx + i];
+            entries[b] = self.diagonal[row];
+            let [along, before] = self.lower[row];
+            if along != 0.0 && !self.identity[row - 1] {
+                entries[b - 1] -= along;
             }
-            self.matrix.add(row, row, diagonal);
-            // Couplings to lower-indexed free neighbours (the band stores the lower triangle).
-            let mut couple = |ni: usize, nj: usize, c: f64| {
-                if free[nj * nx + ni] {
-                    let col = g.index(ni, nj);
-                    if col < row {
-                        self.matrix.add(row, col, -c);
-                    }
-                }
-            };
-            if i > 0 {
-                couple(i - 1, j, west);
-            }
-            if i + 1 < nx {
-                couple(i + 1, j, east);
-            }
-            if !g.long {
-                if j > 0 {
-                    couple(i, j - 1, self.cz[j * nx + i]);
-                }
-                if j + 1 < nz {
-                    couple(i, j + 1, self.cz[(j + 1) * nx + i]);
-                }
+            if before != 0.0 && !self.identity[row - b] {
+                entries[0] -= before;
             }
         }
     }
 
-    /// (A p)_k of the full operator at node k (node order).
-    fn residual(&self, p: &[f64], k: usize) -> f64 {
-        let g = &self.grid;
-        let nx = g.nx;
-        let (i, j) = (k % nx, k / nx);
-        let (west, east) = (self.cx[j * (nx + 1) + i], self.cx[j * (nx + 1) + i + 1]);
-        let mut s = (west + east) * p[k];
-        if i > 0 {
-            s -= west * p[k - 1];
+    /// (A p)_row of the full operator at band row `row`, p the pressure in `back`.
+    fn residual(&self, row: usize) -> f64 {
+        let (n, b, p) = (self.grid.len(), self.grid.band(), &self.back);
+        let mut s = self.diagonal[row] * p[row];
+        let [along, before] = self.lower[row];
+        if along != 0.0 {
+            s -= along * p[row - 1];
         }
-        if i + 1 < nx {
-            s -= east * p[k + 1];
+        if before != 0.0 {
+            s -= before * p[row - b];
         }
-        if !g.long {
-            let (south, north) = (self.cz[j * nx + i], self.cz[(j + 1) * nx + i]);
-            s += (south + north) * p[k];
-            if j > 0 {
-                s -= south * p[k - nx];
-            }
-            if j + 1 < g.nz {
-                s -= north * p[k + nx];
-            }
+        if row + 1 < n {
+            s -= self.lower[row + 1][0] * p[row + 1];
+        }
+        if row + b < n {
+            s -= self.lower[row + b][1] * p[row + b];
         }
         s
     }
