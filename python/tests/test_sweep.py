@@ -132,8 +132,8 @@ def test_a_worker_killed_mid_sweep_loses_nothing(client, model_description, tmp_
     os.kill(next(iter(pids.values())), signal.SIGKILL)
     sweep.join()
     killed = Store(tmp_path, spec).read().to_pylist()
-    # The undisturbed run on the whole cluster again: its nanny's replacement registered (the plugin's broadcast
-    # to a worker still joining once closed the scheduler's stream to the client).
+    # The undisturbed run on the whole cluster again, the nanny's replacement registered: a plugin broadcast to a
+    # worker still joining can close the scheduler's stream to the client.
     client.wait_for_workers(len(pids), timeout=60)
     assert set(client.run(os.getpid).values()).isdisjoint({next(iter(pids.values()))}), (
         "the worker was killed and replaced"

@@ -124,8 +124,8 @@ pub trait System<const N: usize, const M: usize> {
     /// default. A system that adds to its inertia a force made linearly implicit (a stiff damper's
     /// `τ D`, see [`Self::absorbed_power`]) returns its inertia without it: that force is finite, so
     /// it takes no impulse in an instantaneous impact. (Through `M + τ D`, Newton's law dissipates
-    /// in that metric, not in the kinetic energy's: a piston rocking between two corners on a thin
-    /// film, whose D turns between the impacts, gained energy at each and blew up.)
+    /// in that metric, not in the kinetic energy's: where D turns between impacts, as on a piston
+    /// rocking between two corners on a thin film, each impact can feed the motion.)
     fn impact_mass(&self, _t: f64, _q: &SVector<f64, N>, _qd: &SVector<f64, N>, ev: &Evaluation<N, M>) -> SMatrix<f64, N, N> {
         ev.mass
     }

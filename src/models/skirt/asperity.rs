@@ -79,9 +79,9 @@ pub(crate) struct Asperity {
     /// 1/σ, 1/m.
     inverse_sigma: f64,
     stiffness: f64,
-    /// F_5/2 and its derivative −(5/2)·F_3/2 at λ = LOW + k·STEP: the same for every roughness,
-    /// tabulated once per process (≈ 4.6e5 exponentials, 15 ms: before, at every skirt built, an FMU
-    /// state restored included).
+    /// F_5/2 and its derivative −(5/2)·F_3/2 at λ = LOW + k·STEP: the same for every roughness, so
+    /// tabulated once per process (≈ 4.6e5 exponentials, ≈ 15 ms, which every skirt built, an FMU
+    /// state restored included, would otherwise pay).
     table: &'static [(f64, f64)],
 }
 

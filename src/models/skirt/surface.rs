@@ -68,7 +68,7 @@ pub struct Skirt {
 
 /// A skirt's workspace, made at its first use. A clone starts without one: the model is cloned at
 /// every communication step to be put back if the step fails, and a copy of the solver's band
-/// matrices cost 8 % of a lubricated run. The clone's first solves start cold, which changes their
+/// matrices would be most of that clone. The clone's first solves start cold, which changes their
 /// active-set steps, not their result (the discrete problem's unique solution).
 #[derive(Debug, Default)]
 struct Workspace(RefCell<Option<Box<Scratch>>>);
