@@ -102,9 +102,10 @@ fn each_walls_impulse_is_its_share_of_the_film_force_the_motion_takes() {
 
 /// Oil of 1 mPa·s: the corners strike the liner (4–6 impacts a cycle) and rest on it (up to
 /// ≈ 120 N). The walls' net impulse, corners' contact and impacts with the film's push and its
-/// implicit share at each jump, is again what the motion took: the same at τ, τ/2 and τ/4 (measured
-/// within 1e-6), while `side_force`'s integral (corners and film, the impacts apart) moves 4 %, its
-/// differences from the net halving (measured 2.03, 2.05); each wall as above (measured at most
+/// implicit share at each projection onto held corners (impacts, through the linkage's inertia,
+/// have none), is again what the motion took: the same at τ, τ/2 and τ/4 (measured within 1.2e-6),
+/// while `side_force`'s integral (corners and film, the impacts apart) moves 4 %, its differences
+/// from the net halving (measured 2.05, 2.07); each wall as above (measured at most
 /// 5.5e-4 N·s of negative steps over the cycle and a step's −0.86 % of the largest step's push, on
 /// the anti-thrust wall). At 1 ms steps the walls' totals are
 /// the 10 µs steps' to 1e-5, as the dry model's (`test_liner_impulse.py`: the impacts' trajectories
