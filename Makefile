@@ -98,7 +98,7 @@ soak:
 # default τ), the default engine at 1200 and 3000 rpm, the second cycle of each run against the first row's: the
 # tables of docs/lubricated_skirt.md (about an hour on the 2-CPU machine).
 film-convergence:
-	cargo run --release --example film_convergence -- 1200 2.5e-5:16:24 5e-5:16:24 1e-4:16:24 2e-4:16:24 4e-4:16:24 8e-4:16:24
+	cargo run --release --example film_convergence -- 1200 1.25e-5:16:24 2.5e-5:16:24 5e-5:16:24 1e-4:16:24
 	cargo run --release --example film_convergence -- 1200 1e-4:24:36 1e-4:16:24 1e-4:12:18 1e-4:8:12
 	cargo run --release --example film_convergence -- 3000 1e-4:24:36 1e-4:16:24 1e-4:12:18 1e-4:8:12
 

@@ -16,8 +16,8 @@ mod fmu_host;
 mod output_checks;
 
 use designs::{
-    declared, declared_conservative, declared_ramped, engine, lubricated_engine, roller, rubbing_engine, rubbing_slider, run, slider,
-    Design, Random,
+    declared, declared_conservative, declared_ramped, engine, lubricated_declared, lubricated_engine, roller, rubbing_engine,
+    rubbing_slider, run, slider, Design, Random,
 };
 use fmu_designs::NotRun;
 use std::time::Instant;
@@ -35,6 +35,7 @@ fn main() {
         ("declared ramped", declared_ramped),
         ("declared conservative", declared_conservative),
         ("lubricated engine", lubricated_engine),
+        ("lubricated declared", lubricated_declared),
     ];
     let through_the_fmu =
         [("fmu declared", declared as fn(&mut Random) -> Design), ("fmu declared ramped", declared_ramped), ("fmu roller", roller)];

@@ -178,6 +178,35 @@ pub fn lubricated_engine(r: &mut Random) -> Design {
     Design { params, ..design }
 }
 
+/// A design of the declared space (`declared`) on a lubricated skirt over the film's own ranges: oil of
+/// 0.1 mPa·s – 0.5 Pa·s, each side 10–180° of arc, a barrel dropping up to 3e-4 of the diameter at either
+/// edge, ovality up to 2e-4 of it one time in two, roughness 0.05–5 µm, a composite modulus of
+/// 10–300 GPa, boundary friction 0.001–1, a film relaxation of 10 µs – 0.1 ms and a grid of 2–12 × 2–16
+/// nodes (coarse, to keep the family fast). Redrawn until the model accepts it.
+pub fn lubricated_declared(r: &mut Random) -> Design {
+    loop {
+        let design = declared(r);
+        let d = design.params.piston_diameter;
+        let params = Parameters {
+            skirt_model: 2,
+            oil_viscosity: decades(r, 1e-4, 0.5),
+            skirt_arc: r.between(10.0, 180.0).to_radians(),
+            skirt_profile: format!("parabola {:e} {:e}", r.next() * 3e-4 * d, r.next() * 3e-4 * d),
+            skirt_ovality: if r.next() < 0.5 { 0.0 } else { r.next() * 2e-4 * d },
+            skirt_roughness: decades(r, 5e-8, 5e-6),
+            composite_modulus: decades(r, 1e10, 3e11),
+            boundary_friction: decades(r, 1e-3, 1.0),
+            film_relaxation: decades(r, 1e-5, 1e-4),
+            skirt_grid_circumferential: 2 + (r.next() * 11.0) as i32,
+            skirt_grid_axial: 2 + (r.next() * 15.0) as i32,
+            ..design.params
+        };
+        if CrankTrain::new(&params, 0.0).is_ok() {
+            return Design { params, ..design };
+        }
+    }
+}
+
 /// A light slider with liner friction μ ∈ [0, 0.5] and a start tilting at up to ±1 rad/s.
 pub fn rubbing_slider(r: &mut Random) -> Design {
     let design = slider(r);

@@ -4,8 +4,8 @@
 //! and sliding starts dissipated. `tools/random_designs.rs` runs the same families by the thousand.
 
 use crate::common::designs::{
-    declared, declared_conservative, declared_ramped, engine, lubricated_engine, rubbing_engine, rubbing_slider, run, slider, Design,
-    Finished, Random,
+    declared, declared_conservative, declared_ramped, engine, lubricated_declared, lubricated_engine, rubbing_engine, rubbing_slider, run,
+    slider, Design, Finished, Random,
 };
 
 const DESIGNS: u64 = 250;
@@ -75,6 +75,16 @@ const LUBRICATED_FOUND_BY_LARGER_SWEEPS: [u64; 15] =
 fn random_lubricated_engines_all_run() {
     let failed = failures_of((0..12).chain(LUBRICATED_FOUND_BY_LARGER_SWEEPS), lubricated_engine, |_, _| Ok(()));
     assert!(failed.is_empty(), "{} of 27 failed:\n{}", failed.len(), failed.join("\n"));
+}
+
+/// A lubricated design over the declared space that `random_designs N 0 "lubricated declared"` found
+/// failing (the family takes seconds a design, some minutes: too slow for the suite as a sweep): 36, a
+/// held corner's force dipping to −1.1 N inside a step whose RK4 middle stage read +1.4 N, found by the
+/// search only on the quintic extension (without that reading it fails; checked).
+#[test]
+fn a_random_declared_lubricated_design_found_failing_runs() {
+    let failed = failures_of([36].into_iter(), lubricated_declared, |_, _| Ok(()));
+    assert!(failed.is_empty(), "{}", failed.join("\n"));
 }
 
 fn balanced(_: &Design, f: &Finished) -> Result<(), String> {
