@@ -180,14 +180,15 @@ pub fn lubricated_engine(r: &mut Random) -> Design {
 
 /// A design of the declared space (`declared`) on a lubricated skirt over the film's own ranges: oil of
 /// 0.1 mPa·s – 0.5 Pa·s, each side 10–180° of arc, a barrel dropping up to 3e-4 of the diameter at either
-/// edge, ovality up to 2e-4 of it one time in two, roughness 0.05–5 µm, a composite modulus of
+/// edge, ovality up to 2e-4 of it one time in two, roughness 0.05–5 µm with Greenwood–Tripp's ηβσ of
+/// 0.001–1 and σ/β of 1e-5–0.1 (the accepted ranges), a composite modulus of
 /// 10–300 GPa, boundary friction 0.001–1, a film relaxation of 10 µs – 0.1 ms and a grid of 2–12 × 2–16
 /// nodes (coarse, to keep the family fast). Redrawn until the model accepts it.
 pub fn lubricated_declared(r: &mut Random) -> Design {
     loop {
         let design = declared(r);
         let d = design.params.piston_diameter;
-        let params = Parameters {
+        let mut params = Parameters {
             skirt_model: 2,
             oil_viscosity: decades(r, 1e-4, 0.5),
             skirt_arc: r.between(10.0, 180.0).to_radians(),
@@ -201,6 +202,10 @@ pub fn lubricated_declared(r: &mut Random) -> Design {
             skirt_grid_axial: 2 + (r.next() * 15.0) as i32,
             ..design.params
         };
+        // Greenwood–Tripp's groups ηβσ and σ/β over their accepted ranges (`Roughness::validate`).
+        let (group, ratio) = (decades(r, 1e-3, 1.0), decades(r, 1e-5, 0.1));
+        params.asperity_radius = params.skirt_roughness / ratio;
+        params.asperity_density = group / (params.asperity_radius * params.skirt_roughness);
         if CrankTrain::new(&params, 0.0).is_ok() {
             return Design { params, ..design };
         }

@@ -6,6 +6,7 @@
 use crate::common::*;
 use pistonslap::dynamics::StepperOptions;
 use pistonslap::models::crank_train::LOCAL_ERROR;
+use pistonslap::models::skirt::BOUNDARY_SLIP;
 use pistonslap::models::{CrankTrain, EnergyBalance, EngineModel, Inputs, Outputs, Parameters};
 
 fn lubricated(crank_mode: i32) -> Parameters {
@@ -65,7 +66,13 @@ fn the_film_closes_the_energy_books_in_both_crank_modes() {
 /// so at 1e6 times thinner oil the third impact already differs by 10 %).
 #[test]
 fn a_vanishing_film_is_the_dry_model() {
-    let vanishing = Parameters { oil_viscosity: 8.8e-12, skirt_roughness: 1e-9, skirt_profile: "parabola 0 0".into(), ..lubricated(1) };
+    let vanishing = Parameters {
+        oil_viscosity: 8.8e-12,
+        skirt_roughness: 1e-9,
+        asperity_density: 8e10,
+        skirt_profile: "parabola 0 0".into(),
+        ..lubricated(1)
+    };
     let [dry, wet] = [Parameters::default(), vanishing].map(|p| run(&p, &Inputs::default(), 0, 1, 100));
     let first = |t: &Trace| impacts(&t.events).take(10).map(|e| (e.time, e.normal_velocity_before)).collect::<Vec<_>>();
     let (a, b) = (first(&dry), first(&wet));
@@ -174,4 +181,37 @@ fn the_film_linearised_per_step_is_independent_of_the_step() {
     let spread = f.iter().fold(0.0_f64, |m, &x| m.max(x)) / f.iter().fold(f64::INFINITY, |m, &x| m.min(x)) - 1.0;
     eprintln!("peak film force {f:?} N at steps τ/2 … τ/16: spread {spread:.2e}");
     assert!(spread < 3e-3, "{f:?}");
+}
+
+/// A free crank at rest 30° after TDC whose piston sits on its asperities (1 µm of radial clearance
+/// on 2 µm of roughness: 4.76 kN of asperity load on the two sides), under 1 bar of gas: boundary
+/// friction of μ_b W ≥ 1.4 kN holds the gas's push of ≈ 0.5 kN along the axis, so the piston stays
+/// put, the friction the push whatever μ_b (static friction), creeping at under `BOUNDARY_SLIP`.
+/// Without boundary friction the gas turns the crank: after 50 ms its pin moves 100 times faster.
+#[test]
+fn boundary_friction_holds_a_piston_stopped_on_its_asperities() {
+    let stopped = |boundary_friction: f64| {
+        let params = Parameters {
+            pressure_source: 1,
+            bore: 0.08 + 2e-6,
+            skirt_roughness: 2e-6,
+            asperity_radius: 2e-3,
+            asperity_density: 1e7,
+            boundary_friction,
+            crank_angle_start: 30f64.to_radians(),
+            ..lubricated(2)
+        };
+        let inputs = Inputs { gas_pressure: 1e5, load_torque: 0.0, crank_speed: 0.0 };
+        let mut model = CrankTrain::new(&params, 0.0).unwrap();
+        let mut events = Vec::new();
+        model.advance(&inputs, 0.05, &mut events).expect("runs");
+        let out = outputs(&model);
+        assert!(events.is_empty() && out.asperity_force > 4e3, "{out:?}");
+        (out.crank_speed_actual * params.crank_radius, out.skirt_friction_force)
+    };
+    let [(creep, holding), (weaker_creep, weaker_holding), (free, _)] = [1.0, 0.3, 0.0].map(stopped);
+    eprintln!("crank pin speed: {creep:e}, {weaker_creep:e}, {free:e} m/s; friction {holding} N, {weaker_holding} N");
+    assert!(creep.abs() < BOUNDARY_SLIP && weaker_creep.abs() < BOUNDARY_SLIP);
+    assert!(holding > 400.0 && (weaker_holding / holding - 1.0).abs() < 1e-3, "{holding} N, {weaker_holding} N");
+    assert!(free > 100.0 * weaker_creep.abs(), "{free} m/s");
 }

@@ -77,14 +77,14 @@ fn random_lubricated_engines_all_run() {
     assert!(failed.is_empty(), "{} of 27 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
-/// A lubricated design over the declared space that `random_designs N 0 "lubricated declared"` found
-/// failing (the family takes seconds a design, some minutes: too slow for the suite as a sweep): 36, a
-/// held corner's force dipping to −1.1 N inside a step whose RK4 middle stage read +1.4 N, found by the
-/// search only on the quintic extension (without that reading it fails; checked).
+/// Lubricated designs over the declared space (`random_designs N 0 "lubricated declared"`, ≈ 0.3 s a
+/// design): the first 40. Seed 36 of this family was a held corner's force dipping to −1.1 N inside a
+/// step whose RK4 middle stage read +1.4 N, found by the search only on the quintic extension; the
+/// family's designs changed since (the roughness groups are drawn), and the sweep now stands for it.
 #[test]
-fn a_random_declared_lubricated_design_found_failing_runs() {
-    let failed = failures_of([36].into_iter(), lubricated_declared, |_, _| Ok(()));
-    assert!(failed.is_empty(), "{}", failed.join("\n"));
+fn random_declared_lubricated_designs_all_run() {
+    let failed = failures_of(0..40, lubricated_declared, |_, _| Ok(()));
+    assert!(failed.is_empty(), "{} of 40 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
 fn balanced(_: &Design, f: &Finished) -> Result<(), String> {

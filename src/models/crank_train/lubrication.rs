@@ -16,7 +16,10 @@
 //! piston into the film): the evaluation returns `M + τ Gᵀ D G` and `f + Q − τ Gᵀ D Ġ φ̇`. A mode
 //! `m v̇ = −c v` then relaxes at
 //! `λ = −c/(m + τ c) ≥ −1/τ`, inside RK4's stability region for steps up to τ whatever the film;
-//! with D → 0 the dry equations come back exactly. What the skirt takes from the motion,
+//! with D → 0 the dry equations come back exactly. Boundary friction on the asperities, linear in
+//! the sliding speed V across a narrow band (`skirt::BOUNDARY_SLIP`), is made implicit the same way
+//! along `g` (slope c): a skirt that stops on its asperities is held by a friction that would
+//! otherwise flip with V at every step. What the skirt takes from the motion,
 //! `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and at a projection onto held corners (a jump Δφ̇) the impulse
 //! `−τ Gᵀ D G Δφ̇`'s share, is booked by the core as the absorbed work (`System::absorbed_power`);
 //! each wall's push, its side's share of the lateral force with its share of the implicit term (and
@@ -170,6 +173,8 @@ struct Kinematics {
     axial: Vector3<f64>,
     /// `Ġ φ̇`: (ẍ, φ̈3) = G φ̈ + Ġ φ̇.
     bias: Vector2<f64>,
+    /// `ġ·φ̇`: ÿ = g·φ̈ + ġ·φ̇.
+    axial_bias: f64,
 }
 
 impl Lubrication {
@@ -229,7 +234,8 @@ impl Lubrication {
             sliding_speed: axial.dot(phid),
         };
         let bias = Vector2::new(l1 * s1 * phid[0] * phid[0] + l2 * s2 * phid[1] * phid[1], 0.0);
-        Kinematics { motion, lateral, axial, bias }
+        let axial_bias = -l1 * c1 * phid[0] * phid[0] - l2 * c2 * phid[1] * phid[1];
+        Kinematics { motion, lateral, axial, bias, axial_bias }
     }
 
     /// Prepares the film for an RK4 step at (φ, φ̇), the state [`predicted`] [`SOLVE_AT`] into it,
@@ -260,15 +266,17 @@ impl Lubrication {
         })
     }
 
-    /// The film's generalized force `Q − τ Gᵀ D Ġ φ̇` and its implicit inertia `τ Gᵀ D G` at (φ, φ̇),
-    /// added to the linkage's `M` and `f`.
+    /// The film's generalized force `Q − τ Gᵀ D Ġ φ̇ − τ c g ġ·φ̇` and its implicit inertia
+    /// `τ Gᵀ D G + τ c g gᵀ` at (φ, φ̇), added to the linkage's `M` and `f`; c the boundary
+    /// friction's slope in the sliding speed (`SkirtLoads::boundary_damping`), made implicit as D is.
     #[inline(always)]
     pub fn apply(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, (mass, force): (&mut Matrix3<f64>, &mut Vector3<f64>)) {
         let k = self.kinematics(at, phid);
         let loads = self.loads(&k.motion);
-        let damping = loads.damping * self.design.relaxation;
-        *force += generalized(&k, &loads) - k.lateral.transpose() * (damping * k.bias);
-        *mass += k.lateral.transpose() * damping * k.lateral;
+        let tau = self.design.relaxation;
+        let (damping, boundary) = (loads.damping * tau, loads.boundary_damping * tau);
+        *force += generalized(&k, &loads) - k.lateral.transpose() * (damping * k.bias) - k.axial * (boundary * k.axial_bias);
+        *mass += k.lateral.transpose() * damping * k.lateral + k.axial * k.axial.transpose() * boundary;
     }
 
     /// Both sides' film and asperity pressure and film thickness at (φ, φ̇), for plots.
@@ -285,21 +293,26 @@ impl Lubrication {
         self.loads(&self.kinematics(at, phid).motion)
     }
 
-    /// What the skirt takes from the motion at (φ, φ̇, φ̈), W: all of it, `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and
-    /// the axial friction's share, `−(F_a ẏ + M_a φ̇3)`; and the anti-thrust and the thrust wall's
+    /// What the skirt takes from the motion at (φ, φ̇, φ̈), W: all of it,
+    /// `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇) − τ c g ÿ)·φ̇`, and the axial friction's share,
+    /// `−(F_a ẏ + M_a φ̇3) + τ c ẏ ÿ`; and the anti-thrust and the thrust wall's
     /// push as the motion takes it, N: each wall's share of the lateral force with the implicit term,
     /// `P + τ ∂P/∂(ẋ, φ̇3) (G φ̈ + Ġ φ̇)` (`SkirtLoads::wall_push`, whose rates' rows differ by D's first row).
     pub fn absorbed_power(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
         let k = self.kinematics(at, phid);
         let loads = self.loads(&k.motion);
+        let tau = self.design.relaxation;
         let acceleration = k.lateral * phidd + k.bias;
-        let implicit = (k.lateral * phid).dot(&(loads.damping * acceleration)) * self.design.relaxation;
-        let [thrust, antithrust] = (loads.wall_push + loads.wall_push_rates * acceleration * self.design.relaxation).into();
-        Absorbed::new(implicit - generalized(&k, &loads).dot(phid), -friction_power(&k, &loads), antithrust, thrust)
+        let implicit = (k.lateral * phid).dot(&(loads.damping * acceleration)) * tau;
+        let boundary = tau * loads.boundary_damping * k.motion.sliding_speed * (k.axial.dot(phidd) + k.axial_bias);
+        let [thrust, antithrust] = (loads.wall_push + loads.wall_push_rates * acceleration * tau).into();
+        let friction = boundary - friction_power(&k, &loads);
+        Absorbed::new(implicit + boundary - generalized(&k, &loads).dot(phid), friction, antithrust, thrust)
     }
 
-    /// What the implicit film impulse `−τ Gᵀ D G Δφ̇` of a projection `before → after` at φ takes, J:
-    /// the negative of its work on the mean velocity (D at the velocity before); and each wall's
+    /// What the implicit film impulse `−τ (Gᵀ D G + c g gᵀ) Δφ̇` of a projection `before → after` at
+    /// φ takes, J: the negative of its work on the mean velocity (D and c at the velocity before),
+    /// the boundary friction's part also as the axial friction's share; and each wall's
     /// share of its lateral impulse, `τ ∂P/∂(ẋ, φ̇3) G Δφ̇`, N·s (anti-thrust, thrust).
     pub fn absorbed_by_jump(&self, at: (&Vector3<f64>, &LinkAngles), before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
         let k = self.kinematics(at, before);
@@ -307,7 +320,8 @@ impl Lubrication {
         let (jump, tau) = (k.lateral * (after - before), self.design.relaxation);
         let mean = (before + after) * 0.5;
         let [thrust, antithrust] = (loads.wall_push_rates * jump * tau).into();
-        Absorbed::new((k.lateral * mean).dot(&(loads.damping * tau * jump)), 0.0, antithrust, thrust)
+        let boundary = tau * loads.boundary_damping * k.axial.dot(&mean) * k.axial.dot(&(after - before));
+        Absorbed::new((k.lateral * mean).dot(&(loads.damping * tau * jump)) + boundary, boundary, antithrust, thrust)
     }
 
     /// The axial friction's power at (φ, φ̇), W (≥ 0 where it opposes the sliding).

@@ -14,7 +14,7 @@ use std::sync::OnceLock;
 /// Defaults: ηβσ = 0.04 and σ/β = 10⁻³ (Greenwood & Tripp give ηβσ ≈ 0.03–0.05 and σ/β ≈ 10⁻⁴–10⁻²
 /// for engineering surfaces; this pair is the one the piston ring–liner literature commonly takes,
 /// e.g. Styles, Rahmani, Rahnejat & Fitzsimons, Int. J. Engine Res. 15 (2014) 862–876), with σ = 0.5 µm
-/// for a honed liner against a machined skirt, hence β = 0.5 mm and η = 0.04/(βσ) = 1.6·10¹¹ m⁻²;
+/// for a honed liner against a machined skirt, hence β = 0.5 mm and η = 0.04/(βσ) = 1.6·10⁸ m⁻²;
 /// E' = 96 GPa from `2/E' = Σ (1 − ν²)/E` of an Al–Si piston (72 GPa, 0.33) and a grey cast iron liner
 /// (110 GPa, 0.26).
 #[derive(Clone, Debug, PartialEq)]
@@ -37,12 +37,28 @@ impl Default for Roughness {
 }
 
 impl Roughness {
-    /// Refuses non-physical roughness data, naming the field.
+    /// Refuses non-physical roughness data, naming the field: each value finite and positive, and
+    /// the model's two dimensionless groups where its derivation holds, sparse Hertzian summits:
+    /// `ηβσ` within [`SUMMIT_GROUP`] (0.03–0.05 on engineering surfaces, Greenwood & Tripp) and
+    /// `σ/β` at most [`LARGEST_SIGMA_OVER_RADIUS`] (10⁻⁴–10⁻² there).
     pub fn validate(&self) -> Result<(), ModelError> {
         for (name, v) in [("sigma", self.sigma), ("density", self.density), ("radius", self.radius), ("modulus", self.modulus)] {
             if !(v.is_finite() && v > 0.0) {
                 return Err(ModelError(format!("skirt roughness: {name} = {v} must be finite and > 0")));
             }
+        }
+        let group = self.density * self.radius * self.sigma;
+        let [low, high] = SUMMIT_GROUP;
+        if !(low..=high).contains(&group) {
+            return Err(ModelError(format!(
+                "asperity_density·asperity_radius·skirt_roughness = {group:e} must lie in [{low}, {high}]: Greenwood–Tripp's sparse summits (0.03–0.05 on engineering surfaces)"
+            )));
+        }
+        if self.sigma / self.radius > LARGEST_SIGMA_OVER_RADIUS {
+            return Err(ModelError(format!(
+                "skirt_roughness/asperity_radius = {:e} must be at most {LARGEST_SIGMA_OVER_RADIUS}: Greenwood–Tripp's summits are Hertzian, σ ≪ β (10⁻⁴–10⁻² on engineering surfaces)",
+                self.sigma / self.radius
+            )));
         }
         Ok(())
     }
@@ -53,6 +69,11 @@ impl Roughness {
         8.0 * 2.0_f64.sqrt() / 15.0 * PI * b * b * (self.sigma / self.radius).sqrt() * self.modulus
     }
 }
+
+/// The accepted range of `ηβσ`: a decade and more either side of the engineering surfaces' 0.03–0.05.
+pub const SUMMIT_GROUP: [f64; 2] = [1e-3, 1.0];
+/// The largest accepted `σ/β`: a decade above the engineering surfaces' 10⁻⁴–10⁻².
+pub const LARGEST_SIGMA_OVER_RADIUS: f64 = 0.1;
 
 const PANELS: usize = 600;
 
@@ -175,6 +196,17 @@ mod tests {
         let asymptotic = gamma * phi(lambda) / libm::pow(lambda, n + 1.0)
             * (1.0 - (n + 1.0) * (n + 2.0) / (2.0 * l2) + (n + 1.0) * (n + 2.0) * (n + 3.0) * (n + 4.0) / (8.0 * l2 * l2));
         assert!((gaussian_moment(n, lambda) / asymptotic - 1.0).abs() < 0.013);
+    }
+
+    #[test]
+    fn the_fmu_defaults_are_the_cited_roughness() {
+        // The parameters' start values (the variable table) give Greenwood–Tripp's dimensionless
+        // groups of the cited pair, ηβσ = 0.04 and σ/β = 1e-3, and E' = 96 GPa.
+        let p = crate::models::Parameters::default();
+        let (sigma, density, radius) = (p.skirt_roughness, p.asperity_density, p.asperity_radius);
+        assert!((density * radius * sigma / 0.04 - 1.0).abs() < 1e-12, "ηβσ = {}", density * radius * sigma);
+        assert!((sigma / radius / 1e-3 - 1.0).abs() < 1e-12, "σ/β = {}", sigma / radius);
+        assert_eq!(Roughness { sigma, density, radius, modulus: p.composite_modulus }, Roughness::default());
     }
 
     #[test]

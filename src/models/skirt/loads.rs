@@ -49,6 +49,9 @@ pub struct SkirtLoads {
     pub squeeze_power: f64,
     /// Power of boundary friction on the asperity load, W (≥ 0).
     pub asperity_friction_power: f64,
+    /// `−∂friction_force/∂sliding_speed` of the boundary friction, N·s/m: `μ_b W / BOUNDARY_SLIP`
+    /// while |V| < `BOUNDARY_SLIP` (the friction linear in V there), 0 beyond.
+    pub boundary_damping: f64,
     /// Smallest film thickness per side, m: [thrust (+x), anti-thrust (−x)].
     pub min_film: [f64; 2],
     /// Each wall's lateral push on the piston, N, [thrust, anti-thrust]: film and asperities on that

@@ -21,4 +21,4 @@ pub use design::SkirtDesign;
 pub use loads::{FilmLinear, PressureMap, SideMap, SkirtLoads, SkirtMotion};
 pub use profile::SkirtProfile;
 pub use shear::Shear;
-pub use surface::Skirt;
+pub use surface::{Skirt, BOUNDARY_SLIP};

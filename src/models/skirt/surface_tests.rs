@@ -1,7 +1,7 @@
 //! The skirt's geometry against the crank train's corners, its symmetry and signs, the damping against
 //! finite differences of the loads, the film's power balance, and its grid convergence.
 
-use super::{Skirt, SkirtDesign, SkirtMotion, SkirtProfile};
+use super::{Skirt, SkirtDesign, SkirtMotion, SkirtProfile, BOUNDARY_SLIP};
 use crate::models::crank_train::linkage::Linkage;
 use crate::models::Parameters;
 use nalgebra::Vector3;
@@ -189,6 +189,16 @@ fn asperities_carry_a_collapsed_film_with_boundary_friction() {
     let mu = s.design().boundary_friction;
     assert!(close(l.asperity_friction_power, mu * l.asperity_force * 3.0, 1e-12));
     assert!(l.lateral_force.is_finite() && l.damping.iter().all(|v| v.is_finite()));
+    assert_eq!(l.boundary_damping, 0.0, "sliding: Coulomb's μ_b W");
+    // Sliding slower than BOUNDARY_SLIP the boundary friction is μ_b W V / BOUNDARY_SLIP: its
+    // power μ_b W V² / BOUNDARY_SLIP, its slope the damping returned.
+    let slow = |v: f64| s.loads(&SkirtMotion { sliding_speed: v, ..m });
+    let v = 0.25 * BOUNDARY_SLIP;
+    let (a, b) = (slow(v), slow(-2.0 * v));
+    let slope = mu * a.asperity_force / BOUNDARY_SLIP;
+    assert!(close(a.boundary_damping, slope, 1e-12) && a.boundary_damping == b.boundary_damping, "{} vs {slope}", a.boundary_damping);
+    assert!(close(a.asperity_friction_power, slope * v * v, 1e-12));
+    assert!(close(b.asperity_friction_power, slope * 4.0 * v * v, 1e-12));
 }
 
 #[test]
