@@ -1,7 +1,7 @@
 //! The event search of one RK4 step: the earliest gap or multiplier crossing, located on the
 //! step's quintic extension and confirmed on the RK4 map.
 
-use super::rk4::{rk4_cut, Hermite5};
+use super::rk4::{rk4_to, Hermite5};
 use super::root_finding::{self, Bracket, Located, Start};
 use super::sample::{acceleration, sample, Evaluated, Forces, Sample, Watch};
 use super::stepper::StepEnd;
@@ -164,12 +164,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         (tangents.jacobian.row(i) * s.acc)[0] + tangents.bias[i]
     }
 
-    /// The state where `g_i − shift` crosses zero, on the RK4 map from the step start with the
-    /// terms the step prepared (`rk4_cut`: the map whose dense output the search checked): Illinois
-    /// started at the dense-output estimate (usually accepted at once). Each trial preparing its own
-    /// film instead, a lubricated corner's stick read +3.6e-3 N inside its cone at the step's start
-    /// and outside it a few ulps later, and the stick and the slip it started were found undone at
-    /// once, 10⁴ times (lubricated declared design 1189).
+    /// The state where `g_i − shift` crosses zero, on the RK4 map from the step start: Illinois
+    /// started at the dense-output estimate (usually accepted at once).
     fn locate_on_rk4(
         &self,
         br: Bracket,
@@ -183,7 +179,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.count(|c| c.located += 1);
         let locating = |t: f64| {
             self.count(|c| c.locating += 1);
-            rk4_cut(sys, s0, t, contacts)
+            rk4_to(sys, s0, t, contacts)
         };
         let mut g = |t: f64| -> Result<f64, DynamicsError> {
             let s = locating(t)?;
