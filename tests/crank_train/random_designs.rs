@@ -78,13 +78,13 @@ fn random_lubricated_engines_all_run() {
 }
 
 /// Lubricated designs over the declared space (`random_designs N 0 "lubricated declared"`, ≈ 0.3 s a
-/// design): the first 40. Seed 36 of this family was a held corner's force dipping to −1.1 N inside a
-/// step whose RK4 middle stage read +1.4 N, found by the search only on the quintic extension; the
-/// family's designs changed since (the roughness groups are drawn), and the sweep now stands for it.
+/// design): the first 40, and 1189, which the sweep found failing: a corner's stick and the slip it
+/// started found undone at the very start of each step, 10⁴ times, where the laws and the step read the
+/// corner with films half a step apart (`Stepper::step` now takes such a step again shorter).
 #[test]
 fn random_declared_lubricated_designs_all_run() {
-    let failed = failures_of(0..40, lubricated_declared, |_, _| Ok(()));
-    assert!(failed.is_empty(), "{} of 40 failed:\n{}", failed.len(), failed.join("\n"));
+    let failed = failures_of((0..40).chain([1189]), lubricated_declared, |_, _| Ok(()));
+    assert!(failed.is_empty(), "{} of 41 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
 fn balanced(_: &Design, f: &Finished) -> Result<(), String> {
