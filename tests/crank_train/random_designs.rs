@@ -66,15 +66,18 @@ fn random_engines_all_run() {
 /// force between two steps: a held corner's force differed by more than itself between the film of
 /// the step before and the step's own, with which each step's start is now evaluated (`rk4_step`).
 /// 696 and 20456, a step cut at a communication point that put a corner inside the liner when it took
-/// a film of its own (`rk4_cut`).
-const LUBRICATED_FOUND_BY_LARGER_SWEEPS: [u64; 15] =
-    [14, 35, 36, 541, 1410, 1762, 3148, 5969, 11469, 12913, 31886, 31894, 37442, 696, 20456];
+/// a film of its own (`rk4_cut`). These were found with the asperity defaults before the cited ones
+/// (`skirt::Roughness`); with those, 18377 (of 20 000), a held corner's release located one ulp after
+/// each step's start, where the laws held it again, 10⁴ times (`Stepper::step` takes such a step again
+/// shorter).
+const LUBRICATED_FOUND_BY_LARGER_SWEEPS: [u64; 16] =
+    [14, 35, 36, 541, 1410, 1762, 3148, 5969, 11469, 12913, 31886, 31894, 37442, 696, 20456, 18377];
 
 /// On a lubricated skirt (each design's film solved thousands of times a cycle: fewer of them).
 #[test]
 fn random_lubricated_engines_all_run() {
     let failed = failures_of((0..12).chain(LUBRICATED_FOUND_BY_LARGER_SWEEPS), lubricated_engine, |_, _| Ok(()));
-    assert!(failed.is_empty(), "{} of 27 failed:\n{}", failed.len(), failed.join("\n"));
+    assert!(failed.is_empty(), "{} of 28 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
 /// Lubricated designs over the declared space (`random_designs N 0 "lubricated declared"`, ≈ 0.3 s a
