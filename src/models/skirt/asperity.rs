@@ -39,8 +39,8 @@ impl Default for Roughness {
 impl Roughness {
     /// Refuses non-physical roughness data, naming the field: each value finite and positive, and
     /// the model's two dimensionless groups where its derivation holds, sparse Hertzian summits:
-    /// `ηβσ` within [`SUMMIT_GROUP`] (0.03–0.05 on engineering surfaces, Greenwood & Tripp) and
-    /// `σ/β` at most [`LARGEST_SIGMA_OVER_RADIUS`] (10⁻⁴–10⁻² there).
+    /// `ηβσ` within `SUMMIT_GROUP` (0.03–0.05 on engineering surfaces, Greenwood & Tripp) and
+    /// `σ/β` at most `LARGEST_SIGMA_OVER_RADIUS` (10⁻⁴–10⁻² there).
     pub fn validate(&self) -> Result<(), ModelError> {
         for (name, v) in [("sigma", self.sigma), ("density", self.density), ("radius", self.radius), ("modulus", self.modulus)] {
             if !(v.is_finite() && v > 0.0) {
