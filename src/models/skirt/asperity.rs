@@ -71,9 +71,9 @@ impl Roughness {
 }
 
 /// The accepted range of `ηβσ`: a decade and more either side of the engineering surfaces' 0.03–0.05.
-pub const SUMMIT_GROUP: [f64; 2] = [1e-3, 1.0];
+const SUMMIT_GROUP: [f64; 2] = [1e-3, 1.0];
 /// The largest accepted `σ/β`: a decade above the engineering surfaces' 10⁻⁴–10⁻².
-pub const LARGEST_SIGMA_OVER_RADIUS: f64 = 0.1;
+const LARGEST_SIGMA_OVER_RADIUS: f64 = 0.1;
 
 const PANELS: usize = 600;
 
