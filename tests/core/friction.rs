@@ -167,3 +167,40 @@ fn a_flywheel_creeping_into_a_dead_centre_is_stopped_by_the_stick_a_fast_one_pas
     let lost = kinetic(phi0, fast) - kinetic(phi, s.velocity()[0]);
     assert!((lost - work).abs() < 1e-6 * work, "kinetic energy lost {lost:e} J vs friction work {work:e} J");
 }
+
+/// Painlevé's rod: a uniform rod (1 kg, 1 m) at θ = atan 2 with its lower end on the floor, slipping
+/// at γ = −1 m/s, μ = 2 (above the critical 4/3 at that angle: `W_NN − μ s W_NT` = (1 + 3cos²θ −
+/// 3μ sin θ cos θ)/m = −0.8 /kg). Gravity pulls the end into the floor and no contact force holds
+/// it: the law has no solution, and the end is jammed (Génot & Brogliato): an impulse stops its slip
+/// with it held, `W (Λ_N, Λ_T) = −(0, γ)`, in closed form `Λ_N = −3 sin θ cos θ γ m / 4` = 0.3 N·s
+/// and `Λ_T = −(1 + 3cos²θ) γ m / 4` = 0.4 N·s (inside the cone: 4/3 < μ), leaving (ẋ, ẏ, θ̇) =
+/// (−0.6, 0.3, 1.2 √5 /2) and dissipating `γ² m W_NN / (2 det W)` = 0.2 J. The rod then falls
+/// about its end, and its books close.
+#[test]
+fn painleves_rod_is_jammed_by_an_impulse_that_stops_its_slip() {
+    let (m, mu) = (1.0, 2.0);
+    let theta = libm::atan(2.0);
+    let rod = Rod { mass: m, length: 1.0, gravity: G, restitution: 0.5, friction: mu, floor: Floor::Fixed };
+    let options = StepperOptions { step: 1e-3, ..Default::default() };
+    let start = Vector3::new(0.0, 0.5 * libm::sin(theta), theta);
+    let mut s = Stepper::new(rod.clone(), 0.0, start, Vector3::new(-1.0, 0.0, 0.0), options).unwrap();
+    let jam = &s.events()[0];
+    assert_eq!((jam.kind, jam.constraint, jam.time), (EventKind::Stick, 0, 0.0));
+    assert!((jam.impulses[0] - 0.3).abs() < 1e-12 && (jam.friction_impulses[0] - 0.4).abs() < 1e-12, "{jam:?}");
+    assert!((jam.energy_lost - 0.2).abs() < 1e-12 && jam.friction_energy == jam.energy_lost, "{jam:?}");
+    let after = Vector3::new(-0.6, 0.3, 0.6 * libm::sqrt(5.0));
+    assert!((jam.v - Vector3::new(-1.0, 0.0, 0.0)).norm() == 0.0, "the record keeps the velocity before");
+    let energy =
+        |q: &Vector3<f64>, v: &Vector3<f64>| 0.5 * m * (v[0] * v[0] + v[1] * v[1]) + 0.5 * rod.inertia() * v[2] * v[2] + m * G * q[1];
+    let first = energy(&start, &Vector3::new(-1.0, 0.0, 0.0));
+    assert!((energy(&start, &after) - (first - 0.2)).abs() < 1e-12);
+    s.advance(0.3).unwrap();
+    // The stuck end does no work: the events' losses are all the motion loses, and friction's
+    // work in the stick is its end's slip at the integrator's drift (8e-8 J measured).
+    let lost: f64 = s.events().iter().map(|e| e.energy_lost).sum();
+    let balance = first - energy(s.position(), s.velocity()) - lost;
+    let (_, drift) = s.friction_dissipation();
+    eprintln!("{} events, lost {lost} J, residual {balance:e} J, stick {drift:e} J, at {:?}", s.events().len(), s.position());
+    assert!(s.sticking(0) && s.position()[2] > theta, "pivots up about its stuck end: {:?}", s.position());
+    assert!(balance.abs() < 1e-12 * first && drift < 1e-6, "residual {balance} J, friction {drift} J");
+}

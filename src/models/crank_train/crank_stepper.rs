@@ -4,7 +4,7 @@
 //! stepper as a `dyn CrankStepper`: the one place the crank train looks at which drive it has.
 
 use super::drive::{Engine, FreeCrank, PrescribedCrank};
-use crate::dynamics::{Absorbed, DynamicsError, Event, StepCounts, Stepper, System};
+use crate::dynamics::{Absorbed, DynamicsError, Event, EventKind, StepCounts, Stepper, System};
 use crate::models::{EngineEvent, InputPolynomial, CYCLE};
 use nalgebra::{SVector, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -99,7 +99,7 @@ impl CrankDrive<2> for PrescribedCrank {
         if e.impulses == Vector4::zeros() {
             return Some(0.0);
         }
-        self.impulse_work(e.time, (&e.q, &e.v), (&e.impulses, &e.friction_impulses))
+        self.impulse_work((e.time, &e.q, &e.v), (&e.impulses, &e.friction_impulses), e.kind == EventKind::Impact)
     }
     fn gas_pressure(&self, t: f64, angle: f64) -> f64 {
         self.pressure(t, angle)

@@ -267,6 +267,12 @@ impl PrescribedCrank {
         self.engine.evaluate(t, &phi, &phid, 0.0, crank)
     }
 
+    /// The linkage's inertia in full coordinates, without the film's implicit term (`System::impact_mass`).
+    pub fn impact_mass_full(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Matrix3<f64> {
+        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
+        self.engine.impact_mass(t, &phi, &phid, crank)
+    }
+
     /// φ, φ̇ and the crank's terms at `(t, q, q̇)`.
     #[inline(always)]
     fn full_state_and_crank(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Vector3<f64>, Vector3<f64>, Crank) {
@@ -391,8 +397,7 @@ impl System<2, 4> for PrescribedCrank {
     }
 
     fn impact_mass(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>, _ev: &Evaluation<2, 4>) -> Matrix2<f64> {
-        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
-        self.engine.impact_mass(t, &phi, &phid, crank).fixed_view::<2, 2>(1, 1).into_owned()
+        self.impact_mass_full(t, q, qd).fixed_view::<2, 2>(1, 1).into_owned()
     }
 
     /// The crank keeps its speed through a jump.

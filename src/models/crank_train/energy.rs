@@ -13,24 +13,27 @@ use crate::models::{EnergyBalance, PowerFlows};
 use nalgebra::{Vector2, Vector4};
 
 impl PrescribedCrank {
-    /// Work the drive does through the corner impulses of one impact at `(t, q)` with the velocity
-    /// `v` before it (the lubricated skirt's inertia depends on it), normal and tangential
-    /// (friction), J; `None` if the rod and piston inertia is not positive definite there.
+    /// Work the drive does through the corner impulses of one jump at `(t, q)` with the velocity
+    /// `v` before it, normal and tangential (friction), J; `None` if the rod and piston inertia is
+    /// not positive definite there. The jump acts through the inertia the core gave it: an impact
+    /// (`impact`) through the linkage's alone (`System::impact_mass`), a projection or a jam
+    /// through the lubricated skirt's, which depends on `v`.
     pub fn impulse_work(
         &self,
-        t: f64,
-        (q, v): (&Vector2<f64>, &Vector2<f64>),
+        (t, q, v): (f64, &Vector2<f64>, &Vector2<f64>),
         (normal, friction): (&Vector4<f64>, &Vector4<f64>),
+        impact: bool,
     ) -> Option<f64> {
         let full = self.evaluate_full(t, q, v);
-        let rows = full.mass.fixed_view::<2, 2>(1, 1).into_owned();
+        let mass = if impact { self.impact_mass_full(t, q, v) } else { full.mass };
+        let rows = mass.fixed_view::<2, 2>(1, 1).into_owned();
         let mut generalized = full.gap_jacobian.transpose() * normal;
         if *friction != Vector4::zeros() {
             let (phi, phid) = self.full_state(t, q, &Vector2::zeros());
             generalized += self.engine.linkage.tangents(&phi, &phid).jacobian.transpose() * friction;
         }
         let jump = rows.cholesky()?.solve(&generalized.fixed_rows::<2>(1).into_owned());
-        let drive_impulse = (full.mass.fixed_view::<1, 2>(0, 1) * jump)[0] - generalized[0];
+        let drive_impulse = (mass.fixed_view::<1, 2>(0, 1) * jump)[0] - generalized[0];
         Some(drive_impulse * self.speed(t))
     }
 }
@@ -96,7 +99,7 @@ mod tests {
         let sys = PrescribedCrank::new(engine, 0.7, 0.0, 125.66);
         let (t, q, qd) = (0.003, Vector2::new(-0.12, 4e-4), Vector2::new(-25.0, 3.0));
         let impulses = Vector4::new(0.02, 0.0, 0.0, 0.013);
-        let work = sys.impulse_work(t, (&q, &Vector2::zeros()), (&impulses, &Vector4::zeros())).unwrap();
+        let work = sys.impulse_work((t, &q, &Vector2::zeros()), (&impulses, &Vector4::zeros()), true).unwrap();
 
         let (phi, phid) = sys.full_state(t, &q, &qd);
         let full = sys.evaluate_full(t, &q, &qd);
