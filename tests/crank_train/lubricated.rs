@@ -8,7 +8,7 @@ use crate::common::*;
 use pistonslap::dynamics::StepperOptions;
 use pistonslap::models::crank_train::LOCAL_ERROR;
 use pistonslap::models::skirt::BOUNDARY_SLIP;
-use pistonslap::models::{CrankTrain, EnergyBalance, EngineEventKind, EngineModel, Inputs, Outputs, Parameters, PowerFlows};
+use pistonslap::models::{CrankTrain, EnergyBalance, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters, PowerFlows};
 
 fn lubricated(crank_mode: i32) -> Parameters {
     Parameters { skirt_model: 2, crank_mode, skirt_grid_circumferential: 6, skirt_grid_axial: 8, ..Parameters::default() }
@@ -18,6 +18,51 @@ fn outputs(model: &CrankTrain) -> Outputs {
     let mut out = Outputs::default();
     model.write_outputs(&mut out);
     out
+}
+
+/// The energy books of `model` run from 1 ns to `t_end` in `points` communication steps.
+struct Books {
+    /// The mechanical energy lost, J.
+    lost: f64,
+    /// The drive's (or load's), gas's and joint damping's work, their powers' trapezoids at the points.
+    work: f64,
+    /// `lost` less what is booked: the film's, the events' (friction's shares inside), sliding
+    /// friction's, less `work` and the drive's through impulses.
+    residual: f64,
+    events: Vec<EngineEvent>,
+    out: Outputs,
+}
+
+fn books(model: &mut CrankTrain, inputs: &Inputs, (t_end, points): (f64, usize)) -> Books {
+    let mut events = Vec::new();
+    model.advance(inputs, 1e-9, &mut events).unwrap();
+    let start = model.mechanical_energy();
+    let dt = (t_end - 1e-9) / points as f64;
+    let net = |p: PowerFlows| p.drive + p.gas - p.damping;
+    let (mut work, mut power) = (0.0, net(model.power_flows()));
+    for k in 1..=points {
+        model.advance(inputs, 1e-9 + k as f64 * dt, &mut events).unwrap();
+        let now = net(model.power_flows());
+        work += 0.5 * (power + now) * dt;
+        power = now;
+    }
+    let out = outputs(model);
+    let (losses, shares) = events.iter().fold((0.0, 0.0), |(l, f), e| (l + e.energy_lost, f + e.friction_energy));
+    let lost = start - model.mechanical_energy();
+    let residual = lost - (out.film_energy_total + losses + out.friction_energy_total - shares - work - model.impulse_work());
+    Books { lost, work, residual, events, out }
+}
+
+/// 1 µm of radial clearance on 2 µm of roughness: a piston on its asperities.
+fn on_its_asperities(params: Parameters) -> Parameters {
+    Parameters {
+        bore: 0.08 + 2e-6,
+        skirt_roughness: 2e-6,
+        asperity_radius: 2e-3,
+        asperity_density: 1e7,
+        crank_angle_start: 30f64.to_radians(),
+        ..params
+    }
 }
 
 /// Without gas, load and joint damping, thrown sideways at 0.1 m/s: the mechanical energy lost is
@@ -36,29 +81,44 @@ fn the_film_closes_the_energy_books_in_both_crank_modes() {
         };
         let inputs = Inputs { gas_pressure: 0.0, load_torque: 0.0, ..Inputs::default() };
         let mut model = CrankTrain::new(&params, 0.0).unwrap();
-        let mut events = Vec::new();
-        model.advance(&inputs, 1e-9, &mut events).unwrap();
-        let start = model.mechanical_energy();
-        let (dt, steps) = (2e-5, 1000);
-        let (mut drive, mut power) = (0.0, model.power_flows().drive);
-        for k in 1..=steps {
-            model.advance(&inputs, 1e-9 + k as f64 * dt, &mut events).unwrap();
-            let now = model.power_flows().drive;
-            drive += 0.5 * (power + now) * dt;
-            power = now;
-        }
-        let out = outputs(&model);
-        let impacts: f64 = events.iter().map(|e| e.energy_lost).sum();
-        let lost = start - model.mechanical_energy();
-        let booked = out.film_energy_total + impacts + out.friction_energy_total - drive - model.impulse_work();
+        let Books { lost, work, residual, out, .. } = books(&mut model, &inputs, (0.02, 1000));
         eprintln!(
-            "crank_mode {crank_mode}: lost {lost:.6e} J, film {:.6e} J, impacts {impacts:.3e} J, drive {drive:.6e} J, residual {:.3e} J",
-            out.film_energy_total,
-            lost - booked
+            "crank_mode {crank_mode}: lost {lost:.6e} J, film {:.6e} J, drive {work:.6e} J, residual {residual:.3e} J",
+            out.film_energy_total
         );
         assert!(out.film_energy_total > 0.0);
-        assert!((lost - booked).abs() < 1e-3 * out.film_energy_total.abs().max(drive.abs()), "lost {lost} J, booked {booked} J");
+        assert!(residual.abs() < 1e-3 * out.film_energy_total.abs().max(work.abs()), "lost {lost} J, residual {residual} J");
     }
+}
+
+/// Thrown sideways at 2 m/s onto oil of 0.1 mPa·s with corner friction 0.1, on a crank held at speed
+/// without gas or damping: five impacts, each met by an impulse of the drive, which acts through the
+/// linkage's inertia as the impact does (`System::impact_mass`). The books close to 1.1e-3 of the
+/// energy lost (measured: 3.3e-3 J of 3.03 J, from the film's transients after each impact, which RK4
+/// follows at two steps per τ to ≈ 2e-3 of their energy: `tests/core/absorbing.rs`); with the drive's
+/// impulse reckoned through the film's implicit inertia they missed 0.74 J.
+#[test]
+fn impacts_through_the_film_close_the_books_with_the_drives_impulses() {
+    let params = Parameters {
+        pressure_source: 1,
+        damping_main: 0.0,
+        damping_crank_pin: 0.0,
+        damping_piston_pin: 0.0,
+        piston_lateral_velocity_start: 2.0,
+        oil_viscosity: 1e-4,
+        friction: 0.1,
+        ..lubricated(1)
+    };
+    let inputs = Inputs { gas_pressure: 0.0, load_torque: 0.0, ..Inputs::default() };
+    let mut model = CrankTrain::new(&params, 0.0).unwrap();
+    let Books { lost, work, residual, events, .. } = books(&mut model, &inputs, (0.02, 1_000_000));
+    let impacts = events.iter().filter(|e| e.kind == EngineEventKind::Impact).count();
+    eprintln!(
+        "{impacts} impacts, lost {lost:.6e} J, drive {work:.6e} J, through impulses {:.4e} J, residual {residual:.3e} J",
+        model.impulse_work()
+    );
+    assert!(impacts >= 3 && model.impulse_work().abs() > 0.1 * lost, "{impacts} impacts, {} J", model.impulse_work());
+    assert!(residual.abs() < 2e-3 * lost, "residual {residual} J of {lost} J");
 }
 
 /// Oil 1e9 times thinner than the default's and a roughness of 1 nm: the film's forces vanish
@@ -192,16 +252,7 @@ fn the_film_linearised_per_step_is_independent_of_the_step() {
 #[test]
 fn boundary_friction_holds_a_piston_stopped_on_its_asperities() {
     let stopped = |boundary_friction: f64| {
-        let params = Parameters {
-            pressure_source: 1,
-            bore: 0.08 + 2e-6,
-            skirt_roughness: 2e-6,
-            asperity_radius: 2e-3,
-            asperity_density: 1e7,
-            boundary_friction,
-            crank_angle_start: 30f64.to_radians(),
-            ..lubricated(2)
-        };
+        let params = on_its_asperities(Parameters { pressure_source: 1, boundary_friction, ..lubricated(2) });
         let inputs = Inputs { gas_pressure: 1e5, load_torque: 0.0, crank_speed: 0.0 };
         let mut model = CrankTrain::new(&params, 0.0).unwrap();
         let mut events = Vec::new();
@@ -223,36 +274,20 @@ fn boundary_friction_holds_a_piston_stopped_on_its_asperities() {
 /// stopped in 14 ms, creeping at 3.8e-5 rad/s under gravity; residual 3.1e-8 J of 0.126 J).
 #[test]
 fn boundary_friction_closes_the_books_as_it_stops_the_crank() {
-    let params = Parameters {
+    let params = on_its_asperities(Parameters {
         pressure_source: 1,
-        bore: 0.08 + 2e-6,
-        skirt_roughness: 2e-6,
-        asperity_radius: 2e-3,
-        asperity_density: 1e7,
         boundary_friction: 0.3,
-        crank_angle_start: 30f64.to_radians(),
         damping_main: 0.0,
         damping_crank_pin: 0.0,
         damping_piston_pin: 0.0,
         ..lubricated(2)
-    };
+    });
     let inputs = Inputs { gas_pressure: 0.0, load_torque: 0.0, crank_speed: 0.5 };
     let mut model = CrankTrain::new(&params, 0.0).unwrap();
-    let mut events = Vec::new();
-    model.advance(&inputs, 1e-9, &mut events).unwrap();
-    let start = model.mechanical_energy();
-    let mut speeds = Vec::new();
-    for k in 1..=50 {
-        model.advance(&inputs, k as f64 * 1e-3, &mut events).unwrap();
-        speeds.push(outputs(&model).crank_speed_actual);
-    }
-    let out = outputs(&model);
-    let lost = start - model.mechanical_energy();
-    let impacts: f64 = events.iter().map(|e| e.energy_lost).sum();
-    let booked = out.film_energy_total + impacts + out.friction_energy_total;
-    eprintln!("crank speed {:e} rad/s; lost {lost:e} J, booked {booked:e} J, residual {:e} J", speeds[49], lost - booked);
-    assert!(speeds[49].abs() < 1e-3 * inputs.crank_speed, "{speeds:?}");
-    assert!((lost - booked).abs() < 1e-5 * lost, "lost {lost} J, booked {booked} J");
+    let Books { lost, residual, out, .. } = books(&mut model, &inputs, (0.05, 50));
+    eprintln!("crank speed {:e} rad/s; lost {lost:e} J, residual {residual:e} J", out.crank_speed_actual);
+    assert!(out.crank_speed_actual.abs() < 1e-3 * inputs.crank_speed, "{} rad/s", out.crank_speed_actual);
+    assert!(residual.abs() < 1e-5 * lost, "lost {lost} J, residual {residual} J");
 }
 
 /// A random lubricated design over the declared space (`lubricated_declared`, seed 1018: a 10 g
@@ -266,27 +301,8 @@ fn boundary_friction_closes_the_books_as_it_stops_the_crank() {
 fn the_books_close_through_the_jam_of_painleves_paradox() {
     let design = lubricated_declared(&mut Random::new(1018));
     let mut model = CrankTrain::new(&design.params, 0.0).unwrap();
-    let mut events = Vec::new();
-    model.advance(&design.inputs, 1e-9, &mut events).unwrap();
-    let start = model.mechanical_energy();
-    let (t_end, points) = (2e-3, 1_000_000);
-    let dt = (t_end - 1e-9) / points as f64;
-    let net = |p: PowerFlows| p.drive + p.gas - p.damping;
-    let (mut work, mut power) = (0.0, net(model.power_flows()));
-    for k in 1..=points {
-        model.advance(&design.inputs, 1e-9 + k as f64 * dt, &mut events).unwrap();
-        let now = net(model.power_flows());
-        work += 0.5 * (power + now) * dt;
-        power = now;
-    }
+    let Books { lost, work, residual, events, out } = books(&mut model, &design.inputs, (2e-3, 1_000_000));
     assert!(events.iter().any(|e| e.kind == EngineEventKind::Stick && e.energy_lost > 20.0), "no jam: {events:?}");
-    let out = outputs(&model);
-    let (losses, shares) = events.iter().fold((0.0, 0.0), |(l, f), e| (l + e.energy_lost, f + e.friction_energy));
-    let lost = start - model.mechanical_energy();
-    let residual = lost - (out.film_energy_total + losses + out.friction_energy_total - shares - work);
-    eprintln!(
-        "lost {lost:.6e} J, film {:.6e} J, events {losses:.6e} J, work {work:.6e} J, residual {residual:.2e} J",
-        out.film_energy_total
-    );
+    eprintln!("lost {lost:.6e} J, film {:.6e} J, work {work:.6e} J, residual {residual:.2e} J", out.film_energy_total);
     assert!(residual.abs() < 1e-6 * work.abs(), "residual {residual} J of {work} J");
 }
