@@ -17,7 +17,8 @@ impl PrescribedCrank {
     /// `v` before it, normal and tangential (friction), J; `None` if the rod and piston inertia is
     /// not positive definite there. The jump acts through the inertia the core gave it: an impact
     /// (`impact`) through the linkage's alone (`System::impact_mass`), a projection or a jam
-    /// through the lubricated skirt's, which depends on `v`.
+    /// through the lubricated skirt's, which depends on `v` and on the film prepared when this is
+    /// asked (after the communication step: not always the one the jump acted through).
     pub fn impulse_work(
         &self,
         (t, q, v): (f64, &Vector2<f64>, &Vector2<f64>),
