@@ -209,28 +209,6 @@ pub(super) fn stick_jump<S: System<N, M>, const N: usize, const M: usize>(
     Some(Jump { normal: jump.normal, tangent: jump.tangent, v: v_plus, hd: hd_plus, lost, friction_lost: lost })
 }
 
-/// Painlevé's jam: where no contact forces satisfy the law at `(t, q, q̇)` (`ContactUnresolved`),
-/// the constraints of `unresolved` that slip are stopped by an impulse (an impact without
-/// collision, Génot & Brogliato 1999), `ḣ = 0` and `γ = 0` after it, as `stick_jump` does: all
-/// of them, or where the motion cannot stop them all (a prescribed crank with a wall's pair), the
-/// first one alone it can. The laws then decide from tangential rest, where a solution exists.
-/// `None` where none slips, or every such impulse would pull.
-pub(super) fn jam<S: System<N, M>, const N: usize, const M: usize>(
-    sys: &S,
-    tol: Tolerances,
-    (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
-    ev: &Evaluation<N, M>,
-    unresolved: Set,
-) -> Option<Jump<N, M>> {
-    friction_of(sys)?;
-    let slip = sys.tangents(t, q, v).slip(v);
-    let slipping = unresolved & select::<M>(|i| slip[i].abs() > tol.velocity);
-    std::iter::once(slipping).chain(members::<M>(slipping).map(|i| 1 << i)).filter(|&set| set != 0).find_map(|set| {
-        let jump = stick_jump(sys, tol, (t, q, v), ev, Contacts { held: set, stick: set, back: 0 })?;
-        members::<M>(set).all(|i| jump.normal[i] >= 0.0).then_some(jump)
-    })
-}
-
 /// The sliding law with Coulomb friction (`coulomb.rs`): the modes of the candidates by
 /// enumeration, a candidate slipping faster than ε_ḣ keeping its direction, one slower
 /// sticking or starting to slip as its tangential row decides; ties in the normal direction
@@ -281,12 +259,7 @@ fn coulomb_law<S: System<N, M>, const N: usize, const M: usize>(
     }
     let (t_ahead, q_ahead, v_ahead, ev_ahead) = probe(contacts, TIE_PROBE)?;
     let (frame_ahead, _, b_ahead, scale_ahead, _) = at(t_ahead, &q_ahead, &v_ahead, &ev_ahead)?;
-    // No modes hold ahead (Painlevé's paradox of the trend, where a held corner's force and its
-    // gap acceleration would both turn negative): this instant's, which hold now; the motion shows
-    // what follows, where `jam` resolves it if no modes hold then.
-    let Some((ahead, _)) = frame_ahead.enumerate(&choices, (&b_ahead.0, &b_ahead.1), scale_ahead) else {
-        return Ok((contacts, frame.motion(&free, &now)));
-    };
+    let (ahead, _) = frame_ahead.enumerate(&choices, (&b_ahead.0, &b_ahead.1), scale_ahead).ok_or(unresolved)?;
     if Contacts::of(&ahead) == contacts {
         return Ok((contacts, frame.motion(&free, &now)));
     }

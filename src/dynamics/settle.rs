@@ -3,7 +3,7 @@
 //! of held contacts removed between events.
 
 use super::complementarity::{members, select, Contacts, Frame, Set};
-use super::contact_laws::{energy_lost, impact, jam, sliding_law, stick_jump, Jump, Tolerances};
+use super::contact_laws::{energy_lost, impact, sliding_law, stick_jump, Jump, Tolerances};
 use super::sample::{frame_at, sample, sample_of, Sample};
 use super::system::friction_of;
 use super::{Absorbed, DynamicsError, Evaluation, Event, EventKind, Stepper, System};
@@ -162,9 +162,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let mut approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
         let mut absorbed = Absorbed::zeros();
         let mut impacted: Set = 0;
-        let mut jammed = false;
         let zeno_apex = ZENO_APEX_FACTOR * opts.gap_tolerance;
-        let contacts = 'laws: loop {
+        let contacts = loop {
             let mut rounds = 0;
             while approaching != 0 {
                 // The impact law over every closed constraint, with one `e`, so that it dissipates
@@ -205,22 +204,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             let mut candidates = closed & ((hold & !impacted) | select::<M>(|i| hd[i] < opts.velocity_tolerance));
             let contacts = loop {
                 let probe = |contacts, steps| self.probe((t, &q, &v), &ev, contacts, steps);
-                let law = sliding_law(&self.system, tol, (t, &q, &v), (&ev, &frame), candidates, &probe);
-                // Painlevé: no forces hold the slipping constraints. An impulse stops their slip
-                // (`jam`), once; the laws then decide from rest, after any impact it leaves.
-                if let (Err(DynamicsError::ContactUnresolved { constraints, .. }), false) = (&law, jammed) {
-                    if let Some(jump) = jam(&self.system, tol, (t, &q, &v), &ev, *constraints) {
-                        let stopped = *constraints & select::<M>(|i| jump.normal[i] != 0.0 || jump.tangent[i] != 0.0);
-                        let losses = (&jump.lost, &jump.friction_lost);
-                        self.record((EventKind::Stick, &v), stopped, (&hd, &jump.hd), losses, (jump.normal, jump.tangent));
-                        absorbed += self.absorbed_by_jump(t, &q, &v, &jump.v);
-                        (v, hd, jammed) = (jump.v, jump.hd, true);
-                        (ev, frame) = frame_at(&self.system, t, &q, &v, None)?;
-                        approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
-                        continue 'laws;
-                    }
-                }
-                let (contacts, acc) = law?;
+                let (contacts, acc) = sliding_law(&self.system, tol, (t, &q, &v), (&ev, &frame), candidates, &probe)?;
                 // A held one the law would open slips the way it moves along the surface.
                 let forced = hold & candidates & !contacts.held;
                 let backward = if forced != 0 && friction_of(&self.system).is_some() {

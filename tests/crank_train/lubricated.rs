@@ -3,7 +3,6 @@
 //! the film's plausibility on the default engine. A coarse film grid keeps them fast: the coupling,
 //! not the Reynolds solver's accuracy, is under test here.
 
-use crate::common::designs::{lubricated_declared, Random};
 use crate::common::*;
 use pistonslap::dynamics::StepperOptions;
 use pistonslap::models::crank_train::LOCAL_ERROR;
@@ -288,21 +287,4 @@ fn boundary_friction_closes_the_books_as_it_stops_the_crank() {
     eprintln!("crank speed {:e} rad/s; lost {lost:e} J, residual {residual:e} J", out.crank_speed_actual);
     assert!(out.crank_speed_actual.abs() < 1e-3 * inputs.crank_speed, "{} rad/s", out.crank_speed_actual);
     assert!(residual.abs() < 1e-5 * lost, "lost {lost} J, residual {residual} J");
-}
-
-/// A random lubricated design over the declared space (`lubricated_declared`, seed 1018: a 10 g
-/// piston on a free crank at 11 800 rpm, its corner friction 0.139) whose slipping corner meets
-/// Painlevé's paradox through the film's implicit inertia at 1.35 ms, where the core jams it (a
-/// `Stick` event whose impulse stops the slip, taking 27 J, and the film 6.4 J more). The books
-/// close through it: the mechanical energy lost is the film's, the events' (friction's shares
-/// inside) and sliding friction's work less the load's, gas's and joint damping's (trapezoids at
-/// 1e6 points). Measured residual 8.5e-6 J of 49 J of work.
-#[test]
-fn the_books_close_through_the_jam_of_painleves_paradox() {
-    let design = lubricated_declared(&mut Random::new(1018));
-    let mut model = CrankTrain::new(&design.params, 0.0).unwrap();
-    let Books { lost, work, residual, events, out } = books(&mut model, &design.inputs, (2e-3, 1_000_000));
-    assert!(events.iter().any(|e| e.kind == EngineEventKind::Stick && e.energy_lost > 20.0), "no jam: {events:?}");
-    eprintln!("lost {lost:.6e} J, film {:.6e} J, work {work:.6e} J, residual {residual:.2e} J", out.film_energy_total);
-    assert!(residual.abs() < 1e-6 * work.abs(), "residual {residual} J of {work} J");
 }
