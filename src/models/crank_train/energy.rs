@@ -16,7 +16,7 @@ impl PrescribedCrank {
     /// Work the drive does through the corner impulses of one jump at `(t, q)` with the velocity
     /// `v` before it, normal and tangential (friction), J; `None` if the rod and piston inertia is
     /// not positive definite there. The jump acts through the inertia the core gave it: an impact
-    /// (`impact`) through the linkage's alone (`System::impact_mass`), a projection or a jam
+    /// (`impact`) through the linkage's alone (`System::impact_mass`), a projection
     /// through the lubricated skirt's, which depends on `v` and on the film prepared when this is
     /// asked (after the communication step: not always the one the jump acted through).
     pub fn impulse_work(
