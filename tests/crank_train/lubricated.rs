@@ -94,8 +94,8 @@ fn the_film_closes_the_energy_books_in_both_crank_modes() {
 /// without gas or damping: five impacts, each met by an impulse of the drive, which acts through the
 /// linkage's inertia as the impact does (`System::impact_mass`). The books close to 1.1e-3 of the
 /// energy lost (measured: 3.3e-3 J of 3.03 J, from the film's transients after each impact, which RK4
-/// follows at two steps per τ to ≈ 2e-3 of their energy: `tests/core/absorbing.rs`); with the drive's
-/// impulse reckoned through the film's implicit inertia they missed 0.74 J.
+/// follows at two steps per τ to ≈ 2e-3 of their energy: `tests/core/absorbing.rs`). The drive's
+/// impulse reckoned through the film's implicit inertia instead misses 0.74 J, which this catches.
 #[test]
 fn impacts_through_the_film_close_the_books_with_the_drives_impulses() {
     let params = Parameters {
