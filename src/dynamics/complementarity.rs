@@ -31,16 +31,19 @@ pub(crate) fn select<const M: usize>(pred: impl Fn(usize) -> bool) -> Set {
 
 /// The held constraints and how each carries tangential force: `stick` at tangential rest, the
 /// others slipping forward (`γ > 0`) or, in `back`, backward. Without friction only `held` is used.
+/// `projected`: the held motion keeps a system's implicit inertia out of the held normals
+/// (`projected.rs`), where through it the contact problem had no solution.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub(crate) struct Contacts {
     pub held: Set,
     pub stick: Set,
     pub back: Set,
+    pub projected: bool,
 }
 
 impl Contacts {
     pub fn frictionless(held: Set) -> Self {
-        Self { held, stick: 0, back: 0 }
+        Self { held, stick: 0, back: 0, projected: false }
     }
 
     pub fn mode(&self, i: usize) -> Mode {
@@ -55,7 +58,7 @@ impl Contacts {
 
     pub fn of<const M: usize>(modes: &[Mode; M]) -> Self {
         let set = |pred: fn(&Mode) -> bool| (0..M).filter(|&i| pred(&modes[i])).fold(0, |s, i| s | 1 << i);
-        Self { held: set(|m| *m != Mode::Open), stick: set(|m| *m == Mode::Stick), back: set(|m| *m == Mode::Slip(-1.0)) }
+        Self { held: set(|m| *m != Mode::Open), stick: set(|m| *m == Mode::Stick), back: set(|m| *m == Mode::Slip(-1.0)), projected: false }
     }
 }
 

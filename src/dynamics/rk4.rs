@@ -2,7 +2,7 @@
 //! and the step of a sample with its contacts held and that step's local error estimate.
 
 use super::complementarity::{Contacts, Frame, Set};
-use super::sample::{acceleration, dissipated, free_motion, motion, sample, sample_of, Forces, Sample};
+use super::sample::{absorbed_power, acceleration, dissipated, free_motion, motion, sample, sample_of, Forces, Sample};
 use super::system::friction_of;
 use super::{Absorbed, DynamicsError, Evaluation, System};
 use nalgebra::SVector;
@@ -200,17 +200,17 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
     let mut middle = Forces::zeros();
     // The system's own absorbed power at stages 2–4, by the same weights, where it absorbs.
     let (mut absorbed, mut absorbing_stage) = ([Absorbed::zeros(); 4], 0);
-    let mut absorb = |t, q: &SVector<f64, N>, v: &SVector<f64, N>, acc: &SVector<f64, N>| {
+    let mut absorb = |t, q: &SVector<f64, N>, v: &SVector<f64, N>, acc: &SVector<f64, N>, taken: f64| {
         if ABSORBS {
             absorbing_stage += 1;
-            absorbed[absorbing_stage] = sys.absorbed_power(t, q, v, acc);
+            absorbed[absorbing_stage] = absorbed_power(sys, (t, q, v, acc), taken);
         }
     };
     let (end, work, impulse) = if contacts.held == 0 {
         let flight = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let (mass, force) = sys.inertia_and_force(t, q, v);
             let acc = free_motion(&mass, &force, t)?.1;
-            absorb(t, q, v, &acc);
+            absorb(t, q, v, &acc, 0.0);
             Ok(acc)
         };
         (step(flight, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work, s0.contact_impulse)
@@ -218,7 +218,7 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
         let mut stage = 0;
         let held = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let (acc, lambda) = acceleration(&sys.evaluate(t, q, v), t, contacts.held)?;
-            absorb(t, q, v, &acc);
+            absorb(t, q, v, &acc, 0.0);
             stage += 1;
             lambdas[stage] = lambda;
             Ok(acc)
@@ -230,7 +230,7 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
         let (mut powers, mut stage) = ([0.0; 4], 0);
         let rubbing = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let m = motion(sys, &sys.evaluate(t, q, v), (t, q, v), contacts)?;
-            absorb(t, q, v, &m.acc);
+            absorb(t, q, v, &m.acc, m.taken);
             stage += 1;
             powers[stage] = dissipated(&m.friction, &m.slip);
             lambdas[stage] = m.lambda;

@@ -4,6 +4,7 @@
 use super::complementarity::{contains, held_acceleration, Contacts, Frame, Mode, Set};
 use super::coulomb::Tangential;
 use super::inertia::Inertia;
+use super::projected::Projected;
 use super::system::friction_of;
 use super::{Absorbed, DynamicsError, Evaluation, System};
 use nalgebra::{SMatrix, SVector};
@@ -128,12 +129,26 @@ impl<const M: usize> Forces<M> {
     }
 }
 
-/// What the held contacts give at one state: `q̈`, `λ_N`, `λ_T` and the slip velocities γ.
+/// What the held contacts give at one state: `q̈`, `λ_N`, `λ_T` and the slip velocities γ; and
+/// the power they take over from the system's implicit force (`Projected::taken`, zero unless
+/// `Contacts::projected`).
 pub(super) struct Motion<const N: usize, const M: usize> {
     pub acc: SVector<f64, N>,
     pub lambda: SVector<f64, M>,
     pub friction: SVector<f64, M>,
     pub slip: SVector<f64, M>,
+    pub taken: f64,
+}
+
+/// The system's absorbed power at `(t, q, q̇, q̈)` with the power `taken` from its implicit force
+/// by projected held contacts (`Motion::taken`) in the whole channel.
+#[inline(always)]
+pub(super) fn absorbed_power<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    (t, q, v, acc): (f64, &SVector<f64, N>, &SVector<f64, N>, &SVector<f64, N>),
+    taken: f64,
+) -> Absorbed {
+    sys.absorbed_power(t, q, v, acc) + Absorbed::new(taken, 0.0, 0.0, 0.0)
 }
 
 /// `Motion` at `(t, q, q̇)` with `contacts` held, from the evaluation there.
@@ -144,22 +159,38 @@ pub(super) fn motion<S: System<N, M>, const N: usize, const M: usize>(
     (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
     contacts: Contacts,
 ) -> Result<Motion<N, M>, DynamicsError> {
+    if contacts.projected && contacts.held != 0 {
+        let projected = Projected::new(sys, ev, (t, q, v), contacts.held)?;
+        let m = motion_through(sys, &projected.ev, (t, q, v), contacts)?;
+        return Ok(Motion { taken: projected.taken(v, &m.acc), ..m });
+    }
+    motion_through(sys, ev, (t, q, v), contacts)
+}
+
+/// `Motion` with the inertia and force of `ev` as they are.
+#[inline(always)]
+fn motion_through<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    ev: &Evaluation<N, M>,
+    (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
+    contacts: Contacts,
+) -> Result<Motion<N, M>, DynamicsError> {
     let Some(mu) = friction_of(sys) else {
         let (acc, lambda) = acceleration(ev, t, contacts.held)?;
-        return Ok(Motion { acc, lambda, friction: SVector::zeros(), slip: SVector::zeros() });
+        return Ok(Motion { acc, lambda, friction: SVector::zeros(), slip: SVector::zeros(), taken: 0.0 });
     };
     let tangents = sys.tangents(t, q, v);
     let slip = tangents.slip(v);
     let (inertia, free_acc) = free_motion(&ev.mass, &ev.force, t)?;
     if contacts.held == 0 {
-        return Ok(Motion { acc: free_acc, lambda: SVector::zeros(), friction: SVector::zeros(), slip });
+        return Ok(Motion { acc: free_acc, lambda: SVector::zeros(), friction: SVector::zeros(), slip, taken: 0.0 });
     }
     // A wedge held is one the laws found at rest.
     let frame = Tangential::new(ev, &tangents, &inertia, mu).wedging(true);
     let modes = std::array::from_fn(|i| contacts.mode(i));
     let b = (Frame::gap_acceleration(ev, &free_acc), tangents.jacobian * free_acc + tangents.bias);
     let s = frame.solve(&modes, (&b.0, &b.1)).ok_or(DynamicsError::DependentContacts { time: t, constraints: contacts.held })?;
-    Ok(Motion { acc: frame.motion(&free_acc, &s), lambda: s.normal, friction: s.tangent, slip })
+    Ok(Motion { acc: frame.motion(&free_acc, &s), lambda: s.normal, friction: s.tangent, slip, taken: 0.0 })
 }
 
 /// The evaluation at `(t, q, q̇)` and its contact frame; `known`: that evaluation, if at hand.
@@ -221,10 +252,10 @@ pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
     v: SVector<f64, N>,
     contacts: Contacts,
 ) -> Result<Sample<N, M>, DynamicsError> {
-    let Motion { acc, lambda, friction, slip } = motion(sys, ev, (t, &q, &v), contacts)?;
+    let Motion { acc, lambda, friction, slip, taken } = motion(sys, ev, (t, &q, &v), contacts)?;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let hdd = ev.gap_jacobian * acc + ev.gap_bias;
-    let absorbed_power = if sys.absorbs() { sys.absorbed_power(t, &q, &v, &acc) } else { Absorbed::zeros() };
+    let absorbed_power = if sys.absorbs() { absorbed_power(sys, (t, &q, &v, &acc), taken) } else { Absorbed::zeros() };
     let s = Sample {
         t,
         q,

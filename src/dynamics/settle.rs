@@ -3,7 +3,8 @@
 //! of held contacts removed between events.
 
 use super::complementarity::{members, select, Contacts, Frame, Set};
-use super::contact_laws::{energy_lost, impact, sliding_law, stick_jump, Jump, Tolerances};
+use super::contact_laws::{energy_lost, impact, stick_jump, Jump, Tolerances};
+use super::projected::Projected;
 use super::sample::{frame_at, sample, sample_of, Sample};
 use super::system::friction_of;
 use super::{Absorbed, DynamicsError, Evaluation, Event, EventKind, Stepper, System};
@@ -64,14 +65,18 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     ) -> Result<(SVector<f64, N>, SVector<f64, N>), DynamicsError> {
         let (t, v, active) = (s.t, s.v, self.contacts.held);
         let (q, ev, frame) = self.onto_contacts(t, s.q, &v, active, frame_at(&self.system, t, &s.q, &v, ev)?)?;
+        // Projected held contacts move the velocity through the linkage's inertia alone (the
+        // implicit term's `M⁻¹ J_Hᵀ`), which the implicit force takes no impulse in.
+        let frame = if self.contacts.projected { Projected::new(&self.system, &ev, (t, &q, &v), active)?.frame(t)? } else { frame };
         let hd = ev.gap_jacobian * v + ev.gap_time_rate;
         let dependent = DynamicsError::DependentContacts { time: t, constraints: active };
         Ok((q, v + frame.projection(&hd, active).ok_or(dependent)?.0))
     }
 
-    /// The work the system's own forces take from the jump `before → after` at `(t, q)`, J.
+    /// The work the system's own forces take from the jump `before → after` at `(t, q)` onto the
+    /// held contacts, J (none where they are projected: see `onto_held`).
     fn absorbed_by_jump(&self, t: f64, q: &SVector<f64, N>, before: &SVector<f64, N>, after: &SVector<f64, N>) -> Absorbed {
-        if self.system.absorbs() {
+        if self.system.absorbs() && !self.contacts.projected {
             self.system.absorbed_by_jump(t, q, before, after)
         } else {
             Absorbed::zeros()
@@ -203,8 +208,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
 
             let mut candidates = closed & ((hold & !impacted) | select::<M>(|i| hd[i] < opts.velocity_tolerance));
             let contacts = loop {
-                let probe = |contacts, steps| self.probe((t, &q, &v), &ev, contacts, steps);
-                let (contacts, acc) = sliding_law(&self.system, tol, (t, &q, &v), (&ev, &frame), candidates, &probe)?;
+                let (contacts, acc) = self.persistent_law(tol, (t, &q, &v), (&ev, &frame), candidates)?;
                 // A held one the law would open slips the way it moves along the surface.
                 let forced = hold & candidates & !contacts.held;
                 let backward = if forced != 0 && friction_of(&self.system).is_some() {
@@ -245,6 +249,12 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         } else {
             let (q, ev, frame) = self.onto_contacts(t, q, &v, onto, (ev, frame))?;
             let hd = ev.gap_jacobian * v + ev.gap_time_rate;
+            // Projected contacts jump through the inertia their motion takes.
+            let projected = if contacts.projected { Some(Projected::new(&self.system, &ev, (t, &q, &v), support)?) } else { None };
+            let (ev, frame) = match &projected {
+                Some(p) => (p.ev.clone(), p.frame(t)?),
+                None => (ev, frame),
+            };
             let jump = match stick_jump(&self.system, tol, (t, &q, &v), &ev, contacts) {
                 Some(jump) => jump,
                 None => {
@@ -258,7 +268,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             let losses = (&jump.lost, &jump.friction_lost);
             self.record((EventKind::Slide, &v), support & !was_active, (&hd, &jump.hd), losses, (jump.normal, jump.tangent));
             stick_losses = (jump.lost, jump.friction_lost);
-            absorbed += self.absorbed_by_jump(t, &q, &v, &jump.v);
+            absorbed += match &projected {
+                Some(p) => p.by_jump(&v, &jump.v),
+                None => self.absorbed_by_jump(t, &q, &v, &jump.v),
+            };
             sample(&self.system, t, q, jump.v, contacts)?
         };
         let none = SVector::zeros();

@@ -80,14 +80,23 @@ fn random_lubricated_engines_all_run() {
     assert!(failed.is_empty(), "{} of 28 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
+/// Designs of the lubricated declared family the sweeps found failing: 1189, a corner's stick and the
+/// slip it started found undone at the very start of each step, 10⁴ times, where the laws and the step
+/// read the corner with films half a step apart (`Stepper::step` now takes such a step again shorter);
+/// 18 of seeds 0–8999 on Painlevé's paradox through the film's implicit inertia (no non-negative
+/// contact force; the law on the linkage's inertia, `dynamics/projected.rs`, has one); 5932, 8561 and
+/// 14312, the film solved at a state predicted through the liner, on its floor (5932: an inertia matrix
+/// 1e16 times the linkage's, not positive definite to round-off; 8561: a corner 2.2e-9 m outside the
+/// bore; the film is now solved at the step's start there).
+const LUBRICATED_DECLARED_FOUND_BY_LARGER_SWEEPS: [u64; 22] =
+    [1189, 1018, 2197, 2293, 2550, 2802, 3345, 3448, 3483, 4272, 4506, 4699, 4890, 5367, 6040, 6983, 8089, 8195, 8405, 5932, 8561, 14312];
+
 /// Lubricated designs over the declared space (`random_designs N 0 "lubricated declared"`, ≈ 0.3 s a
-/// design): the first 40, and 1189, which the sweep found failing: a corner's stick and the slip it
-/// started found undone at the very start of each step, 10⁴ times, where the laws and the step read the
-/// corner with films half a step apart (`Stepper::step` now takes such a step again shorter).
+/// design): the first 40, and those the sweeps found failing.
 #[test]
 fn random_declared_lubricated_designs_all_run() {
-    let failed = failures_of((0..40).chain([1189]), lubricated_declared, |_, _| Ok(()));
-    assert!(failed.is_empty(), "{} of 41 failed:\n{}", failed.len(), failed.join("\n"));
+    let failed = failures_of((0..40).chain(LUBRICATED_DECLARED_FOUND_BY_LARGER_SWEEPS), lubricated_declared, |_, _| Ok(()));
+    assert!(failed.is_empty(), "{} of 62 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
 fn balanced(_: &Design, f: &Finished) -> Result<(), String> {

@@ -133,10 +133,15 @@ impl Engine {
     }
 
     /// An RK4 step begins: the lubricated skirt prepares its film at the state (φ, φ̇) predicted
-    /// into it, with the corners' gaps there (`Lubrication::begin_step`).
-    fn begin_step(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) {
+    /// into it, with the corners' gaps there (`Lubrication::begin_step`); at the step's `start`
+    /// where the prediction puts a corner through the liner, which the step's event search will
+    /// stop at: there the film would sit on its floor, stiffer than the linkage by ≈ 1e16 (random
+    /// lubricated declared design 5932, its inertia matrix then not positive definite to round-off).
+    fn begin_step(&self, predicted: (Vector3<f64>, Vector3<f64>), start: (Vector3<f64>, Vector3<f64>)) {
         if let Some(lubrication) = &self.lubrication {
-            lubrication.begin_step(phi, phid, &self.linkage.gaps(phi));
+            let gaps = self.linkage.gaps(&predicted.0);
+            let ((phi, phid), gaps) = if gaps.min() >= 0.0 { (predicted, gaps) } else { (start, self.linkage.gaps(&start.0)) };
+            lubrication.begin_step(&phi, &phid, &gaps);
         }
     }
 
@@ -363,9 +368,8 @@ impl System<2, 4> for PrescribedCrank {
 
     fn begin_step(&self, t: f64, (q, qd, qdd): (&Vector2<f64>, &Vector2<f64>, &Vector2<f64>), dt: f64) {
         if self.engine.lubrication.is_some() {
-            let (s, q, qd) = predicted(q, qd, qdd, dt);
-            let (phi, phid) = self.full_state(t + s, &q, &qd);
-            self.engine.begin_step(&phi, &phid);
+            let (s, ahead, ahead_rates) = predicted(q, qd, qdd, dt);
+            self.engine.begin_step(self.full_state(t + s, &ahead, &ahead_rates), self.full_state(t, q, qd));
         }
     }
 
@@ -456,7 +460,7 @@ impl System<3, 4> for FreeCrank {
     fn begin_step(&self, _t: f64, (q, qd, qdd): (&Vector3<f64>, &Vector3<f64>, &Vector3<f64>), dt: f64) {
         if self.engine.lubrication.is_some() {
             let (_, phi, phid) = predicted(q, qd, qdd, dt);
-            self.engine.begin_step(&phi, &phid);
+            self.engine.begin_step((phi, phid), (*q, *qd));
         }
     }
 
