@@ -18,7 +18,9 @@ impl PrescribedCrank {
     /// not positive definite there. The jump acts through the inertia the core gave it: an impact
     /// (`impact`) through the linkage's alone (`System::impact_mass`), a projection
     /// through the lubricated skirt's, which depends on `v` and on the film prepared when this is
-    /// asked (after the communication step: not always the one the jump acted through).
+    /// asked (after the communication step: not always the one the jump acted through). A
+    /// projection onto projected contacts (`dynamics/projected.rs`) acts through `M⁻¹ Jᵀ`, the
+    /// linkage's, and is reckoned here through the skirt's all the same: the event does not say.
     pub fn impulse_work(
         &self,
         (t, q, v): (f64, &Vector2<f64>, &Vector2<f64>),
