@@ -98,6 +98,7 @@ impl StepFilm {
         }
         self.current.gram = self.along_secant(b.gram, |p| p.linear.gram);
         self.current.lateral_by_side = self.along_secant(b.lateral_by_side, |p| p.linear.lateral_by_side);
+        self.current.moment_by_side = self.along_secant(b.moment_by_side, |p| p.linear.moment_by_side);
         self.current.at = *motion;
         true
     }
