@@ -2,7 +2,7 @@
 //! measured, for each film relaxation τ and film grid given: the thinnest film per side, the skirt
 //! FMEP, the largest film side force and skirt friction force of the measured cycle, their
 //! differences from the first configuration (the reference), and the wall time per cycle.
-//! The sweeps of `docs/lubricated_skirt.md` (`make film-convergence`):
+//! The sweeps of `documentation/design/lubricated_skirt.md` (`make film-convergence`):
 //! `cargo run --release --example film_convergence -- RPM TAU:NC:NA [TAU:NC:NA …]`.
 
 use pistonslap::fmus::piston_slap::Simulation;

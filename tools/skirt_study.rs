@@ -2,7 +2,7 @@
 //! per engine cycle after the first, the largest impact velocity, the slap energy per wall, the
 //! piston–liner friction mean effective pressure, the smallest film per side, the film's largest
 //! side force and friction force; the wall time as a real-time factor. The figures of
-//! `docs/lubricated_skirt.md`:
+//! `documentation/design/lubricated_skirt.md`:
 //! `cargo run --release --example skirt_study -- [rpm] [cycles] [film_relaxation] [step] [grid across] [grid along]`.
 
 use pistonslap::fmus::piston_slap::Simulation;

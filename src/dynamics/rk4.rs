@@ -187,7 +187,7 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
     // put a corner at +4.6 N where this step's puts it at −0.5 N (lubricated random design 31886).
     // In flight the first stage keeps the step before's film, an O(dt) difference like the other
     // stages' linearisation: there the film carries the motion whole, and the default engine's peak
-    // film force depends less on the step so (`docs/lubricated_skirt.md`).
+    // film force depends less on the step so (`documentation/design/lubricated_skirt.md`).
     let refreshed = if ABSORBS && prepare && contacts.held != 0 { Some(sample(sys, s0.t, s0.q, s0.v, contacts)?.after(s0)) } else { None };
     let s0 = refreshed.as_ref().unwrap_or(s0);
     // Three monomorphizations of the step: a flight's stages need `M` and `f` alone, and
