@@ -2,7 +2,7 @@
 cannot drift from it.
 
 python -m pistonslap.variable_table documentation/variables.md      rewrites the part between the two markers below
-python -m pistonslap.variable_table --check README.md   exit 1 when that part differs from the FMU's table
+python -m pistonslap.variable_table --check documentation/variables.md   exit 1 when that part differs from the FMU's table
 """
 
 import sys
