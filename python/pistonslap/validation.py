@@ -151,13 +151,14 @@ def fed_cycles(h, first_order, cycles=2):
         slave.setInteger([vr["pressure_source"]], [1])
         slave.enterInitializationMode()
         slave.exitInitializationMode()
-        fastest = 0.0
+        fastest, t = 0.0, 0.0
         for k in range(steps):
             p, dp = pressure(FED_SPEED * k * h)
             slave.setReal([vr["gas_pressure"]], [p])
             if first_order:
                 slave.setRealInputDerivatives([vr["gas_pressure"]], [1], [FED_SPEED * dp])
-            slave.doStep(currentCommunicationPoint=k * h, communicationStepSize=h)
+            slave.doStep(currentCommunicationPoint=t, communicationStepSize=h)
+            t += h
             if k + 1 == warm_up:
                 energy_at_warm_up = slave.getReal([vr["impact_energy_total"]])[0]
             elif k + 1 > warm_up:
@@ -265,8 +266,14 @@ def published_piston_table():
                 f"{np.max(np.abs(cycle['piston_lateral_velocity'])) * 1e3:.1f} mm/s",
             )
         )
-    header = ("skirt profile (top / bottom drop)", "FMEP", "top eccentricity, thrust", "bottom, anti-thrust")
-    return _table(header + ("peak lateral speed",), rows)
+    header = (
+        "skirt profile (top / bottom drop)",
+        "FMEP",
+        "top eccentricity, thrust",
+        "bottom, anti-thrust",
+        "peak lateral speed",
+    )
+    return _table(header, rows)
 
 
 TABLES = {

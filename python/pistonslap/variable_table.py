@@ -1,8 +1,8 @@
 """The variable tables of documentation/variables.md, generated from the FMU's model description so that they
 cannot drift from it.
 
-python -m pistonslap.variable_table documentation/variables.md      rewrites the part between the two markers below
-python -m pistonslap.variable_table --check documentation/variables.md   exit 1 when that part differs from the FMU's table
+python -m pistonslap.variable_table documentation/variables.md          rewrites the part between the markers below
+python -m pistonslap.variable_table --check documentation/variables.md  exit 1 where that part differs from the FMU's
 """
 
 import sys

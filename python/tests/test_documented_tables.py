@@ -50,7 +50,8 @@ def measured_tables(page):
             k = end + 1
             table = []
             while k < len(lines) and (
-                lines[k].startswith("|") or (not lines[k].strip() and k + 1 < len(lines) and lines[k + 1].startswith("|"))
+                lines[k].startswith("|")
+                or (not lines[k].strip() and k + 1 < len(lines) and lines[k + 1].startswith("|"))
             ):
                 table.append(lines[k])
                 k += 1
