@@ -71,7 +71,7 @@ fn main() {
     let mut reference: Option<Measured> = None;
     for (tau, grid) in configurations {
         let m = run(rpm, tau, grid);
-        let label = format!("{tau:.3e} s, {} × {}", grid.0, grid.1);
+        let label = format!("{tau:e} s, {} × {}", grid.0, grid.1);
         match &reference {
             None => println!(
                 "| {label} | {:.3} / {:.3} µm | {:.5} bar | {:.1} N | {:.2} N |",
