@@ -98,7 +98,7 @@ soak:
 
 # The lubricated skirt's convergence in the film relaxation τ (at the default grid) and in the film grid (at the
 # default τ), the default engine at 1200 and 3000 rpm, the second cycle of each run against the first row's: the
-# tables of documentation/validation/lubricated_skirt.md, which `make test` checks.
+# tables of documentation/validation/lubricated_skirt.md, which `make test` checks (seconds on the 2-CPU machine).
 film-convergence:
 	cargo run --release --example film_convergence -- 1200 1.25e-5:16:24 2.5e-5:16:24 5e-5:16:24 1e-4:16:24
 	cargo run --release --example film_convergence -- 1200 1e-4:24:36 1e-4:16:24 1e-4:12:18 1e-4:8:12

@@ -4,9 +4,9 @@
   (`python -m pistonslap.variable_table documentation/variables.md` regenerates them).
 - Every table of `documentation/validation/` follows the command that regenerates it (a fenced `sh` block of one
   line) and is exactly what that command prints now: a table that no longer reproduces fails here and is regenerated
-  with its command, never loosened. `cargo run --release --example NAME -- ARGS` runs the tool as written (built by
-  `cargo test --release` before pytest in `make test`); `.venv/bin/python -m pistonslap.validation ARGS` runs in this
-  process, so that the runs it shares with the tests asserting on them (`pistonslap.validation`'s caches) run once.
+  with its command, never loosened. `cargo run --release --example NAME -- ARGS` runs the tool as written (cargo
+  builds it where it is not yet built); `.venv/bin/python -m pistonslap.validation ARGS` runs in this process, so
+  that the runs it shares with the tests asserting on them (`pistonslap.validation`'s caches) run once.
 """
 
 import contextlib
