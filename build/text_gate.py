@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
-"""The text gate of `make test`: the comments of `src/` and the design documents say what is true and why, in the
-present tense. History (what was tried, what ran before, what a stop changed) belongs in CHANGELOG.md and the commit
-messages; design and seed numbers of the random families belong in the tests that pin them
+"""The text gate of `make test`: the comments of `src/` and the design documents (ARCHITECTURE.md,
+documentation/design/) say what is true and why, in the present tense. History (what was tried, what ran before,
+what a stop changed) belongs in CHANGELOG.md and the commit messages; design and seed numbers of the random families belong in the tests that pin them
 (tests/crank_train/random_designs.rs), with one line of what each pins.
 
     python3 build/text_gate.py        prints every offending line as path:line: text, exits 1 if there is one
@@ -59,7 +59,7 @@ def offences():
         for number, text in comments(path):
             if PATTERN.search(text):
                 yield path, number, text.strip()
-    for path in sorted((ROOT / "documentation" / "design").glob("*.md")):
+    for path in [ROOT / "ARCHITECTURE.md", *sorted((ROOT / "documentation" / "design").glob("*.md"))]:
         for number, text in enumerate(path.read_text().splitlines(), 1):
             if PATTERN.search(text):
                 yield path, number, text.strip()
@@ -69,7 +69,7 @@ def main():
     found = list(offences())
     for path, number, text in found:
         print(f"{path.relative_to(ROOT)}:{number}: {text}")
-    scanned = "src/ comments and documentation/design/"
+    scanned = "src/ comments, ARCHITECTURE.md and documentation/design/"
     if found:
         print(f"text gate: {len(found)} lines of history or design/seed numbers in {scanned}", file=sys.stderr)
         return 1
