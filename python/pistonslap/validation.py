@@ -5,6 +5,9 @@ markdown its page holds (`python/tests/test_validation_tables.py` checks every p
     python -m pistonslap.validation input-derivatives                 a fed pressure, held against first order
     python -m pistonslap.validation coupled                           EngineCycle → PistonSlap, held or interpolated
     python -m pistonslap.validation published-piston                  Lu et al.'s diesel on oil, six skirt profiles
+    python -m pistonslap.validation landings ENGINE RPM [RPM ...]     landings on oil against ±1 mm of pin offset
+    python -m pistonslap.validation landing-clearance ENGINE RPM ...  landings on oil against the clearance
+    python -m pistonslap.validation vanishing-film ENGINE RPM         landings as the oil thins toward the dry skirt
 
 The runs are cached per process, so that the tests which assert on the same runs share them.
 """
@@ -43,26 +46,20 @@ PIN_OFFSET_CYCLES = 6
 
 
 @cache
-def last_cycle_metrics(engine, rpm, pin_offset_mm):
-    """The FMU's cycle_ outputs after `PIN_OFFSET_CYCLES` cycles of preset `engine` at `rpm` with the pin offset
-    by `pin_offset_mm` toward the major-thrust wall, run as `pistonslap demo` runs it (its sampling, its stop)."""
+def last_cycle(engine, rpm, overrides=(), cycles=PIN_OFFSET_CYCLES):
+    """The FMU's outputs at the end of `cycles` cycles of preset `engine` at `rpm` with the parameters `overrides`
+    ((name, SI value) pairs), run as `pistonslap demo` runs it (its sampling, its stop): the last completed cycle's
+    `cycle_` outputs."""
     omega = rpm * np.pi / 30
     interval = np.radians(SAMPLE_DEG) / omega
-    values = dict(PRESETS[engine].values, crank_speed=omega, pin_offset=pin_offset_mm * 1e-3)
-    result = simulate(
-        stop_time=(PIN_OFFSET_CYCLES * CYCLE - CENTRED) / omega + interval,
-        output_interval=interval,
-        start_values=values,
-        output=[
-            "cycle_slaps_thrust",
-            "cycle_slaps_antithrust",
-            "cycle_max_slap_energy_thrust",
-            "cycle_max_slap_energy_antithrust",
-            "cycle_impacts",
-            "cycle_impact_energy",
-        ],
-    )
+    values = dict(PRESETS[engine].values, crank_speed=omega, **dict(overrides))
+    result = simulate(stop_time=(cycles * CYCLE - CENTRED) / omega + interval, output_interval=interval, start_values=values)
     return result[-1]
+
+
+def last_cycle_metrics(engine, rpm, pin_offset_mm):
+    """`last_cycle` with the pin offset by `pin_offset_mm` toward the major-thrust wall."""
+    return last_cycle(engine, rpm, (("pin_offset", pin_offset_mm * 1e-3),))
 
 
 def pin_offset_table(engine, speeds):
@@ -88,6 +85,97 @@ def pin_offset_table(engine, speeds):
         "largest slap, anti-thrust",
         "impacts, energy",
     )
+    return _table(header, rows)
+
+
+# --- slap on oil: landings --------------------------------------------------------------------------------------------
+
+#: Cycles each run on oil lasts; the tables read the last.
+OIL_CYCLES = 4
+UJ = 1e6
+
+
+def _landing(m, wall):
+    """The largest landing on `wall` of a last cycle: its energy in µJ and its crank angle from firing TDC."""
+    return f"{m[f'cycle_landing_energy_{wall}'] * UJ:.3g} µJ at {np.degrees(m[f'cycle_landing_crank_angle_{wall}']):.0f}°".replace("-", "−")
+
+
+def _cushioned(m, wall):
+    energy = m[f"cycle_landing_energy_{wall}"]
+    return f"{100 * m[f'cycle_landing_loss_{wall}'] / energy:.0f} %" if energy > 0 else "–"
+
+
+def _rise(m, wall):
+    return f"{m[f'cycle_max_liner_force_rate_{wall}'] * 1e-6:.2f} kN/ms"
+
+
+def _on_oil(engine, rpm, **overrides):
+    return last_cycle(engine, rpm, tuple(sorted(dict(skirt_model=2, **overrides).items())), OIL_CYCLES)
+
+
+def landings_table(engine, speeds):
+    """Landings on the oiled skirt against ±1 mm of pin offset."""
+    rows = []
+    for rpm in speeds:
+        for offset, shown in ((-1, "−1 mm"), (0, "0"), (1, "+1 mm")):
+            m = _on_oil(engine, rpm, pin_offset=offset * 1e-3)
+            rows.append(
+                (
+                    f"{rpm:g} rpm",
+                    shown,
+                    f"{m['cycle_landings_thrust']} / {m['cycle_landings_antithrust']}",
+                    _landing(m, "thrust"),
+                    _cushioned(m, "thrust"),
+                    _rise(m, "thrust"),
+                    _landing(m, "antithrust"),
+                    f"{m['cycle_skirt_fmep'] * 1e-5:.3f} bar",
+                )
+            )
+    header = (
+        "speed",
+        "pin offset",
+        "landings thrust / anti-thrust",
+        "largest landing, thrust",
+        "cushioned",
+        "thrust load rise",
+        "largest landing, anti-thrust",
+        "skirt FMEP",
+    )
+    return _table(header, rows)
+
+
+def landing_clearance_table(engine, speeds):
+    """Landings on the oiled skirt against the clearance: half, the preset's, twice."""
+    rows = []
+    defaults = PRESETS[engine].values
+    piston = defaults.get("piston_diameter", 0.08)
+    clearance = defaults.get("bore", 0.08008) - piston
+    for rpm in speeds:
+        for factor in (0.5, 1, 2):
+            m = _on_oil(engine, rpm, bore=piston + factor * clearance)
+            rows.append(
+                (
+                    f"{rpm:g} rpm",
+                    f"{factor * clearance * 1e6:.0f} µm",
+                    _landing(m, "thrust"),
+                    _rise(m, "thrust"),
+                    _landing(m, "antithrust"),
+                    _rise(m, "antithrust"),
+                )
+            )
+    header = ("speed", "clearance", "largest landing, thrust", "thrust load rise", "largest landing, anti-thrust", "anti-thrust load rise")
+    return _table(header, rows)
+
+
+def vanishing_film_table(engine, rpm):
+    """The largest landings as the oil thins toward the dry skirt (asperities as the preset has them)."""
+    rows = []
+    for viscosity in (10e-3, 1e-3, 0.1e-3, 0.01e-3):
+        m = _on_oil(engine, float(rpm), oil_viscosity=viscosity)
+        rows.append((f"{viscosity * 1e3:g} mPa·s", _landing(m, "thrust"), _cushioned(m, "thrust"), _landing(m, "antithrust"), str(m["cycle_impacts"])))
+    m = last_cycle(engine, float(rpm), (("skirt_model", 1),), OIL_CYCLES)
+    rows.append(("dry", _landing(m, "thrust"), _cushioned(m, "thrust"), _landing(m, "antithrust"), str(m["cycle_impacts"])))
+    header = ("oil", "largest landing, thrust", "taken by the landing", "largest landing, anti-thrust", "impacts")
     return _table(header, rows)
 
 
@@ -281,6 +369,9 @@ TABLES = {
     "input-derivatives": input_derivatives_table,
     "coupled": coupled_table,
     "published-piston": published_piston_table,
+    "landings": lambda engine, *speeds: landings_table(engine, [float(s) for s in speeds]),
+    "landing-clearance": lambda engine, *speeds: landing_clearance_table(engine, [float(s) for s in speeds]),
+    "vanishing-film": vanishing_film_table,
 }
 
 
