@@ -53,7 +53,9 @@ def last_cycle(engine, rpm, overrides=(), cycles=PIN_OFFSET_CYCLES):
     omega = rpm * np.pi / 30
     interval = np.radians(SAMPLE_DEG) / omega
     values = dict(PRESETS[engine].values, crank_speed=omega, **dict(overrides))
-    result = simulate(stop_time=(cycles * CYCLE - CENTRED) / omega + interval, output_interval=interval, start_values=values)
+    result = simulate(
+        stop_time=(cycles * CYCLE - CENTRED) / omega + interval, output_interval=interval, start_values=values
+    )
     return result[-1]
 
 
@@ -97,7 +99,8 @@ UJ = 1e6
 
 def _landing(m, wall):
     """The largest landing on `wall` of a last cycle: its energy in µJ and its crank angle from firing TDC."""
-    return f"{m[f'cycle_landing_energy_{wall}'] * UJ:.3g} µJ at {np.degrees(m[f'cycle_landing_crank_angle_{wall}']):.0f}°".replace("-", "−")
+    energy, angle = m[f"cycle_landing_energy_{wall}"] * UJ, np.degrees(m[f"cycle_landing_crank_angle_{wall}"])
+    return f"{energy:.3g} µJ at {angle:.0f}°".replace("-", "−")
 
 
 def _cushioned(m, wall):
@@ -163,7 +166,14 @@ def landing_clearance_table(engine, speeds):
                     _rise(m, "antithrust"),
                 )
             )
-    header = ("speed", "clearance", "largest landing, thrust", "thrust load rise", "largest landing, anti-thrust", "anti-thrust load rise")
+    header = (
+        "speed",
+        "clearance",
+        "largest landing, thrust",
+        "thrust load rise",
+        "largest landing, anti-thrust",
+        "anti-thrust load rise",
+    )
     return _table(header, rows)
 
 
@@ -172,9 +182,19 @@ def vanishing_film_table(engine, rpm):
     rows = []
     for viscosity in (10e-3, 1e-3, 0.1e-3, 0.01e-3):
         m = _on_oil(engine, float(rpm), oil_viscosity=viscosity)
-        rows.append((f"{viscosity * 1e3:g} mPa·s", _landing(m, "thrust"), _cushioned(m, "thrust"), _landing(m, "antithrust"), str(m["cycle_impacts"])))
+        rows.append(
+            (
+                f"{viscosity * 1e3:g} mPa·s",
+                _landing(m, "thrust"),
+                _cushioned(m, "thrust"),
+                _landing(m, "antithrust"),
+                str(m["cycle_impacts"]),
+            )
+        )
     m = last_cycle(engine, float(rpm), (("skirt_model", 1),), OIL_CYCLES)
-    rows.append(("dry", _landing(m, "thrust"), _cushioned(m, "thrust"), _landing(m, "antithrust"), str(m["cycle_impacts"])))
+    rows.append(
+        ("dry", _landing(m, "thrust"), _cushioned(m, "thrust"), _landing(m, "antithrust"), str(m["cycle_impacts"]))
+    )
     header = ("oil", "largest landing, thrust", "taken by the landing", "largest landing, anti-thrust", "impacts")
     return _table(header, rows)
 
