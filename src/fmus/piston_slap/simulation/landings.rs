@@ -8,11 +8,11 @@
 //! exceed the carrying wall's (taken linearly between two communication points) says that the side
 //! changed: the piston, at rest across the bore then, is pushed over and lands on the new wall's
 //! film, which takes its energy gradually; the landing starts where the lateral motion's kinetic
-//! energy first peaks after the crossing (the communication point of that peak). The first arrival
-//! after the start only sets the carrying wall. A landing lasts from its side change (the impact, or
-//! the crossing) to the next. Its loss is its impacts' losses on its wall (normal and friction), and
-//! for a landing on the film the drop of the lateral kinetic energy from the start to where the
-//! motion settles (its first minimum after the start): what the film took of the arrival, not the
+//! energy peaks between the crossing and the wall's peak load (the communication point of that
+//! peak). The first arrival after the start only sets the carrying wall. A landing lasts from its side
+//! change (the impact, or the crossing) to the next. Its loss is its impacts' losses on its wall (normal
+//! and friction), and for a landing on the film the drop of the lateral kinetic energy from the start
+//! to its least value before the wall's load peaks: what the film took of the arrival, not the
 //! work it goes on taking from the side force that presses the piston into it (a hundred times more
 //! on a firing stroke). On a dry skirt the loss is the sum of its impacts' `energy_lost`. Loads and
 //! their rise rates are read at the communication points.
@@ -96,9 +96,8 @@ pub struct Landing {
     approach: f64,
     /// J, its impacts' losses.
     impact_loss: f64,
-    /// J, the lateral kinetic energy's running minimum since the start, until it rises again.
+    /// J, the lateral kinetic energy's least value after the start, up to the wall's load peak.
     settling: f64,
-    settled: bool,
     /// J, the energy it took from the lateral motion and tilt (set when it ends).
     loss: f64,
     /// N, the wall's peak load, and rad (accumulated) where.
@@ -110,9 +109,9 @@ pub struct Landing {
     impacts: i32,
     /// s, where it ended (the next landing's side change).
     end: f64,
-    /// Found by the loads' crossing; its start still following the kinetic energy's rise.
-    by_loads: bool,
-    arriving: bool,
+    /// Found by the loads' crossing: the point of the largest lateral kinetic energy since, and the
+    /// least after it, which become the start and the settled energy where the wall's load peaks.
+    arrival: Option<(Point, f64)>,
 }
 
 impl Landing {
@@ -230,7 +229,7 @@ impl Landings {
                 let at = last.toward(&now, s);
                 self.land(&at, other, leads(&at, other), at.kinetic, ended);
                 if let Some(l) = self.current.as_mut() {
-                    (l.arriving, l.by_loads) = (true, true);
+                    l.arrival = Some((at, at.kinetic));
                 }
                 self.wall = Some(other);
             }
@@ -243,7 +242,7 @@ impl Landings {
     fn land(&mut self, at: &Point, wall: Wall, top_leads: bool, kinetic: f64, ended: &mut Vec<Landing>) {
         if let Some(mut l) = self.current.take() {
             // Found by the loads, the landing took what its arrival's kinetic energy lost.
-            let cushioned = if l.by_loads { l.kinetic - l.settling } else { 0.0 };
+            let cushioned = if l.arrival.is_some() { l.kinetic - l.settling } else { 0.0 };
             l.loss = l.impact_loss + cushioned;
             l.end = at.time;
             self.finish(&l);
@@ -280,19 +279,22 @@ impl Landings {
             self.approach = Some(*now);
         }
         if let Some(l) = self.current.as_mut() {
-            // A landing found by the loads' crossing starts at the lateral kinetic energy's first peak.
-            if l.arriving && now.kinetic >= l.kinetic {
-                (l.time, l.angle, l.kinetic, l.top_leads) = (now.time, now.angle, now.kinetic, leads(now, l.wall));
-                (l.approach, l.settling) = (l.approach.max(now.kinetic), now.kinetic);
-            } else if !l.settled && now.kinetic <= l.settling {
-                (l.arriving, l.settling) = (false, now.kinetic);
-            } else {
-                (l.arriving, l.settled) = (false, true);
+            if let Some((largest, least)) = l.arrival.as_mut() {
+                if now.kinetic > largest.kinetic {
+                    (*largest, *least) = (*now, now.kinetic);
+                } else {
+                    *least = least.min(now.kinetic);
+                }
             }
             l.peak_rate = l.peak_rate.max(rates[l.wall]);
             if now.loads[l.wall] > l.peak {
                 (l.peak, l.peak_angle) = (now.loads[l.wall], now.angle);
                 self.approach = Some(*now);
+                // On the film the landing starts where the arrival's kinetic energy peaked before the load did.
+                if let Some((at, least)) = l.arrival {
+                    (l.time, l.angle, l.kinetic, l.top_leads) = (at.time, at.angle, at.kinetic, leads(&at, l.wall));
+                    (l.approach, l.settling) = (l.approach.max(at.kinetic), least);
+                }
             }
         }
         let cycle = cycle_of(now.angle);

