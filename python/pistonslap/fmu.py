@@ -31,6 +31,26 @@ EVENT_DTYPE = np.dtype(
     ]
 )
 
+#: Rows of the `landing_log` CSV, one per finished landing (the piston's arrival on a wall after it left the other,
+#: whatever carries it: corners, asperities or film), in the order of its header; SI units, crank angles in rad from
+#: firing TDC in [-2π, 2π), `wall` thrust or antithrust, `leading_end` top or bottom.
+LANDING_DTYPE = np.dtype(
+    [
+        ("time", "f8"),
+        ("crank_angle", "f8"),
+        ("wall", "U10"),
+        ("leading_end", "U6"),
+        ("kinetic_energy", "f8"),
+        ("max_approach_kinetic_energy", "f8"),
+        ("energy_loss", "f8"),
+        ("peak_force", "f8"),
+        ("peak_force_crank_angle", "f8"),
+        ("peak_force_rate", "f8"),
+        ("impacts", "i4"),
+        ("end_time", "f8"),
+    ]
+)
+
 
 def fmu_path() -> Path:
     """The FMU to run: `$PISTONSLAP_FMU` if set, else the one this package carries (`PACKAGED_FMU`)."""
@@ -66,27 +86,60 @@ def simulate_with_events(log_path=None, start_values=None, **kwargs):
 
     The log goes to `log_path` when given (and stays there), else to a temporary file.
     """
+    result, events, _ = simulate_with_logs(log_path, start_values=start_values, **kwargs)
+    return result, events
+
+
+def simulate_with_logs(log_path=None, landing_log_path=None, start_values=None, **kwargs):
+    """Like `simulate`, with the FMU's `impact_log` and `landing_log` switched on; returns `(result, events,
+    landings)`, the logs as arrays of `EVENT_DTYPE` and `LANDING_DTYPE` (None for `landings` when the FMU has no
+    `landing_log` parameter: an FMU built before the landings).
+
+    Each log goes to its path when given (and stays there), else to a temporary file.
+    """
     with tempfile.TemporaryDirectory() as tmp:
         log = Path(log_path) if log_path is not None else Path(tmp) / "impact_log.csv"
+        landing = Path(landing_log_path) if landing_log_path is not None else Path(tmp) / "landing_log.csv"
         values = dict(start_values or {}, impact_log=str(log))
+        if has_landing_log(kwargs.get("model_description") or kwargs.get("fmu")):
+            values["landing_log"] = str(landing)
         result = simulate(start_values=values, **kwargs)
-        return result, read_impact_log(log)
+        landings = read_landing_log(landing) if "landing_log" in values else None
+        return result, read_impact_log(log), landings
 
 
-def read_impact_log(path) -> np.ndarray:
-    """The `impact_log` CSV as a structured array of `EVENT_DTYPE` (one row per impact, slide or release)."""
+def has_landing_log(fmu=None):
+    """Whether the FMU (`fmu`: its model description, a file or an extracted folder; default `fmu_path()`) has the
+    `landing_log` parameter."""
+    md = fmu if hasattr(fmu, "modelVariables") else fmpy.read_model_description(str(fmu or fmu_path()))
+    return any(v.name == "landing_log" for v in md.modelVariables)
+
+
+def _read_log(path, dtype, what):
+    """A CSV log of the FMU as a structured array of `dtype`, its header checked; lines starting with `#` (a
+    statement of conventions) are skipped."""
     with open(path, newline="") as f:
         reader = csv.reader(line for line in f if not line.startswith("#"))
-        header = tuple(next(reader))
-        if header != EVENT_DTYPE.names:
-            raise ValueError(f"{path}: header {header} is not the impact log's {EVENT_DTYPE.names}")
-        types = [EVENT_DTYPE[name].type for name in EVENT_DTYPE.names]
+        header = tuple(next(reader, ()))
+        if header != dtype.names:
+            raise ValueError(f"{path}: header {header} is not the {what}'s {dtype.names}")
+        types = [dtype[name].type for name in dtype.names]
         rows = []
         for number, row in enumerate(reader, start=1):
             if len(row) != len(types):
                 raise ValueError(f"{path}: row {number} has {len(row)} fields, the header {len(types)}")
             rows.append(tuple(t(value) for t, value in zip(types, row, strict=True)))
-    return np.array(rows, dtype=EVENT_DTYPE)
+    return np.array(rows, dtype=dtype)
+
+
+def read_impact_log(path) -> np.ndarray:
+    """The `impact_log` CSV as a structured array of `EVENT_DTYPE` (one row per impact, slide or release)."""
+    return _read_log(path, EVENT_DTYPE, "impact log")
+
+
+def read_landing_log(path) -> np.ndarray:
+    """The `landing_log` CSV as a structured array of `LANDING_DTYPE` (one row per finished landing)."""
+    return _read_log(path, LANDING_DTYPE, "landing log")
 
 
 def input_signals(time, **signals) -> np.ndarray:

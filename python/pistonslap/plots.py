@@ -16,6 +16,8 @@ from matplotlib.animation import FuncAnimation, PillowWriter
 from matplotlib.patches import Polygon
 
 from .fmu import CENTRED, from_firing_tdc
+from .liner_load import decibels, order_spectrum, third_octaves
+from .tables import WALLS
 
 CORNERS = (1, 2, 3, 4)
 #: (label, corners, colour) of the two walls.
@@ -39,16 +41,17 @@ def _legend(ax, ncol=4):
     ax.legend(loc="lower right", bbox_to_anchor=(1, 1), ncol=ncol, fontsize="small", frameon=False)
 
 
-def _save(fig, path):
-    fig.tight_layout()
+def _save(fig, path, rect=(0, 0, 1, 1)):
+    fig.tight_layout(rect=rect)
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return path
 
 
-def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED):
-    """Eccentricity of the skirt top and bottom and of the pin, tilt, contact states (a bar per corner while in
-    sliding contact), and contact force per corner."""
+def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED, lubricated=False):
+    """Eccentricity of the skirt top and bottom and of the pin, tilt, then for the dry skirt the contact states (a bar
+    per corner while in sliding contact) and contact force per corner, for the lubricated one (`lubricated`, its
+    corners never touch) the thinnest film per side and each wall's load with the asperity load."""
     deg = np.degrees(angle)
     fig, (lateral, tilt, states, forces) = _axes(4, "Piston secondary motion over one engine cycle", case, origin)
     for name, label, style in (
@@ -75,6 +78,15 @@ def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED):
     _legend(lateral, ncol=3)
     tilt.plot(deg, result["piston_tilt"] * 1e3)
     tilt.set_ylabel("tilt [mrad]\n(+ counterclockwise)")
+    if lubricated:
+        _film_and_wall_loads(states, forces, deg, result)
+    else:
+        _corner_contacts(states, forces, deg, result)
+    return _save(fig, path)
+
+
+def _corner_contacts(states, forces, deg, result):
+    """A bar per corner while in sliding contact, and each corner's contact force."""
     for corner in CORNERS:
         in_contact = result[f"contact_state_{corner}"] > 0
         states.fill_between(deg, corner - 0.35, corner + 0.35, where=in_contact, step="post", label=f"K{corner}")
@@ -84,15 +96,114 @@ def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED):
     states.set_ylabel("sliding contact")
     forces.set_ylabel("contact force [kN]")
     _legend(forces)
-    return _save(fig, path)
 
 
-def slap(events, is_slap, slap_threshold, path, case, origin=CENTRED):
-    """Every impact of one cycle against the crank angle, by wall, on linear scales: the energy its normal
-    (restitution) part dissipated, and its normal approach speed with the slap threshold drawn. Slaps (`is_slap`: the
-    landings on the other wall, `slap_rows`) are filled on stems, the other impacts hollow. Rows of the impact log
-    only: no quantity here depends on the communication step."""
-    fig, (energy, speed) = _axes(2, "Piston slap: impacts over one engine cycle", case, origin)
+def _film_and_wall_loads(film, loads, deg, result):
+    """The thinnest film on each side, and each wall's normal load (film, asperities and corners) with the asperity
+    load (per side where the FMU gives it, else both sides together)."""
+    for side, (label, _, colour) in zip(WALLS, SIDES, strict=True):
+        name = label.split(" (")[0]
+        film.plot(deg, result[f"min_film_thickness_{side}"] * 1e6, color=colour, label=name)
+        loads.plot(deg, result[f"liner_force_{side}"] * 1e-3, color=colour, label=f"{name} wall load")
+        if f"asperity_force_{side}" in result.dtype.names:
+            loads.plot(deg, result[f"asperity_force_{side}"] * 1e-3, color=colour, ls="--", label=f"{name} asperities")
+    if "asperity_force_thrust" not in result.dtype.names:
+        loads.plot(deg, result["asperity_force"] * 1e-3, color="k", ls="--", lw=0.8, label="asperities (both sides)")
+    film.set_ylim(bottom=0)
+    film.set_ylabel("minimum film\nthickness [µm]")
+    _legend(film, ncol=2)
+    loads.set_ylabel("liner load [kN]")
+    _legend(loads, ncol=3)
+
+
+#: MAHLE's crank-angle windows of the liner's acceleration (deg from firing TDC): (name, start, end).
+MAHLE_WINDOWS = (("rattling", -2.0, 8.0), ("croaking", 8.0, 20.0))
+_WINDOW_COLOURS = ("0.75", "0.88")
+
+
+def slap(
+    events,
+    is_slap,
+    slap_threshold,
+    path,
+    case,
+    origin=CENTRED,
+    landings=None,
+    loads=None,
+    lubricated=False,
+):
+    """One cycle's landings and impacts against the crank angle, by wall, on linear scales.
+
+    With `landings` (rows of the landing log in the cycle): the piston's lateral kinetic energy at each landing's
+    start (filled, on stems) and the energy the landing took from it (hollow). With `loads` (`(angle, result)`, the
+    cycle's samples): each wall's load rise rate between samples. Then, when the cycle had impacts: the energy each
+    impact's normal (restitution) part dissipated, and its normal approach speed with the slap threshold drawn; slaps
+    (`is_slap`: the landings on the other wall, `slap_rows`) filled on stems, the other impacts hollow. Without
+    impacts a line says so (on oil, `lubricated`: that the skirt rode on its film). MAHLE's rattling and croaking
+    windows are shaded."""
+    impacts = events["kind"] == "impact"
+    panels = (["landings"] if landings is not None else []) + (["rate"] if loads is not None else [])
+    panels += ["energy", "speed"] if impacts.any() or not panels else []
+    fig, axes = _axes(len(panels), "Piston slap: landings and impacts over one engine cycle", case, origin)
+    axes = dict(zip(panels, axes, strict=True))
+    if "landings" in axes:
+        _landings(axes["landings"], landings, origin)
+    if "rate" in axes:
+        _force_rates(axes["rate"], *loads)
+    if "energy" in axes:
+        _impacts(axes["energy"], axes["speed"], events, is_slap, slap_threshold, origin)
+    if not impacts.any():
+        fig.text(
+            0.5,
+            0.005,
+            "No impacts in this cycle: the skirt rode on its oil film"
+            if lubricated
+            else "No impacts in this cycle: the piston slid along the liner",
+            ha="center",
+            va="bottom",
+            fontsize="small",
+            style="italic",
+        )
+    _mahle_windows(list(axes.values()), origin)
+    for ax in axes.values():
+        _zero_near_bottom(ax)
+    return _save(fig, path, rect=(0, 0.025, 1, 1))
+
+
+def _zero_near_bottom(ax):
+    """The zero line a little above the bottom, so that values next to nothing stay visible."""
+    top = max(ax.get_ylim()[1], 1e-9)
+    ax.set_ylim(-0.04 * top, top)
+    ax.axhline(0, color="0.6", lw=0.5, zorder=1)
+
+
+def _landings(ax, landings, origin):
+    """Per wall, each landing's lateral kinetic energy at its start (filled, on a stem) and the energy it took."""
+    deg = np.degrees(from_firing_tdc(landings["crank_angle"], origin))
+    for side, (label, _, colour) in zip(WALLS, SIDES, strict=True):
+        mine = landings["wall"] == side
+        name = label.split(" (")[0]
+        energy, loss = landings["kinetic_energy"][mine] * 1e3, landings["energy_loss"][mine] * 1e3
+        ax.vlines(deg[mine], 0, energy, color=colour, lw=1)
+        ax.plot(deg[mine], energy, "o", color=colour, ms=5, zorder=4, label=f"{name}: {mine.sum()} landings, energy")
+        ax.plot(deg[mine], loss, "D", mfc="none", color=colour, ms=5, mew=1, zorder=4, label=f"{name}: energy taken")
+    ax.set_ylabel("lateral kinetic energy\nat landing [mJ]")
+    _legend(ax, ncol=2)
+
+
+def _force_rates(ax, angle, result):
+    """Per wall, the rise rate of its load between consecutive samples (falls not drawn), at the later sample."""
+    deg = np.degrees(angle)
+    time = result["time"]
+    for side, (label, _, colour) in zip(WALLS, SIDES, strict=True):
+        rate = np.diff(result[f"liner_force_{side}"]) / np.diff(time)
+        ax.plot(deg[1:], np.maximum(rate, 0) * 1e-6, color=colour, lw=0.9, label=label.split(" (")[0])
+    ax.set_ylabel("wall load rise\nrate [kN/ms]")
+    _legend(ax, ncol=2)
+
+
+def _impacts(energy, speed, events, is_slap, slap_threshold, origin):
+    """Every impact's dissipated energy and approach speed by wall, slaps filled on stems, the threshold drawn."""
     impacts = events["kind"] == "impact"
     deg = np.degrees(from_firing_tdc(events["crank_angle"], origin))
     for label, corners, colour in SIDES:
@@ -119,13 +230,33 @@ def slap(events, is_slap, slap_threshold, path, case, origin=CENTRED):
     )
     energy.set_ylabel("energy dissipated\nper impact [mJ]")
     speed.set_ylabel("impact speed [mm/s]")
-    for ax in (energy, speed):
-        # the zero line a little above the bottom, so that impacts dissipating next to nothing stay visible
-        top = max(ax.get_ylim()[1], 1e-9)
-        ax.set_ylim(-0.04 * top, top)
-        ax.axhline(0, color="0.6", lw=0.5, zorder=1)
     _legend(speed, ncol=2)
-    return _save(fig, path)
+
+
+def _mahle_windows(axes, origin):
+    """MAHLE's windows shaded on every axis (on a 0…720° axis the part before firing TDC at its end), named on the
+    first."""
+    start = np.degrees(origin)
+    for (name, low, high), colour in zip(MAHLE_WINDOWS, _WINDOW_COLOURS, strict=True):
+        for shift in (0.0, 720.0):
+            lo, hi = max(low + shift, start), min(high + shift, start + 720)
+            if lo >= hi:
+                continue
+            for ax in axes:
+                ax.axvspan(lo, hi, color=colour, lw=0, zorder=0)
+            if low + shift >= start:
+                axes[0].annotate(
+                    name,
+                    ((lo + hi) / 2, 1),
+                    xycoords=("data", "axes fraction"),
+                    xytext=(0, -2),
+                    textcoords="offset points",
+                    rotation=90,
+                    ha="center",
+                    va="top",
+                    fontsize="x-small",
+                    color="0.3",
+                )
 
 
 def _zero_at_same_height(*axes):
@@ -283,3 +414,41 @@ def piston_animation(angle, result, events, geometry, magnification, path, case,
     FuncAnimation(fig, draw, frames=frames).save(path, writer=PillowWriter(fps=12))
     plt.close(fig)
     return path
+
+
+def liner_load_spectrum(table, speed, path, case):
+    """The spectrum of each wall's mean load (rows of `liner_load.liner_loads`, whole cycles at the prescribed crank
+    speed `speed`, rad/s) as NVH tools draw it, a column per wall on common scales: the order spectrum (RMS per
+    harmonic, dB re 1 N, on a logarithmic order axis) above the third-octave band levels (bars at the nominal band
+    centres)."""
+    orders, frequencies, rms = order_spectrum(table, speed)
+    centres, bands = third_octaves(frequencies, rms)
+    fig, axes = plt.subplots(2, 2, figsize=(12, 7.5), sharey="row")
+    cycles = round(table["cycle"].max() - table["cycle"].min() + 1)
+    fig.suptitle(
+        f"Liner load spectrum: each wall's mean normal force over {720 * cycles / len(table):g}° intervals, "
+        f"{cycles} cycle{'s' if cycles > 1 else ''} (order 1 = {speed / (2 * np.pi):.4g} Hz)\n{case}",
+        fontsize="medium",
+    )
+    levels = {wall: decibels(rms[wall]) for wall in WALLS}
+    top = max(np.max(levels[wall][np.isfinite(levels[wall])]) for wall in WALLS)
+    floor = top - 100
+    for column, (side, (label, _, colour)) in enumerate(zip(WALLS, SIDES, strict=True)):
+        order_ax, band_ax = axes[0, column], axes[1, column]
+        order_ax.vlines(orders, floor, np.maximum(levels[side], floor), color=colour, lw=0.6)
+        order_ax.set_xscale("log")
+        order_ax.set_xlim(orders[0] / 1.2, orders[-1] * 1.2)
+        order_ax.set_ylim(floor, top + 5)
+        order_ax.set_xlabel("engine order (multiple of the crank speed; 0.5 = once a cycle)")
+        order_ax.set_title(f"{label.split(' (')[0]} wall", fontsize="medium", color=colour)
+        order_ax.grid(True, which="both", alpha=0.3)
+        band_levels = decibels(bands[side])
+        positions = np.arange(len(centres))
+        band_ax.bar(positions, np.maximum(band_levels, floor) - floor, bottom=floor, width=0.8, color=colour)
+        band_ax.set_xticks(positions, [f"{c / 1000:g}k" if c >= 1000 else f"{c:g}" for c in centres], rotation=90)
+        band_ax.set_xlabel("third-octave band, nominal centre frequency [Hz]")
+        band_ax.set_ylim(floor, top + 10)
+        band_ax.grid(True, axis="y", alpha=0.3)
+    axes[0, 0].set_ylabel("order RMS [dB re 1 N]")
+    axes[1, 0].set_ylabel("band RMS [dB re 1 N]")
+    return _save(fig, path)

@@ -1,0 +1,122 @@
+"""slap.png and piston_motion.png as the demo draws them (issue 55): on oil no empty axes, a line saying the skirt
+rode on its film, the landings' energies and each wall's load rise rate against crank angle in the walls' colours,
+MAHLE's windows shaded; piston_motion.png shows film and wall loads instead of the corner contacts. Dry, the impact
+panels stay below the landings. Checked on the figures' artists against the run's own files."""
+
+import numpy as np
+import pytest
+from matplotlib.colors import to_rgba
+
+from pistonslap import demo, plots
+from pistonslap.fmu import read_landing_log
+
+RED, BLUE = to_rgba("tab:red"), to_rgba("tab:blue")
+OIL = ["--set", "skirt_model=2", "--set", "skirt_grid_circumferential=6", "--set", "skirt_grid_axial=8"]
+
+
+def _draw(tmp_path, monkeypatch, *args):
+    """Runs the demo in this process; returns its output folder and its figures by file name."""
+    figures, save = {}, plots._save
+
+    def keep(fig, path, **kwargs):
+        figures[path.name] = fig
+        return save(fig, path, **kwargs)
+
+    monkeypatch.setattr(plots, "_save", keep)
+    out = tmp_path / "out"
+    demo.main(["--rpm", "1500", "--cycles", "1", "--out", str(out), *args])
+    return out, figures
+
+
+@pytest.fixture(scope="module")
+def oil(tmp_path_factory):
+    with pytest.MonkeyPatch.context() as monkeypatch:
+        return _draw(tmp_path_factory.mktemp("oil"), monkeypatch, *OIL)
+
+
+@pytest.fixture(scope="module")
+def dry(tmp_path_factory):
+    with pytest.MonkeyPatch.context() as monkeypatch:
+        return _draw(tmp_path_factory.mktemp("dry"), monkeypatch)
+
+
+def _has_data(ax):
+    lines = any(len(line.get_xdata()) for line in ax.get_lines() if not line.get_label().startswith("_"))
+    return lines or any(len(c.get_paths()) for c in ax.collections)
+
+
+def _spans(ax):
+    """The shaded x-ranges of an axis (axvspan rectangles), rounded to 0.1°."""
+    spans = []
+    for patch in ax.patches:
+        x = patch.get_xy()[:, 0] if hasattr(patch, "get_xy") and np.ndim(patch.get_xy()) == 2 else None
+        if x is not None:
+            spans.append((round(float(x.min()), 1), round(float(x.max()), 1)))
+    return sorted(set(spans))
+
+
+def test_on_oil_slap_png_shows_the_landings_and_rise_rates_with_no_empty_axis(oil):
+    out, figures = oil
+    fig = figures["slap.png"]
+    landings, rates = fig.axes
+    assert all(_has_data(ax) for ax in fig.axes), "no empty axes"
+    assert "kinetic energy" in landings.get_ylabel() and "rise" in rates.get_ylabel()
+    assert landings.get_xlim() == (-360, 360)
+    assert any("rode on its oil film" in t.get_text() for t in fig.texts)
+    log = read_landing_log(out / "landing_log.csv")
+    for wall, colour in (("thrust", RED), ("antithrust", BLUE)):
+        mine = log[log["wall"] == wall]
+        markers = [line for line in landings.get_lines() if line.get_marker() == "o" and line.get_color() == colour]
+        drawn = markers[0]
+        shown = (drawn.get_xdata() >= -360) & (drawn.get_xdata() <= 360)
+        assert shown.sum() >= 1, f"a landing on the {wall} wall is drawn"
+        # each drawn landing is one of the log's, at its crank angle and energy
+        for x, y in zip(drawn.get_xdata(), drawn.get_ydata(), strict=True):
+            k = np.argmin(np.abs(np.degrees(mine["crank_angle"]) - x))
+            assert y == pytest.approx(mine["kinetic_energy"][k] * 1e3, rel=1e-12)
+        assert any(line.get_color() == colour and len(line.get_xdata()) > 1000 for line in rates.get_lines())
+    for ax in fig.axes:
+        assert {(-2.0, 8.0), (8.0, 20.0)} <= set(_spans(ax)), "MAHLE's rattling and croaking windows"
+    names = [t.get_text() for t in landings.texts]
+    assert "rattling" in names and "croaking" in names
+
+
+def test_the_rise_rate_drawn_peaks_at_the_fmus_cycle_figure(oil):
+    """Both sample the wall load at the demo's communication points, 0.36° apart: the largest rise rate drawn over
+    the cycle is the FMU's cycle_max_liner_force_rate_* of that cycle (summary's row, cycles.csv's last row)."""
+    out, figures = oil
+    rates = figures["slap.png"].axes[1]
+    header = (out / "demo.csv").read_text().splitlines()[0].split(",")
+    last = np.genfromtxt(out / "demo.csv", delimiter=",", skip_header=1)[-1]
+    for wall, colour in (("thrust", RED), ("antithrust", BLUE)):
+        line = next(line for line in rates.get_lines() if line.get_color() == colour)
+        fmu = last[header.index(f"cycle_max_liner_force_rate_{wall} [N/s]")]
+        assert fmu > 0
+        assert line.get_ydata().max() == pytest.approx(fmu * 1e-6, rel=1e-6)
+
+
+def test_on_oil_piston_motion_png_shows_the_film_and_wall_loads_not_corner_contacts(oil):
+    _, figures = oil
+    fig = figures["piston_motion.png"]
+    labels = [ax.get_ylabel() for ax in fig.axes]
+    assert not any("contact" in label for label in labels), labels
+    assert "film" in labels[2] and "liner load" in labels[3]
+    assert all(_has_data(ax) for ax in fig.axes)
+    film, loads = fig.axes[2], fig.axes[3]
+    assert [line.get_color() for line in film.get_lines()] == [RED, BLUE]
+    assert any("asperit" in line.get_label() for line in loads.get_lines())
+
+
+def test_dry_slap_png_keeps_the_impacts_below_the_landings(dry):
+    _, figures = dry
+    fig = figures["slap.png"]
+    assert [ax.get_ylabel().split("\n")[0] for ax in fig.axes] == [
+        "lateral kinetic energy",
+        "wall load rise",
+        "energy dissipated",
+        "impact speed [mm/s]",
+    ]
+    assert all(_has_data(ax) for ax in fig.axes)
+    assert not fig.texts or not any("rode on" in t.get_text() for t in fig.texts)
+    labels = [ax.get_ylabel() for ax in figures["piston_motion.png"].axes]
+    assert "contact force [kN]" in labels
