@@ -361,7 +361,7 @@ def check_liner_loads(args, p):
 def write_liner_loads(args, values, omega, origin, case, plots):
     """Runs the FMU again at the --liner-load-step and writes the --liner-loads file (and, with
     --liner-load-spectrum, its spectrum's plot beside it); returns the paths written."""
-    table, units = liner_load.liner_loads(values, omega, args.cycles, liner_load_step(args), origin)
+    table, units = liner_load.liner_loads(values, args.cycles, liner_load_step(args), origin)
     args.liner_loads.parent.mkdir(parents=True, exist_ok=True)
     written = [write_table(args.liner_loads, table, units)]
     if args.liner_load_spectrum:

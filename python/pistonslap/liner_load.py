@@ -9,13 +9,14 @@ interval ending at the sample, impacts included. So each row holds the force at 
 the interval before it (that impulse over the interval's length): the mean carries the impacts, which the
 instantaneous force (between impacts) does not.
 
-    table, units = liner_loads(start_values, cycles=2, step_deg=0.1)
+    table, units = liner_loads({"crank_speed": 3000 * np.pi / 30}, cycles=2, step_deg=0.1)
     write_table("liner_loads.csv", table, units)
 """
 
+import fmpy
 import numpy as np
 
-from .fmu import CENTRED, CYCLE, simulate
+from .fmu import CENTRED, CYCLE, fmu_path, simulate
 from .refusal import Refusal
 from .tables import WALLS
 
@@ -61,22 +62,24 @@ def samples_per_cycle(step_deg, name="step_deg"):
     return count
 
 
-def liner_loads(start_values, speed, cycles, step_deg=DEFAULT_STEP_DEG, origin=CENTRED, fmu=None):
+def liner_loads(start_values=None, cycles=2, step_deg=DEFAULT_STEP_DEG, origin=CENTRED, fmu=None):
     """The liner load over the last `cycles` complete engine cycles (on the crank-angle axis starting at `origin`:
-    `CENTRED` −360…360°, or 0…720°) of a run from `start_values` (SI, by name) at the prescribed crank speed `speed`
-    (rad/s), sampled every `step_deg` of crank angle: `(table, units)` with the `columns()`, one row per sample,
-    `cycles` · 720 / `step_deg` rows. The run ends where the demo's does, at the end of the `cycles`-th cycle."""
+    `CENTRED` −360…360°, or `FROM_FIRING_TDC` 0…720°) of a run from `start_values` (SI, by name; the crank
+    prescribed, at `crank_speed`), sampled every `step_deg` of crank angle: `(table, units)` with the `columns()`,
+    one row per sample, `cycles` · 720 / `step_deg` rows. The run ends where the demo's does, at the end of the
+    `cycles`-th cycle; `fmu` is the FMU file or folder (default `fmu_path()`)."""
     per_cycle = samples_per_cycle(step_deg)
+    start_values = dict(start_values or {})
+    defaults = {v.name: v.start for v in fmpy.read_model_description(str(fmu or fmu_path())).modelVariables}
+    if int(start_values.get("crank_mode", defaults["crank_mode"])) != 1:
+        raise Refusal("liner loads are sampled at a fixed crank-angle step: give the prescribed crank (crank_mode = 1)")
+    speed = float(start_values.get("crank_speed", defaults["crank_speed"]))
     step = CYCLE / per_cycle
     interval = step / speed
     steps = round((cycles * CYCLE - origin) / step)
     # fmpy's communication points are start + k · interval: the last is the stop time
     result = simulate(
-        stop_time=steps * interval,
-        output_interval=interval,
-        start_values=start_values,
-        output=RECORDED,
-        fmu=fmu,
+        stop_time=steps * interval, output_interval=interval, start_values=start_values, output=RECORDED, fmu=fmu
     )
     return table_of(result, cycles, per_cycle, origin), columns()
 
@@ -90,12 +93,12 @@ def table_of(result, cycles, per_cycle, origin=CENTRED):
     rows = (angle > end - cycles * CYCLE + half) & (angle < end + half)
     rows[0] = False  # the start: no interval before it
     record, width = result[rows], np.diff(result["time"])[rows[1:]]
-    table = np.zeros(len(record), dtype=[(name, "f8") for name in columns()])
+    table = np.zeros(len(record), dtype=[(name, "i4" if name == "cycle" else "f8") for name in columns()])
     table["time"] = record["time"]
-    from_start = record["crank_angle"] - (end - cycles * CYCLE)
-    table["cycle"] = np.floor((from_start - half) / CYCLE) + 1
-    # in (origin, origin + 4π]: a sample ends its interval, the cycle's last one is at its end
-    table["crank_angle"] = np.degrees(from_start - (table["cycle"] - 1) * CYCLE + origin)
+    # samples 1, 2, ... from the first cycle's start; the cycle's last sample is at its end (in (origin, origin + 4π])
+    index = np.rint((record["crank_angle"] - (end - cycles * CYCLE)) / (2 * half)).astype(int)
+    table["cycle"] = (index - 1) // per_cycle + 1
+    table["crank_angle"] = np.degrees(origin) + (index - (table["cycle"] - 1) * per_cycle) * (720 / per_cycle)
     for wall in WALLS:
         force, moment = record[f"liner_force_{wall}"], record[f"liner_moment_{wall}"]
         table[f"liner_force_{wall}"] = force

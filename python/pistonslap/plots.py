@@ -145,6 +145,7 @@ def slap(
     panels = (["landings"] if landings is not None else []) + (["rate"] if loads is not None else [])
     panels += ["energy", "speed"] if impacts.any() or not panels else []
     fig, axes = _axes(len(panels), "Piston slap: landings and impacts over one engine cycle", case, origin)
+    _mahle_windows(list(axes), origin)
     axes = dict(zip(panels, axes, strict=True))
     if "landings" in axes:
         _landings(axes["landings"], landings, origin)
@@ -164,7 +165,6 @@ def slap(
             fontsize="small",
             style="italic",
         )
-    _mahle_windows(list(axes.values()), origin)
     for ax in axes.values():
         _zero_near_bottom(ax)
     return _save(fig, path, rect=(0, 0.025, 1, 1))
@@ -187,8 +187,10 @@ def _landings(ax, landings, origin):
         ax.vlines(deg[mine], 0, energy, color=colour, lw=1)
         ax.plot(deg[mine], energy, "o", color=colour, ms=5, zorder=4, label=f"{name}: {mine.sum()} landings, energy")
         ax.plot(deg[mine], loss, "D", mfc="none", color=colour, ms=5, mew=1, zorder=4, label=f"{name}: energy taken")
+    if not len(landings):
+        ax.text(0.5, 0.5, "no landing in this cycle", transform=ax.transAxes, ha="center", va="center")
     ax.set_ylabel("lateral kinetic energy\nat landing [mJ]")
-    _legend(ax, ncol=2)
+    _legend(ax, ncol=3)
 
 
 def _force_rates(ax, angle, result):
@@ -234,29 +236,18 @@ def _impacts(energy, speed, events, is_slap, slap_threshold, origin):
 
 
 def _mahle_windows(axes, origin):
-    """MAHLE's windows shaded on every axis (on a 0…720° axis the part before firing TDC at its end), named on the
-    first."""
+    """MAHLE's windows shaded on every axis (on a 0…720° axis the part before firing TDC at its end), named in the
+    first axis' legend."""
     start = np.degrees(origin)
     for (name, low, high), colour in zip(MAHLE_WINDOWS, _WINDOW_COLOURS, strict=True):
+        label = f"{name} {low:g}…{high:g}° (MAHLE)"
         for shift in (0.0, 720.0):
             lo, hi = max(low + shift, start), min(high + shift, start + 720)
             if lo >= hi:
                 continue
             for ax in axes:
-                ax.axvspan(lo, hi, color=colour, lw=0, zorder=0)
-            if low + shift >= start:
-                axes[0].annotate(
-                    name,
-                    ((lo + hi) / 2, 1),
-                    xycoords=("data", "axes fraction"),
-                    xytext=(0, -2),
-                    textcoords="offset points",
-                    rotation=90,
-                    ha="center",
-                    va="top",
-                    fontsize="x-small",
-                    color="0.3",
-                )
+                ax.axvspan(lo, hi, color=colour, lw=0, zorder=0, label=label if ax is axes[0] else "_window")
+            label = "_window"
 
 
 def _zero_at_same_height(*axes):

@@ -77,8 +77,8 @@ def test_on_oil_slap_png_shows_the_landings_and_rise_rates_with_no_empty_axis(oi
         assert any(line.get_color() == colour and len(line.get_xdata()) > 1000 for line in rates.get_lines())
     for ax in fig.axes:
         assert {(-2.0, 8.0), (8.0, 20.0)} <= set(_spans(ax)), "MAHLE's rattling and croaking windows"
-    names = [t.get_text() for t in landings.texts]
-    assert "rattling" in names and "croaking" in names
+    names = [t.get_text() for t in landings.get_legend().get_texts()]
+    assert "rattling −2…8° (MAHLE)" in names and "croaking 8…20° (MAHLE)" in names
 
 
 def test_the_rise_rate_drawn_peaks_at_the_fmus_cycle_figure(oil):
