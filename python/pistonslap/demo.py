@@ -20,7 +20,7 @@ from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate
 from .presets import PRESETS, help_text
 from .refusal import Parser, Refusal, check_start_values, number
 from .settings import parse_set, read_params, to_fmu
-from .tables import SAMPLE_DEG, WALLS, cycle_metrics, cycle_row, slap_rows, write_table
+from .tables import LANDING_RUN_ON, SAMPLE_DEG, WALLS, cycle_metrics, slap_rows, write_table
 from .trace_tdc import place_firing_tdc
 
 #: Magnification of clearance and tilt in the piston-position pictures.
@@ -205,7 +205,7 @@ def summary(row, lubricated):
         f"{row['cycle_max_impact_energy_antithrust'] * mj:.3g} mJ on the anti-thrust wall."
     )
     landings = "; ".join(_landings(row, side, name) for side, name in zip(WALLS, WALL_NAMES, strict=True))
-    text += f"\nLandings in the last completed cycle from −360° to 360° about a firing TDC: {landings}."
+    text += f"\nLandings in the cycle from −360° to 360° about the last firing TDC: {landings}."
     text += f"\nSkirt friction: FMEP {row['cycle_skirt_fmep'] * 1e-5:.3g} bar"
     if lubricated:
         films = ", ".join(
@@ -227,6 +227,9 @@ WALL_NAMES = ("major-thrust", "anti-thrust")
 def _landings(row, side, name):
     """One wall's landings in words (see `summary`)."""
     count = row[f"cycle_landings_{side}"]
+    if np.isnan(count):
+        return f"the {name} wall's not complete when the run ended (its last landing had not ended)"
+    count = int(count)
     peaks = (
         f"wall load peak {row[f'cycle_max_liner_force_{side}'] * 1e-3:.3g} kN, rising at most "
         f"{row[f'cycle_max_liner_force_rate_{side}'] * 1e-6:.3g} kN/ms"
@@ -258,9 +261,9 @@ def main(argv=None):
     check_liner_loads(args, p)
     omega, origin = p["crank_speed"], FROM_FIRING_TDC if args.crank_0_720 else CENTRED
     interval = np.radians(SAMPLE_DEG) / omega
-    # one sample past the last cycle's end, so that its figures are out; with the axis centred on firing TDC, half a
-    # cycle more, so that the last cycle drawn is the one centred on the last firing TDC
-    stop_time = (args.cycles * CYCLE - origin) / omega + interval
+    # past the cycle about the last firing TDC (the last drawn on the axis centred on firing TDC) until the FMU
+    # completes its landing figures (on the 0…720° axis the last cycle drawn ends at that TDC)
+    stop_time = (args.cycles * CYCLE - CENTRED + LANDING_RUN_ON) / omega + interval
 
     args.out.mkdir(parents=True, exist_ok=True)
     result, events, landings = simulate_with_logs(
@@ -271,6 +274,7 @@ def main(argv=None):
         output_interval=interval,
     )
     lubricated = p.get("skirt_model") == 2
+    per_cycle = cycle_metrics(result, landings)
     case = (f"{args.engine}: " if args.engine else "") + case_title(p)
     units = {v.name: v.unit or (v.declaredType.unit if v.declaredType else None) for v in md.modelVariables}
     units["time"] = "s"
@@ -278,7 +282,7 @@ def main(argv=None):
         write_table(args.out / "demo.csv", result, units),
         args.out / "impact_log.csv",
         *([args.out / "landing_log.csv"] if landings is not None else []),
-        write_table(args.out / "cycles.csv", *cycle_metrics(result)),
+        write_table(args.out / "cycles.csv", *per_cycle),
     ]
 
     cycle, angle = last_cycle(result["crank_angle"], origin=origin)
@@ -333,7 +337,7 @@ def main(argv=None):
         ]
     print(
         f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. "
-        + summary(cycle_row(result, -1), lubricated)
+        + summary(dict(zip(per_cycle[0].dtype.names, per_cycle[0][-1].tolist(), strict=True)), lubricated)
     )
     if args.liner_loads is not None:
         written += write_liner_loads(args, values, omega, origin, case, plots)

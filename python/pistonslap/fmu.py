@@ -104,7 +104,7 @@ def simulate_with_logs(log_path=None, landing_log_path=None, start_values=None, 
         if has_landing_log(kwargs.get("model_description") or kwargs.get("fmu")):
             values["landing_log"] = str(landing)
         result = simulate(start_values=values, **kwargs)
-        landings = read_landing_log(landing) if "landing_log" in values else None
+        landings = read_landing_log(landing) if "landing_log" in values else np.zeros(0, LANDING_DTYPE)
         return result, read_impact_log(log), landings
 
 

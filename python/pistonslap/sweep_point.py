@@ -3,12 +3,13 @@
 import numpy as np
 from fmpy.fmi1 import FMICallException
 
-from .fmu import CYCLE, simulate_with_events
+from .fmu import CYCLE, simulate_with_logs
 from .response import CLASSIFIABLE_CYCLES, classify, roller_run
 from .settings import to_fmu
 from .tables import (
     CYCLE_METRICS,
     LANDING_METRICS,
+    LANDING_RUN_ON,
     OVER_CYCLES,
     SAMPLE_DEG,
     cycle_metrics,
@@ -59,9 +60,10 @@ def run_point(fmu, model_description, values, cycles, skip_cycles):
     every = dict(defaults(model_description), **values)
     speed, angle = every["crank_speed"], CYCLE_ANGLE[every["model_variant"]]
     crank_train = every["model_variant"] == 1
-    # the crank train sampled finely, one sample past the last cycle's end so that its figures are out; the roller
-    # (thousands of turns, no film) once a turn
+    # the crank train sampled as the demo does, on past the last counted cycle about a firing TDC until the FMU
+    # completes its landing figures; the roller (thousands of turns, no film) once a turn
     interval = np.radians(SAMPLE_DEG) / speed if crank_train else angle / speed
+    run_on = (LANDING_RUN_ON / speed + interval) if crank_train else 0.0
     errors = []
 
     def logger(_component, _instance, status, _category, message):
@@ -69,11 +71,11 @@ def run_point(fmu, model_description, values, cycles, skip_cycles):
             errors.append(message.decode(errors="replace"))
 
     try:
-        result, events = simulate_with_events(
+        result, events, landings = simulate_with_logs(
             fmu=fmu,
             model_description=model_description,
             start_values=values,
-            stop_time=cycles * angle / speed + (interval if crank_train else 0.0),
+            stop_time=cycles * angle / speed + run_on,
             output_interval=interval,
             output=RECORDED if crank_train else ["impact_count"],
             logger=logger,
@@ -84,7 +86,7 @@ def run_point(fmu, model_description, values, cycles, skip_cycles):
         )
     row = metrics(events, speed * events["time"] // angle, cycles, skip_cycles)
     if crank_train:
-        table, _ = cycle_metrics(result)
+        table, _ = cycle_metrics(result, landings)
         row |= over_cycles(table[(table["cycle"] > skip_cycles) & (table["cycle"] <= cycles)])
     else:
         row |= dict.fromkeys(OVER_CYCLES, np.nan)

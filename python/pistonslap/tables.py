@@ -11,6 +11,9 @@ from .fmu import CENTRED, CYCLE, from_firing_tdc
 #: FMU's default experiment samples every 5e-5 s, 0.36° at 1200 rpm. The per-cycle peaks of sampled outputs
 #: (`SAMPLED_METRICS`) and the FMU's liner-force rise rate (between communication points) are taken at this step.
 SAMPLE_DEG = 0.36
+#: Crank angle a run goes on past the end of the last cycle about a firing TDC it reports, rad: the FMU completes a
+#: cycle's landing figures once the next cycle's first landing starts, usually within the first half of the cycle.
+LANDING_RUN_ON = 1.5 * np.pi
 #: The walls as the FMU's output names spell them: major thrust (+x), anti-thrust (−x).
 WALLS = ("thrust", "antithrust")
 
@@ -65,19 +68,47 @@ def write_table(path, table, units):
     return path
 
 
-def landing_window(crank_angle, index):
-    """Which samples of the record's accumulated `crank_angle` (rad, firing TDC at 0 mod 4π) lie in the last cycle
-    from −360° to 360° about firing TDC that ended by sample `index`: the cycle the FMU's landing outputs at that
-    sample describe (the run's first such cycle starts where the run does)."""
-    end = np.floor((crank_angle[index] - CENTRED) / CYCLE) * CYCLE + CENTRED
-    return (crank_angle >= end - CYCLE) & (crank_angle <= end)
+def landing_cycle(angle):
+    """The cycle from −360° to 360° about a firing TDC that an accumulated crank angle (rad) lies in: 0 about the
+    firing TDC at 0, 1 about the one at 4π, …"""
+    return np.floor((np.asarray(angle) - CENTRED) / CYCLE).astype(int)
 
 
-def sampled_metrics(result, window):
-    """`SAMPLED_METRICS` over the samples `window` (a mask) of `result`; NaN where the window holds none."""
-    if not window.any():
+def landing_starts(result, landings):
+    """The accumulated crank angle of each landing's start: the landing log's rows, then the landing in progress at
+    the record's end (which started where the last logged one ended); the log's angle within its cycle, the cycle
+    from the record's crank angle at the landing's time."""
+    if len(landings) == 0:
+        return np.zeros(0)
+    times = np.append(landings["time"], landings["end_time"].max())
+    within = np.append(landings["crank_angle"], np.nan)
+    accumulated = np.interp(times, result["time"], result["crank_angle"])
+    within[-1] = from_firing_tdc(accumulated[-1])
+    return within + CYCLE * np.round((accumulated - within) / CYCLE)
+
+
+def described_at(result, landings, cycle):
+    """The first sample at which the FMU's landing outputs (`LANDING_METRICS`) describe the landing cycle `cycle`
+    (see `landing_cycle`), or None when the record ends first. The FMU completes a cycle once the crank is past it
+    and the landing in progress started after it (a landing counts in the cycle it starts in, and ends where the
+    next starts): the first sample after both."""
+    starts = landing_starts(result, landings)
+    later = starts[landing_cycle(starts) > cycle]
+    if later.size == 0:
+        return None
+    completed = max(cycle * CYCLE - CENTRED, later.min())
+    after = np.flatnonzero(result["crank_angle"] > completed)
+    return int(after[0]) if after.size else None
+
+
+def sampled_metrics(result, cycle):
+    """`SAMPLED_METRICS` of the landing cycle `cycle` from the samples of `result` in it (from its start to before
+    its end); NaN unless the record runs from before it to after it. (A run starting at crank angle 0 covers half of
+    cycle 0: not reported.)"""
+    angle = result["crank_angle"]
+    if landing_cycle(angle[0]) >= cycle or landing_cycle(angle[-1]) <= cycle:
         return dict.fromkeys(SAMPLED_METRICS, np.nan)
-    rows, row = result[window], {}
+    rows, row = result[landing_cycle(angle) == cycle], {}
     for wall in WALLS:
         film = rows[f"min_film_thickness_{wall}"]
         k = int(np.argmin(film))
@@ -88,27 +119,29 @@ def sampled_metrics(result, window):
     return row
 
 
-def cycle_row(result, index):
-    """The per-cycle figures at sample `index`: the FMU's `CYCLE_METRICS` (the last engine cycle from firing TDC to
-    firing TDC completed by then), its `LANDING_METRICS` and the `SAMPLED_METRICS` of the same cycle (the last one
-    from −360° to 360° completed by then)."""
-    row = {name: result[name][index] for name in {**CYCLE_METRICS, **LANDING_METRICS}}
-    return dict(row, **sampled_metrics(result, landing_window(result["crank_angle"], index)))
+def landing_metrics(result, landings, cycle):
+    """The FMU's `LANDING_METRICS` of the landing cycle `cycle`, read where they describe it (`described_at`), with
+    its `SAMPLED_METRICS`; NaN for what the record does not hold."""
+    index = described_at(result, landings, cycle)
+    row = {name: np.nan if index is None else float(result[name][index]) for name in LANDING_METRICS}
+    return dict(row, **sampled_metrics(result, cycle))
 
 
-def cycle_metrics(result):
-    """The per-cycle figures (`cycle_row`) at the first sample after each engine cycle's end (firing TDC), with its
-    time: `(table, units)` with columns time, cycle (1 = the first completed), `CYCLE_METRICS`, `LANDING_METRICS`,
-    `SAMPLED_METRICS`."""
+def cycle_metrics(result, landings):
+    """The per-cycle figures, one row per engine cycle (firing TDC to firing TDC) the record completes: its end time,
+    the cycle (1 = the first), the FMU's `CYCLE_METRICS` at the first sample after its end, and the landings
+    (`landing_metrics`) of the cycle from −360° to 360° about the firing TDC that ends it (NaN where the record ends
+    before the FMU completes it). `landings` is the run's landing log. Returns `(table, units)`."""
     count = result["cycle_count"]
     ends = np.flatnonzero(np.diff(count) > 0) + 1
     units = {**CYCLE_METRICS, **LANDING_METRICS, **SAMPLED_METRICS}
-    types = {name: result.dtype[name] if name in result.dtype.names else np.dtype("f8") for name in units}
+    types = {name: result.dtype[name] if name in CYCLE_METRICS else np.dtype("f8") for name in units}
     table = np.zeros(len(ends), dtype=[("time", "f8"), ("cycle", "i4"), *types.items()])
     table["time"] = result["time"][ends]
     table["cycle"] = count[ends]
     for k, end in enumerate(ends):
-        for name, value in cycle_row(result, end).items():
+        row = {name: result[name][end] for name in CYCLE_METRICS} | landing_metrics(result, landings, count[end])
+        for name, value in row.items():
             table[name][k] = value
     return table, dict(units, time="s", cycle="1")
 
@@ -158,23 +191,33 @@ OVER_CYCLES = {
 def over_cycles(table):
     """`OVER_CYCLES` of the per-cycle rows `table` (of `cycle_metrics`): the largest landing per wall of all the rows
     with its loss and crank angle, the thinnest film per side with its crank angle, the other peaks the largest of
-    the rows', landings per cycle and FMEP the rows' means; NaN for no row."""
-    if len(table) == 0:
-        return dict.fromkeys(OVER_CYCLES, np.nan)
-    row = {"skirt_fmep": float(table["cycle_skirt_fmep"].mean())}
+    the rows', landings per cycle and FMEP the rows' means; rows without a figure (NaN) left out, NaN for none."""
+    row = {}
     for wall in WALLS:
-        largest = table[int(np.argmax(table[f"cycle_landing_energy_{wall}"]))]
-        thinnest = table[int(np.argmin(table[f"cycle_min_film_thickness_{wall}"]))]
-        row |= {
-            f"landings_per_cycle_{wall}": float(table[f"cycle_landings_{wall}"].mean()),
-            f"landing_energy_{wall}": float(largest[f"cycle_landing_energy_{wall}"]),
-            f"landing_loss_{wall}": float(largest[f"cycle_landing_loss_{wall}"]),
-            f"landing_crank_angle_{wall}": float(largest[f"cycle_landing_crank_angle_{wall}"]),
-            f"max_liner_force_rate_{wall}": float(table[f"cycle_max_liner_force_rate_{wall}"].max()),
-            f"max_liner_force_{wall}": float(table[f"cycle_max_liner_force_{wall}"].max()),
-            f"min_film_thickness_{wall}": float(thinnest[f"cycle_min_film_thickness_{wall}"]),
-            f"min_film_crank_angle_{wall}": float(thinnest[f"cycle_min_film_crank_angle_{wall}"]),
-        }
-    row["max_film_force"] = float(table["cycle_max_film_force"].max())
-    row["max_asperity_force"] = float(table["cycle_max_asperity_force"].max())
+        largest = ("landing_energy", "landing_loss", "landing_crank_angle")
+        row |= _picked(table, np.nanargmax, {f"{name}_{wall}": f"cycle_{name}_{wall}" for name in largest})
+        thinnest = ("min_film_thickness", "min_film_crank_angle")
+        row |= _picked(table, np.nanargmin, {f"{name}_{wall}": f"cycle_{name}_{wall}" for name in thinnest})
+        row[f"landings_per_cycle_{wall}"] = _reduced(table, np.mean, f"cycle_landings_{wall}")
+        for name in ("max_liner_force_rate", "max_liner_force"):
+            row[f"{name}_{wall}"] = _reduced(table, np.max, f"cycle_{name}_{wall}")
+    row["skirt_fmep"] = _reduced(table, np.mean, "cycle_skirt_fmep")
+    for name in ("max_film_force", "max_asperity_force"):
+        row[name] = _reduced(table, np.max, f"cycle_{name}")
     return {name: row[name] for name in OVER_CYCLES}
+
+
+def _reduced(table, reduce, column):
+    """`reduce` of a column's finite values, NaN for none."""
+    values = table[column][np.isfinite(table[column])]
+    return float(reduce(values)) if values.size else np.nan
+
+
+def _picked(table, pick, names):
+    """From the row that `pick` (np.nanargmax, np.nanargmin) chooses by the first column of `names` ({key: column}),
+    each column's value by its key; NaN when that column has no finite value."""
+    first = table[next(iter(names.values()))]
+    if not np.isfinite(first).any():
+        return dict.fromkeys(names, np.nan)
+    chosen = table[int(pick(first))]
+    return {key: float(chosen[column]) for key, column in names.items()}

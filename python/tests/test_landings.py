@@ -69,8 +69,9 @@ def _centred_cycle(time, omega=1500 * np.pi / 30):
 
 
 def test_cycles_csv_carries_the_landings_of_the_landing_log(demo):
-    """Each row's landing columns are those of the landing log's rows of the cycle about the firing TDC that opened
-    the row's engine cycle: the count per wall, and the largest landing's energy, loss and crank angle."""
+    """Each row's landing columns are those of the landing log's rows of the cycle about the firing TDC that ends
+    the row's engine cycle (a landing counts in the cycle it starts in): the count per wall, and the largest
+    landing's energy, loss and crank angle; the run goes on until the FMU completed the last one."""
     kind, out, _ = demo
     header, table = _table(out / "cycles.csv")
     assert set(LANDING_COLUMNS + FILM_COLUMNS) <= set(header), header
@@ -79,7 +80,7 @@ def test_cycles_csv_carries_the_landings_of_the_landing_log(demo):
     cycle_of = _centred_cycle(log["time"])
     for row, engine_cycle in enumerate(table["cycle"].astype(int)):
         for wall in WALLS:
-            mine = log[(log["wall"] == wall) & (cycle_of == engine_cycle - 1)]
+            mine = log[(log["wall"] == wall) & (cycle_of == engine_cycle)]
             assert table[f"cycle_landings_{wall}"][row] == len(mine), (kind, row, wall)
             if len(mine):
                 largest = mine[np.argmax(mine["kinetic_energy"])]
@@ -96,9 +97,9 @@ def test_cycles_csv_carries_the_film_figures_of_the_time_series(demo):
     kind, out, _ = demo
     _, table = _table(out / "cycles.csv")
     _, series = _table(out / "demo.csv")
-    cycle_of = _centred_cycle(series["time"])
+    cycle_of = np.floor((series["crank_angle"] + CYCLE / 2) / CYCLE)
     for row, engine_cycle in enumerate(table["cycle"].astype(int)):
-        window = cycle_of == engine_cycle - 1
+        window = cycle_of == engine_cycle
         for wall in WALLS:
             film = series[f"min_film_thickness_{wall}"]
             assert table[f"cycle_min_film_thickness_{wall}"][row] == film[window].min()
