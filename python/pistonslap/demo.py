@@ -10,6 +10,7 @@ What none sets keeps the FMU's default (Awrejcewicz & Kudra's engine: 1200 rpm, 
 """
 
 import os
+import shutil
 from pathlib import Path
 
 import fmpy
@@ -149,7 +150,7 @@ def all_start_values(args, md, defaults):
     values.update(parse_set(args.set, md))
     if args.skirt_map is not None:
         values.update(
-            skirt_map=str((args.out / "skirt_map.csv").resolve()),
+            skirt_map=str((args.out / SKIRT_MAP_PASSES).resolve()),
             skirt_map_crank_angle=np.radians(args.skirt_map % 720),
         )
     return to_fmu(values, defaults), placed
@@ -261,9 +262,11 @@ def main(argv=None):
     check_liner_loads(args, p)
     omega, origin = p["crank_speed"], FROM_FIRING_TDC if args.crank_0_720 else CENTRED
     interval = np.radians(SAMPLE_DEG) / omega
-    # past the cycle about the last firing TDC (the last drawn on the axis centred on firing TDC) until the FMU
-    # completes its landing figures (on the 0…720° axis the last cycle drawn ends at that TDC)
-    stop_time = (args.cycles * CYCLE - CENTRED + LANDING_RUN_ON) / omega + interval
+    # The cycle drawn ends at `drawn_end`: the one about the last firing TDC on the axis centred on firing TDC, the
+    # one ending at it on the 0…720° axis. The run goes on past the cycle about the last firing TDC until the FMU
+    # completed its landing figures (the next landing started), by LANDING_RUN_ON at most: no other cycle completes.
+    drawn_end, landed_by = (args.cycles * CYCLE - origin) / omega, (args.cycles * CYCLE - CENTRED) / omega
+    stop_time = landed_by + LANDING_RUN_ON / omega + interval
 
     args.out.mkdir(parents=True, exist_ok=True)
     result, events, landings = simulate_with_logs(
@@ -272,6 +275,9 @@ def main(argv=None):
         start_values=values,
         stop_time=stop_time,
         output_interval=interval,
+        landed_by=landed_by,
+        # the FMU rewrites the skirt map at each pass: the drawn cycle's is the last one by its end
+        at_times=[(drawn_end, lambda: keep_skirt_map(args.out))] if args.skirt_map is not None else (),
     )
     lubricated = p.get("skirt_model") == 2
     per_cycle = cycle_metrics(result, landings)
@@ -331,6 +337,7 @@ def main(argv=None):
     if lubricated:
         written.append(plots.film(angle[cycle], result[cycle], args.out / "film.png", case, origin))
     if args.skirt_map is not None:
+        (args.out / SKIRT_MAP_PASSES).unlink(missing_ok=True)
         written += [
             args.out / "skirt_map.csv",
             skirt_map.plot(skirt_map.read(args.out / "skirt_map.csv"), args.out / "skirt_map.png", case),
@@ -343,6 +350,18 @@ def main(argv=None):
         written += write_liner_loads(args, values, omega, origin, case, plots)
     for path in written:
         print(f"wrote {path}")
+
+
+#: The file the FMU rewrites at each pass of the skirt map's crank angle; `keep_skirt_map` copies the drawn cycle's.
+SKIRT_MAP_PASSES = "skirt_map_passes.csv"
+
+
+def keep_skirt_map(out):
+    """Keeps the skirt map of the last pass so far as skirt_map.csv in `out` (the FMU's file goes when the run
+    ends)."""
+    passes = out / SKIRT_MAP_PASSES
+    if passes.exists():
+        shutil.copyfile(passes, out / "skirt_map.csv")
 
 
 def in_window(time, times):

@@ -90,12 +90,16 @@ def simulate_with_events(log_path=None, start_values=None, **kwargs):
     return result, events
 
 
-def simulate_with_logs(log_path=None, landing_log_path=None, start_values=None, **kwargs):
+def simulate_with_logs(log_path=None, landing_log_path=None, start_values=None, landed_by=None, at_times=(), **kwargs):
     """Like `simulate`, with the FMU's `impact_log` and `landing_log` switched on; returns `(result, events,
-    landings)`, the logs as arrays of `EVENT_DTYPE` and `LANDING_DTYPE` (None for `landings` when the FMU has no
+    landings)`, the logs as arrays of `EVENT_DTYPE` and `LANDING_DTYPE` (no landing when the FMU has no
     `landing_log` parameter: an FMU built before the landings).
 
-    Each log goes to its path when given (and stays there), else to a temporary file.
+    Each log goes to its path when given (and stays there), else to a temporary file. With `landed_by` (s), the run
+    stops at the first communication point after it at which a landing started after it (the FMU then has the
+    figures of the landing cycle ending at `landed_by` complete, `tables.described_at`), at the latest at the stop
+    time. `at_times` holds `(time, action)` pairs: each action is called once, at the first communication point at
+    or after its time.
     """
     with tempfile.TemporaryDirectory() as tmp:
         log = Path(log_path) if log_path is not None else Path(tmp) / "impact_log.csv"
@@ -103,9 +107,40 @@ def simulate_with_logs(log_path=None, landing_log_path=None, start_values=None, 
         values = dict(start_values or {}, impact_log=str(log))
         if has_landing_log(kwargs.get("model_description") or kwargs.get("fmu")):
             values["landing_log"] = str(landing)
-        result = simulate(start_values=values, **kwargs)
+        watch = _Watch(landing if "landing_log" in values else None, landed_by, at_times)
+        result = simulate(start_values=values, step_finished=watch, **kwargs)
         landings = read_landing_log(landing) if "landing_log" in values else np.zeros(0, LANDING_DTYPE)
         return result, read_impact_log(log), landings
+
+
+class _Watch:
+    """fmpy's `step_finished` callback of `simulate_with_logs`: calls the actions due, and stops the run once the
+    landing log holds a landing that ended after `landed_by` (it ends where the next starts)."""
+
+    def __init__(self, landing_log, landed_by, at_times):
+        self.landing_log, self.landed_by, self.size, self.landed = landing_log, landed_by, 0, False
+        self.due = sorted(at_times, key=lambda pair: pair[0])
+
+    def __call__(self, time, _recorder):
+        while self.due and time >= self.due[0][0] * (1 - 1e-12):
+            self.due.pop(0)[1]()
+        if self.landed:
+            # one point more: a landing starting right at a communication point is taken in at the next
+            return False
+        if self.landed_by is not None and self.landing_log is not None and time > self.landed_by:
+            self.landed = any(end > self.landed_by for end in self._new_ends())
+        return True
+
+    def _new_ends(self):
+        """The end times of the landings logged since the last look."""
+        size = self.landing_log.stat().st_size
+        if size == self.size:
+            return []
+        with open(self.landing_log, "rb") as f:
+            f.seek(self.size)
+            rows = f.read().decode().splitlines()
+        self.size = size
+        return [float(row.rsplit(",", 1)[1]) for row in rows if row and not row.startswith(("#", "time"))]
 
 
 def has_landing_log(fmu=None):

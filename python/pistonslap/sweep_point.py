@@ -60,10 +60,12 @@ def run_point(fmu, model_description, values, cycles, skip_cycles):
     every = dict(defaults(model_description), **values)
     speed, angle = every["crank_speed"], CYCLE_ANGLE[every["model_variant"]]
     crank_train = every["model_variant"] == 1
-    # the crank train sampled as the demo does, on past the last counted cycle about a firing TDC until the FMU
-    # completes its landing figures; the roller (thousands of turns, no film) once a turn
+    # the crank train sampled as the demo does, past the cycle about the firing TDC ending the last counted cycle
+    # until the FMU completed its landing figures (the next landing started); the roller (thousands of turns, no
+    # film) once a turn
     interval = np.radians(SAMPLE_DEG) / speed if crank_train else angle / speed
-    run_on = (LANDING_RUN_ON / speed + interval) if crank_train else 0.0
+    landed_by = (cycles * angle + np.pi * 2) / speed if crank_train else None
+    stop_time = landed_by + LANDING_RUN_ON / speed + interval if crank_train else cycles * angle / speed
     errors = []
 
     def logger(_component, _instance, status, _category, message):
@@ -75,7 +77,8 @@ def run_point(fmu, model_description, values, cycles, skip_cycles):
             fmu=fmu,
             model_description=model_description,
             start_values=values,
-            stop_time=cycles * angle / speed + run_on,
+            stop_time=stop_time,
+            landed_by=landed_by,
             output_interval=interval,
             output=RECORDED if crank_train else ["impact_count"],
             logger=logger,

@@ -11,8 +11,9 @@ from .fmu import CENTRED, CYCLE, from_firing_tdc
 #: FMU's default experiment samples every 5e-5 s, 0.36° at 1200 rpm. The per-cycle peaks of sampled outputs
 #: (`SAMPLED_METRICS`) and the FMU's liner-force rise rate (between communication points) are taken at this step.
 SAMPLE_DEG = 0.36
-#: Crank angle a run goes on past the end of the last cycle about a firing TDC it reports, rad: the FMU completes a
-#: cycle's landing figures once the next cycle's first landing starts, usually within the first half of the cycle.
+#: Crank angle a run may go on past the end of the last cycle about a firing TDC it reports, rad: the FMU completes a
+#: cycle's landing figures once the next cycle's first landing starts (`fmu.simulate_with_logs` stops there); 270°
+#: at most, so that no later engine cycle (firing TDC to firing TDC) completes.
 LANDING_RUN_ON = 1.5 * np.pi
 #: The walls as the FMU's output names spell them: major thrust (+x), anti-thrust (−x).
 WALLS = ("thrust", "antithrust")
