@@ -86,14 +86,16 @@ def simulate_with_events(log_path=None, start_values=None, **kwargs):
 
     The log goes to `log_path` when given (and stays there), else to a temporary file.
     """
-    result, events, _ = simulate_with_logs(log_path, start_values=start_values, **kwargs)
+    result, events, _ = simulate_with_logs(log_path, start_values=start_values, landings=False, **kwargs)
     return result, events
 
 
-def simulate_with_logs(log_path=None, landing_log_path=None, start_values=None, landed_by=None, at_times=(), **kwargs):
+def simulate_with_logs(
+    log_path=None, landing_log_path=None, start_values=None, landed_by=None, at_times=(), landings=True, **kwargs
+):
     """Like `simulate`, with the FMU's `impact_log` and `landing_log` switched on; returns `(result, events,
     landings)`, the logs as arrays of `EVENT_DTYPE` and `LANDING_DTYPE` (no landing when the FMU has no
-    `landing_log` parameter: an FMU built before the landings).
+    `landing_log` parameter, an FMU built before the landings, or with `landings` False: no landing log).
 
     Each log goes to its path when given (and stays there), else to a temporary file. With `landed_by` (s), the run
     stops at the first communication point after it at which a landing started after it (the FMU then has the
@@ -105,10 +107,10 @@ def simulate_with_logs(log_path=None, landing_log_path=None, start_values=None, 
         log = Path(log_path) if log_path is not None else Path(tmp) / "impact_log.csv"
         landing = Path(landing_log_path) if landing_log_path is not None else Path(tmp) / "landing_log.csv"
         values = dict(start_values or {}, impact_log=str(log))
-        if has_landing_log(kwargs.get("model_description") or kwargs.get("fmu")):
+        if landings and has_landing_log(kwargs.get("model_description") or kwargs.get("fmu")):
             values["landing_log"] = str(landing)
         watch = _Watch(landing if "landing_log" in values else None, landed_by, at_times)
-        result = simulate(start_values=values, step_finished=watch, **kwargs)
+        result = simulate(start_values=values, step_finished=watch if landed_by or at_times else None, **kwargs)
         landings = read_landing_log(landing) if "landing_log" in values else np.zeros(0, LANDING_DTYPE)
         return result, read_impact_log(log), landings
 
