@@ -192,7 +192,7 @@ def summary(row, lubricated):
     """The last completed cycle in words: slaps (side changes) per wall with their energy, then all impacts; the
     landings per wall (the largest one's energy, its loss and crank angle) and the wall loads' peak and rise rate; the
     skirt FMEP and, on oil (`lubricated`), the thinnest film per side and the peak film and asperity loads. `row` is
-    a `tables.cycle_row`."""
+    the last row of `tables.cycle_metrics`, by column name."""
     mj = 1e3
     walls = "; ".join(
         f"{row[f'cycle_slaps_{side}']} on the {name} wall, {row[f'cycle_slap_energy_{side}'] * mj:.3g} mJ "

@@ -50,8 +50,8 @@ def _save(fig, path, rect=(0, 0, 1, 1)):
 
 def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED, lubricated=False):
     """Eccentricity of the skirt top and bottom and of the pin, tilt, then for the dry skirt the contact states (a bar
-    per corner while in sliding contact) and contact force per corner, for the lubricated one (`lubricated`, its
-    corners never touch) the thinnest film per side and each wall's load with the asperity load."""
+    per corner while in sliding contact) and contact force per corner, for the lubricated one (`lubricated`) the
+    thinnest film per side and each wall's load (film, asperities and any corner in contact) with the asperity load."""
     deg = np.degrees(angle)
     fig, (lateral, tilt, states, forces) = _axes(4, "Piston secondary motion over one engine cycle", case, origin)
     for name, label, style in (
