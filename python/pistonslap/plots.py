@@ -37,12 +37,59 @@ def _axes(rows, title, case, origin):
     return fig, axes
 
 
-def _legend(ax, ncol=4):
-    ax.legend(loc="lower right", bbox_to_anchor=(1, 1), ncol=ncol, fontsize="small", frameon=False)
+#: The crank-angle window of the zoom beside the slap plot's panels, deg from firing TDC: MAHLE's windows and the
+#: power stroke's landing.
+ZOOM = (-30.0, 60.0)
 
 
-def _save(fig, path, rect=(0, 0, 1, 1)):
-    fig.tight_layout(rect=rect)
+def _axes_with_zoom(rows, title, case, origin):
+    """`rows` panels over the cycle, each with a zoom on `ZOOM` beside it sharing its scale: `(fig, [(cycle axis,
+    zoom axis), ...])`; the zooms' axis runs from −360° to 360° whatever `origin`."""
+    height = 2.6 * rows + 1.9
+    # laid out by hand: room above each panel for its legend, above the first for the title's three lines too
+    fig, axes = plt.subplots(
+        rows,
+        2,
+        sharex="col",
+        sharey="row",
+        figsize=(12, height),
+        squeeze=False,
+        gridspec_kw=dict(
+            width_ratios=(3, 1), left=0.08, right=0.985, top=1 - 1.45 / height, bottom=0.55 / height, hspace=0.42
+        ),
+    )
+    fig.suptitle(f"{title}\n{case}", fontsize="medium")
+    start = np.degrees(origin)
+    axes[-1, 0].set_xlabel("crank angle [deg]  (0 = firing TDC)")
+    axes[-1, 0].set_xlim(start, start + 720)
+    axes[-1, 0].set_xticks(np.arange(start, start + 721, 90))
+    axes[-1, 1].set_xlabel(f"zoom {ZOOM[0]:g}…{ZOOM[1]:g} [deg]".replace("-", "−"))
+    axes[-1, 1].set_xlim(*ZOOM)
+    axes[-1, 1].set_xticks(np.arange(ZOOM[0], ZOOM[1] + 1, 15))
+    for ax in axes.flat:
+        ax.grid(True, alpha=0.3)
+    return fig, [tuple(pair) for pair in axes]
+
+
+def _broken_at_wraps(deg, values):
+    """`deg` and `values` with a NaN where the crank angle wraps, so that a line does not cross the axis there."""
+    wraps = np.flatnonzero(np.diff(deg) < 0) + 1
+    return np.insert(deg.astype(float), wraps, np.nan), np.insert(values.astype(float), wraps, np.nan)
+
+
+def _legend(ax, ncol=4, **kwargs):
+    ax.legend(loc="lower right", bbox_to_anchor=(1, 1), ncol=ncol, fontsize="small", frameon=False, **kwargs)
+
+
+def _count(n, word):
+    """`n` and the word, plural unless one."""
+    return f"{n} {word}{'' if n == 1 else 's'}"
+
+
+def _save(fig, path, tight=True):
+    """Writes the figure (laid out tight unless laid out by hand) and closes it."""
+    if tight:
+        fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return path
@@ -143,31 +190,48 @@ def slap(
     windows are shaded."""
     impacts = events["kind"] == "impact"
     panels = (["landings"] if landings is not None else []) + (["rate"] if loads is not None else [])
-    panels += ["energy", "speed"] if impacts.any() or not panels else []
-    fig, axes = _axes(len(panels), "Piston slap: landings and impacts over one engine cycle", case, origin)
-    _mahle_windows(list(axes), origin)
-    axes = dict(zip(panels, axes, strict=True))
-    if "landings" in axes:
-        _landings(axes["landings"], landings, origin)
-    if "rate" in axes:
-        _force_rates(axes["rate"], *loads)
-    if "energy" in axes:
-        _impacts(axes["energy"], axes["speed"], events, is_slap, slap_threshold, origin)
+    panels += ["impact energy", "impact speed"] if impacts.any() or not panels else []
+    title = "Piston slap: landings and impacts over one engine cycle"
     if not impacts.any():
-        fig.text(
-            0.5,
-            0.005,
-            "No impacts in this cycle: the skirt rode on its oil film"
-            if lubricated
-            else "No impacts in this cycle: the piston slid along the liner",
+        case += "\nno impact in this cycle: " + (
+            "the skirt rode on its oil film" if lubricated else "the piston slid along the liner"
+        )
+    fig, pairs = _axes_with_zoom(len(panels), title, case, origin)
+    draw = {
+        "landings": lambda ax, frame: _landings(ax, landings, frame),
+        "rate": lambda ax, frame: _force_rates(ax, *loads, frame),
+        "impact energy": lambda ax, frame: _impacts(ax, "energy", events, is_slap, slap_threshold, frame),
+        "impact speed": lambda ax, frame: _impacts(ax, "speed", events, is_slap, slap_threshold, frame),
+    }
+    for panel, (cycle_ax, zoom) in zip(panels, pairs, strict=True):
+        for ax, frame in ((cycle_ax, origin), (zoom, CENTRED)):
+            _mahle_windows(ax, frame, legend=ax is pairs[0][0])
+            draw[panel](ax, frame)
+            _zero_near_bottom(ax)
+        if zoom.get_legend():
+            zoom.get_legend().remove()
+        zoom.set_ylabel("")
+    if "impact energy" in panels:
+        # one legend for both impact panels, above the first
+        energy, speed = (pairs[panels.index(name)][0] for name in ("impact energy", "impact speed"))
+        speed.get_legend().remove()
+        handles, labels = energy.get_legend_handles_labels()
+        threshold = next(line for line in speed.get_lines() if line.get_label().startswith("slap threshold"))
+        _legend(energy, ncol=3, handles=[*handles, threshold], labels=[*labels, threshold.get_label()])
+    # the legend above the first panel names the windows; the zoom shows them wide enough to name them there too
+    for name, low, high in MAHLE_WINDOWS:
+        pairs[0][1].annotate(
+            name,
+            ((low + high) / 2, 1),
+            xycoords=("data", "axes fraction"),
+            xytext=(0, 2),
+            textcoords="offset points",
+            rotation=90,
             ha="center",
             va="bottom",
-            fontsize="small",
-            style="italic",
+            fontsize="x-small",
         )
-    for ax in axes.values():
-        _zero_near_bottom(ax)
-    return _save(fig, path, rect=(0, 0.025, 1, 1))
+    return _save(fig, path, tight=False)
 
 
 def _zero_near_bottom(ax):
@@ -185,7 +249,15 @@ def _landings(ax, landings, origin):
         name = label.split(" (")[0]
         energy, loss = landings["kinetic_energy"][mine] * 1e3, landings["energy_loss"][mine] * 1e3
         ax.vlines(deg[mine], 0, energy, color=colour, lw=1)
-        ax.plot(deg[mine], energy, "o", color=colour, ms=5, zorder=4, label=f"{name}: {mine.sum()} landings, energy")
+        ax.plot(
+            deg[mine],
+            energy,
+            "o",
+            color=colour,
+            ms=5,
+            zorder=4,
+            label=f"{name}: {_count(mine.sum(), 'landing')}, energy",
+        )
         ax.plot(deg[mine], loss, "D", mfc="none", color=colour, ms=5, mew=1, zorder=4, label=f"{name}: energy taken")
     if not len(landings):
         ax.text(0.5, 0.5, "no landing in this cycle", transform=ax.transAxes, ha="center", va="center")
@@ -193,61 +265,62 @@ def _landings(ax, landings, origin):
     _legend(ax, ncol=3)
 
 
-def _force_rates(ax, angle, result):
+def _force_rates(ax, angle, result, origin):
     """Per wall, the rise rate of its load between consecutive samples (falls not drawn), at the later sample."""
-    deg = np.degrees(angle)
+    deg = np.degrees(from_firing_tdc(angle, origin))
     time = result["time"]
     for side, (label, _, colour) in zip(WALLS, SIDES, strict=True):
-        rate = np.diff(result[f"liner_force_{side}"]) / np.diff(time)
-        ax.plot(deg[1:], np.maximum(rate, 0) * 1e-6, color=colour, lw=0.9, label=label.split(" (")[0])
+        rate = np.maximum(np.diff(result[f"liner_force_{side}"]) / np.diff(time), 0) * 1e-6
+        ax.plot(*_broken_at_wraps(deg[1:], rate), color=colour, lw=0.9, label=label.split(" (")[0])
     ax.set_ylabel("wall load rise\nrate [kN/ms]")
     _legend(ax, ncol=2)
 
 
-def _impacts(energy, speed, events, is_slap, slap_threshold, origin):
-    """Every impact's dissipated energy and approach speed by wall, slaps filled on stems, the threshold drawn."""
+def _impacts(ax, what, events, is_slap, slap_threshold, origin):
+    """Every impact's dissipated `energy` or approach `speed` by wall, slaps filled on stems; with the speeds, the
+    slap threshold."""
     impacts = events["kind"] == "impact"
     deg = np.degrees(from_firing_tdc(events["crank_angle"], origin))
+    values = events["energy_lost"] * 1e3 if what == "energy" else events["normal_velocity_before"] * 1e3
     for label, corners, colour in SIDES:
         mine = impacts & np.isin(events["corner"], corners)
-        slaps, others = mine & is_slap, mine & ~is_slap
-        for ax, values in ((energy, events["energy_lost"] * 1e3), (speed, events["normal_velocity_before"] * 1e3)):
-            ax.vlines(deg[slaps], 0, values[slaps], color=colour, lw=1)
-            ax.plot(deg[slaps], values[slaps], "o", color=colour, ms=5, zorder=4, label=f"{label}: {slaps.sum()} slaps")
-            ax.plot(
-                deg[others],
-                values[others],
-                "o",
-                mfc="none",
-                color=colour,
-                ms=3,
-                mew=0.8,
-                zorder=3,
-                clip_on=False,
-                label=f"{label}: {others.sum()} other impacts",
-            )
+        slaps, others, name = mine & is_slap, mine & ~is_slap, label.split(" (")[0]
+        ax.vlines(deg[slaps], 0, values[slaps], color=colour, lw=1)
+        ax.plot(
+            deg[slaps], values[slaps], "o", color=colour, ms=5, zorder=4, label=f"{name}: {_count(slaps.sum(), 'slap')}"
+        )
+        ax.plot(
+            deg[others],
+            values[others],
+            "o",
+            mfc="none",
+            color=colour,
+            ms=3,
+            mew=0.8,
+            zorder=3,
+            clip_on=False,
+            label=f"{name}: {_count(others.sum(), 'other impact')}",
+        )
+    if what == "energy":
+        ax.set_ylabel("energy dissipated\nper impact [mJ]")
+        return
     # named in the legend: a label on the line would sit among the bounces that follow each slap
-    speed.axhline(
-        slap_threshold * 1e3, color="k", lw=0.8, ls="--", label=f"slap threshold {slap_threshold * 1e3:g} mm/s"
-    )
-    energy.set_ylabel("energy dissipated\nper impact [mJ]")
-    speed.set_ylabel("impact speed [mm/s]")
-    _legend(speed, ncol=2)
+    ax.axhline(slap_threshold * 1e3, color="k", lw=0.8, ls="--", label=f"slap threshold {slap_threshold * 1e3:g} mm/s")
+    ax.set_ylabel("impact speed [mm/s]")
+    _legend(ax, ncol=2)
 
 
-def _mahle_windows(axes, origin):
-    """MAHLE's windows shaded on every axis (on a 0…720° axis the part before firing TDC at its end), named in the
-    first axis' legend."""
+def _mahle_windows(ax, origin, legend=False):
+    """MAHLE's windows shaded (on a 0…720° axis the part before firing TDC at its end), named in the legend when
+    `legend`."""
     start = np.degrees(origin)
     for (name, low, high), colour in zip(MAHLE_WINDOWS, _WINDOW_COLOURS, strict=True):
-        label = f"{name} {low:g}…{high:g}° (MAHLE)"
+        label = f"{name} {low:g}…{high:g}° (MAHLE)".replace("-", "−") if legend else "_window"
         for shift in (0.0, 720.0):
             lo, hi = max(low + shift, start), min(high + shift, start + 720)
-            if lo >= hi:
-                continue
-            for ax in axes:
-                ax.axvspan(lo, hi, color=colour, lw=0, zorder=0, label=label if ax is axes[0] else "_window")
-            label = "_window"
+            if lo < hi:
+                ax.axvspan(lo, hi, color=colour, lw=0, zorder=0, label=label)
+                label = "_window"
 
 
 def _zero_at_same_height(*axes):
