@@ -92,7 +92,7 @@ def test_the_rise_rate_drawn_peaks_at_the_fmus_cycle_figure(oil):
         line = next(line for line in rates.get_lines() if line.get_color() == colour)
         fmu = last[header.index(f"cycle_max_liner_force_rate_{wall} [N/s]")]
         assert fmu > 0
-        assert line.get_ydata().max() == pytest.approx(fmu * 1e-6, rel=1e-6)
+        assert np.nanmax(line.get_ydata()) == pytest.approx(fmu * 1e-6, rel=1e-6)
 
 
 def test_on_oil_piston_motion_png_shows_the_film_and_wall_loads_not_corner_contacts(oil):
