@@ -50,10 +50,12 @@ coupled: fmu venv
 	$(PISTONSLAP) coupled --out out/coupled
 	for preset in $$($(VENV_PYTHON) -c "from pistonslap.engine_cycle_presets import PRESETS; print(*PRESETS)"); do $(PISTONSLAP) coupled --engine $$preset --out out/coupled/$$preset || exit 1; done
 
-# The style gate (rustfmt, clippy with warnings as errors, the API documentation's links, ruff's formatter and linter
-# on python/), the Rust tests, then the fmpy tests against the packaged FMU, its win64 binary under Wine among them;
-# fails if any fails.
+# The style gate (the text gate of build/text_gate.py: no history words or design/seed numbers in src/'s comments
+# and the design documents; rustfmt, clippy with warnings as errors, the API documentation's links, ruff's formatter
+# and linter on python/), the Rust tests, then the fmpy tests against the packaged FMU, its win64 binary under Wine
+# among them, and the documentation's tables against what their commands print now; fails if any fails.
 test: toolchain fmu venv
+	$(PYTHON) build/text_gate.py
 	cargo fmt --check
 	cargo clippy --all-targets -- -D warnings
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib --quiet
@@ -96,7 +98,7 @@ soak:
 
 # The lubricated skirt's convergence in the film relaxation τ (at the default grid) and in the film grid (at the
 # default τ), the default engine at 1200 and 3000 rpm, the second cycle of each run against the first row's: the
-# tables of docs/lubricated_skirt.md (about an hour on the 2-CPU machine).
+# tables of documentation/validation/lubricated_skirt.md, which `make test` checks (seconds on the 2-CPU machine).
 film-convergence:
 	cargo run --release --example film_convergence -- 1200 1.25e-5:16:24 2.5e-5:16:24 5e-5:16:24 1e-4:16:24
 	cargo run --release --example film_convergence -- 1200 1e-4:24:36 1e-4:16:24 1e-4:12:18 1e-4:8:12

@@ -1,8 +1,8 @@
 //! The lubricated default engine (`skirt_model = 2`) at a crank speed, one warm-up cycle and one
 //! measured, for each film relaxation τ and film grid given: the thinnest film per side, the skirt
 //! FMEP, the largest film side force and skirt friction force of the measured cycle, their
-//! differences from the first configuration (the reference), and the wall time per cycle.
-//! The sweeps of `docs/lubricated_skirt.md` (`make film-convergence`):
+//! differences from the first configuration (the reference), printed as a markdown table (the wall
+//! time per cycle on stderr). The tables of `documentation/validation/lubricated_skirt.md`:
 //! `cargo run --release --example film_convergence -- RPM TAU:NC:NA [TAU:NC:NA …]`.
 
 use pistonslap::fmus::piston_slap::Simulation;
@@ -66,32 +66,34 @@ fn main() {
             (parse(v[0]), (parse(v[1]) as i32, parse(v[2]) as i32))
         })
         .collect();
-    println!("{rpm} rpm, cycle 2 of 2 | τ (s), grid | film thrust, anti-thrust (µm) | FMEP (bar) | side force, friction (N) | differences from the first row | wall s per cycle");
+    println!("| {rpm} rpm, τ, grid | film thrust / anti-thrust | FMEP | peak side force | peak friction |");
+    println!("|---|---|---|---|---|");
     let mut reference: Option<Measured> = None;
     for (tau, grid) in configurations {
         let m = run(rpm, tau, grid);
-        let relative = |a: f64, b: f64| format!("{:+.2} %", 100.0 * (a / b - 1.0));
-        let differences = reference.as_ref().map_or("reference".to_string(), |r| {
-            format!(
-                "film {} / {}, FMEP {}, side {}, friction {}",
-                relative(m.film[0], r.film[0]),
-                relative(m.film[1], r.film[1]),
-                relative(m.fmep, r.fmep),
-                relative(m.side, r.side),
-                relative(m.friction, r.friction)
-            )
-        });
-        println!(
-            "τ {tau:.1e} s, {:>2}×{:<2} | {:.3} / {:.3} µm | {:.5} bar | {:.1} / {:.2} N | {differences} | {:.2} s",
-            grid.0,
-            grid.1,
-            m.film[0] * 1e6,
-            m.film[1] * 1e6,
-            m.fmep * 1e-5,
-            m.side,
-            m.friction,
-            m.wall
-        );
+        let label = format!("{tau:e} s, {} × {}", grid.0, grid.1);
+        match &reference {
+            None => println!(
+                "| {label} | {:.3} / {:.3} µm | {:.5} bar | {:.1} N | {:.2} N |",
+                m.film[0] * 1e6,
+                m.film[1] * 1e6,
+                m.fmep * 1e-5,
+                m.side,
+                m.friction
+            ),
+            Some(r) => {
+                let relative = |a: f64, b: f64| format!("{:+.2} %", 100.0 * (a / b - 1.0)).replace('-', "−");
+                println!(
+                    "| {label} | {} / {} | {} | {} | {} |",
+                    relative(m.film[0], r.film[0]),
+                    relative(m.film[1], r.film[1]),
+                    relative(m.fmep, r.fmep),
+                    relative(m.side, r.side),
+                    relative(m.friction, r.friction)
+                );
+            }
+        }
+        eprintln!("{label}: {:.2} s wall per cycle", m.wall);
         reference.get_or_insert(m);
     }
 }

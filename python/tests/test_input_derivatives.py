@@ -3,9 +3,10 @@ polynomials inside the step, the crank angle integrates the interpolated speed e
 ends its derivatives, bad calls are refused; and a host-supplied pressure converges with the step size, far faster with
 first derivatives than held."""
 
-import numpy as np
 import pytest
 from fmpy.fmi1 import FMICallException
+
+from pistonslap.validation import FED_REFERENCE_STEP, FED_STEPS, fed_cycles
 
 from harness import FMI_ERROR, Instance
 
@@ -86,62 +87,12 @@ def test_bad_input_derivatives_are_refused_naming_the_cause(unpacked_fmu, name, 
 # --- a host-supplied Wiebe pressure cycle: step-size convergence, held against first-order inputs ---------------------
 
 
-class FullLoadPressure:
-    """The shipped full-load trace (gauge) as a C¹ function of crank angle: cubic Hermite through its 0.5° samples
-    with centred-difference slopes, and its crank-angle derivative. Independent of the FMU's interpolant."""
-
-    def __init__(self, unpacked_fmu):
-        data = np.loadtxt(f"{unpacked_fmu[0]}/resources/full_load.csv", delimiter=",", skiprows=1)
-        self.start, self.spacing = np.radians(data[0, 0]), np.radians(data[1, 0] - data[0, 0])
-        self.p = (data[:, 1] - 1) * 1e5
-        self.m = (np.roll(self.p, -1) - np.roll(self.p, 1)) / (2 * self.spacing)
-
-    def __call__(self, theta):
-        """(p, dp/dθ) at crank angle `theta`."""
-        x = (theta - self.start) % (4 * np.pi) / self.spacing
-        k = int(x) % len(self.p)
-        s, k1, dx = x - int(x), (k + 1) % len(self.p), self.spacing
-        p0, p1, m0, m1 = self.p[k], self.p[k1], self.m[k] * dx, self.m[k1] * dx
-        value = (
-            (2 * s**3 - 3 * s**2 + 1) * p0
-            + (s**3 - 2 * s**2 + s) * m0
-            + (3 * s**2 - 2 * s**3) * p1
-            + (s**3 - s**2) * m1
-        )
-        slope = (6 * s**2 - 6 * s) * (p0 - p1) + (3 * s**2 - 4 * s + 1) * m0 + (3 * s**2 - 2 * s) * m1
-        return value, slope / dx
-
-
-def fed_cycles(unpacked_fmu, pressure, h, first_order, cycles=2):
-    """One warm-up cycle, then `cycles` at 1200 rpm with `gas_pressure` fed at each step (and its time derivative
-    ω dp/dθ when `first_order`): (impact energy per cycle [J], largest impact velocity [m/s]) after the warm-up."""
-    cycle = 4 * np.pi / W0
-    steps, warm_up = round((cycles + 1) * cycle / h), round(cycle / h)
-    with Instance(unpacked_fmu) as s:
-        s.initialize(pressure_source=1)
-        fastest = 0.0
-        for k in range(steps):
-            p, dp = pressure(W0 * k * h)
-            s.set(gas_pressure=p)
-            if first_order:
-                derivatives(s, "gas_pressure", W0 * dp)
-            s.step(h)
-            if k + 1 == warm_up:
-                energy_at_warm_up = s.get("impact_energy_total")[0]
-            elif k + 1 > warm_up:
-                fastest = max(fastest, s.get("max_impact_velocity_in_step")[0])
-        return (s.get("impact_energy_total")[0] - energy_at_warm_up) / cycles, fastest
-
-
-STEPS = [1e-3, 5e-4, 2e-4, 1e-4]
-
-
 @pytest.fixture(scope="module")
-def convergence(unpacked_fmu):
-    """{(h, first_order): (energy per cycle, max impact velocity)} and the 1e-5 s first-order reference."""
-    pressure = FullLoadPressure(unpacked_fmu)
-    runs = {(h, first): fed_cycles(unpacked_fmu, pressure, h, first) for h in STEPS for first in (False, True)}
-    return runs, fed_cycles(unpacked_fmu, pressure, 1e-5, True)
+def convergence():
+    """{(h, first_order): (energy per cycle, max impact velocity)} and the 1e-5 s first-order reference: the runs of
+    documentation/validation/coupling.md's table (`pistonslap.validation`, cached, so that its check reuses them)."""
+    runs = {(h, first): fed_cycles(h, first) for h in FED_STEPS for first in (False, True)}
+    return runs, fed_cycles(FED_REFERENCE_STEP, True)
 
 
 def test_first_derivatives_at_1_ms_are_within_3_percent_of_the_fine_step_reference(convergence):
@@ -157,5 +108,5 @@ def test_both_converge_with_the_step_and_first_order_is_closer_at_every_step(con
     error = {key: abs(value[0] / energy - 1) for key, value in runs.items()}
     for first in (False, True):
         assert error[1e-4, first] < error[1e-3, first] / 5
-    for h in STEPS:
+    for h in FED_STEPS:
         assert error[h, True] < error[h, False]

@@ -20,47 +20,17 @@ below moves by under 1 % (FMEP 0.05096 against 0.05120 bar, top eccentricity 36.
 differences asserted are 2.5 % and more.
 """
 
-from functools import cache
-
 import numpy as np
 import pytest
 
-from pistonslap.fmu import CYCLE, simulate
-from pistonslap.presets import PRESETS
+from pistonslap.fmu import CYCLE
+from pistonslap.validation import LU_ON_OIL as ENGINE
+from pistonslap.validation import barrel, second_cycle
 
-ENGINE = dict(PRESETS["lu2018-diesel-oil"].values, skirt_grid_circumferential=6, skirt_grid_axial=8)
 OMEGA = ENGINE["crank_speed"]
 CLEARANCE = (ENGINE["bore"] - ENGINE["piston_diameter"]) / 2
 #: rad, the FMU's default skirt_arc (the preset keeps it).
 SKIRT_ARC = np.radians(70)
-OUTPUTS = [
-    "crank_angle",
-    "skirt_top_lateral",
-    "skirt_bottom_lateral",
-    "piston_lateral_velocity",
-    "piston_axial",
-    "film_force",
-    "skirt_friction_force",
-    "cycle_skirt_fmep",
-]
-
-
-@cache
-def second_cycle(profile):
-    """(the second cycle's samples, its skirt FMEP in Pa) with `skirt_profile = profile`."""
-    step = 1e-4
-    result = simulate(
-        stop_time=2 * CYCLE / OMEGA + 2 * step,
-        output_interval=step,
-        start_values=dict(ENGINE, skirt_profile=profile),
-        output=OUTPUTS,
-    )
-    cycle = result[(result["crank_angle"] >= CYCLE) & (result["crank_angle"] < 2 * CYCLE)]
-    return cycle, result["cycle_skirt_fmep"][-1]
-
-
-def barrel(top_um, bottom_um):
-    return f"parabola {top_um}e-6 {bottom_um}e-6"
 
 
 def test_the_barrel_skirt_lowers_the_friction_loss_and_the_lateral_velocity():

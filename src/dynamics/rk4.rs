@@ -131,8 +131,8 @@ pub(super) fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
 /// `rk4_to` for the step last taken from `s0`, cut at `t`: its stages take the terms that step
 /// prepared (`System::begin_step` is not called), so that it integrates the same equations the
 /// step's dense output came from, which the event search checked. A lubricated skirt's film prepared
-/// for the shorter step can put a corner inside the liner where the dense output has it clear (2e-8 m,
-/// lubricated random design 696).
+/// for the shorter step can put a corner inside the liner (by tens of nanometres) where the dense
+/// output has it clear.
 pub(super) fn rk4_cut<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     s0: &Sample<N, M>,
@@ -183,11 +183,11 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
     // A system that absorbs (the lubricated skirt) prepares its film for this step. With a
     // constraint held, the start is evaluated again with it, so that the first stage, the event
     // search's start and the dense output take the film the other stages take: a held corner's
-    // force is the small difference of the film's and the linkage's, and the step before's film can
-    // put a corner at +4.6 N where this step's puts it at −0.5 N (lubricated random design 31886).
+    // force is the small difference of the film's and the linkage's (a few newtons beside kilonewtons),
+    // and the step before's film can put it on the other side of zero from this step's.
     // In flight the first stage keeps the step before's film, an O(dt) difference like the other
     // stages' linearisation: there the film carries the motion whole, and the default engine's peak
-    // film force depends less on the step so (`docs/lubricated_skirt.md`).
+    // film force depends less on the step so (`documentation/design/lubricated_skirt.md`).
     let refreshed = if ABSORBS && prepare && contacts.held != 0 { Some(sample(sys, s0.t, s0.q, s0.v, contacts)?.after(s0)) } else { None };
     let s0 = refreshed.as_ref().unwrap_or(s0);
     // Three monomorphizations of the step: a flight's stages need `M` and `f` alone, and

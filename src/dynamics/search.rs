@@ -109,7 +109,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 // quintic extension shows, and the outputs with it, had a stage value of +16 mN).
                 // A system that absorbs (a film's damping, thousands of times the inertia in the
                 // fast modes) magnifies the stage's offset: there the quintic extension's middle is
-                // read as well (lubricated declared design 36: stage +1.4 N, extension −1.1 N).
+                // read as well (a held force can be newtons above zero at the stage and below it on
+                // the extension).
                 let held_dip = w != Watch::Gap && located.is_none() && {
                     let dipping = |gm: f64| lowest(g0, gm, g1) < (g0 - gm).abs() + (gm - g1).abs();
                     dipping(middle.watched(i, w) - lift) || (sys.absorbs() && dipping(on_dense(0.5 * (s0.t + step_end.t), i, w)? - lift))

@@ -32,7 +32,7 @@ const MIN_STEP_FRACTION: f64 = 1e-4;
 
 /// How close to a step's start, in ulps of the time, an event is at the start for the rule that takes
 /// an absorbing system's step again shorter (`Stepper::step`): the event search locates a crossing the
-/// laws left at zero a few ulps on (lubricated engine design 18377: a held corner's release, 1 ulp).
+/// laws left at zero a few ulps on (a held corner's release, down to one ulp after the start).
 const START_ULPS: f64 = 16.0;
 
 /// Constraints that can be enumerated by the complementarity solvers (2^M supports).
@@ -233,7 +233,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             self.count(|c| c.accepted += 1);
             // The friction work goes on from what the served point showed: the cut step's own
             // quadrature differs from the step's interpolation by its truncation error, and a
-            // total the host has read must not fall (−9e-18 J of 1.2e-9 J was seen).
+            // total the host has read must not fall, not even by that round-off.
             s.friction_work = ahead.now.friction_work;
             self.state = s;
             if self.contacts.held != 0 {
@@ -482,8 +482,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             // instant, without end. So is any event a step finds at its very start: the laws decided
             // there with the film of the step that located it, the step reads its start with a film
             // solved half a step on, and a held corner's stick or slip can turn on the difference
-            // (lubricated declared design 1189: a stick and the slip it started undone at once, 10⁴
-            // times); a shorter step's film is nearer the laws'.
+            // (a stick and the slip it started can undo each other at the same instant without end); a
+            // shorter step's film is nearer the laws'.
             StepEnd::Event { at: (s, _), .. }
                 if s.t - self.state.t <= START_ULPS * f64::EPSILON * self.state.t.abs()
                     && self.system.absorbs()

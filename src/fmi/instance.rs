@@ -380,13 +380,10 @@ impl<E: Model> Instance<E> {
         if let Phase::StepComplete(sim) | Phase::Terminated(sim) = &core.phase {
             // Restoring cuts the state's log file: only this instance's own log may be cut, so
             // foreign or crafted state bytes cannot truncate an arbitrary file.
-            let own = E::own_log(&self.core.parameters);
-            if let Some(path) = E::log_path(sim).filter(|p| *p != own) {
-                return Err(Refusal::error(format!(
-                    "the state writes impact_log {path:?}, not this instance's impact_log {own:?}: refused"
-                )));
+            if let Some(why) = E::foreign_log(sim, &self.core.parameters) {
+                return Err(Refusal::error(format!("{why}: refused")));
             }
-            E::rewind_log(sim).map_err(|e| Refusal::error(format!("cannot restore the impact log: {e}")))?;
+            E::rewind_log(sim).map_err(|e| Refusal::error(format!("cannot restore the logs: {e}")))?;
         }
         self.core = core.clone();
         self.failure = None;

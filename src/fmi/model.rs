@@ -55,11 +55,10 @@ pub trait Model: Sized + Clone + Debug + 'static {
     fn outputs(sim: &Self::Simulation) -> &Self::Outputs;
     /// A restored simulation is one the parameters can make.
     fn check(sim: &Self::Simulation) -> Result<(), ModelError>;
-    /// The file the instance's parameters write to ("" when none): a restored state may cut only it.
-    fn own_log(parameters: &Self::Parameters) -> &str;
-    /// The file a simulation writes to, if any.
-    fn log_path(sim: &Self::Simulation) -> Option<&str>;
-    /// Cuts that file back to what the simulation has written.
+    /// Why a restored simulation may not cut the files it writes: a file the instance's parameters
+    /// do not name (a restored state may cut only the instance's own), None when it may.
+    fn foreign_log(sim: &Self::Simulation, parameters: &Self::Parameters) -> Option<String>;
+    /// Cuts the files the simulation writes back to what it has written.
     fn rewind_log(sim: &Self::Simulation) -> Result<(), ModelError>;
     /// The derivatives of the input called `name`, None when it has none.
     fn input_derivatives<'a>(derivatives: &'a mut Self::InputDerivatives, name: &str) -> Option<&'a mut [f64; 2]>;

@@ -59,6 +59,9 @@ pub struct EngineEvent {
     pub friction_energy: f64,
     /// m, pin position along the cylinder axis.
     pub position: f64,
+    /// J, the piston's kinetic energy of lateral motion and tilt just before the event (the
+    /// `lateral_kinetic_energy` output's).
+    pub lateral_kinetic_energy: f64,
 }
 
 /// A model variant as the FMU drives it: built from parameters, advanced with held inputs.

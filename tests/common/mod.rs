@@ -3,6 +3,7 @@
 #![allow(dead_code)]
 
 pub mod designs;
+pub mod flores;
 pub mod fmu_designs;
 pub mod fmu_host;
 pub mod output_checks;

@@ -3,51 +3,8 @@
 //! against Siconos' published figures, the tilting slider at three communication steps.
 
 use crate::common::designs::flores;
-use pistonslap::models::{CrankTrain, EnergyBalance, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
-use std::f64::consts::PI;
-
-/// The crank starts at 150 rad/s, unloaded, no gas.
-const INPUTS: Inputs = Inputs { crank_speed: 150.0, gas_pressure: 0.0, load_torque: 0.0 };
-
-struct Run {
-    revolutions: f64,
-    initial_energy: f64,
-    final_energy: f64,
-    events: Vec<EngineEvent>,
-}
-
-impl Run {
-    fn dissipated(&self) -> f64 {
-        self.events.iter().map(|e| e.energy_lost).sum()
-    }
-    /// Impacts faster than `speed` on K1..K4.
-    fn impacts_faster_than(&self, speed: f64) -> [usize; 4] {
-        let mut count = [0; 4];
-        for e in self.events.iter().filter(|e| e.kind == EngineEventKind::Impact && e.normal_velocity_before > speed) {
-            count[e.corner as usize - 1] += 1;
-        }
-        count
-    }
-}
-
-fn outputs(model: &CrankTrain) -> Outputs {
-    let mut out = Outputs::default();
-    model.write_outputs(&mut out);
-    out
-}
-
-/// 0.2 s in communication steps of `step`, as an FMU host runs it.
-fn run(params: &Parameters, step: f64) -> Run {
-    let mut model = CrankTrain::new(params, 0.0).unwrap();
-    let mut events = Vec::new();
-    model.advance(&INPUTS, 0.0, &mut events).unwrap();
-    let initial_energy = outputs(&model).kinetic_energy;
-    for k in 1..=(0.2 / step).round() as usize {
-        model.advance(&INPUTS, k as f64 * step, &mut events).unwrap_or_else(|e| panic!("step {step} s: {e}"));
-    }
-    let out = outputs(&model);
-    Run { revolutions: out.crank_angle / (2.0 * PI), initial_energy, final_energy: out.kinetic_energy, events }
-}
+use crate::common::flores::{published, run, Run};
+use pistonslap::models::Parameters;
 
 /// The flat slider against Siconos Moreau–Jean extrapolated to h → 0: 2.890957 revolutions at
 /// 0.2 s and 4.8013 % of the kinetic energy dissipated, to 1e-4; at h = 2e-7, 148 impacts faster
@@ -57,7 +14,7 @@ fn run(params: &Parameters, step: f64) -> Run {
 fn flat_slider_matches_siconos() {
     let r = run(&flores(0.0), 1e-4);
     assert!((r.revolutions / 2.890957 - 1.0).abs() < 1e-4, "{} revolutions", r.revolutions);
-    let percent = 100.0 * r.dissipated() / r.initial_energy;
+    let percent = 100.0 * r.dissipated() / r.kinetic[0];
     assert!((percent / 4.8013 - 1.0).abs() < 1e-4, "{percent} % dissipated");
     assert_eq!(r.impacts_faster_than(1e-3), [34, 34, 40, 40]);
     assert_eq!(r.impacts_faster_than(1e-2).iter().sum::<usize>(), 102);
@@ -75,7 +32,7 @@ fn initial_kinetic_energy_is_the_closed_form() {
     let expected = 0.5 * (7.4e-5 + 0.038 * 0.0765_f64.powi(2)) * w * w
         + 0.5 * (5.9e-4 + 0.038 * 0.153_f64.powi(2)) * rod_rate * rod_rate
         + 0.5 * 2.7e-6 * 1e-4;
-    assert!((r.initial_energy / expected - 1.0).abs() < 1e-14, "{} J against {expected} J", r.initial_energy);
+    assert!((r.kinetic[0] / expected - 1.0).abs() < 1e-14, "{} J against {expected} J", r.kinetic[0]);
 }
 
 /// The slider tilts (centre of mass 1 cm off the pin): it pivots on one corner while the other of
@@ -86,18 +43,12 @@ fn initial_kinetic_energy_is_the_closed_form() {
 fn tilting_slider_runs_and_converges_with_the_step() {
     let runs: Vec<Run> = [1e-3, 1e-4, 1e-5].into_iter().map(|step| run(&flores(0.01), step)).collect();
     for r in &runs {
-        let balance = (r.initial_energy - r.final_energy - r.dissipated()) / r.initial_energy;
+        let balance = (r.kinetic[0] - r.kinetic[1] - r.dissipated()) / r.kinetic[0];
         assert!(balance.abs() < 1e-7, "energy balance off by {balance:e}");
         assert!((r.revolutions / runs[2].revolutions - 1.0).abs() < 1e-7, "{} against {}", r.revolutions, runs[2].revolutions);
         assert_eq!(r.impacts_faster_than(1e-3), runs[2].impacts_faster_than(1e-3));
     }
     assert!(runs[2].impacts_faster_than(1e-3).iter().sum::<usize>() > 100, "it does hit the liner");
-}
-
-/// The benchmark as published: μ = 0.01 at the corners, gravity 9.81 m/s² across the guide (Flores'
-/// −y, PistonSlap's +x), the slider's tilt rate −0.01 rad/s at the start.
-fn published() -> Parameters {
-    Parameters { friction: 0.01, gravity_lateral: 9.81, piston_tilt_rate_start: -0.01, ..flores(0.0) }
 }
 
 /// The published case at 1e-3, 1e-4 and 1e-5 s communication steps: Siconos' revolutions and
@@ -111,21 +62,12 @@ fn published_case_converges_with_the_step_and_balances_its_energy() {
     let runs: Vec<(Run, f64)> = [1e-3_f64, 1e-4, 1e-5]
         .into_iter()
         .map(|step| {
-            let mut model = CrankTrain::new(&published(), 0.0).unwrap();
-            let (mut events, n) = (Vec::new(), (0.2 / step).round() as usize);
-            model.advance(&INPUTS, 0.0, &mut events).unwrap();
-            let start = model.mechanical_energy();
-            for k in 1..=n {
-                model.advance(&INPUTS, k as f64 * step, &mut events).unwrap_or_else(|e| panic!("step {step} s: {e}"));
-            }
-            let out = outputs(&model);
-            let impact_friction: f64 = events.iter().map(|e| e.friction_energy).sum();
-            let lost: f64 = events.iter().map(|e| e.energy_lost).sum::<f64>() + out.friction_energy_total - impact_friction;
-            let balance = (start - model.mechanical_energy() - lost) / start;
+            let r = run(&published(), step);
+            let balance = (r.mechanical[0] - r.mechanical[1] - r.lost()) / r.mechanical[0];
             assert!(balance.abs() < 1e-7, "step {step}: balance {balance:e}");
-            assert!(out.friction_energy_total > 0.0 && impact_friction > 0.0, "friction dissipates in sliding and impacts");
-            let revolutions = out.crank_angle / (2.0 * PI);
-            (Run { revolutions, initial_energy: start, final_energy: model.mechanical_energy(), events }, lost / start)
+            assert!(r.friction > 0.0 && r.impact_friction() > 0.0, "friction dissipates in sliding and impacts");
+            let fraction = r.lost() / r.mechanical[0];
+            (r, fraction)
         })
         .collect();
     let (first, fraction) = &runs[0];

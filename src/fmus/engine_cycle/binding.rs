@@ -44,10 +44,7 @@ impl Model for EngineCycle {
     fn check(sim: &EngineCycleRun) -> Result<(), ModelError> {
         sim.check()
     }
-    fn own_log(_: &EngineCycleParameters) -> &str {
-        ""
-    }
-    fn log_path(_: &EngineCycleRun) -> Option<&str> {
+    fn foreign_log(_: &EngineCycleRun, _: &EngineCycleParameters) -> Option<String> {
         None
     }
     fn rewind_log(_: &EngineCycleRun) -> Result<(), ModelError> {

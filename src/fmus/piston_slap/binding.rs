@@ -63,11 +63,8 @@ impl<E: EngineModel + Debug + Serialize + DeserializeOwned + 'static> Model for 
     fn check(sim: &Simulation<E>) -> Result<(), ModelError> {
         sim.check()
     }
-    fn own_log(parameters: &Parameters) -> &str {
-        &parameters.impact_log
-    }
-    fn log_path(sim: &Simulation<E>) -> Option<&str> {
-        sim.log_path()
+    fn foreign_log(sim: &Simulation<E>, parameters: &Parameters) -> Option<String> {
+        sim.foreign_log(parameters)
     }
     fn rewind_log(sim: &Simulation<E>) -> Result<(), ModelError> {
         sim.rewind_log()

@@ -2,7 +2,9 @@
 //! statistics computed from the event rows) and the impact log. No FFI and no FMI words: the FMI
 //! layer maps its calls and errors onto this.
 
+mod csv_log;
 mod impact_log;
+mod landings;
 mod model_variant;
 mod skirt_map;
 mod statistics;
@@ -11,6 +13,7 @@ pub use impact_log::ImpactLog;
 pub use model_variant::ModelVariant;
 
 use crate::models::{EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters};
+use landings::{Landing, LandingLog, Landings};
 use serde::{Deserialize, Serialize};
 use skirt_map::SkirtMap;
 use statistics::ImpactStatistics;
@@ -25,12 +28,17 @@ pub struct Simulation<E = ModelVariant> {
     time: f64,
     outputs: Outputs,
     statistics: ImpactStatistics,
+    landings: Landings,
     step_events: Vec<EngineEvent>,
     log: Option<ImpactLog>,
+    landing_log: Option<LandingLog>,
     map: Option<SkirtMap>,
     /// The event list of the step before last, lent to the next step (see [`Self::step`]).
     #[serde(skip)]
     spare_events: Scratch<Vec<EngineEvent>>,
+    /// The landings a step ended, lent from step to step.
+    #[serde(skip)]
+    ended: Scratch<Vec<Landing>>,
 }
 
 /// A buffer lent from step to step so that a step allocates nothing: not state, so not saved,
@@ -68,12 +76,16 @@ impl<E: EngineModel> Simulation<E> {
                 params.slap_threshold,
                 std::f64::consts::PI * 0.5 * params.piston_diameter * params.piston_diameter * params.crank_radius,
             ),
+            landings: Landings::default(),
             step_events: Vec::new(),
             log: None,
+            landing_log: None,
             map: None,
             spare_events: Scratch::default(),
+            ended: Scratch::default(),
         };
-        Self::write_outputs(&sim.model, &mut sim.statistics, Some(&[]), &mut sim.outputs);
+        Self::write_outputs(&sim.model, (&mut sim.statistics, &sim.landings), Some(&[]), &mut sim.outputs);
+        sim.landings.seat(start_time, &sim.outputs);
         Ok(sim)
     }
 
@@ -82,16 +94,21 @@ impl<E: EngineModel> Simulation<E> {
     /// (`kinetic_energy`, `crank_speed_actual`) describe it. A step rebuilds it from the inputs then.
     pub fn prepare(&mut self, inputs: &Inputs) -> Result<(), ModelError> {
         self.model.prepare(inputs)?;
-        Self::write_outputs(&self.model, &mut self.statistics, None, &mut self.outputs);
+        Self::write_outputs(&self.model, (&mut self.statistics, &self.landings), None, &mut self.outputs);
+        self.landings.seat(self.time, &self.outputs);
         Ok(())
     }
 
-    /// Builds as [`Self::new`] and creates the impact log and the skirt map when `impact_log` and
-    /// `skirt_map` name files: an unwritable path is an error here, not at the first impact or pass.
+    /// Builds as [`Self::new`] and creates the impact log, the landing log and the skirt map when
+    /// `impact_log`, `landing_log` and `skirt_map` name files: an unwritable path is an error here, not
+    /// at the first impact, landing or pass.
     pub fn start(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         let mut sim = Self::new(params, start_time)?;
         if !params.impact_log.is_empty() {
             sim.log = Some(ImpactLog::create(&params.impact_log)?);
+        }
+        if !params.landing_log.is_empty() {
+            sim.landing_log = Some(LandingLog::create(&params.landing_log)?);
         }
         sim.map = SkirtMap::of(params)?;
         Ok(sim)
@@ -135,7 +152,7 @@ impl<E: EngineModel> Simulation<E> {
         let before = served.is_none().then(|| self.model.clone());
         let mut events = std::mem::take(&mut self.spare_events.0);
         events.clear();
-        let statistics = self.statistics;
+        let (statistics, landings) = (self.statistics, self.landings);
         let in_step = (self.outputs.liner_impulse_antithrust_in_step, self.outputs.liner_impulse_thrust_in_step);
         match self.try_step(served, inputs, derivatives, t_end, &mut events) {
             Ok(()) => {
@@ -145,13 +162,13 @@ impl<E: EngineModel> Simulation<E> {
             }
             Err(e) => {
                 self.spare_events.0 = events;
-                self.statistics = statistics;
+                (self.statistics, self.landings) = (statistics, landings);
                 match before {
                     Some(before) => self.model = before,
                     None => self.model.serve_again(self.time).map_err(|u| ModelError(format!("{e}; undoing the step failed: {u}")))?,
                 }
                 // The outputs are those of the model and the statistics: as they were again.
-                Self::write_outputs(&self.model, &mut self.statistics, None, &mut self.outputs);
+                Self::write_outputs(&self.model, (&mut self.statistics, &self.landings), None, &mut self.outputs);
                 (self.outputs.liner_impulse_antithrust_in_step, self.outputs.liner_impulse_thrust_in_step) = in_step;
                 Err(e)
             }
@@ -174,7 +191,11 @@ impl<E: EngineModel> Simulation<E> {
         let advanced = served.unwrap_or_else(|| self.model.advance_interpolated(inputs, derivatives, t_end, events));
         advanced.map_err(|e| failed("failed", &e))?;
         let (before, crank_angle) = (self.outputs.liner_impulse_total, self.outputs.crank_angle);
-        Self::write_outputs(&self.model, &mut self.statistics, Some(events), &mut self.outputs);
+        Self::write_outputs(&self.model, (&mut self.statistics, &self.landings), Some(events), &mut self.outputs);
+        let ended = &mut self.ended.0;
+        ended.clear();
+        self.landings.record(events, t_end, &self.outputs, ended);
+        self.landings.write(&mut self.outputs);
         // The liner's impulse during the step: the difference of its totals.
         let total = self.outputs.liner_impulse_total;
         [self.outputs.liner_impulse_antithrust_in_step, self.outputs.liner_impulse_thrust_in_step] =
@@ -187,9 +208,19 @@ impl<E: EngineModel> Simulation<E> {
                 map.write(t_end, self.outputs.crank_angle, &fields)?;
             }
         }
+        // Each log cuts its file back and keeps its cursor when it fails; the landing log is put back
+        // where the impact log's failure fails the step after it.
+        let mark = self.landing_log.as_ref().map(LandingLog::mark);
+        if let Some(log) = &mut self.landing_log {
+            log.append(&self.ended.0)?;
+        }
         if let Some(log) = &mut self.log {
-            // Cuts the file back and keeps its cursor when it fails.
-            log.append(events)?;
+            if let Err(e) = log.append(events) {
+                if let (Some(landing_log), Some(mark)) = (&mut self.landing_log, mark) {
+                    landing_log.unwind(mark);
+                }
+                return Err(e);
+            }
         }
         Ok(())
     }
@@ -209,20 +240,32 @@ impl<E: EngineModel> Simulation<E> {
         }
     }
 
-    /// The impact log's file, if this simulation writes one.
-    pub fn log_path(&self) -> Option<&str> {
-        self.log.as_ref().map(ImpactLog::path)
+    /// A file this simulation writes that `params` do not name (a restored state may cut only the
+    /// instance's own files), as the refusal says it; None when there is none.
+    pub fn foreign_log(&self, params: &Parameters) -> Option<String> {
+        let foreign = |path: Option<&str>, own: &str, name: &str| {
+            path.filter(|p| *p != own).map(|p| format!("the state writes {name} {p:?}, not this instance's {name} {own:?}"))
+        };
+        foreign(self.log.as_ref().map(ImpactLog::path), &params.impact_log, "impact_log")
+            .or_else(|| foreign(self.landing_log.as_ref().map(LandingLog::path), &params.landing_log, "landing_log"))
     }
 
-    /// After a restore: cut the impact log back to this state's cursor.
+    /// After a restore: cut the impact and landing logs back to this state's cursors.
     pub fn rewind_log(&self) -> Result<(), ModelError> {
-        self.log.as_ref().map_or(Ok(()), ImpactLog::rewind)
+        self.log.as_ref().map_or(Ok(()), ImpactLog::rewind)?;
+        self.landing_log.as_ref().map_or(Ok(()), LandingLog::rewind)
     }
 
     /// Writes the outputs of `model` with the impact statistics `statistics`, which first take in the
-    /// `events` of a step (none for a new simulation) ending at the model's crank angle, if given.
-    /// Every output is written from the two: the outputs are a function of them.
-    fn write_outputs(model: &E, statistics: &mut ImpactStatistics, events: Option<&[EngineEvent]>, outputs: &mut Outputs) {
+    /// `events` of a step (none for a new simulation) ending at the model's crank angle, if given,
+    /// and the landings' figures. Every output is written from the three: the outputs are a
+    /// function of them (a step's landings are taken in from the model's outputs, then written again).
+    fn write_outputs(
+        model: &E,
+        (statistics, landings): (&mut ImpactStatistics, &Landings),
+        events: Option<&[EngineEvent]>,
+        outputs: &mut Outputs,
+    ) {
         model.write_outputs(outputs);
         // The engine's sign: what the crank train delivers to the drive or load.
         outputs.engine_torque = -outputs.crank_torque;
@@ -230,6 +273,7 @@ impl<E: EngineModel> Simulation<E> {
             statistics.record_step(events, outputs.crank_angle, outputs.liner_friction_work);
         }
         statistics.write(outputs);
+        landings.write(outputs);
         outputs.dissipated_energy_total = outputs.impact_energy_total + outputs.friction_energy_total + outputs.film_energy_total;
     }
 }

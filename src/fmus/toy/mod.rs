@@ -118,10 +118,7 @@ impl Model for Lag {
     fn check(sim: &Lag) -> Result<(), ModelError> {
         crate::models::check_real("time_constant", sim.time_constant, None, None, true, "s")
     }
-    fn own_log(_: &LagParameters) -> &str {
-        ""
-    }
-    fn log_path(_: &Lag) -> Option<&str> {
+    fn foreign_log(_: &Lag, _: &LagParameters) -> Option<String> {
         None
     }
     fn rewind_log(_: &Lag) -> Result<(), ModelError> {

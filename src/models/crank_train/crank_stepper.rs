@@ -4,6 +4,7 @@
 //! stepper as a `dyn CrankStepper`: the one place the crank train looks at which drive it has.
 
 use super::drive::{Engine, FreeCrank, PrescribedCrank};
+use super::linkage::LinkAngles;
 use crate::dynamics::{Absorbed, DynamicsError, Event, EventKind, StepCounts, Stepper, System};
 use crate::models::{EngineEvent, InputPolynomial, CYCLE};
 use nalgebra::{SVector, Vector3, Vector4};
@@ -240,7 +241,8 @@ impl<S: CrankDrive<N>, const N: usize> CrankStepper for Stepper<S, N, 4> {
     fn each_event(&self, cycles: f64, each: &mut dyn FnMut(CrankEvent)) {
         let system = self.system();
         for e in self.events() {
-            let phi = system.angles(e.time, &e.q, &e.v).0;
+            let (phi, phid) = system.angles(e.time, &e.q, &e.v);
+            let linkage = &system.engine().linkage;
             let row = EngineEvent {
                 time: e.time,
                 crank_angle: phi[0].rem_euclid(CYCLE),
@@ -251,7 +253,8 @@ impl<S: CrankDrive<N>, const N: usize> CrankStepper for Stepper<S, N, 4> {
                 normal_velocity_after: e.velocity_after,
                 energy_lost: e.energy_lost,
                 friction_energy: e.friction_energy,
-                position: system.engine().linkage.pin(&phi).y,
+                position: linkage.pin(&phi).y,
+                lateral_kinetic_energy: linkage.lateral_kinetic_energy(&LinkAngles::new(&phi), &phid),
             };
             each(CrankEvent { row, impulses: e.impulses, drive_work: system.drive_work(e) });
         }

@@ -135,8 +135,8 @@ impl Engine {
     /// An RK4 step begins: the lubricated skirt prepares its film at the state (φ, φ̇) predicted
     /// into it, with the corners' gaps there (`Lubrication::begin_step`); at the step's `start`
     /// where the prediction puts a corner through the liner, which the step's event search will
-    /// stop at: there the film would sit on its floor, stiffer than the linkage by ≈ 1e16 (random
-    /// lubricated declared design 5932, its inertia matrix then not positive definite to round-off).
+    /// stop at: there the film would sit on its floor, stiffer than the linkage by up to ≈ 1e16, and
+    /// the inertia matrix with its implicit term would not be positive definite to round-off.
     fn begin_step(&self, predicted: (Vector3<f64>, Vector3<f64>), start: (Vector3<f64>, Vector3<f64>)) {
         if let Some(lubrication) = &self.lubrication {
             let gaps = self.linkage.gaps(&predicted.0);

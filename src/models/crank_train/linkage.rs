@@ -337,6 +337,28 @@ impl Linkage {
         0.5 * phid.dot(&(mass * phid))
     }
 
+    /// The piston's kinetic energy of lateral motion and tilt, J: `½ m3 ẋ_c² + ½ J3 φ̇3²` with
+    /// `ẋ_c = −l1 cos φ1 φ̇1 − l2 cos φ2 φ̇2 − (e3 cos φ3 + a3 sin φ3) φ̇3` the lateral velocity of its
+    /// centre of mass (`e3` along the piston axis from the pin, `a3` across it).
+    pub fn lateral_kinetic_energy(&self, trig: &LinkAngles, phid: &Vector3<f64>) -> f64 {
+        let b = &self.bodies;
+        let ([_, _, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
+        let [l1, l2] = b.links;
+        let lateral = -l1 * c1 * phid[0] - l2 * c2 * phid[1] - (b.along[2] * c3 + b.across[2] * s3) * phid[2];
+        0.5 * (b.masses[2] * lateral * lateral + b.inertias[2] * phid[2] * phid[2])
+    }
+
+    /// Each corner's depth below the skirt top (the upper corners' height above the pin), m.
+    pub fn corner_depths(&self) -> [f64; 4] {
+        let top = self.bodies.corners[0].0;
+        self.bodies.corners.map(|(z, _, _)| top - z)
+    }
+
+    /// The skirt top's height above the pin along the piston axis, m.
+    pub fn pin_depth(&self) -> f64 {
+        self.bodies.corners[0].0
+    }
+
     fn centre_of_mass(&self, phi: &Vector3<f64>, k: usize) -> Vector2<f64> {
         let joints: Vector2<f64> = (0..k).map(|j| self.bodies.links[j] * along(phi[j])).sum();
         joints + self.bodies.along[k] * along(phi[k]) + self.bodies.across[k] * across(phi[k])
@@ -420,6 +442,24 @@ mod tests {
             bias[i] = side * accel;
         }
         (mass, force, jacobian, bias)
+    }
+
+    /// The lateral kinetic energy from the piston's centre of mass moved by central differences
+    /// along the motion, with a pin offset (so that the centre lies off the axis).
+    #[test]
+    fn lateral_kinetic_energy_is_the_piston_centres_lateral_motion_and_its_tilt() {
+        let p = Parameters { pin_offset: 0.002, piston_com: 0.013, ..Parameters::default() };
+        let l = Linkage::new(&p);
+        for (phi, phid) in states() {
+            let dt = 1e-7;
+            let x = |sign: f64| l.centre_of_mass(&(phi + phid * sign * dt), 2).x;
+            let lateral = (x(1.0) - x(-1.0)) / (2.0 * dt);
+            let expected = 0.5 * (p.piston_mass * lateral * lateral + p.piston_inertia * phid[2] * phid[2]);
+            let energy = l.lateral_kinetic_energy(&LinkAngles::new(&phi), &phid);
+            assert!((energy - expected).abs() < 1e-8 * expected, "{energy} vs {expected}");
+        }
+        assert_eq!(l.corner_depths(), [0.0, p.skirt_length, 0.0, p.skirt_length]);
+        assert_eq!(l.pin_depth(), p.pin_height);
     }
 
     #[test]

@@ -1,6 +1,6 @@
 //! The lubricated skirt (`skirt_model = 2`) on the crank train: the film and asperity loads of
 //! [`crate::models::skirt`] as generalized forces on φ = (φ1, φ2, φ3), their damping made linearly
-//! implicit through the inertia matrix (`docs/lubricated_skirt.md` gives the reasoning and the
+//! implicit through the inertia matrix (`documentation/design/lubricated_skirt.md` gives the reasoning and the
 //! measurements).
 //!
 //! The skirt sees the pin's lateral position `x = −l1 sin φ1 − l2 sin φ2`, the tilt φ3 and the pin's

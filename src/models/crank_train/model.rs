@@ -350,6 +350,8 @@ impl EngineModel for CrankTrain {
         out.piston_lateral_velocity =
             -self.geometry.crank_radius * trig.cos[0] * phid[0] - self.geometry.rod_length * trig.cos[1] * phid[1];
         out.piston_tilt = phi[2];
+        out.piston_tilt_rate = phid[2];
+        out.lateral_kinetic_energy = linkage.lateral_kinetic_energy(&trig, &phid);
         // The piston axis at a corner pair's height is midway between the two corners, whose gaps
         // from their walls are D/2 + x (K1, K2) and D/2 − x (K3, K4).
         out.skirt_top_lateral = 0.5 * (gaps[0] - gaps[2]);

@@ -35,7 +35,15 @@ impl CrankTrain {
         out: &mut Outputs,
     ) {
         let corners = forces[0] + forces[1] - forces[2] - forces[3];
+        let linkage = &self.engine().linkage;
+        // Each wall's load and its moment about the skirt top: the corners in contact, and the film
+        // and asperities on that side.
+        let pressed = forces.map(|f| f.max(0.0));
+        let depths = linkage.corner_depths();
+        let moment = |i: usize, j: usize| pressed[i] * depths[i] + pressed[j] * depths[j];
+        let mut walls = [(pressed[0] + pressed[1], moment(0, 1)), (pressed[2] + pressed[3], moment(2, 3))];
         let Some(lubrication) = &self.engine().lubrication else {
+            write_walls(walls, out);
             out.side_force = corners;
             [out.min_film_thickness_thrust, out.min_film_thickness_antithrust] = [gaps[2].min(gaps[3]), gaps[0].min(gaps[1])];
             out.liner_friction_work = out.friction_energy_total;
@@ -49,8 +57,24 @@ impl CrankTrain {
         out.skirt_friction_force = loads.friction_force;
         out.skirt_friction_power = lubrication.friction_power((phi, trig), phid);
         out.film_energy_total = work[0];
+        // A side's moment about the pin is its push times the height above the pin (thrust), or
+        // minus that (anti-thrust): about the skirt top, the push times the pin's depth less it.
+        let pin = linkage.pin_depth();
+        let [thrust, anti] = [loads.wall_push[0], loads.wall_push[1]];
+        walls[0] = (walls[0].0 + anti, walls[0].1 + anti * pin + loads.wall_moment[1]);
+        walls[1] = (walls[1].0 + thrust, walls[1].1 + thrust * pin - loads.wall_moment[0]);
+        write_walls(walls, out);
         out.liner_friction_work = out.friction_energy_total + work[1];
         // The walls' film and asperity impulses join the corners' (anti-thrust, thrust).
         out.liner_impulse_total = [out.liner_impulse_total[0] + work[2], out.liner_impulse_total[1] + work[3]];
     }
+}
+
+/// Writes each wall's load and moment about the skirt top, [anti-thrust, thrust], and the depth
+/// below the skirt top of the larger load's point of application (0 while neither wall is loaded).
+fn write_walls([anti, thrust]: [(f64, f64); 2], out: &mut Outputs) {
+    [out.liner_force_antithrust, out.liner_moment_antithrust] = [anti.0, anti.1];
+    [out.liner_force_thrust, out.liner_moment_thrust] = [thrust.0, thrust.1];
+    let (force, moment) = if thrust.0 >= anti.0 { thrust } else { anti };
+    out.liner_force_height = if force > 0.0 { moment / force } else { 0.0 };
 }

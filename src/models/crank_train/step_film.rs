@@ -98,6 +98,7 @@ impl StepFilm {
         }
         self.current.gram = self.along_secant(b.gram, |p| p.linear.gram);
         self.current.lateral_by_side = self.along_secant(b.lateral_by_side, |p| p.linear.lateral_by_side);
+        self.current.moment_by_side = self.along_secant(b.moment_by_side, |p| p.linear.moment_by_side);
         self.current.at = *motion;
         true
     }
@@ -135,8 +136,8 @@ impl StepFilm {
 /// semidefinite as every solve's is (to 1e-6 of its largest eigenvalue: one direction dissipates next
 /// to nothing, and the default engine's secants leave it at −1e-11 of the largest). A secant that
 /// moves it off, the pose ahead far along a slope that changes fast, would make the film give energy
-/// to the motion: random declared design 78 at τ = 7.6e-4 s (above the largest accepted), its film carried
-/// along such secants, whirled until its inertia matrix with the implicit term was not positive definite.
+/// to the motion: at a τ above the largest accepted, a film carried along such secants drives a whirl
+/// until the inertia matrix with the implicit term is not positive definite.
 fn dissipates(gram: &nalgebra::Matrix4x3<f64>) -> bool {
     let form = gram.fixed_view::<3, 3>(0, 0);
     let eigenvalues = nalgebra::SymmetricEigen::new((form + form.transpose()) * 0.5).eigenvalues;

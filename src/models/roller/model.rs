@@ -223,6 +223,7 @@ impl Roller {
     fn engine_event(&self, event: &Event<1, 2>, theta_start: f64) -> EngineEvent {
         let omega = self.crank_speed;
         let speed = self.lateral_scale(event.time) * omega;
+        let before = -event.velocity_before * speed;
         EngineEvent {
             time: self.time + (event.time - theta_start) / omega,
             // The turns taken off come in even blocks: the angle within a cycle is unchanged.
@@ -230,11 +231,13 @@ impl Roller {
             cycle: ((event.time + 2.0 * PI * self.turns) / CYCLE).floor() as i64,
             kind: event.kind.into(),
             corner: corner(event.constraint),
-            normal_velocity_before: -event.velocity_before * speed,
+            normal_velocity_before: before,
             normal_velocity_after: event.velocity_after * speed,
             energy_lost: event.energy_lost * self.energy_scale(),
             friction_energy: 0.0,
             position: self.axial_position(event.time, event.q[0]),
+            // The slider moves across the bore only: its normal speed is its lateral speed.
+            lateral_kinetic_energy: 0.5 * self.piston_mass * before * before,
         }
     }
 }
@@ -392,6 +395,8 @@ impl EngineModel for Roller {
         out.contact_force_4 = 0.0;
         // The −D/2 wall (upper) pushes toward +x.
         out.side_force = forces[UPPER] - forces[LOWER];
+        [out.liner_force_antithrust, out.liner_force_thrust] = [forces[UPPER], forces[LOWER]];
+        out.lateral_kinetic_energy = 0.5 * self.piston_mass * out.piston_lateral_velocity * out.piston_lateral_velocity;
         out.crank_speed_actual = omega;
         out.kinetic_energy = mechanism.kinetic_energy(theta, psi, dpsi) * self.energy_scale() + 0.5 * self.crank_inertia * omega * omega;
     }

@@ -62,6 +62,10 @@ pub struct SkirtLoads {
     /// (the film's; the asperities' load depends on the position alone): the walls' shares of
     /// `damping`, whose first row is `wall_push_rates` row 0 − row 1.
     pub wall_push_rates: Matrix2<f64>,
+    /// Each side's moment on the piston about the pin, N·m, conjugate to φ3, [thrust, anti-thrust]:
+    /// film and asperities on that side, `moment`'s shares (a push P at a height z above the pin
+    /// gives P z on the thrust side, −P z on the anti-thrust side).
+    pub wall_moment: Vector2<f64>,
     /// Band Cholesky factorisations per side (active-set steps): the evaluation's cost.
     pub factorisations: [usize; 2],
 }
@@ -81,6 +85,9 @@ pub struct FilmLinear {
     /// Each side's share of `gram`'s first row, [thrust, anti-thrust]: minus its pressure's lateral
     /// force per unit rate. The two rows sum to `gram`'s first.
     pub lateral_by_side: Matrix2x3<f64>,
+    /// Each side's share of `gram`'s second row, [thrust, anti-thrust]: minus its pressure's moment
+    /// about the pin per unit rate. The two rows sum to `gram`'s second.
+    pub moment_by_side: Matrix2x3<f64>,
     /// Per side, the film nodes (node order; false: cavitated).
     pub free: [Vec<bool>; 2],
     /// Both sides' Couette shear sums at the solve's pose and their gradient there.

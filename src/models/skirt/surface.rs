@@ -209,6 +209,7 @@ impl Skirt {
             let reynolds = &s.reynolds[side];
             linear.gram += Matrix4x3::from_fn(|a, c| reynolds.gram[a][c]);
             linear.lateral_by_side.set_row(side, &RowVector3::from_fn(|_, c| reynolds.gram[0][c]));
+            linear.moment_by_side.set_row(side, &RowVector3::from_fn(|_, c| reynolds.gram[1][c]));
             linear.free[side].clone_from(&reynolds.free);
         }
         let pose = self.pose(motion);
@@ -282,6 +283,7 @@ impl Skirt {
             squeeze_power: rates.dot(&(squeeze * rates)),
             wall_push: walls * rates,
             wall_push_rates: walls.fixed_columns::<2>(0).into_owned(),
+            wall_moment: -linear.moment_by_side * rates,
             factorisations: linear.factorisations,
             ..SkirtLoads::default()
         };
@@ -347,6 +349,7 @@ impl Skirt {
                     out.lateral_force += load * -c;
                     pushed += load * c;
                     out.moment += load * (alpha + beta * c);
+                    out.wall_moment[side_index] += load * (alpha + beta * c);
                     let axial = -d.boundary_friction * load * slip;
                     out.friction_force += axial;
                     out.friction_moment += axial * arm(z, r, c, (s3, c3), d.pin_offset);

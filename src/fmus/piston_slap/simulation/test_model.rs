@@ -73,6 +73,7 @@ impl EngineModel for Shuttle {
                 energy_lost: 0.5 * self.mass * (before * before - self.v * self.v),
                 friction_energy: 0.0,
                 position: 0.0,
+                lateral_kinetic_energy: 0.5 * self.mass * before * before,
             });
         }
         self.time = t_end;
@@ -81,6 +82,12 @@ impl EngineModel for Shuttle {
 
     fn write_outputs(&self, out: &mut Outputs) {
         // Overwrite everything, as a model may: the facade must keep its statistics regardless.
-        *out = Outputs { piston_lateral: self.x, piston_lateral_velocity: self.v, crank_angle: self.crank_angle, ..Outputs::default() };
+        *out = Outputs {
+            piston_lateral: self.x,
+            piston_lateral_velocity: self.v,
+            crank_angle: self.crank_angle,
+            lateral_kinetic_energy: 0.5 * self.mass * self.v * self.v,
+            ..Outputs::default()
+        };
     }
 }

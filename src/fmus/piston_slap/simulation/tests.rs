@@ -264,3 +264,114 @@ fn a_served_point_is_undone_by_reading_the_point_before_again() {
         assert!(served > least, "variant {model_variant}: {served} of 2000 points served");
     }
 }
+
+/// The shuttle's landings alternate walls from its second impact on (the first only finds a wall), each
+/// with the kinetic energy ½ m (eᵏ v0)² it arrives with and the loss (1 − e²) of it its one impact
+/// takes, ending where the next starts; a cycle (−360° to 360° about firing TDC, 0.1 s) is complete
+/// once its last landing has ended, with its largest landing per wall.
+#[test]
+fn landings_of_the_shuttle_match_the_closed_form() {
+    let path = temp_path("landings");
+    let p = Parameters { landing_log: path.to_str().unwrap().into(), restitution: 0.9, ..Parameters::default() };
+    let (e, m) = (p.restitution, p.piston_mass);
+    let times = impact_times(e, 12);
+    let mut sim = Sim::start(&p, 0.0).unwrap();
+    run(&mut sim, &Inputs::default(), 0.08, 1e-3);
+    let text = std::fs::read_to_string(&path).unwrap();
+    let rows: Vec<Vec<&str>> = text.lines().skip(2).map(|l| l.split(',').collect()).collect();
+    let ended = times.iter().filter(|&&t| t <= 0.08).count() - 2;
+    assert_eq!(rows.len(), ended, "{text}");
+    let number = |s: &str| s.parse::<f64>().unwrap();
+    for (k, row) in rows.iter().enumerate() {
+        let arriving = 0.5 * m * (e.powi(k as i32 + 1) * SHUTTLE_SPEED).powi(2);
+        assert!((number(row[0]) - times[k + 1]).abs() < 1e-12, "{row:?}");
+        assert_eq!(row[2], ["antithrust", "thrust"][k % 2], "{row:?}");
+        assert_eq!(row[3], "top");
+        assert!((number(row[4]) - arriving).abs() < 1e-12 * arriving, "{row:?}");
+        assert!((number(row[6]) - (1.0 - e * e) * arriving).abs() < 1e-12 * arriving, "{row:?}");
+        assert_eq!(row[10], "1");
+        assert!((number(row[11]) - times[k + 2]).abs() < 1e-12, "{row:?}");
+    }
+    // Cycle 0 (to t = 0.05 s) ends with the landing in progress there; its largest landings per wall
+    // are its first on each.
+    let out = sim.outputs();
+    let in_cycle = times.iter().skip(1).filter(|&&t| t < 0.05).count() as i32;
+    assert_eq!(out.cycle_landings_antithrust + out.cycle_landings_thrust, in_cycle);
+    let first = |k: i32| 0.5 * m * (e.powi(k) * SHUTTLE_SPEED).powi(2);
+    assert!((out.cycle_landing_energy_antithrust - first(1)).abs() < 1e-12 * first(1));
+    assert!((out.cycle_landing_energy_thrust - first(2)).abs() < 1e-12 * first(2));
+    assert!((out.cycle_landing_loss_thrust - (1.0 - e * e) * first(2)).abs() < 1e-12 * first(2));
+    let angle = Inputs::default().crank_speed * times[2];
+    assert!((out.cycle_landing_crank_angle_thrust - angle).abs() < 1e-9, "{} vs {angle}", out.cycle_landing_crank_angle_thrust);
+    std::fs::remove_file(path).unwrap();
+}
+
+/// On the dry crank train each landing starts at an impact or slide on the other wall than the last
+/// landing's, and its loss is the sum of its impacts' losses on its wall (normal and friction) until
+/// the next landing starts, as the impact log lists them.
+#[test]
+fn dry_landings_lose_what_their_impacts_dissipate() {
+    let (landings, impacts) = (temp_path("dry_landings"), temp_path("dry_impacts"));
+    let p = Parameters {
+        landing_log: landings.to_str().unwrap().into(),
+        impact_log: impacts.to_str().unwrap().into(),
+        friction: 0.1,
+        ..Parameters::default()
+    };
+    let mut sim = Simulation::<ModelVariant>::start(&p, 0.0).unwrap();
+    let inputs = Inputs::default();
+    for k in 1..=3000 {
+        sim.step(&inputs, k as f64 * 1e-4).unwrap();
+    }
+    let read = |path: &PathBuf| -> Vec<Vec<String>> {
+        let text = std::fs::read_to_string(path).unwrap();
+        text.lines().skip(2).map(|l| l.split(',').map(str::to_string).collect()).collect()
+    };
+    let number = |s: &str| s.parse::<f64>().unwrap();
+    let (landed, events) = (read(&landings), read(&impacts));
+    assert!(landed.len() >= 10, "three cycles land on both walls several times: {}", landed.len());
+    let mut walls_alternate = true;
+    for (k, l) in landed.iter().enumerate() {
+        let (start, end, wall) = (number(&l[0]), number(&l[11]), l[2].as_str());
+        let on_wall = |e: &&Vec<String>| (e[3] == "3" || e[3] == "4") == (wall == "thrust");
+        let within = |e: &&Vec<String>| (start..end).contains(&number(&e[0]));
+        let first = events.iter().filter(within).find(|e| (e[2] == "impact" || e[2] == "slide") && on_wall(e)).unwrap();
+        assert_eq!(number(&first[0]), start, "{l:?}");
+        let lost: f64 =
+            events.iter().filter(within).filter(on_wall).filter(|e| e[2] == "impact").map(|e| number(&e[6]) + number(&e[9])).sum();
+        assert!((number(&l[6]) - lost).abs() <= 1e-12 * lost.max(1e-9), "{l:?}: {lost}");
+        assert_eq!(number(&l[10]) as usize, events.iter().filter(within).filter(on_wall).filter(|e| e[2] == "impact").count());
+        walls_alternate &= k == 0 || landed[k - 1][2] != l[2];
+    }
+    assert!(walls_alternate);
+    let out = sim.outputs();
+    assert!(out.cycle_landings_thrust > 0 && out.cycle_landings_antithrust > 0);
+    assert!(out.cycle_landing_energy_thrust > 0.0 && out.cycle_landing_loss_thrust > 0.0);
+    std::fs::remove_file(landings).unwrap();
+    std::fs::remove_file(impacts).unwrap();
+}
+
+/// On oil the piston lands without impacts: the film carries it, and each landing is found where
+/// the other wall's load comes to exceed the carrying wall's, the film taking energy from the
+/// lateral motion and tilt.
+#[test]
+fn lubricated_landings_are_found_where_the_walls_loads_cross() {
+    let path = temp_path("oil_landings");
+    let p = Parameters { landing_log: path.to_str().unwrap().into(), skirt_model: 2, ..Parameters::default() };
+    let mut sim = Simulation::<ModelVariant>::start(&p, 0.0).unwrap();
+    let inputs = Inputs::default();
+    for k in 1..=2000 {
+        sim.step(&inputs, k as f64 * 1e-4).unwrap();
+    }
+    let text = std::fs::read_to_string(&path).unwrap();
+    let out = sim.outputs();
+    assert_eq!(out.impact_count, 0);
+    // Three side changes a wall a cycle; the largest landing is the thrust wall's after firing TDC, where the
+    // film takes nearly all of its energy and the wall's load rises at over 1 kN/ms.
+    assert_eq!((out.cycle_landings_thrust, out.cycle_landings_antithrust), (3, 3), "{text}");
+    let (energy, loss) = (out.cycle_landing_energy_thrust, out.cycle_landing_loss_thrust);
+    assert!(energy > 10.0 * out.cycle_landing_energy_antithrust && loss > 0.9 * energy && loss <= energy, "{text}");
+    assert!((0.0..0.35).contains(&out.cycle_landing_crank_angle_thrust), "{text}");
+    assert!(out.cycle_max_liner_force_rate_thrust > 1e6 && out.cycle_max_liner_force_thrust > 1e3, "{text}");
+    std::fs::remove_file(path).unwrap();
+}

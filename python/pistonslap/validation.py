@@ -1,0 +1,295 @@
+"""The measured tables of `documentation/validation/` that run through the packaged FMU, each printed as the
+markdown its page holds (`python/tests/test_validation_tables.py` checks every page against what its commands print):
+
+    python -m pistonslap.validation pin-offset ENGINE RPM [RPM ...]   slaps against ±1 mm of pin offset
+    python -m pistonslap.validation input-derivatives                 a fed pressure, held against first order
+    python -m pistonslap.validation coupled                           EngineCycle → PistonSlap, held or interpolated
+    python -m pistonslap.validation published-piston                  Lu et al.'s diesel on oil, six skirt profiles
+
+The runs are cached per process, so that the tests which assert on the same runs share them.
+"""
+
+import sys
+from functools import cache
+
+import fmpy
+import numpy as np
+from fmpy.fmi2 import FMU2Slave
+
+from .demo import SAMPLE_DEG
+from .fmu import CENTRED, CYCLE, fmu_path, simulate
+from .presets import PRESETS
+
+MJ = 1e3
+
+
+def _table(header, rows):
+    lines = ["| " + " | ".join(header) + " |", "|" + "---|" * len(header)]
+    lines += ["| " + " | ".join(row) + " |" for row in rows]
+    return "\n".join(lines)
+
+
+def _relative(value, reference):
+    """`value` against `reference` in per cent with its sign, two decimals below 0.1 %."""
+    percent = 100 * (value / reference - 1)
+    text = f"{percent:+.2f}" if abs(percent) < 0.095 else f"{percent:+.1f}"
+    return text.replace("-", "−") + " %"
+
+
+# --- pin offset ---------------------------------------------------------------------------------------------------
+
+#: Cycles each pin-offset run lasts; the table reads the last.
+PIN_OFFSET_CYCLES = 6
+
+
+@cache
+def last_cycle_metrics(engine, rpm, pin_offset_mm):
+    """The FMU's cycle_ outputs after `PIN_OFFSET_CYCLES` cycles of preset `engine` at `rpm` with the pin offset
+    by `pin_offset_mm` toward the major-thrust wall, run as `pistonslap demo` runs it (its sampling, its stop)."""
+    omega = rpm * np.pi / 30
+    interval = np.radians(SAMPLE_DEG) / omega
+    values = dict(PRESETS[engine].values, crank_speed=omega, pin_offset=pin_offset_mm * 1e-3)
+    result = simulate(
+        stop_time=(PIN_OFFSET_CYCLES * CYCLE - CENTRED) / omega + interval,
+        output_interval=interval,
+        start_values=values,
+        output=[
+            "cycle_slaps_thrust",
+            "cycle_slaps_antithrust",
+            "cycle_max_slap_energy_thrust",
+            "cycle_max_slap_energy_antithrust",
+            "cycle_impacts",
+            "cycle_impact_energy",
+        ],
+    )
+    return result[-1]
+
+
+def pin_offset_table(engine, speeds):
+    rows = []
+    for rpm in speeds:
+        for offset, shown in ((-1, "−1 mm"), (0, "0"), (1, "+1 mm")):
+            m = last_cycle_metrics(engine, rpm, offset)
+            rows.append(
+                (
+                    f"{rpm:g} rpm",
+                    shown,
+                    f"{m['cycle_slaps_thrust']} / {m['cycle_slaps_antithrust']}",
+                    f"{m['cycle_max_slap_energy_thrust'] * MJ:.1f} mJ",
+                    f"{m['cycle_max_slap_energy_antithrust'] * MJ:.1f} mJ",
+                    f"{m['cycle_impacts']}, {m['cycle_impact_energy'] * MJ:.3g} mJ",
+                )
+            )
+    header = (
+        "speed",
+        "pin offset",
+        "slaps thrust / anti-thrust",
+        "largest slap, thrust",
+        "largest slap, anti-thrust",
+        "impacts, energy",
+    )
+    return _table(header, rows)
+
+
+# --- a fed pressure: held against first-order input derivatives ------------------------------------------------------
+
+#: rad/s, the crank speed of the fed-pressure runs (1200 rpm).
+FED_SPEED = 125.66
+#: The communication steps compared, s, and the reference's.
+FED_STEPS = (1e-3, 5e-4, 2e-4, 1e-4)
+FED_REFERENCE_STEP = 1e-5
+
+
+class FullLoadPressure:
+    """The shipped full-load trace (gauge) as a C¹ function of crank angle: cubic Hermite through its 0.5° samples
+    with centred-difference slopes, and its crank-angle derivative. Independent of the FMU's interpolant."""
+
+    def __init__(self, unzipdir):
+        data = np.loadtxt(f"{unzipdir}/resources/full_load.csv", delimiter=",", skiprows=1)
+        self.start, self.spacing = np.radians(data[0, 0]), np.radians(data[1, 0] - data[0, 0])
+        self.p = (data[:, 1] - 1) * 1e5
+        self.m = (np.roll(self.p, -1) - np.roll(self.p, 1)) / (2 * self.spacing)
+
+    def __call__(self, theta):
+        """(p, dp/dθ) at crank angle `theta`."""
+        x = (theta - self.start) % (4 * np.pi) / self.spacing
+        k = int(x) % len(self.p)
+        s, k1, dx = x - int(x), (k + 1) % len(self.p), self.spacing
+        p0, p1, m0, m1 = self.p[k], self.p[k1], self.m[k] * dx, self.m[k1] * dx
+        value = (
+            (2 * s**3 - 3 * s**2 + 1) * p0
+            + (s**3 - 2 * s**2 + s) * m0
+            + (3 * s**2 - 2 * s**3) * p1
+            + (s**3 - s**2) * m1
+        )
+        slope = (6 * s**2 - 6 * s) * (p0 - p1) + (3 * s**2 - 4 * s + 1) * m0 + (3 * s**2 - 2 * s) * m1
+        return value, slope / dx
+
+
+@cache
+def _unpacked():
+    path = str(fmu_path())
+    return fmpy.extract(path), fmpy.read_model_description(path)
+
+
+@cache
+def fed_cycles(h, first_order, cycles=2):
+    """One warm-up cycle, then `cycles` at `FED_SPEED` with `gas_pressure` fed from the full-load trace at each step
+    of `h` (and its time derivative ω dp/dθ when `first_order`): (impact energy per cycle [J], largest impact
+    velocity [m/s]) after the warm-up."""
+    unzipdir, md = _unpacked()
+    vr = {v.name: v.valueReference for v in md.modelVariables}
+    pressure = FullLoadPressure(unzipdir)
+    cycle = 4 * np.pi / FED_SPEED
+    steps, warm_up = round((cycles + 1) * cycle / h), round(cycle / h)
+    slave = FMU2Slave(
+        guid=md.guid, unzipDirectory=unzipdir, modelIdentifier=md.coSimulation.modelIdentifier, instanceName="fed"
+    )
+    slave.instantiate()
+    try:
+        slave.setupExperiment(startTime=0.0)
+        slave.setInteger([vr["pressure_source"]], [1])
+        slave.enterInitializationMode()
+        slave.exitInitializationMode()
+        fastest, t = 0.0, 0.0
+        for k in range(steps):
+            p, dp = pressure(FED_SPEED * k * h)
+            slave.setReal([vr["gas_pressure"]], [p])
+            if first_order:
+                slave.setRealInputDerivatives([vr["gas_pressure"]], [1], [FED_SPEED * dp])
+            slave.doStep(currentCommunicationPoint=t, communicationStepSize=h)
+            t += h
+            if k + 1 == warm_up:
+                energy_at_warm_up = slave.getReal([vr["impact_energy_total"]])[0]
+            elif k + 1 > warm_up:
+                fastest = max(fastest, slave.getReal([vr["max_impact_velocity_in_step"]])[0])
+        return (slave.getReal([vr["impact_energy_total"]])[0] - energy_at_warm_up) / cycles, fastest
+    finally:
+        slave.freeInstance()
+
+
+def input_derivatives_table():
+    energy, fastest = fed_cycles(FED_REFERENCE_STEP, True)
+    rows = [(f"{FED_REFERENCE_STEP * 1e3:g} ms (reference)", "", "", f"{energy:.5f} J", f"{fastest:.4f} m/s")]
+    for h in FED_STEPS:
+        cells = [f"{h * 1e3:g} ms"]
+        for first in (False, True):
+            e, v = fed_cycles(h, first)
+            cells += [f"{e:.5f} J ({_relative(e, energy)})", f"{v:.4f} m/s ({_relative(v, fastest)})"]
+        rows.append(cells)
+    header = (
+        "step",
+        "energy per cycle, held",
+        "largest impact, held",
+        "energy per cycle, first order",
+        "largest impact, first order",
+    )
+    return _table(header, rows)
+
+
+# --- EngineCycle → PistonSlap -------------------------------------------------------------------------------------
+
+COUPLED_REFERENCE_STEP = 2e-5
+COUPLED_STEPS = (1e-3, 2.5e-4)
+
+
+@cache
+def coupled_energy(h, derivatives):
+    """Impact energy per cycle over cycles 2–5 of the default engines coupled at steps of `h`, J."""
+    from .coupled import energy_per_cycle, run
+
+    return energy_per_cycle(run(0.6, h, derivatives=derivatives), 2, 5)
+
+
+def coupled_table():
+    reference = coupled_energy(COUPLED_REFERENCE_STEP, False)
+    rows = [(f"{COUPLED_REFERENCE_STEP * 1e3:g} ms (reference)", f"{reference:.5f} J", "")]
+    for h in COUPLED_STEPS:
+        held, first = coupled_energy(h, False), coupled_energy(h, True)
+        rows.append(
+            (
+                f"{h * 1e3:g} ms",
+                f"{held:.5f} J ({_relative(held, reference)})",
+                f"{first:.5f} J ({_relative(first, reference)})",
+            )
+        )
+    return _table(("step", "held inputs", "first derivatives"), rows)
+
+
+# --- a published piston on oil ---------------------------------------------------------------------------------------
+
+#: Preset `lu2018-diesel-oil` on the coarse 6 × 8 film grid.
+LU_ON_OIL = dict(PRESETS["lu2018-diesel-oil"].values, skirt_grid_circumferential=6, skirt_grid_axial=8)
+#: The skirt profiles compared, (top drop, bottom drop) in µm.
+PROFILES = ((0, 0), (10, 20), (5, 20), (20, 20), (10, 10), (10, 40))
+PROFILE_OUTPUTS = (
+    "crank_angle",
+    "skirt_top_lateral",
+    "skirt_bottom_lateral",
+    "piston_lateral_velocity",
+    "piston_axial",
+    "film_force",
+    "skirt_friction_force",
+    "cycle_skirt_fmep",
+)
+
+
+def barrel(top_um, bottom_um):
+    return f"parabola {top_um}e-6 {bottom_um}e-6"
+
+
+@cache
+def second_cycle(profile):
+    """(the second cycle's samples, its skirt FMEP in Pa) of `LU_ON_OIL` with `skirt_profile = profile`, from the
+    centred start at the preset's speed, sampled every 0.1 ms."""
+    step = 1e-4
+    result = simulate(
+        stop_time=2 * CYCLE / LU_ON_OIL["crank_speed"] + 2 * step,
+        output_interval=step,
+        start_values=dict(LU_ON_OIL, skirt_profile=profile),
+        output=list(PROFILE_OUTPUTS),
+    )
+    cycle = result[(result["crank_angle"] >= CYCLE) & (result["crank_angle"] < 2 * CYCLE)]
+    return cycle, result["cycle_skirt_fmep"][-1]
+
+
+def published_piston_table():
+    rows = []
+    for top, bottom in PROFILES:
+        cycle, fmep = second_cycle(barrel(top, bottom))
+        rows.append(
+            (
+                "straight" if top == bottom == 0 else f"{top} / {bottom} µm",
+                f"{fmep * 1e-5:.4f} bar",
+                f"{np.max(cycle['skirt_top_lateral']) * 1e6:.1f} µm",
+                f"{-np.min(cycle['skirt_bottom_lateral']) * 1e6:.1f} µm",
+                f"{np.max(np.abs(cycle['piston_lateral_velocity'])) * 1e3:.1f} mm/s",
+            )
+        )
+    header = (
+        "skirt profile (top / bottom drop)",
+        "FMEP",
+        "top eccentricity, thrust",
+        "bottom, anti-thrust",
+        "peak lateral speed",
+    )
+    return _table(header, rows)
+
+
+TABLES = {
+    "pin-offset": lambda engine, *speeds: pin_offset_table(engine, [float(s) for s in speeds]),
+    "input-derivatives": input_derivatives_table,
+    "coupled": coupled_table,
+    "published-piston": published_piston_table,
+}
+
+
+def main(argv=None):
+    argv = sys.argv[1:] if argv is None else argv
+    if not argv or argv[0] not in TABLES:
+        raise SystemExit(f"usage: python -m pistonslap.validation {{{','.join(TABLES)}}} [ARGS]")
+    print(TABLES[argv[0]](*argv[1:]))
+
+
+if __name__ == "__main__":
+    main()
