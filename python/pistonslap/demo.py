@@ -287,7 +287,7 @@ def main(argv=None):
     written = [
         write_table(args.out / "demo.csv", result, units),
         args.out / "impact_log.csv",
-        *([args.out / "landing_log.csv"] if landings is not None else []),
+        args.out / "landing_log.csv",
         write_table(args.out / "cycles.csv", *per_cycle),
     ]
 
@@ -308,7 +308,7 @@ def main(argv=None):
             args.out / "slap.png",
             case,
             origin,
-            landings=None if landings is None else landings[in_window(landings["time"], times)],
+            landings=landings[in_window(landings["time"], times)],
             loads=(angle[cycle], result[cycle]),
             lubricated=lubricated,
         ),

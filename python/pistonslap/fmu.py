@@ -94,8 +94,8 @@ def simulate_with_logs(
     log_path=None, landing_log_path=None, start_values=None, landed_by=None, at_times=(), landings=True, **kwargs
 ):
     """Like `simulate`, with the FMU's `impact_log` and `landing_log` switched on; returns `(result, events,
-    landings)`, the logs as arrays of `EVENT_DTYPE` and `LANDING_DTYPE` (no landing when the FMU has no
-    `landing_log` parameter, an FMU built before the landings, or with `landings` False: no landing log).
+    landings)`, the logs as arrays of `EVENT_DTYPE` and `LANDING_DTYPE` (with `landings` False: no landing log, no
+    landing).
 
     Each log goes to its path when given (and stays there), else to a temporary file. With `landed_by` (s), the run
     stops at the first communication point after it at which a landing started after it (the FMU then has the
@@ -107,7 +107,7 @@ def simulate_with_logs(
         log = Path(log_path) if log_path is not None else Path(tmp) / "impact_log.csv"
         landing = Path(landing_log_path) if landing_log_path is not None else Path(tmp) / "landing_log.csv"
         values = dict(start_values or {}, impact_log=str(log))
-        if landings and has_landing_log(kwargs.get("model_description") or kwargs.get("fmu")):
+        if landings:
             values["landing_log"] = str(landing)
         watch = _Watch(landing if "landing_log" in values else None, landed_by, at_times)
         result = simulate(start_values=values, step_finished=watch if landed_by or at_times else None, **kwargs)
@@ -143,13 +143,6 @@ class _Watch:
             rows = f.read().decode().splitlines()
         self.size = size
         return [float(row.rsplit(",", 1)[1]) for row in rows if row and not row.startswith(("#", "time"))]
-
-
-def has_landing_log(fmu=None):
-    """Whether the FMU (`fmu`: its model description, a file or an extracted folder; default `fmu_path()`) has the
-    `landing_log` parameter."""
-    md = fmu if hasattr(fmu, "modelVariables") else fmpy.read_model_description(str(fmu or fmu_path()))
-    return any(v.name == "landing_log" for v in md.modelVariables)
 
 
 def _read_log(path, dtype, what):
