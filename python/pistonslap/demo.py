@@ -21,7 +21,7 @@ from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate
 from .presets import PRESETS, help_text
 from .refusal import Parser, Refusal, check_start_values, number
 from .settings import parse_set, read_params, to_fmu
-from .tables import LANDING_RUN_ON, SAMPLE_DEG, WALLS, cycle_metrics, slap_rows, write_table
+from .tables import LANDING_RUN_ON, SAMPLE_DEG, WALLS, cycle_metrics, energy_unit, slap_rows, write_table
 from .trace_tdc import place_firing_tdc
 
 #: Magnification of clearance and tilt in the piston-position pictures.
@@ -237,10 +237,12 @@ def _landings(row, side, name):
     )
     if count == 0:
         return f"none on the {name} wall, {peaks}"
+    energy, loss = row[f"cycle_landing_energy_{side}"], row[f"cycle_landing_loss_{side}"]
+    factor, unit = energy_unit(max(energy, loss))
     return (
         f"{count} on the {name} wall, the largest at {np.degrees(row[f'cycle_landing_crank_angle_{side}']):.1f}° "
-        f"with {row[f'cycle_landing_energy_{side}'] * 1e3:.3g} mJ of lateral kinetic energy, "
-        f"{row[f'cycle_landing_loss_{side}'] * 1e3:.3g} mJ of it taken; {peaks}"
+        f"with {energy * factor:.3g} {unit} of lateral kinetic energy, the landing took {loss * factor:.3g} {unit}; "
+        f"{peaks}"
     )
 
 

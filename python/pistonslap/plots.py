@@ -17,7 +17,7 @@ from matplotlib.patches import Polygon
 
 from .fmu import CENTRED, from_firing_tdc
 from .liner_load import decibels, order_spectrum, third_octaves
-from .tables import WALLS
+from .tables import WALLS, energy_unit
 
 CORNERS = (1, 2, 3, 4)
 #: (label, corners, colour) of the two walls.
@@ -244,10 +244,11 @@ def _zero_near_bottom(ax):
 def _landings(ax, landings, origin):
     """Per wall, each landing's lateral kinetic energy at its start (filled, on a stem) and the energy it took."""
     deg = np.degrees(from_firing_tdc(landings["crank_angle"], origin))
+    factor, unit = energy_unit(max(landings["kinetic_energy"].max(initial=0), landings["energy_loss"].max(initial=0)))
     for side, (label, _, colour) in zip(WALLS, SIDES, strict=True):
         mine = landings["wall"] == side
         name = label.split(" (")[0]
-        energy, loss = landings["kinetic_energy"][mine] * 1e3, landings["energy_loss"][mine] * 1e3
+        energy, loss = landings["kinetic_energy"][mine] * factor, landings["energy_loss"][mine] * factor
         ax.vlines(deg[mine], 0, energy, color=colour, lw=1)
         ax.plot(
             deg[mine],
@@ -261,7 +262,7 @@ def _landings(ax, landings, origin):
         ax.plot(deg[mine], loss, "D", mfc="none", color=colour, ms=5, mew=1, zorder=4, label=f"{name}: energy taken")
     if not len(landings):
         ax.text(0.5, 0.5, "no landing in this cycle", transform=ax.transAxes, ha="center", va="center")
-    ax.set_ylabel("lateral kinetic energy\nat landing [mJ]")
+    ax.set_ylabel(f"lateral kinetic energy\nat landing [{unit}]")
     _legend(ax, ncol=3)
 
 

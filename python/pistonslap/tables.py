@@ -58,6 +58,15 @@ SAMPLED_METRICS = {
 }
 
 
+def energy_unit(joules):
+    """The unit to show an energy of about `joules` in: `(factor, name)` of mJ, µJ or nJ (a dry slap is millijoules,
+    a landing on the film micro- or nanojoules)."""
+    for factor, name in ((1e3, "mJ"), (1e6, "µJ")):
+        if abs(joules) * factor >= 0.1:
+            return factor, name
+    return 1e9, "nJ"
+
+
 def write_table(path, table, units):
     """Writes the structured array `table` as CSV, each column headed `name [unit]` (`[1]` for counts and other
     dimensionless values); `units` maps names to units (missing or None: dimensionless)."""

@@ -6,6 +6,7 @@ sweep on oil, which has no impacts, says in one line (and on the map) that its i
 
 import csv
 import os
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -126,10 +127,14 @@ def test_the_summary_names_the_landings_per_wall_and_on_oil_the_film(demo):
         mine = log[last & (log["wall"] == wall)]
         if len(mine):
             largest = mine[np.argmax(mine["kinetic_energy"])]
-            assert (
+            said = re.search(
                 f"{len(mine)} on the {name} wall, the largest at {np.degrees(largest['crank_angle']):.1f}° with "
-                f"{largest['kinetic_energy'] * 1e3:.3g} mJ of lateral kinetic energy" in line
-            ), line
+                r"(\S+) (mJ|µJ|nJ) of lateral kinetic energy",
+                line,
+            )
+            assert said, line
+            factor = {"mJ": 1e3, "µJ": 1e6, "nJ": 1e9}[said[2]]
+            assert float(said[1]) == pytest.approx(largest["kinetic_energy"] * factor, rel=1e-2)
     assert "kN/ms" in line and "Skirt friction: FMEP" in printed
     assert ("thinnest film" in printed) == (kind == "oil")
 
