@@ -122,7 +122,11 @@ def test_the_summary_names_the_landings_per_wall_and_on_oil_the_film(demo):
     kind, out, printed = demo
     log = read_landing_log(out / "landing_log.csv")
     last = _centred_cycle(log["time"]) == 2  # the run's third, the second whole one: the demo draws it
-    line = next(line for line in printed.splitlines() if line.startswith("Landings in the last completed cycle"))
+    line = next(
+        line
+        for line in printed.splitlines()
+        if line.startswith("Landings in the cycle from −360° to 360° about the last firing TDC")
+    )
     for wall, name in zip(WALLS, ("major-thrust", "anti-thrust"), strict=True):
         mine = log[last & (log["wall"] == wall)]
         if len(mine):
