@@ -139,18 +139,19 @@ def landing_metrics(result, landings, cycle):
 
 def cycle_metrics(result, landings):
     """The per-cycle figures, one row per engine cycle (firing TDC to firing TDC) the record completes: its end time,
-    the cycle (1 = the first), the FMU's `CYCLE_METRICS` at the first sample after its end, and the landings
-    (`landing_metrics`) of the cycle from −360° to 360° about the firing TDC that ends it (NaN where the record ends
-    before the FMU completes it). `landings` is the run's landing log. Returns `(table, units)`."""
+    the cycle (1 = the first), those of the FMU's `CYCLE_METRICS` the record holds at the first sample after its end,
+    and the landings (`landing_metrics`) of the cycle from −360° to 360° about the firing TDC that ends it (NaN where
+    the record ends before the FMU completes it). `landings` is the run's landing log. Returns `(table, units)`."""
     count = result["cycle_count"]
     ends = np.flatnonzero(np.diff(count) > 0) + 1
-    units = {**CYCLE_METRICS, **LANDING_METRICS, **SAMPLED_METRICS}
-    types = {name: result.dtype[name] if name in CYCLE_METRICS else np.dtype("f8") for name in units}
+    recorded = [name for name in CYCLE_METRICS if name in result.dtype.names]
+    units = {**{name: CYCLE_METRICS[name] for name in recorded}, **LANDING_METRICS, **SAMPLED_METRICS}
+    types = {name: result.dtype[name] if name in recorded else np.dtype("f8") for name in units}
     table = np.zeros(len(ends), dtype=[("time", "f8"), ("cycle", "i4"), *types.items()])
     table["time"] = result["time"][ends]
     table["cycle"] = count[ends]
     for k, end in enumerate(ends):
-        row = {name: result[name][end] for name in CYCLE_METRICS} | landing_metrics(result, landings, count[end])
+        row = {name: result[name][end] for name in recorded} | landing_metrics(result, landings, count[end])
         for name, value in row.items():
             table[name][k] = value
     return table, dict(units, time="s", cycle="1")
