@@ -5,6 +5,7 @@ import os
 import signal
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 
@@ -13,7 +14,7 @@ import numpy as np
 import pytest
 from distributed import Client, LocalCluster
 
-from pistonslap.fmu import CYCLE, simulate
+from pistonslap.fmu import CYCLE, read_landing_log, simulate
 from pistonslap.sweep import run, summary
 from pistonslap.sweep_spec import SpecError, parse
 from pistonslap.sweep_store import Store
@@ -80,6 +81,30 @@ def test_grid_rows_are_the_direct_runs(client, model_description, tmp_path):
         )
         if (row["bore"], row["restitution"]) == (0.08008, 0.0):
             assert row["side_changes_per_cycle"] == 6, "A&K's six side changes per cycle (DESIGN.md §6.3)"
+        _assert_landings_are_the_logs(row, step)
+
+
+def _assert_landings_are_the_logs(row, step):
+    """A dry point's landing columns are the FMU's landing log over the counted cycles: the landings about the firing
+    TDCs ending cycles 3 to 6 (a landing counts in the cycle from −360° to 360° it starts in), per cycle, and the
+    largest one's energy, loss and crank angle, from a direct run with the log on."""
+    landed = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        simulate(
+            stop_time=6.75 * CYCLE_TIME,
+            output_interval=step,
+            start_values={"bore": row["bore"], "restitution": row["restitution"], "landing_log": f"{tmp}/l.csv"},
+            output=["crank_angle"],
+        )
+        landed = read_landing_log(f"{tmp}/l.csv")
+    cycle = np.floor((125.66 * landed["time"] + 2 * np.pi) / CYCLE)
+    for wall in ("thrust", "antithrust"):
+        mine = landed[(landed["wall"] == wall) & (cycle >= 3) & (cycle <= 6)]
+        assert row[f"landings_per_cycle_{wall}"] == len(mine) / 4 and len(mine) >= 4, (row, wall)
+        largest = mine[np.argmax(mine["kinetic_energy"])]
+        assert row[f"landing_energy_{wall}"] == largest["kinetic_energy"] > 0
+        assert row[f"landing_loss_{wall}"] == largest["energy_loss"]
+        assert row[f"landing_crank_angle_{wall}"] == largest["crank_angle"]
 
 
 SLOW_GRID = {"restitution": [0.2, 0.4, 0.6, 0.8], "bore": [0.08004, 0.08008, 0.08012]}
