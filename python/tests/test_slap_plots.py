@@ -3,41 +3,56 @@ rode on its film, the landings' energies and each wall's load rise rate against 
 MAHLE's windows shaded; piston_motion.png shows film and wall loads instead of the corner contacts. Dry, the impact
 panels stay below the landings. Checked on the figures' artists against the run's own files."""
 
+import os
+import pickle
+import subprocess
+import sys
+
 import numpy as np
 import pytest
 from matplotlib.colors import to_rgba
 
-from pistonslap import demo, plots
 from pistonslap.fmu import read_landing_log
 
 RED, BLUE = to_rgba("tab:red"), to_rgba("tab:blue")
 OIL = ["--set", "skirt_model=2", "--set", "skirt_grid_circumferential=6", "--set", "skirt_grid_axial=8"]
 
 
-def _draw(tmp_path, monkeypatch, *args):
-    """Runs the demo in this process; returns its output folder and its figures by file name."""
-    figures, save = {}, plots._save
+#: Runs the demo with its figures pickled beside their PNGs: in a process of its own, since the demo's checks
+#: install an fmpy logger that the call-by-call tests' process-wide one (harness.py) must not lose.
+DRIVER = """
+import pickle, sys
+from pistonslap import demo, plots
+save = plots._save
+def keep(fig, path, **kwargs):
+    with open(f"{path}.pickle", "wb") as f:
+        pickle.dump(fig, f)
+    return save(fig, path, **kwargs)
+plots._save = keep
+demo.main(sys.argv[1:])
+"""
 
-    def keep(fig, path, **kwargs):
-        figures[path.name] = fig
-        return save(fig, path, **kwargs)
 
-    monkeypatch.setattr(plots, "_save", keep)
+def _draw(tmp_path, *args):
+    """Runs the demo as a user does; returns its output folder and its figures by file name."""
     out = tmp_path / "out"
-    demo.main(["--rpm", "1500", "--cycles", "1", "--out", str(out), *args])
+    command = [sys.executable, "-c", DRIVER, "--rpm", "1500", "--cycles", "1", "--out", str(out), *args]
+    subprocess.run(command, check=True, capture_output=True, env=dict(os.environ, MPLBACKEND="Agg"))
+    figures = {}
+    for pickled in out.glob("*.png.pickle"):
+        with open(pickled, "rb") as f:
+            figures[pickled.name.removesuffix(".pickle")] = pickle.load(f)
     return out, figures
 
 
 @pytest.fixture(scope="module")
 def oil(tmp_path_factory):
-    with pytest.MonkeyPatch.context() as monkeypatch:
-        return _draw(tmp_path_factory.mktemp("oil"), monkeypatch, *OIL)
+    return _draw(tmp_path_factory.mktemp("oil"), *OIL)
 
 
 @pytest.fixture(scope="module")
 def dry(tmp_path_factory):
-    with pytest.MonkeyPatch.context() as monkeypatch:
-        return _draw(tmp_path_factory.mktemp("dry"), monkeypatch)
+    return _draw(tmp_path_factory.mktemp("dry"))
 
 
 def _has_data(ax):
