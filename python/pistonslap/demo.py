@@ -3,28 +3,27 @@
     pistonslap demo [--engine NAME] [--params FILE.toml] [--set NAME=VALUE ...] [--pressure-trace FILE]
                     [--firing-tdc DEG] [--friction MU] [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM]
                     [--restitution E] [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S] [--crank-0-720]
-                    [--skirt-map DEG]
+                    [--skirt-map DEG] [--liner-loads FILE.csv [--liner-load-step DEG] [--liner-load-spectrum]]
 
 Values apply in that order, a later one over an earlier one: the engine preset, the parameter file, then the options.
 What none sets keeps the FMU's default (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
 """
 
 import os
+import shutil
 from pathlib import Path
 
 import fmpy
 import numpy as np
 
-from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate_with_events
+from . import liner_load
+from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate_with_logs
 from .presets import PRESETS, help_text
 from .refusal import Parser, Refusal, check_start_values, number
 from .settings import parse_set, read_params, to_fmu
-from .tables import cycle_metrics, slap_rows, write_table
+from .tables import LANDING_RUN_ON, SAMPLE_DEG, WALLS, cycle_metrics, energy_unit, slap_rows, write_table
 from .trace_tdc import place_firing_tdc
 
-#: Crank angle between samples (and communication points), deg: the FMU's default experiment samples every
-#: 5e-5 s, 0.36° at 1200 rpm.
-SAMPLE_DEG = 0.36
 #: Magnification of clearance and tilt in the piston-position pictures.
 MAGNIFICATION = 200
 
@@ -77,6 +76,26 @@ def _parser():
         help="lubricated skirt (skirt_model = 2): map its film pressure at this crank angle (0 = firing TDC) of the "
         "last cycle into skirt_map.csv and skirt_map.png",
     )
+    parser.add_argument(
+        "--liner-loads",
+        type=Path,
+        metavar="FILE.csv",
+        help="write the liner's load for a structural model into this CSV: per wall the force, the mean force over "
+        "each interval (impacts included), its point of application below the skirt top and moment, sampled every "
+        "--liner-load-step over the cycles simulated (a second run, at that step)",
+    )
+    parser.add_argument(
+        "--liner-load-step",
+        type=float,
+        metavar="DEG",
+        help="crank angle between the liner-load samples, deg, dividing 720° "
+        f"(default {liner_load.DEFAULT_STEP_DEG:g})",
+    )
+    parser.add_argument(
+        "--liner-load-spectrum",
+        action="store_true",
+        help="also plot the liner load's spectrum in engine orders and third-octave bands (FILE_spectrum.png)",
+    )
     return parser
 
 
@@ -97,10 +116,21 @@ def check(args):
         raise Refusal(f"--cycles = {args.cycles}: give a whole number of engine cycles >= 1")
     if args.skirt_map is not None:
         number(args.skirt_map, "--skirt-map", unit="°", meaning="the crank angle of the skirt map")
+    if args.liner_loads is None and (args.liner_load_step is not None or args.liner_load_spectrum):
+        raise Refusal("--liner-load-step and --liner-load-spectrum go with --liner-loads FILE.csv: give the file")
+    if args.liner_loads is not None:
+        if args.liner_loads.suffix.lower() != ".csv":
+            raise Refusal(f"--liner-loads {args.liner_loads}: give a .csv file name")
+        liner_load.samples_per_cycle(liner_load_step(args), "--liner-load-step")
     if args.firing_tdc is not None:
         if args.pressure_trace is None:
             raise Refusal("--firing-tdc places the firing TDC of a --pressure-trace: give the trace")
         number(args.firing_tdc, "--firing-tdc", unit="°", meaning="firing TDC")
+
+
+def liner_load_step(args):
+    """The liner-load sampling step asked for, deg."""
+    return liner_load.DEFAULT_STEP_DEG if args.liner_load_step is None else args.liner_load_step
 
 
 def all_start_values(args, md, defaults):
@@ -120,7 +150,7 @@ def all_start_values(args, md, defaults):
     values.update(parse_set(args.set, md))
     if args.skirt_map is not None:
         values.update(
-            skirt_map=str((args.out / "skirt_map.csv").resolve()),
+            skirt_map=str((args.out / SKIRT_MAP_PASSES).resolve()),
             skirt_map_crank_angle=np.radians(args.skirt_map % 720),
         )
     return to_fmu(values, defaults), placed
@@ -158,20 +188,61 @@ def case_title(p):
     )
 
 
-def summary(last):
-    """The last completed cycle in words: slaps (side changes) per wall with their energy, then all impacts;
-    `last` is a record row holding the FMU's cycle_ outputs."""
+def summary(row, lubricated):
+    """The last completed cycle in words: slaps (side changes) per wall with their energy, then all impacts; the
+    landings per wall (the largest one's energy, its loss and crank angle) and the wall loads' peak and rise rate; the
+    skirt FMEP and, on oil (`lubricated`), the thinnest film per side and the peak film and asperity loads. `row` is
+    the last row of `tables.cycle_metrics`, by column name."""
     mj = 1e3
     walls = "; ".join(
-        f"{last[f'cycle_slaps_{side}']} on the {name} wall, {last[f'cycle_slap_energy_{side}'] * mj:.3g} mJ "
-        f"(largest {last[f'cycle_max_slap_energy_{side}'] * mj:.3g} mJ)"
-        for side, name in (("thrust", "major-thrust"), ("antithrust", "anti-thrust"))
+        f"{row[f'cycle_slaps_{side}']} on the {name} wall, {row[f'cycle_slap_energy_{side}'] * mj:.3g} mJ "
+        f"(largest {row[f'cycle_max_slap_energy_{side}'] * mj:.3g} mJ)"
+        for side, name in zip(WALLS, WALL_NAMES, strict=True)
     )
+    text = (
+        f"Last cycle: {row['cycle_slap_events']} slaps (landings on the other wall): {walls}. "
+        f"{row['cycle_impacts']} impacts (every bounce) dissipated {row['cycle_impact_energy'] * mj:.3g} mJ, "
+        f"the largest {row['cycle_max_impact_energy_thrust'] * mj:.3g} mJ on the major-thrust wall and "
+        f"{row['cycle_max_impact_energy_antithrust'] * mj:.3g} mJ on the anti-thrust wall."
+    )
+    landings = "; ".join(_landings(row, side, name) for side, name in zip(WALLS, WALL_NAMES, strict=True))
+    text += f"\nLandings in the cycle from −360° to 360° about the last firing TDC: {landings}."
+    text += f"\nSkirt friction: FMEP {row['cycle_skirt_fmep'] * 1e-5:.3g} bar"
+    if lubricated:
+        films = ", ".join(
+            f"{row[f'cycle_min_film_thickness_{side}'] * 1e6:.3g} µm on the {name} side at "
+            f"{np.degrees(row[f'cycle_min_film_crank_angle_{side}']):.1f}°"
+            for side, name in zip(WALLS, WALL_NAMES, strict=True)
+        )
+        text += (
+            f"; thinnest film {films}; peak film force {row['cycle_max_film_force'] * 1e-3:.3g} kN, peak asperity "
+            f"load {row['cycle_max_asperity_force'] * 1e-3:.3g} kN"
+        )
+    return text + "."
+
+
+#: The walls in words, in the order of `tables.WALLS`.
+WALL_NAMES = ("major-thrust", "anti-thrust")
+
+
+def _landings(row, side, name):
+    """One wall's landings in words (see `summary`)."""
+    count = row[f"cycle_landings_{side}"]
+    if np.isnan(count):
+        return f"the {name} wall's not complete when the run ended (its last landing had not ended)"
+    count = int(count)
+    peaks = (
+        f"wall load peak {row[f'cycle_max_liner_force_{side}'] * 1e-3:.3g} kN, rising at most "
+        f"{row[f'cycle_max_liner_force_rate_{side}'] * 1e-6:.3g} kN/ms"
+    )
+    if count == 0:
+        return f"none on the {name} wall, {peaks}"
+    energy, loss = row[f"cycle_landing_energy_{side}"], row[f"cycle_landing_loss_{side}"]
+    factor, unit = energy_unit(max(energy, loss))
     return (
-        f"Last cycle: {last['cycle_slap_events']} slaps (landings on the other wall): {walls}. "
-        f"{last['cycle_impacts']} impacts (every bounce) dissipated {last['cycle_impact_energy'] * mj:.3g} mJ, "
-        f"the largest {last['cycle_max_impact_energy_thrust'] * mj:.3g} mJ on the major-thrust wall and "
-        f"{last['cycle_max_impact_energy_antithrust'] * mj:.3g} mJ on the anti-thrust wall."
+        f"{count} on the {name} wall, the largest at {np.degrees(row[f'cycle_landing_crank_angle_{side}']):.1f}° "
+        f"with {energy * factor:.3g} {unit} of lateral kinetic energy, the landing took {loss * factor:.3g} {unit}; "
+        f"{peaks}"
     )
 
 
@@ -190,33 +261,48 @@ def main(argv=None):
     if placed:
         print(placed)
     p = dict(defaults, **values)
+    check_liner_loads(args, p)
     omega, origin = p["crank_speed"], FROM_FIRING_TDC if args.crank_0_720 else CENTRED
     interval = np.radians(SAMPLE_DEG) / omega
-    # one sample past the last cycle's end, so that its figures are out; with the axis centred on firing TDC, half a
-    # cycle more, so that the last cycle drawn is the one centred on the last firing TDC
-    stop_time = (args.cycles * CYCLE - origin) / omega + interval
+    # The cycle drawn ends at `drawn_end`: the one about the last firing TDC on the axis centred on firing TDC, the
+    # one ending at it on the 0…720° axis. The run goes on past the cycle about the last firing TDC until the FMU
+    # completed its landing figures (the next landing started), by LANDING_RUN_ON at most: no other cycle completes.
+    drawn_end, landed_by = (args.cycles * CYCLE - origin) / omega, (args.cycles * CYCLE - CENTRED) / omega
+    stop_time = landed_by + LANDING_RUN_ON / omega + interval
 
     args.out.mkdir(parents=True, exist_ok=True)
-    result, events = simulate_with_events(
-        log_path=args.out / "impact_log.csv", start_values=values, stop_time=stop_time, output_interval=interval
+    result, events, landings = simulate_with_logs(
+        log_path=args.out / "impact_log.csv",
+        landing_log_path=args.out / "landing_log.csv",
+        start_values=values,
+        stop_time=stop_time,
+        output_interval=interval,
+        landed_by=landed_by,
+        # the FMU rewrites the skirt map at each pass: the drawn cycle's is the last one by its end
+        at_times=[(drawn_end, lambda: keep_skirt_map(args.out))] if args.skirt_map is not None else (),
     )
+    lubricated = p.get("skirt_model") == 2
+    per_cycle = cycle_metrics(result, landings)
     case = (f"{args.engine}: " if args.engine else "") + case_title(p)
     units = {v.name: v.unit or (v.declaredType.unit if v.declaredType else None) for v in md.modelVariables}
     units["time"] = "s"
     written = [
         write_table(args.out / "demo.csv", result, units),
         args.out / "impact_log.csv",
-        write_table(args.out / "cycles.csv", *cycle_metrics(result)),
+        args.out / "landing_log.csv",
+        write_table(args.out / "cycles.csv", *per_cycle),
     ]
 
     cycle, angle = last_cycle(result["crank_angle"], origin=origin)
     times = result["time"][cycle]
-    window = (events["time"] >= times[0]) & (events["time"] <= times[-1])
+    window = in_window(events["time"], times)
     in_cycle = events[window]
     geometry = (p["bore"], p["piston_diameter"], p["skirt_length"], p["pin_height"])
     half_clearance = (p["bore"] - p["piston_diameter"]) / 2
     written += [
-        plots.piston_motion(angle[cycle], result[cycle], half_clearance, args.out / "piston_motion.png", case, origin),
+        plots.piston_motion(
+            angle[cycle], result[cycle], half_clearance, args.out / "piston_motion.png", case, origin, lubricated
+        ),
         plots.slap(
             in_cycle,
             slap_rows(events, p["slap_threshold"])[window],
@@ -224,6 +310,9 @@ def main(argv=None):
             args.out / "slap.png",
             case,
             origin,
+            landings=landings[in_window(landings["time"], times)],
+            loads=(angle[cycle], result[cycle]),
+            lubricated=lubricated,
         ),
         plots.forces(angle[cycle], result[cycle], args.out / "forces.png", case, origin),
         plots.piston_positions(
@@ -247,18 +336,63 @@ def main(argv=None):
             origin=origin,
         ),
     ]
-    if p.get("skirt_model") == 2:
+    if lubricated:
         written.append(plots.film(angle[cycle], result[cycle], args.out / "film.png", case, origin))
     if args.skirt_map is not None:
+        (args.out / SKIRT_MAP_PASSES).unlink(missing_ok=True)
         written += [
             args.out / "skirt_map.csv",
             skirt_map.plot(skirt_map.read(args.out / "skirt_map.csv"), args.out / "skirt_map.png", case),
         ]
     print(
-        f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. " + summary(result[-1])
+        f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. "
+        + summary(dict(zip(per_cycle[0].dtype.names, per_cycle[0][-1].tolist(), strict=True)), lubricated)
     )
+    if args.liner_loads is not None:
+        written += write_liner_loads(args, values, omega, origin, case, plots)
     for path in written:
         print(f"wrote {path}")
+
+
+#: The file the FMU rewrites at each pass of the skirt map's crank angle; `keep_skirt_map` copies the drawn cycle's.
+SKIRT_MAP_PASSES = "skirt_map_passes.csv"
+
+
+def keep_skirt_map(out):
+    """Keeps the skirt map of the last pass so far as skirt_map.csv in `out` (the FMU's file goes when the run
+    ends)."""
+    passes = out / SKIRT_MAP_PASSES
+    if passes.exists():
+        shutil.copyfile(passes, out / "skirt_map.csv")
+
+
+def in_window(time, times):
+    """Which of the instants `time` lie within the sampled instants `times` (from the first to the last)."""
+    return (time >= times[0]) & (time <= times[-1])
+
+
+def check_liner_loads(args, p):
+    """Refuses --liner-loads where the load cannot be sampled uniformly in crank angle (`p`: every start value)."""
+    if args.liner_loads is None:
+        return
+    if p.get("model_variant", 1) != 1:
+        raise Refusal("--liner-loads: the liner loads are the crank train's (model_variant = 1)")
+    if p.get("crank_mode", 1) != 1:
+        raise Refusal(
+            "--liner-loads samples at a fixed crank-angle step, which needs the prescribed crank speed (crank_mode = 1)"
+        )
+
+
+def write_liner_loads(args, values, omega, origin, case, plots):
+    """Runs the FMU again at the --liner-load-step and writes the --liner-loads file (and, with
+    --liner-load-spectrum, its spectrum's plot beside it); returns the paths written."""
+    table, units = liner_load.liner_loads(values, args.cycles, liner_load_step(args), origin)
+    args.liner_loads.parent.mkdir(parents=True, exist_ok=True)
+    written = [write_table(args.liner_loads, table, units)]
+    if args.liner_load_spectrum:
+        spectrum = args.liner_loads.with_name(f"{args.liner_loads.stem}_spectrum.png")
+        written.append(plots.liner_load_spectrum(table, omega, spectrum, case))
+    return written
 
 
 if __name__ == "__main__":

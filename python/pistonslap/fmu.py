@@ -31,6 +31,26 @@ EVENT_DTYPE = np.dtype(
     ]
 )
 
+#: Rows of the `landing_log` CSV, one per finished landing (the piston's arrival on a wall after it left the other,
+#: whatever carries it: corners, asperities or film), in the order of its header; SI units, crank angles in rad from
+#: firing TDC in [-2π, 2π), `wall` thrust or antithrust, `leading_end` top or bottom.
+LANDING_DTYPE = np.dtype(
+    [
+        ("time", "f8"),
+        ("crank_angle", "f8"),
+        ("wall", "U10"),
+        ("leading_end", "U6"),
+        ("kinetic_energy", "f8"),
+        ("max_approach_kinetic_energy", "f8"),
+        ("energy_loss", "f8"),
+        ("peak_force", "f8"),
+        ("peak_force_crank_angle", "f8"),
+        ("peak_force_rate", "f8"),
+        ("impacts", "i4"),
+        ("end_time", "f8"),
+    ]
+)
+
 
 def fmu_path() -> Path:
     """The FMU to run: `$PISTONSLAP_FMU` if set, else the one this package carries (`PACKAGED_FMU`)."""
@@ -66,27 +86,90 @@ def simulate_with_events(log_path=None, start_values=None, **kwargs):
 
     The log goes to `log_path` when given (and stays there), else to a temporary file.
     """
+    result, events, _ = simulate_with_logs(log_path, start_values=start_values, landings=False, **kwargs)
+    return result, events
+
+
+def simulate_with_logs(
+    log_path=None, landing_log_path=None, start_values=None, landed_by=None, at_times=(), landings=True, **kwargs
+):
+    """Like `simulate`, with the FMU's `impact_log` and `landing_log` switched on; returns `(result, events,
+    landings)`, the logs as arrays of `EVENT_DTYPE` and `LANDING_DTYPE` (with `landings` False: no landing log, no
+    landing).
+
+    Each log goes to its path when given (and stays there), else to a temporary file. With `landed_by` (s), the run
+    stops at the first communication point after it at which a landing started after it (the FMU then has the
+    figures of the landing cycle ending at `landed_by` complete, `tables.described_at`), at the latest at the stop
+    time. `at_times` holds `(time, action)` pairs: each action is called once, at the first communication point at
+    or after its time.
+    """
     with tempfile.TemporaryDirectory() as tmp:
         log = Path(log_path) if log_path is not None else Path(tmp) / "impact_log.csv"
+        landing = Path(landing_log_path) if landing_log_path is not None else Path(tmp) / "landing_log.csv"
         values = dict(start_values or {}, impact_log=str(log))
-        result = simulate(start_values=values, **kwargs)
-        return result, read_impact_log(log)
+        if landings:
+            values["landing_log"] = str(landing)
+        watch = _Watch(landing if "landing_log" in values else None, landed_by, at_times)
+        result = simulate(start_values=values, step_finished=watch if landed_by or at_times else None, **kwargs)
+        landings = read_landing_log(landing) if "landing_log" in values else np.zeros(0, LANDING_DTYPE)
+        return result, read_impact_log(log), landings
 
 
-def read_impact_log(path) -> np.ndarray:
-    """The `impact_log` CSV as a structured array of `EVENT_DTYPE` (one row per impact, slide or release)."""
+class _Watch:
+    """fmpy's `step_finished` callback of `simulate_with_logs`: calls the actions due, and stops the run once the
+    landing log holds a landing that ended after `landed_by` (it ends where the next starts)."""
+
+    def __init__(self, landing_log, landed_by, at_times):
+        self.landing_log, self.landed_by, self.size, self.landed = landing_log, landed_by, 0, False
+        self.due = sorted(at_times, key=lambda pair: pair[0])
+
+    def __call__(self, time, _recorder):
+        while self.due and time >= self.due[0][0] * (1 - 1e-12):
+            self.due.pop(0)[1]()
+        if self.landed:
+            # one point more: a landing starting right at a communication point is taken in at the next
+            return False
+        if self.landed_by is not None and self.landing_log is not None and time > self.landed_by:
+            self.landed = any(end > self.landed_by for end in self._new_ends())
+        return True
+
+    def _new_ends(self):
+        """The end times of the landings logged since the last look."""
+        size = self.landing_log.stat().st_size
+        if size == self.size:
+            return []
+        with open(self.landing_log, "rb") as f:
+            f.seek(self.size)
+            rows = f.read().decode().splitlines()
+        self.size = size
+        return [float(row.rsplit(",", 1)[1]) for row in rows if row and not row.startswith(("#", "time"))]
+
+
+def _read_log(path, dtype, what):
+    """A CSV log of the FMU as a structured array of `dtype`, its header checked; lines starting with `#` (a
+    statement of conventions) are skipped."""
     with open(path, newline="") as f:
         reader = csv.reader(line for line in f if not line.startswith("#"))
-        header = tuple(next(reader))
-        if header != EVENT_DTYPE.names:
-            raise ValueError(f"{path}: header {header} is not the impact log's {EVENT_DTYPE.names}")
-        types = [EVENT_DTYPE[name].type for name in EVENT_DTYPE.names]
+        header = tuple(next(reader, ()))
+        if header != dtype.names:
+            raise ValueError(f"{path}: header {header} is not the {what}'s {dtype.names}")
+        types = [dtype[name].type for name in dtype.names]
         rows = []
         for number, row in enumerate(reader, start=1):
             if len(row) != len(types):
                 raise ValueError(f"{path}: row {number} has {len(row)} fields, the header {len(types)}")
             rows.append(tuple(t(value) for t, value in zip(types, row, strict=True)))
-    return np.array(rows, dtype=EVENT_DTYPE)
+    return np.array(rows, dtype=dtype)
+
+
+def read_impact_log(path) -> np.ndarray:
+    """The `impact_log` CSV as a structured array of `EVENT_DTYPE` (one row per impact, slide or release)."""
+    return _read_log(path, EVENT_DTYPE, "impact log")
+
+
+def read_landing_log(path) -> np.ndarray:
+    """The `landing_log` CSV as a structured array of `LANDING_DTYPE` (one row per finished landing)."""
+    return _read_log(path, LANDING_DTYPE, "landing log")
 
 
 def input_signals(time, **signals) -> np.ndarray:

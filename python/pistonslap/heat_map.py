@@ -17,7 +17,7 @@ from matplotlib.colors import ListedColormap
 from .fmu import fmu_path
 from .refusal import Parser, Refusal, number
 from .settings import display_unit
-from .sweep_point import METRICS
+from .sweep_point import METRICS, all_zero
 
 #: The response classes in the order of their colours.
 RESPONSES = ("periodic", "transient chaos", "chaos")
@@ -51,6 +51,12 @@ def _select(table, where):
     return table
 
 
+def _values(table, metric):
+    """A metric's values, NaN for failed points."""
+    failed = np.array([s != "ok" for s in table["status"].to_pylist()])
+    return np.where(failed, np.nan, table[metric].to_numpy(zero_copy_only=False).astype(float))
+
+
 def _cell_edges(values):
     """Edges of cells centred on the sorted `values` (half-way between neighbours)."""
     if len(values) == 1:
@@ -69,13 +75,12 @@ def heat_map(table, x, y, metric, path, title):
     md = fmpy.read_model_description(str(fmu_path()))
     (x_unit, x_factor), (y_unit, y_factor) = display_unit(x, md), display_unit(y, md)
     xs, ys = table[x].to_numpy().astype(float), table[y].to_numpy().astype(float)
-    failed = np.array([s != "ok" for s in table["status"].to_pylist()])
     if metric == "response":
         classes = table["response"].to_pylist()
         values = np.array([RESPONSES.index(c) if c in RESPONSES else np.nan for c in classes], dtype=float)
         cmap, norm = ListedColormap(_RESPONSE_COLOURS), dict(vmin=-0.5, vmax=len(RESPONSES) - 0.5)
     else:
-        values = np.where(failed, np.nan, table[metric].to_numpy(zero_copy_only=False).astype(float))
+        values = _values(table, metric)
         cmap, norm = plt.get_cmap("viridis"), {}
     cmap = cmap.with_extremes(bad=_FAILED)
 
@@ -101,6 +106,17 @@ def heat_map(table, x, y, metric, path, title):
             f"several points share an ({x}, {y}) pair: other variables vary; pick one value of each "
             "with --where NAME=VALUE"
         )
+    if metric != "response" and all_zero(values):
+        ax.text(
+            0.5,
+            0.5,
+            f"{metric} is 0 at every point",
+            transform=ax.transAxes,
+            ha="center",
+            va="center",
+            fontsize="large",
+            bbox=dict(fc="white", ec="0.5"),
+        )
     bar = fig.colorbar(artist, ax=ax)
     if metric == "response":
         bar.set_ticks(range(len(RESPONSES)), labels=RESPONSES)
@@ -125,3 +141,5 @@ def main(argv=None):
     out = args.out or args.folder / f"{args.metric}_{args.x}_{args.y}.png"
     condition = f" ({', '.join(args.where)})" if args.where else ""
     print(f"wrote {heat_map(table, args.x, args.y, args.metric, out, f'{args.folder.name}: {args.metric}{condition}')}")
+    if args.metric in METRICS and all_zero(_values(table, args.metric)):
+        print(f"{args.metric} is 0 at every point drawn: the map is one colour")

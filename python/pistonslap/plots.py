@@ -16,6 +16,8 @@ from matplotlib.animation import FuncAnimation, PillowWriter
 from matplotlib.patches import Polygon
 
 from .fmu import CENTRED, from_firing_tdc
+from .liner_load import decibels, order_spectrum, third_octaves
+from .tables import WALLS, energy_unit
 
 CORNERS = (1, 2, 3, 4)
 #: (label, corners, colour) of the two walls.
@@ -35,20 +37,68 @@ def _axes(rows, title, case, origin):
     return fig, axes
 
 
-def _legend(ax, ncol=4):
-    ax.legend(loc="lower right", bbox_to_anchor=(1, 1), ncol=ncol, fontsize="small", frameon=False)
+#: The crank-angle window of the zoom beside the slap plot's panels, deg from firing TDC: MAHLE's windows and the
+#: power stroke's landing.
+ZOOM = (-30.0, 60.0)
 
 
-def _save(fig, path):
-    fig.tight_layout()
+def _axes_with_zoom(rows, title, case, origin):
+    """`rows` panels over the cycle, each with a zoom on `ZOOM` beside it sharing its scale: `(fig, [(cycle axis,
+    zoom axis), ...])`; the zooms' axis runs from −360° to 360° whatever `origin`."""
+    height = 2.6 * rows + 1.9
+    # laid out by hand: room above each panel for its legend, above the first for the title's three lines too
+    fig, axes = plt.subplots(
+        rows,
+        2,
+        sharex="col",
+        sharey="row",
+        figsize=(12, height),
+        squeeze=False,
+        gridspec_kw=dict(
+            width_ratios=(3, 1), left=0.08, right=0.985, top=1 - 1.45 / height, bottom=0.55 / height, hspace=0.42
+        ),
+    )
+    fig.suptitle(f"{title}\n{case}", fontsize="medium")
+    start = np.degrees(origin)
+    axes[-1, 0].set_xlabel("crank angle [deg]  (0 = firing TDC)")
+    axes[-1, 0].set_xlim(start, start + 720)
+    axes[-1, 0].set_xticks(np.arange(start, start + 721, 90))
+    axes[-1, 1].set_xlabel(f"zoom {ZOOM[0]:g}…{ZOOM[1]:g} [deg]".replace("-", "−"))
+    axes[-1, 1].set_xlim(*ZOOM)
+    axes[-1, 1].set_xticks(np.arange(ZOOM[0], ZOOM[1] + 1, 15))
+    for ax in axes.flat:
+        ax.grid(True, alpha=0.3)
+    return fig, [tuple(pair) for pair in axes]
+
+
+def _broken_at_wraps(deg, values):
+    """`deg` and `values` with a NaN where the crank angle wraps, so that a line does not cross the axis there."""
+    wraps = np.flatnonzero(np.diff(deg) < 0) + 1
+    return np.insert(deg.astype(float), wraps, np.nan), np.insert(values.astype(float), wraps, np.nan)
+
+
+def _legend(ax, ncol=4, **kwargs):
+    ax.legend(loc="lower right", bbox_to_anchor=(1, 1), ncol=ncol, fontsize="small", frameon=False, **kwargs)
+
+
+def _count(n, word):
+    """`n` and the word, plural unless one."""
+    return f"{n} {word}{'' if n == 1 else 's'}"
+
+
+def _save(fig, path, tight=True):
+    """Writes the figure (laid out tight unless laid out by hand) and closes it."""
+    if tight:
+        fig.tight_layout()
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return path
 
 
-def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED):
-    """Eccentricity of the skirt top and bottom and of the pin, tilt, contact states (a bar per corner while in
-    sliding contact), and contact force per corner."""
+def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED, lubricated=False):
+    """Eccentricity of the skirt top and bottom and of the pin, tilt, then for the dry skirt the contact states (a bar
+    per corner while in sliding contact) and contact force per corner, for the lubricated one (`lubricated`) the
+    thinnest film per side and each wall's load (film, asperities and any corner in contact) with the asperity load."""
     deg = np.degrees(angle)
     fig, (lateral, tilt, states, forces) = _axes(4, "Piston secondary motion over one engine cycle", case, origin)
     for name, label, style in (
@@ -75,6 +125,15 @@ def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED):
     _legend(lateral, ncol=3)
     tilt.plot(deg, result["piston_tilt"] * 1e3)
     tilt.set_ylabel("tilt [mrad]\n(+ counterclockwise)")
+    if lubricated:
+        _film_and_wall_loads(states, forces, deg, result)
+    else:
+        _corner_contacts(states, forces, deg, result)
+    return _save(fig, path)
+
+
+def _corner_contacts(states, forces, deg, result):
+    """A bar per corner while in sliding contact, and each corner's contact force."""
     for corner in CORNERS:
         in_contact = result[f"contact_state_{corner}"] > 0
         states.fill_between(deg, corner - 0.35, corner + 0.35, where=in_contact, step="post", label=f"K{corner}")
@@ -84,48 +143,185 @@ def piston_motion(angle, result, half_clearance, path, case, origin=CENTRED):
     states.set_ylabel("sliding contact")
     forces.set_ylabel("contact force [kN]")
     _legend(forces)
-    return _save(fig, path)
 
 
-def slap(events, is_slap, slap_threshold, path, case, origin=CENTRED):
-    """Every impact of one cycle against the crank angle, by wall, on linear scales: the energy its normal
-    (restitution) part dissipated, and its normal approach speed with the slap threshold drawn. Slaps (`is_slap`: the
-    landings on the other wall, `slap_rows`) are filled on stems, the other impacts hollow. Rows of the impact log
-    only: no quantity here depends on the communication step."""
-    fig, (energy, speed) = _axes(2, "Piston slap: impacts over one engine cycle", case, origin)
+def _film_and_wall_loads(film, loads, deg, result):
+    """The thinnest film on each side, and each wall's normal load (film, asperities and corners) with the asperity
+    load (per side where the FMU gives it, else both sides together)."""
+    for side, (label, _, colour) in zip(WALLS, SIDES, strict=True):
+        name = label.split(" (")[0]
+        film.plot(deg, result[f"min_film_thickness_{side}"] * 1e6, color=colour, label=name)
+        loads.plot(deg, result[f"liner_force_{side}"] * 1e-3, color=colour, label=f"{name} wall load")
+        if f"asperity_force_{side}" in result.dtype.names:
+            loads.plot(deg, result[f"asperity_force_{side}"] * 1e-3, color=colour, ls="--", label=f"{name} asperities")
+    if "asperity_force_thrust" not in result.dtype.names:
+        loads.plot(deg, result["asperity_force"] * 1e-3, color="k", ls="--", lw=0.8, label="asperities (both sides)")
+    film.set_ylim(bottom=0)
+    film.set_ylabel("minimum film\nthickness [µm]")
+    _legend(film, ncol=2)
+    loads.set_ylabel("liner load [kN]")
+    _legend(loads, ncol=3)
+
+
+#: MAHLE's crank-angle windows of the liner's acceleration (deg from firing TDC): (name, start, end).
+MAHLE_WINDOWS = (("rattling", -2.0, 8.0), ("croaking", 8.0, 20.0))
+_WINDOW_COLOURS = ("0.75", "0.88")
+
+
+def slap(
+    events,
+    is_slap,
+    slap_threshold,
+    path,
+    case,
+    origin=CENTRED,
+    landings=None,
+    loads=None,
+    lubricated=False,
+):
+    """One cycle's landings and impacts against the crank angle, by wall, on linear scales.
+
+    With `landings` (rows of the landing log in the cycle): the piston's lateral kinetic energy at each landing's
+    start (filled, on stems) and the energy the landing took from it (hollow). With `loads` (`(angle, result)`, the
+    cycle's samples): each wall's load rise rate between samples. Then, when the cycle had impacts: the energy each
+    impact's normal (restitution) part dissipated, and its normal approach speed with the slap threshold drawn; slaps
+    (`is_slap`: the landings on the other wall, `slap_rows`) filled on stems, the other impacts hollow. Without
+    impacts a line says so (on oil, `lubricated`: that the skirt rode on its film). MAHLE's rattling and croaking
+    windows are shaded."""
+    impacts = events["kind"] == "impact"
+    panels = (["landings"] if landings is not None else []) + (["rate"] if loads is not None else [])
+    panels += ["impact energy", "impact speed"] if impacts.any() or not panels else []
+    title = "Piston slap: landings and impacts over one engine cycle"
+    if not impacts.any():
+        case += "\nno impact in this cycle: " + (
+            "the skirt rode on its oil film" if lubricated else "the piston slid along the liner"
+        )
+    fig, pairs = _axes_with_zoom(len(panels), title, case, origin)
+    draw = {
+        "landings": lambda ax, frame: _landings(ax, landings, frame),
+        "rate": lambda ax, frame: _force_rates(ax, *loads, frame),
+        "impact energy": lambda ax, frame: _impacts(ax, "energy", events, is_slap, slap_threshold, frame),
+        "impact speed": lambda ax, frame: _impacts(ax, "speed", events, is_slap, slap_threshold, frame),
+    }
+    for panel, (cycle_ax, zoom) in zip(panels, pairs, strict=True):
+        for ax, frame in ((cycle_ax, origin), (zoom, CENTRED)):
+            _mahle_windows(ax, frame, legend=ax is pairs[0][0])
+            draw[panel](ax, frame)
+            _zero_near_bottom(ax)
+        if zoom.get_legend():
+            zoom.get_legend().remove()
+        zoom.set_ylabel("")
+    if "impact energy" in panels:
+        # one legend for both impact panels, above the first
+        energy, speed = (pairs[panels.index(name)][0] for name in ("impact energy", "impact speed"))
+        speed.get_legend().remove()
+        handles, labels = energy.get_legend_handles_labels()
+        threshold = next(line for line in speed.get_lines() if line.get_label().startswith("slap threshold"))
+        _legend(energy, ncol=3, handles=[*handles, threshold], labels=[*labels, threshold.get_label()])
+    # the legend above the first panel names the windows; the zoom shows them wide enough to name them there too
+    for name, low, high in MAHLE_WINDOWS:
+        pairs[0][1].annotate(
+            name,
+            ((low + high) / 2, 1),
+            xycoords=("data", "axes fraction"),
+            xytext=(0, 2),
+            textcoords="offset points",
+            rotation=90,
+            ha="center",
+            va="bottom",
+            fontsize="x-small",
+        )
+    return _save(fig, path, tight=False)
+
+
+def _zero_near_bottom(ax):
+    """The zero line a little above the bottom, so that values next to nothing stay visible."""
+    top = max(ax.get_ylim()[1], 1e-9)
+    ax.set_ylim(-0.04 * top, top)
+    ax.axhline(0, color="0.6", lw=0.5, zorder=1)
+
+
+def _landings(ax, landings, origin):
+    """Per wall, each landing's lateral kinetic energy at its start (filled, on a stem) and the energy it took."""
+    deg = np.degrees(from_firing_tdc(landings["crank_angle"], origin))
+    factor, unit = energy_unit(max(landings["kinetic_energy"].max(initial=0), landings["energy_loss"].max(initial=0)))
+    for side, (label, _, colour) in zip(WALLS, SIDES, strict=True):
+        mine = landings["wall"] == side
+        name = label.split(" (")[0]
+        energy, loss = landings["kinetic_energy"][mine] * factor, landings["energy_loss"][mine] * factor
+        ax.vlines(deg[mine], 0, energy, color=colour, lw=1)
+        ax.plot(
+            deg[mine],
+            energy,
+            "o",
+            color=colour,
+            ms=5,
+            zorder=4,
+            label=f"{name}: {_count(mine.sum(), 'landing')}, energy",
+        )
+        ax.plot(deg[mine], loss, "D", mfc="none", color=colour, ms=5, mew=1, zorder=4, label=f"{name}: energy taken")
+    if not len(landings):
+        ax.text(0.5, 0.5, "no landing in this cycle", transform=ax.transAxes, ha="center", va="center")
+    ax.set_ylabel(f"lateral kinetic energy\nat landing [{unit}]")
+    _legend(ax, ncol=3)
+
+
+def _force_rates(ax, angle, result, origin):
+    """Per wall, the rise rate of its load between consecutive samples (falls not drawn), at the later sample."""
+    deg = np.degrees(from_firing_tdc(angle, origin))
+    time = result["time"]
+    for side, (label, _, colour) in zip(WALLS, SIDES, strict=True):
+        rate = np.maximum(np.diff(result[f"liner_force_{side}"]) / np.diff(time), 0) * 1e-6
+        ax.plot(*_broken_at_wraps(deg[1:], rate), color=colour, lw=0.9, label=label.split(" (")[0])
+    ax.set_ylabel("wall load rise\nrate [kN/ms]")
+    _legend(ax, ncol=2)
+
+
+def _impacts(ax, what, events, is_slap, slap_threshold, origin):
+    """Every impact's dissipated `energy` or approach `speed` by wall, slaps filled on stems; with the speeds, the
+    slap threshold."""
     impacts = events["kind"] == "impact"
     deg = np.degrees(from_firing_tdc(events["crank_angle"], origin))
+    values = events["energy_lost"] * 1e3 if what == "energy" else events["normal_velocity_before"] * 1e3
     for label, corners, colour in SIDES:
         mine = impacts & np.isin(events["corner"], corners)
-        slaps, others = mine & is_slap, mine & ~is_slap
-        for ax, values in ((energy, events["energy_lost"] * 1e3), (speed, events["normal_velocity_before"] * 1e3)):
-            ax.vlines(deg[slaps], 0, values[slaps], color=colour, lw=1)
-            ax.plot(deg[slaps], values[slaps], "o", color=colour, ms=5, zorder=4, label=f"{label}: {slaps.sum()} slaps")
-            ax.plot(
-                deg[others],
-                values[others],
-                "o",
-                mfc="none",
-                color=colour,
-                ms=3,
-                mew=0.8,
-                zorder=3,
-                clip_on=False,
-                label=f"{label}: {others.sum()} other impacts",
-            )
+        slaps, others, name = mine & is_slap, mine & ~is_slap, label.split(" (")[0]
+        ax.vlines(deg[slaps], 0, values[slaps], color=colour, lw=1)
+        ax.plot(
+            deg[slaps], values[slaps], "o", color=colour, ms=5, zorder=4, label=f"{name}: {_count(slaps.sum(), 'slap')}"
+        )
+        ax.plot(
+            deg[others],
+            values[others],
+            "o",
+            mfc="none",
+            color=colour,
+            ms=3,
+            mew=0.8,
+            zorder=3,
+            clip_on=False,
+            label=f"{name}: {_count(others.sum(), 'other impact')}",
+        )
+    if what == "energy":
+        ax.set_ylabel("energy dissipated\nper impact [mJ]")
+        return
     # named in the legend: a label on the line would sit among the bounces that follow each slap
-    speed.axhline(
-        slap_threshold * 1e3, color="k", lw=0.8, ls="--", label=f"slap threshold {slap_threshold * 1e3:g} mm/s"
-    )
-    energy.set_ylabel("energy dissipated\nper impact [mJ]")
-    speed.set_ylabel("impact speed [mm/s]")
-    for ax in (energy, speed):
-        # the zero line a little above the bottom, so that impacts dissipating next to nothing stay visible
-        top = max(ax.get_ylim()[1], 1e-9)
-        ax.set_ylim(-0.04 * top, top)
-        ax.axhline(0, color="0.6", lw=0.5, zorder=1)
-    _legend(speed, ncol=2)
-    return _save(fig, path)
+    ax.axhline(slap_threshold * 1e3, color="k", lw=0.8, ls="--", label=f"slap threshold {slap_threshold * 1e3:g} mm/s")
+    ax.set_ylabel("impact speed [mm/s]")
+    _legend(ax, ncol=2)
+
+
+def _mahle_windows(ax, origin, legend=False):
+    """MAHLE's windows shaded (on a 0…720° axis the part before firing TDC at its end), named in the legend when
+    `legend`."""
+    start = np.degrees(origin)
+    for (name, low, high), colour in zip(MAHLE_WINDOWS, _WINDOW_COLOURS, strict=True):
+        label = f"{name} {low:g}…{high:g}° (MAHLE)".replace("-", "−") if legend else "_window"
+        for shift in (0.0, 720.0):
+            lo, hi = max(low + shift, start), min(high + shift, start + 720)
+            if lo < hi:
+                ax.axvspan(lo, hi, color=colour, lw=0, zorder=0, label=label)
+                label = "_window"
 
 
 def _zero_at_same_height(*axes):
@@ -283,3 +479,41 @@ def piston_animation(angle, result, events, geometry, magnification, path, case,
     FuncAnimation(fig, draw, frames=frames).save(path, writer=PillowWriter(fps=12))
     plt.close(fig)
     return path
+
+
+def liner_load_spectrum(table, speed, path, case):
+    """The spectrum of each wall's mean load (rows of `liner_load.liner_loads`, whole cycles at the prescribed crank
+    speed `speed`, rad/s) as NVH tools draw it, a column per wall on common scales: the order spectrum (RMS per
+    harmonic, dB re 1 N, on a logarithmic order axis) above the third-octave band levels (bars at the nominal band
+    centres)."""
+    orders, frequencies, rms = order_spectrum(table, speed)
+    centres, bands = third_octaves(frequencies, rms)
+    fig, axes = plt.subplots(2, 2, figsize=(12, 7.5), sharey="row")
+    cycles = round(table["cycle"].max() - table["cycle"].min() + 1)
+    fig.suptitle(
+        f"Liner load spectrum: each wall's mean normal force over {720 * cycles / len(table):g}° intervals, "
+        f"{cycles} cycle{'s' if cycles > 1 else ''} (order 1 = {speed / (2 * np.pi):.4g} Hz)\n{case}",
+        fontsize="medium",
+    )
+    levels = {wall: decibels(rms[wall]) for wall in WALLS}
+    top = max(np.max(levels[wall][np.isfinite(levels[wall])]) for wall in WALLS)
+    floor = top - 100
+    for column, (side, (label, _, colour)) in enumerate(zip(WALLS, SIDES, strict=True)):
+        order_ax, band_ax = axes[0, column], axes[1, column]
+        order_ax.vlines(orders, floor, np.maximum(levels[side], floor), color=colour, lw=0.6)
+        order_ax.set_xscale("log")
+        order_ax.set_xlim(orders[0] / 1.2, orders[-1] * 1.2)
+        order_ax.set_ylim(floor, top + 5)
+        order_ax.set_xlabel("engine order (multiple of the crank speed; 0.5 = once a cycle)")
+        order_ax.set_title(f"{label.split(' (')[0]} wall", fontsize="medium", color=colour)
+        order_ax.grid(True, which="both", alpha=0.3)
+        band_levels = decibels(bands[side])
+        positions = np.arange(len(centres))
+        band_ax.bar(positions, np.maximum(band_levels, floor) - floor, bottom=floor, width=0.8, color=colour)
+        band_ax.set_xticks(positions, [f"{c / 1000:g}k" if c >= 1000 else f"{c:g}" for c in centres], rotation=90)
+        band_ax.set_xlabel("third-octave band, nominal centre frequency [Hz]")
+        band_ax.set_ylim(floor, top + 10)
+        band_ax.grid(True, axis="y", alpha=0.3)
+    axes[0, 0].set_ylabel("order RMS [dB re 1 N]")
+    axes[1, 0].set_ylabel("band RMS [dB re 1 N]")
+    return _save(fig, path)

@@ -19,7 +19,7 @@ from tqdm import tqdm
 
 from .fmu import fmu_path
 from .refusal import Parser, Refusal
-from .sweep_point import run_point
+from .sweep_point import METRICS, all_zero, run_point, zero_note
 from .sweep_spec import SpecError, load
 from .sweep_store import Store
 
@@ -118,11 +118,15 @@ def connect(workers, scheduler):
 
 
 def summary(path, ran):
-    """One line on the results at `path`: points, run now, failed, and the first failure's point and message."""
-    table = pq.read_table(path, columns=["point", "status"])
+    """One line on the results at `path`: points, run now, failed, and the first failure's point and message; then a
+    line naming the metrics that read 0 at every point, if any."""
+    table = pq.read_table(path)
     failed = [(p, s) for p, s in zip(table["point"].to_pylist(), table["status"].to_pylist(), strict=True) if s != "ok"]
     line = f"wrote {path} ({table.num_rows} points, {ran} run now, {len(failed)} failed"
-    return line + (f"; first failure: point {failed[0][0]}: {failed[0][1]})" if failed else ")")
+    line += f"; first failure: point {failed[0][0]}: {failed[0][1]})" if failed else ")"
+    zeros = [name for name in METRICS if name in table.column_names and all_zero(table[name].to_numpy())]
+    note = zero_note(zeros)
+    return line + (f"\n{note}" if note else "")
 
 
 def main(argv=None):

@@ -29,11 +29,12 @@ class Store:
         self.results = self.folder / "results.parquet"
         self.parts.mkdir(parents=True, exist_ok=True)
         recorded = self.folder / "spec.json"
-        identity = json.dumps(asdict(spec), sort_keys=True)
+        # the metrics' names too: results of a version with other columns cannot be merged with these
+        identity = json.dumps(dict(asdict(spec), metrics=list(METRICS)), sort_keys=True)
         if recorded.exists() and recorded.read_text() != identity:
             raise SpecError(
-                f"{self.folder} holds the results of another spec named {spec.name!r}: give another "
-                "--out or name, or remove the folder"
+                f"{self.folder} holds the results of another spec named {spec.name!r} (or of a version of pistonslap "
+                "with other columns): give another --out or name, or remove the folder"
             )
         recorded.write_text(identity)
         self.schema = pa.schema(

@@ -42,3 +42,18 @@ def test_failed_and_unclassified_points_are_grey(tmp_path):
 def test_points_sharing_a_cell_are_refused(tmp_path):
     with pytest.raises(Refusal, match="--where"):
         heat_map(table(["ok"] * 4, y=(0.1, 0.1, 0.1, 0.2)), "x", "y", "impacts_per_cycle", tmp_path / "m.png", "t")
+
+
+def test_a_metric_zero_at_every_point_is_said_on_the_map(tmp_path, monkeypatch):
+    """A map of zeros (a failed point aside) carries the words; a metric that varies carries none."""
+    from pistonslap import heat_map as module
+
+    drawn = []
+    monkeypatch.setattr(module.plt, "close", drawn.append)
+    zeros = table(["ok", "ok", "ok", "fmi2ExitInitializationMode: bore ..."]).set_column(
+        2, "impacts_per_cycle", pa.array([0.0, 0.0, 0.0, np.nan])
+    )
+    heat_map(zeros, "x", "y", "impacts_per_cycle", tmp_path / "z.png", "t")
+    heat_map(table(["ok"] * 4), "x", "y", "impacts_per_cycle", tmp_path / "v.png", "t")
+    assert [t.get_text() for t in drawn[0].axes[0].texts] == ["impacts_per_cycle is 0 at every point"]
+    assert len(drawn[1].axes[0].texts) == 0

@@ -5,6 +5,7 @@ import os
 import signal
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 
@@ -13,10 +14,11 @@ import numpy as np
 import pytest
 from distributed import Client, LocalCluster
 
-from pistonslap.fmu import CYCLE, simulate
+from pistonslap.fmu import CYCLE, read_landing_log, simulate
 from pistonslap.sweep import run, summary
 from pistonslap.sweep_spec import SpecError, parse
 from pistonslap.sweep_store import Store
+from pistonslap.tables import SAMPLE_DEG
 
 CYCLE_TIME = CYCLE / 125.66  # s, one engine cycle at the crank_speed start value (a hair over 0.1 s)
 
@@ -57,34 +59,67 @@ def test_grid_rows_are_the_direct_runs(client, model_description, tmp_path):
         if row["bore"] < 0.08:
             assert "bore" in row["status"] and np.isnan(row["impacts_per_cycle"]), row
             continue
+        # at the sweep's communication step (the demo's), which restarts the integrator at its points
+        step = np.radians(SAMPLE_DEG) / 125.66
         direct = simulate(
-            stop_time=6 * CYCLE_TIME,
-            output_interval=CYCLE_TIME,
+            stop_time=6 * CYCLE_TIME + step,
+            output_interval=step,
             start_values={"bore": row["bore"], "restitution": row["restitution"]},
             output=["impact_count", "impact_energy_total", "max_impact_velocity_in_step"],
         )
+        # the samples at the cycle ends, 720° / 0.36° apart
+        ends = np.arange(7) * round(720 / SAMPLE_DEG)
+        np.testing.assert_allclose(direct["time"][ends], np.arange(7) * CYCLE_TIME, rtol=1e-12)
         assert row["status"] == "ok" and row["response"] is None  # variant 1 is not classified
-        assert row["impacts_per_cycle"] == (direct["impact_count"][6] - direct["impact_count"][2]) / 4
-        assert row["impact_energy_per_cycle"] == pytest.approx(
-            (direct["impact_energy_total"][6] - direct["impact_energy_total"][2]) / 4, rel=1e-12
-        )
+        impacts, energy = direct["impact_count"][ends], direct["impact_energy_total"][ends]
+        assert row["impacts_per_cycle"] == (impacts[6] - impacts[2]) / 4
+        assert row["impact_energy_per_cycle"] == pytest.approx((energy[6] - energy[2]) / 4, rel=1e-9)
         # the log's approach speed and the output's agree to round-off (2e-12 here), not bit for bit
-        assert row["max_impact_velocity"] == pytest.approx(direct["max_impact_velocity_in_step"][3:].max(), rel=1e-9)
+        counted = (direct["time"] > 2 * CYCLE_TIME) & (direct["time"] <= 6 * CYCLE_TIME)
+        assert row["max_impact_velocity"] == pytest.approx(
+            direct["max_impact_velocity_in_step"][counted].max(), rel=1e-9
+        )
         if (row["bore"], row["restitution"]) == (0.08008, 0.0):
             assert row["side_changes_per_cycle"] == 6, "A&K's six side changes per cycle (DESIGN.md §6.3)"
+        _assert_landings_are_the_logs(row, step)
+
+
+def _assert_landings_are_the_logs(row, step):
+    """A dry point's landing columns are the FMU's landing log over the counted cycles: the landings about the firing
+    TDCs ending cycles 3 to 6 (a landing counts in the cycle from −360° to 360° it starts in), per cycle, and the
+    largest one's energy, loss and crank angle, from a direct run with the log on."""
+    landed = {}
+    with tempfile.TemporaryDirectory() as tmp:
+        simulate(
+            stop_time=6.75 * CYCLE_TIME,
+            output_interval=step,
+            start_values={"bore": row["bore"], "restitution": row["restitution"], "landing_log": f"{tmp}/l.csv"},
+            output=["crank_angle"],
+        )
+        landed = read_landing_log(f"{tmp}/l.csv")
+    cycle = np.floor((125.66 * landed["time"] + 2 * np.pi) / CYCLE)
+    for wall in ("thrust", "antithrust"):
+        mine = landed[(landed["wall"] == wall) & (cycle >= 3) & (cycle <= 6)]
+        assert row[f"landings_per_cycle_{wall}"] == len(mine) / 4 and len(mine) >= 4, (row, wall)
+        largest = mine[np.argmax(mine["kinetic_energy"])]
+        assert row[f"landing_energy_{wall}"] == largest["kinetic_energy"] > 0
+        assert row[f"landing_loss_{wall}"] == largest["energy_loss"]
+        assert row[f"landing_crank_angle_{wall}"] == largest["crank_angle"]
 
 
 SLOW_GRID = {"restitution": [0.2, 0.4, 0.6, 0.8], "bore": [0.08004, 0.08008, 0.08012]}
+#: Cycles of a slow sweep's points: about a second each, sampled every 0.36°.
+SLOW_CYCLES = 20
 
 
 def test_a_rerun_after_the_sweep_is_killed_runs_only_the_missing_points(client, model_description, tmp_path):
     """The sweep's process (and its cluster) killed after two batches: the rerun adds exactly the missing points and
     keeps the recorded ones as they were."""
-    text = "name = 'test'\ncycles = 150\nskip_cycles = 2\n[grid]\n" + "".join(
+    text = f"name = 'test'\ncycles = {SLOW_CYCLES}\nskip_cycles = 2\n[grid]\n" + "".join(
         f"{name} = {values}\n" for name, values in SLOW_GRID.items()
     )
     (tmp_path / "spec.toml").write_text(text)
-    spec = spec_of(model_description, cycles=150, grid=SLOW_GRID)
+    spec = spec_of(model_description, cycles=SLOW_CYCLES, grid=SLOW_GRID)
     parts = tmp_path / "test" / "parts"
     process = subprocess.Popen(
         [
@@ -122,7 +157,7 @@ def test_a_rerun_after_the_sweep_is_killed_runs_only_the_missing_points(client, 
 def test_a_worker_killed_mid_sweep_loses_nothing(client, model_description, tmp_path):
     """SIGKILL to one worker process after the first batch: Dask reruns its tasks, every point is recorded once,
     equal to the undisturbed sweep's rows."""
-    spec = spec_of(model_description, cycles=150, grid=SLOW_GRID)
+    spec = spec_of(model_description, cycles=SLOW_CYCLES, grid=SLOW_GRID)
     pids = client.run(os.getpid)
     sweep = threading.Thread(target=run, args=(spec, tmp_path, client), kwargs=dict(batch_size=1, progress=False))
     sweep.start()
