@@ -326,14 +326,17 @@ impl Skirt {
                 let held = SkirtMotion { lateral: linear.at.lateral, tilt: linear.at.tilt, ..*m };
                 self.solve_side(s, side_index, &held, Cavitation::Held);
             }
-            // Asperities on the closed grid (trapezoid weights), with the true film thickness; a side
-            // whose thinnest film is beyond their reach has none.
+            // Asperities on the closed grid (trapezoid weights), with the true film thickness down to
+            // the film's floor σ/10, below which the corners carry the collapsed film (the asperities'
+            // load is then the floor's, not the steep Greenwood–Tripp tail of a surface through the
+            // liner, which an RK4 stage off the held corners' manifold reads by nanometres); a side whose
+            // thinnest film is beyond their reach has none.
             let pressure = &s.reynolds[side_index].pressure;
             let rows = if side_map.is_some() || self.asperity.touches(smallest[side_index]) { &s.closed_rows[..] } else { &[] };
             for (jj, &((a, b), (alpha, beta), z, r)) in rows.iter().enumerate() {
                 for (ii, &(c, ov)) in side.closed.iter().enumerate() {
                     let h = a + b * c + ov;
-                    let pa = self.asperity.pressure(h);
+                    let pa = self.asperity.pressure(h.max(self.floor));
                     if let Some(sm) = side_map.as_mut() {
                         let inside = ii > 0 && ii <= nx && jj > 0 && jj <= nz;
                         sm.pressure.push(if inside { pressure[(jj - 1) * nx + ii - 1] } else { 0.0 });
