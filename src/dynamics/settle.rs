@@ -51,8 +51,13 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
 
     /// Whether a held constraint of `s` has drifted beyond `DRIFT_FRACTION` of its tolerances.
     pub(super) fn drifted(&self, s: &Sample<N, M>) -> bool {
+        self.drifted_at(&s.gap, &s.hd)
+    }
+
+    /// Whether a held constraint with gaps `gap` and rates `hd` has drifted (see `drifted`).
+    pub(super) fn drifted_at(&self, gap: &SVector<f64, M>, hd: &SVector<f64, M>) -> bool {
         let (gap_tol, rate_tol) = (DRIFT_FRACTION * self.options.gap_tolerance, DRIFT_FRACTION * self.options.velocity_tolerance);
-        !members::<M>(self.contacts.held).all(|i| s.gap[i].abs() <= gap_tol && s.hd[i].abs() <= rate_tol)
+        !members::<M>(self.contacts.held).all(|i| gap[i].abs() <= gap_tol && hd[i].abs() <= rate_tol)
     }
 
     /// `(q, q̇)` of `s` projected onto the held set's manifold, `h_A = 0` and `ḣ_A = 0`. `ev`: the
@@ -63,8 +68,18 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         s: &Sample<N, M>,
         ev: Option<Evaluation<N, M>>,
     ) -> Result<(SVector<f64, N>, SVector<f64, N>), DynamicsError> {
-        let (t, v, active) = (s.t, s.v, self.contacts.held);
-        let (q, ev, frame) = self.onto_contacts(t, s.q, &v, active, frame_at(&self.system, t, &s.q, &v, ev)?)?;
+        self.onto_held_at((s.t, &s.q, &s.v), ev)
+    }
+
+    /// `(q, q̇)` at `t` projected onto the held set's manifold (see `onto_held`).
+    #[allow(clippy::type_complexity)]
+    pub(super) fn onto_held_at(
+        &self,
+        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
+        ev: Option<Evaluation<N, M>>,
+    ) -> Result<(SVector<f64, N>, SVector<f64, N>), DynamicsError> {
+        let (v, active) = (*v, self.contacts.held);
+        let (q, ev, frame) = self.onto_contacts(t, *q, &v, active, frame_at(&self.system, t, q, &v, ev)?)?;
         // Projected held contacts move the velocity through the linkage's inertia alone (the
         // implicit term's `M⁻¹ J_Hᵀ`), which the implicit force takes no impulse in.
         let frame = if self.contacts.projected { Projected::new(&self.system, &ev, (t, &q, &v), active)?.frame(t)? } else { frame };
