@@ -220,6 +220,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// The drift is judged from the evaluation at the interpolated state (its gaps and `ḣ`, what
     /// the sample there would hold), which the projection starts from: a drifted point evaluates
     /// the system once there and builds one sample, at the projected state.
+    #[inline(always)]
     fn point(&self, end: &Sample<N, M>, t: f64) -> Result<Sample<N, M>, DynamicsError> {
         let (s0, contacts) = (&self.state, self.contacts);
         let dense = Hermite5 { t0: s0.t, dt: end.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: end.q, v1: end.v, a1: end.acc };
