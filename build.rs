@@ -320,13 +320,19 @@ fn contract_rs(variables: &[Resolved], table: &Table) -> String {
     }
     s += "        Ok(())\n    }\n}\n";
     s += "impl Outputs {\n    /// The first Real output that is not finite, by name: a step that gives one has failed.\n";
-    s += "    pub fn first_non_finite(&self) -> Option<(&'static str, f64)> {\n        let reals = [\n";
-    for v in variables.iter().filter(|v| v.owner() == "outputs" && v.kind == "Real") {
-        s += &format!("            ({:?}, self.{}),\n", v.a.name, v.a.name);
+    s += "    pub fn first_non_finite(&self) -> Option<(&'static str, f64)> {\n        let values = [\n";
+    let reals: Vec<&Resolved> = variables.iter().filter(|v| v.owner() == "outputs" && v.kind == "Real").collect();
+    for v in &reals {
+        s += &format!("            self.{},\n", v.a.name);
     }
-    s += "        ];\n        // One sum clears them all (x · 0 is NaN exactly for an infinite or NaN x) before any is named.\n";
-    s += "        if reals.iter().map(|(_, x)| x * 0.0).sum::<f64>() == 0.0 {\n            return None;\n        }\n";
-    s += "        reals.into_iter().find(|(_, x)| !x.is_finite())\n    }\n}\n";
+    s += "        ];\n        // One sum clears them all (x · 0 is NaN exactly for an infinite or NaN x) before any is named:\n";
+    s += "        // the values alone, the names only for a step that failed (every step checks its outputs).\n";
+    s += "        if values.iter().map(|x| x * 0.0).sum::<f64>() == 0.0 {\n            return None;\n        }\n";
+    s += "        let names = [\n";
+    for v in &reals {
+        s += &format!("            {:?},\n", v.a.name);
+    }
+    s += "        ];\n        names.into_iter().zip(values).find(|(_, x)| !x.is_finite())\n    }\n}\n";
     if table.can_interpolate_inputs == "true" {
         let inputs: Vec<&Resolved> = variables.iter().filter(|v| v.owner() == "inputs" && v.kind == "Real").collect();
         s += "/// Time derivatives of the continuous inputs at the start of a step, `[first, second]` per input\n";

@@ -73,7 +73,8 @@ fn main() {
     // seen from outside) every step is a plain RK4 step: wall time per step, through the model.
     let plain = median((0..10 * RUNS).map(|_| plain_steps(40) / 40.0).collect());
     let ghz = ghz();
-    let limit = match plain_step_work() {
+    let work = plain_step_work();
+    let limit = match work.clone() {
         Ok((instructions, flops)) => {
             let limit = flops / (2.0 * ghz * 1e9);
             println!(
@@ -92,7 +93,7 @@ fn main() {
     };
     least_work(cycle, plain, limit);
     lubricated(cycle);
-    communication_steps(plain);
+    communication_steps(plain, work.ok().map(|(instructions, _)| instructions));
     thesis_study();
 }
 
@@ -119,20 +120,41 @@ fn lubricated(cycle: f64) {
 /// plain step's cost `plain`. The step sizes take turns, round after round, so that the ratio of
 /// two of them is taken within a round, both under the same load of the machine: its median over
 /// the rounds.
-fn communication_steps(plain: f64) {
+///
+/// Then a communication point at 1e-5 s (2 s at 1e-5 s steps, the median wall time per
+/// `fmi2DoStep`, the host's two `fmi2GetReal` included) against one plain RK4 step of the same
+/// model (`plain` s, `plain_instructions`), in time and in instructions, and the wall-time
+/// ratio of 2 s at 1e-5 s steps to 2 s at 1e-3 s steps.
+fn communication_steps(plain: f64, plain_instructions: Option<f64>) {
     let (stop, steps) = (2.0, [1e-5, 1e-4, 1e-3, 1e-2]);
     let rounds: Vec<Vec<f64>> = (0..COMMUNICATION_ROUNDS).map(|_| steps.map(|h| run(&Host::new(&[], &[]), stop, h)).to_vec()).collect();
+    let mut fine_point = None;
     for (i, h) in steps.into_iter().enumerate() {
         let wall = median(rounds.iter().map(|r| r[i]).collect());
         let steps = rk4_steps(stop, h);
-        let instructions =
-            do_step_instructions(h).map_or_else(|why| format!("instructions not counted: {why}"), |n| format!("{n:.0} instructions"));
+        let counted = do_step_instructions(h);
+        if i == 0 {
+            fine_point = Some((wall / (stop / h), counted.clone().ok()));
+        }
+        let instructions = counted.map_or_else(|why| format!("instructions not counted: {why}"), |n| format!("{n:.0} instructions"));
         println!(
             "crank train, default case, 2 s in steps of {h:.0e} s: {:6.1}× real time, {:.2} µs and {instructions} per fmi2DoStep, \
              {steps} RK4 steps: {:.1}× their cost as plain steps",
             stop / wall,
             wall / (stop / h) * 1e6,
             wall / (steps as f64 * plain)
+        );
+    }
+    if let Some((point, instructions)) = fine_point {
+        let counted = match (instructions, plain_instructions) {
+            (Some(n), Some(plain_n)) => format!(", {n:.0} instructions against {plain_n:.0}: {:.2}×", n / plain_n),
+            _ => String::new(),
+        };
+        println!(
+            "crank train, default case, one communication point at 1e-5 s: {:.2} µs against one plain RK4 step's {:.2} µs: {:.2}×{counted}",
+            point * 1e6,
+            plain * 1e6,
+            point / plain
         );
     }
     let ratio = median(rounds.iter().map(|r| r[0] / r[2]).collect());

@@ -51,8 +51,13 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
 
     /// Whether a held constraint of `s` has drifted beyond `DRIFT_FRACTION` of its tolerances.
     pub(super) fn drifted(&self, s: &Sample<N, M>) -> bool {
+        self.drifted_at(&s.gap, &s.hd)
+    }
+
+    /// Whether a held constraint with gaps `gap` and rates `hd` has drifted (see `drifted`).
+    pub(super) fn drifted_at(&self, gap: &SVector<f64, M>, hd: &SVector<f64, M>) -> bool {
         let (gap_tol, rate_tol) = (DRIFT_FRACTION * self.options.gap_tolerance, DRIFT_FRACTION * self.options.velocity_tolerance);
-        !members::<M>(self.contacts.held).all(|i| s.gap[i].abs() <= gap_tol && s.hd[i].abs() <= rate_tol)
+        !members::<M>(self.contacts.held).all(|i| gap[i].abs() <= gap_tol && hd[i].abs() <= rate_tol)
     }
 
     /// `(q, q̇)` of `s` projected onto the held set's manifold, `h_A = 0` and `ḣ_A = 0`. `ev`: the
@@ -63,14 +68,29 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         s: &Sample<N, M>,
         ev: Option<Evaluation<N, M>>,
     ) -> Result<(SVector<f64, N>, SVector<f64, N>), DynamicsError> {
-        let (t, v, active) = (s.t, s.v, self.contacts.held);
-        let (q, ev, frame) = self.onto_contacts(t, s.q, &v, active, frame_at(&self.system, t, &s.q, &v, ev)?)?;
-        // Projected held contacts move the velocity through the linkage's inertia alone (the
-        // implicit term's `M⁻¹ J_Hᵀ`), which the implicit force takes no impulse in.
-        let frame = if self.contacts.projected { Projected::new(&self.system, &ev, (t, &q, &v), active)?.frame(t)? } else { frame };
+        self.onto_held_at((s.t, &s.q, &s.v), ev)
+    }
+
+    /// `(q, q̇)` at `t` projected onto the held set's manifold (see `onto_held`).
+    #[allow(clippy::type_complexity)]
+    pub(super) fn onto_held_at(
+        &self,
+        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
+        ev: Option<Evaluation<N, M>>,
+    ) -> Result<(SVector<f64, N>, SVector<f64, N>), DynamicsError> {
+        let (mut q, v, active) = (*q, *v, self.contacts.held);
+        let (mut ev, mut frame) = frame_at(&self.system, t, &q, &v, ev)?;
+        self.onto_contacts(t, &mut q, &v, active, (&mut ev, &mut frame))?;
         let hd = ev.gap_jacobian * v + ev.gap_time_rate;
         let dependent = DynamicsError::DependentContacts { time: t, constraints: active };
-        Ok((q, v + frame.projection(&hd, active).ok_or(dependent)?.0))
+        // Projected held contacts move the velocity through the linkage's inertia alone (the
+        // implicit term's `M⁻¹ J_Hᵀ`), which the implicit force takes no impulse in.
+        let jump = if self.contacts.projected {
+            Projected::new(&self.system, &ev, (t, &q, &v), active)?.frame(t)?.projection(&hd, active)
+        } else {
+            frame.projection(&hd, active)
+        };
+        Ok((q, v + jump.ok_or(dependent)?.0))
     }
 
     /// The work the system's own forces take from the jump `before → after` at `(t, q)` onto the
@@ -88,23 +108,27 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// drift of microns after a long step held in contact needs two), with the evaluation and
     /// frame there. The velocity is left to the caller, to be projected with these gradients:
     /// those at the drifted configuration leave `ḣ` off by the change of `J` times `q̇`.
+    ///
+    /// In place (`q` and the evaluation and frame at it): they are large, and a projection at a
+    /// communication point moves no copies of them.
     fn onto_contacts(
         &self,
         t: f64,
-        mut q: SVector<f64, N>,
+        q: &mut SVector<f64, N>,
         v: &SVector<f64, N>,
         set: Set,
-        (mut ev, mut frame): (Evaluation<N, M>, Frame<N, M>),
-    ) -> Result<(SVector<f64, N>, Evaluation<N, M>, Frame<N, M>), DynamicsError> {
+        (ev, frame): (&mut Evaluation<N, M>, &mut Frame<N, M>),
+    ) -> Result<(), DynamicsError> {
         let tol = DRIFT_FRACTION * self.options.gap_tolerance;
         for _ in 0..MAX_PROJECTIONS {
             if members::<M>(set).all(|i| ev.gap[i].abs() <= tol) {
                 break;
             }
-            q += frame.projection(&ev.gap, set).ok_or(DynamicsError::DependentContacts { time: t, constraints: set })?.0;
-            (ev, frame) = frame_at(&self.system, t, &q, v, None)?;
+            *q += frame.projection(&ev.gap, set).ok_or(DynamicsError::DependentContacts { time: t, constraints: set })?.0;
+            *ev = self.system.evaluate(t, q, v);
+            *frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
         }
-        Ok((q, ev, frame))
+        Ok(())
     }
 
     /// Records one event per constraint of `set` at the current configuration; the first carries
@@ -247,7 +271,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             // Nothing held or moved: q and q̇ are those `ev` was made at (after any impact).
             sample_of(&self.system, &ev, t, q, v, contacts)?
         } else {
-            let (q, ev, frame) = self.onto_contacts(t, q, &v, onto, (ev, frame))?;
+            let (mut q, mut ev, mut frame) = (q, ev, frame);
+            self.onto_contacts(t, &mut q, &v, onto, (&mut ev, &mut frame))?;
             let hd = ev.gap_jacobian * v + ev.gap_time_rate;
             // Projected contacts jump through the inertia their motion takes.
             let projected = if contacts.projected { Some(Projected::new(&self.system, &ev, (t, &q, &v), support)?) } else { None };

@@ -145,8 +145,20 @@ fn along(phi: f64) -> Vector2<f64> {
     Vector2::new(-libm::sin(phi), libm::cos(phi))
 }
 
+#[cfg(test)]
 fn across(phi: f64) -> Vector2<f64> {
     Vector2::new(libm::cos(phi), libm::sin(phi))
+}
+
+/// Each link's `along` and `across` directions: `along` and `across` of each angle, by one
+/// `libm::sincos` per angle, which gives `libm::sin`'s and `libm::cos`'s bits (the same
+/// reduction and kernels, one reduction for both; below 2⁻²⁶ `sin` returns x where `sincos`
+/// takes the kernel, whose x³/6 is below half an ulp of x there).
+fn directions(phi: &Vector3<f64>) -> [(Vector2<f64>, Vector2<f64>); 3] {
+    std::array::from_fn(|k| {
+        let (sin, cos) = libm::sincos(phi[k]);
+        (Vector2::new(-sin, cos), Vector2::new(cos, sin))
+    })
 }
 
 impl Linkage {
@@ -299,11 +311,18 @@ impl Linkage {
 
     /// Kinetic and gravitational potential energy (zero at the crank axis), J.
     pub fn energy(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) -> (f64, f64) {
-        let kinetic = self.kinetic_energy(&LinkAngles::new(phi), phid);
+        self.energy_with(&LinkAngles::new(phi), phi, phid)
+    }
+
+    /// [`Self::energy`] with the angles' sines and cosines `trig` (of `phi`) at hand.
+    pub fn energy_with(&self, trig: &LinkAngles, phi: &Vector3<f64>, phid: &Vector3<f64>) -> (f64, f64) {
+        let kinetic = self.kinetic_energy(trig, phid);
+        // Each angle's directions once (libm's sine and cosine): the centres of mass share them.
+        let directions = directions(phi);
         let (g, gx) = (self.bodies.gravity, self.bodies.gravity_lateral);
         let potential = (0..3)
             .map(|k| {
-                let r = self.centre_of_mass(phi, k);
+                let r = self.centre_of_mass_in(&directions, k);
                 self.bodies.masses[k] * (g * r.y - gx * r.x)
             })
             .sum();
@@ -359,9 +378,16 @@ impl Linkage {
         self.bodies.corners[0].0
     }
 
+    /// Link k's centre of mass (k = 0 crank, 1 rod, 2 piston) from the crank axis, m.
+    #[cfg(test)]
     fn centre_of_mass(&self, phi: &Vector3<f64>, k: usize) -> Vector2<f64> {
-        let joints: Vector2<f64> = (0..k).map(|j| self.bodies.links[j] * along(phi[j])).sum();
-        joints + self.bodies.along[k] * along(phi[k]) + self.bodies.across[k] * across(phi[k])
+        self.centre_of_mass_in(&directions(phi), k)
+    }
+
+    /// [`Self::centre_of_mass`] from the links' `directions`.
+    fn centre_of_mass_in(&self, directions: &[(Vector2<f64>, Vector2<f64>); 3], k: usize) -> Vector2<f64> {
+        let joints: Vector2<f64> = (0..k).map(|j| self.bodies.links[j] * directions[j].0).sum();
+        joints + self.bodies.along[k] * directions[k].0 + self.bodies.across[k] * directions[k].1
     }
 }
 
@@ -371,6 +397,28 @@ mod tests {
 
     fn linkage(pin_offset: f64) -> Linkage {
         Linkage::new(&Parameters { pin_offset, ..Parameters::default() })
+    }
+
+    /// `directions` takes `libm::sincos`, `along` and `across` `libm::sin` and `libm::cos`: the
+    /// same bits, tiny, small, reduced, huge and special angles alike.
+    #[test]
+    fn sincos_gives_the_bits_of_sin_and_cos() {
+        let tiny = [1e-300, 5e-324, 1e-9, 1.05e-8, 1.0e-8, 1.4e-8, 1.49e-8, 1.5e-8, 2f64.powi(-26), 2f64.powi(-27) * 2f64.sqrt()];
+        let mut angles: Vec<f64> = tiny.iter().flat_map(|&x| [x, -x, x.next_up(), x.next_down()]).collect();
+        angles.extend([0.0, -0.0, f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1e300, -3e22, std::f64::consts::FRAC_PI_4]);
+        let mut x = 0.123_456_789_f64;
+        for _ in 0..200_000 {
+            // Angles of every size from 1e-12 to 1e6, both signs, by a multiplicative walk.
+            x = (x * 1.000_37 + 1e-12) % 1e6;
+            angles.extend([x, -x, 1e-6 * x, 4.0 * std::f64::consts::PI * (x / 1e6)]);
+        }
+        for phi in angles {
+            let d = directions(&Vector3::new(phi, phi, phi));
+            let (a, n) = (along(phi), across(phi));
+            for (u, v) in [(d[0].0, a), (d[0].1, n)] {
+                assert_eq!([u.x.to_bits(), u.y.to_bits()], [v.x.to_bits(), v.y.to_bits()], "{phi:e}");
+            }
+        }
     }
 
     /// States away from any symmetry, including a tilted piston.

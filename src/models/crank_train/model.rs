@@ -365,7 +365,7 @@ impl EngineModel for CrankTrain {
         [out.contact_state_1, out.contact_state_2, out.contact_state_3, out.contact_state_4] = in_contact.map(i32::from);
         [out.contact_force_1, out.contact_force_2, out.contact_force_3, out.contact_force_4] = [forces[0], forces[1], forces[2], forces[3]];
         out.crank_speed_actual = stepper.crank_speed(phid[0]);
-        (out.kinetic_energy, out.potential_energy) = linkage.energy(&phi, &phid);
+        (out.kinetic_energy, out.potential_energy) = linkage.energy_with(&trig, &phi, &phid);
         let contact = self.contact_impulse();
         out.liner_impulse_total = std::array::from_fn(|w| contact[w] + self.impact_impulse[w]);
         [out.friction_force_1, out.friction_force_2, out.friction_force_3, out.friction_force_4] = friction.into();

@@ -21,6 +21,7 @@
 //! cycle is complete once the crank is past it and its last landing has ended.
 
 use super::csv_log::{CsvLog, Rows};
+use crate::models::numerics::floor_to_i64;
 use crate::models::{EngineEvent, EngineEventKind, Outputs, CYCLE};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -34,7 +35,7 @@ fn wall_of(corner: u8) -> Wall {
 
 /// The cycle centred on firing TDC that an accumulated crank angle lies in.
 fn cycle_of(angle: f64) -> i64 {
-    ((angle + 0.5 * CYCLE) / CYCLE).floor() as i64
+    floor_to_i64((angle + 0.5 * CYCLE) / CYCLE)
 }
 
 /// An accumulated crank angle as rad in [−2π, 2π) from firing TDC.

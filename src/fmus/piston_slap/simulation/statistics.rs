@@ -2,6 +2,7 @@
 //! figures and the per-cycle metrics. Kept apart from the model's outputs so a model writing its
 //! `Outputs` cannot disturb them.
 
+use crate::models::numerics::floor_to_i64;
 use crate::models::{EngineEvent, EngineEventKind, Outputs, CYCLE};
 use serde::{Deserialize, Serialize};
 
@@ -110,7 +111,7 @@ pub fn normal_energy(e: &EngineEvent) -> f64 {
 
 /// Whole engine cycles (4π) in an accumulated crank angle: the index of the cycle it lies in.
 pub fn cycle_of(crank_angle: f64) -> i64 {
-    (crank_angle / CYCLE).floor() as i64
+    floor_to_i64(crank_angle / CYCLE)
 }
 
 impl ImpactStatistics {
