@@ -91,7 +91,14 @@ def simulate_with_events(log_path=None, start_values=None, **kwargs):
 
 
 def simulate_with_logs(
-    log_path=None, landing_log_path=None, start_values=None, landed_by=None, at_times=(), landings=True, **kwargs
+    log_path=None,
+    landing_log_path=None,
+    start_values=None,
+    landed_by=None,
+    at_times=(),
+    landings=True,
+    step_finished=None,
+    **kwargs,
 ):
     """Like `simulate`, with the FMU's `impact_log` and `landing_log` switched on; returns `(result, events,
     landings)`, the logs as arrays of `EVENT_DTYPE` and `LANDING_DTYPE` (with `landings` False: no landing log, no
@@ -101,7 +108,7 @@ def simulate_with_logs(
     stops at the first communication point after it at which a landing started after it (the FMU then has the
     figures of the landing cycle ending at `landed_by` complete, `tables.described_at`), at the latest at the stop
     time. `at_times` holds `(time, action)` pairs: each action is called once, at the first communication point at
-    or after its time.
+    or after its time. A caller's own fmpy `step_finished` callback runs beside that watch.
     """
     with tempfile.TemporaryDirectory() as tmp:
         log = Path(log_path) if log_path is not None else Path(tmp) / "impact_log.csv"
@@ -109,8 +116,17 @@ def simulate_with_logs(
         values = dict(start_values or {}, impact_log=str(log))
         if landings:
             values["landing_log"] = str(landing)
-        watch = _Watch(landing if "landing_log" in values else None, landed_by, at_times)
-        result = simulate(start_values=values, step_finished=watch if landed_by or at_times else None, **kwargs)
+        watch = (
+            _Watch(landing if "landing_log" in values else None, landed_by, at_times) if landed_by or at_times else None
+        )
+        callbacks = [c for c in (watch, step_finished) if c is not None]
+
+        def both(time, recorder):
+            # Every callback runs at every point; the run goes on while all of them say so.
+            said = [c(time, recorder) for c in callbacks]
+            return all(s is not False for s in said)
+
+        result = simulate(start_values=values, step_finished=both if callbacks else None, **kwargs)
         landings = read_landing_log(landing) if "landing_log" in values else np.zeros(0, LANDING_DTYPE)
         return result, read_impact_log(log), landings
 

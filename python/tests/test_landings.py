@@ -18,23 +18,13 @@ import pytest
 
 from pistonslap import heat_map
 from pistonslap.fmu import CYCLE, read_landing_log
+from pistonslap.tables import LANDING_METRICS
 
 PISTONSLAP = Path(sys.executable).parent / "pistonslap"
 WALLS = ("thrust", "antithrust")
 #: The lubricated skirt on a coarse film grid, as a user sets it.
 OIL = ("--set", "skirt_model=2", "--set", "skirt_grid_circumferential=6", "--set", "skirt_grid_axial=8")
-LANDING_COLUMNS = [
-    f"cycle_{what}_{wall} [{unit}]"
-    for what, unit in (
-        ("landings", "1"),
-        ("landing_energy", "J"),
-        ("landing_loss", "J"),
-        ("landing_crank_angle", "rad"),
-        ("max_liner_force_rate", "N/s"),
-        ("max_liner_force", "N"),
-    )
-    for wall in WALLS
-]
+LANDING_COLUMNS = [f"{name} [{unit}]" for name, unit in LANDING_METRICS.items()]
 FILM_COLUMNS = [f"cycle_min_film_thickness_{wall} [m]" for wall in WALLS] + [
     f"cycle_min_film_crank_angle_{wall} [rad]" for wall in WALLS
 ]
