@@ -13,9 +13,9 @@
 //! change (the impact, or the crossing) to the next. Its loss is its impacts' losses on its wall (normal
 //! and friction), and for a landing on the film the drop of the lateral kinetic energy from the start
 //! to its least value before the wall's load peaks: what the film took of the arrival, not the
-//! work it goes on taking from the side force that presses the piston into it (a hundred times more
-//! on a firing stroke). On a dry skirt the loss is the sum of its impacts' `energy_lost`. Loads and
-//! their rise rates are read at the communication points.
+//! work it goes on taking from the side force that presses the piston into it. On a dry skirt the
+//! loss is the sum of its impacts' `energy_lost`. Loads and their rise rates are read at the
+//! communication points.
 //!
 //! Cycles are centred on firing TDC (−360° to 360°). A landing counts in the cycle it starts in; a
 //! cycle is complete once the crank is past it and its last landing has ended.
