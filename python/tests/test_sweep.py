@@ -155,24 +155,24 @@ def test_a_rerun_after_the_sweep_is_killed_runs_only_the_missing_points(client, 
 
 
 def test_a_worker_killed_mid_sweep_loses_nothing(client, model_description, tmp_path):
-    """SIGKILL to one worker process after the first batch: Dask reruns its tasks, every point is recorded once,
-    equal to the undisturbed sweep's rows."""
+    """SIGKILL to one worker process of a cluster of its own after the first batch: Dask reruns its tasks on the
+    other, every point is recorded once, equal to the undisturbed sweep's rows on the module's cluster. (Whether the
+    nanny's replacement joins in time is Dask's affair, not the sweep's: the killed cluster is not used again.)"""
     spec = spec_of(model_description, cycles=SLOW_CYCLES, grid=SLOW_GRID)
-    pids = client.run(os.getpid)
-    sweep = threading.Thread(target=run, args=(spec, tmp_path, client), kwargs=dict(batch_size=1, progress=False))
-    sweep.start()
-    parts = tmp_path / "test" / "parts"
-    while not list(parts.glob("*.parquet")) and sweep.is_alive():
-        time.sleep(0.02)
-    os.kill(next(iter(pids.values())), signal.SIGKILL)
-    sweep.join()
+    with (
+        LocalCluster(n_workers=2, threads_per_worker=1, processes=True, dashboard_address=None) as cluster,
+        Client(cluster) as doomed,
+    ):
+        pids = doomed.run(os.getpid)
+        sweep = threading.Thread(target=run, args=(spec, tmp_path, doomed), kwargs=dict(batch_size=1, progress=False))
+        sweep.start()
+        parts = tmp_path / "test" / "parts"
+        while not list(parts.glob("*.parquet")) and sweep.is_alive():
+            time.sleep(0.02)
+        assert sweep.is_alive(), "the sweep ended before a worker could be killed"
+        os.kill(next(iter(pids.values())), signal.SIGKILL)
+        sweep.join()
     killed = Store(tmp_path, spec).read().to_pylist()
-    # The undisturbed run on the whole cluster again, the nanny's replacement registered: a plugin broadcast to a
-    # worker still joining can close the scheduler's stream to the client.
-    client.wait_for_workers(len(pids), timeout=60)
-    assert set(client.run(os.getpid).values()).isdisjoint({next(iter(pids.values()))}), (
-        "the worker was killed and replaced"
-    )
 
     _, ran = run(spec, tmp_path / "undisturbed", client, progress=False)
     assert ran == len(spec.points)
