@@ -8,6 +8,7 @@ markdown its page holds (`python/tests/test_validation_tables.py` checks every p
     python -m pistonslap.validation landings ENGINE RPM [RPM ...]     landings on oil against ±1 mm of pin offset
     python -m pistonslap.validation landing-clearance ENGINE RPM ...  landings on oil against the clearance
     python -m pistonslap.validation vanishing-film ENGINE RPM         landings as the oil thins toward the dry skirt
+    python -m pistonslap.validation landing-motion ENGINE RPM         the thrust landing's translation and tilt, ±1 mm
 
 The runs are cached per process, so that the tests which assert on the same runs share them.
 """
@@ -20,7 +21,7 @@ import numpy as np
 from fmpy.fmi2 import FMU2Slave
 
 from .demo import SAMPLE_DEG
-from .fmu import CENTRED, CYCLE, fmu_path, simulate
+from .fmu import CENTRED, CYCLE, fmu_path, simulate, simulate_with_logs
 from .presets import PRESETS
 
 MJ = 1e3
@@ -97,10 +98,14 @@ OIL_CYCLES = 4
 UJ = 1e6
 
 
+def _energy_at(energy, angle):
+    """A landing's energy in µJ and its crank angle from firing TDC."""
+    return f"{energy * UJ:.3g} µJ at {np.degrees(angle):.0f}°".replace("-", "−")
+
+
 def _landing(m, wall):
-    """The largest landing on `wall` of a last cycle: its energy in µJ and its crank angle from firing TDC."""
-    energy, angle = m[f"cycle_landing_energy_{wall}"] * UJ, np.degrees(m[f"cycle_landing_crank_angle_{wall}"])
-    return f"{energy:.3g} µJ at {angle:.0f}°".replace("-", "−")
+    """The largest landing on `wall` of a last cycle."""
+    return _energy_at(m[f"cycle_landing_energy_{wall}"], m[f"cycle_landing_crank_angle_{wall}"])
 
 
 def _cushioned(m, wall):
@@ -196,6 +201,57 @@ def vanishing_film_table(engine, rpm):
         ("dry", _landing(m, "thrust"), _cushioned(m, "thrust"), _landing(m, "antithrust"), str(m["cycle_impacts"]))
     )
     header = ("oil", "largest landing, thrust", "taken by the landing", "largest landing, anti-thrust", "impacts")
+    return _table(header, rows)
+
+
+def landing_motion_table(engine, rpm):
+    """The largest thrust landing of the last cycle on oil against ±1 mm of pin offset, split into the pin's
+    translation and the tilt: the translation's share of its kinetic energy, the pin's, the skirt top's and bottom's
+    lateral speeds toward the thrust wall and the tilt rate at its start (the speeds of the skirt's ends from the
+    outputs' centred differences)."""
+    omega = float(rpm) * np.pi / 30
+    interval = np.radians(SAMPLE_DEG) / omega
+    names = ["piston_lateral_velocity", "piston_tilt_rate", "skirt_top_lateral", "skirt_bottom_lateral"]
+    default_mass = next(
+        v.start for v in fmpy.read_model_description(str(fmu_path())).modelVariables if v.name == "piston_mass"
+    )
+    rows = []
+    for offset, shown in ((-1, "−1 mm"), (0, "0"), (1, "+1 mm")):
+        values = dict(PRESETS[engine].values, crank_speed=omega, skirt_model=2, pin_offset=offset * 1e-3)
+        stop = (OIL_CYCLES * CYCLE - CENTRED) / omega + interval
+        result, _, landed = simulate_with_logs(
+            start_values=values,
+            stop_time=stop,
+            output_interval=interval,
+            output=[*names, "cycle_landing_energy_thrust"],
+        )
+        largest = landed[landed["kinetic_energy"] == result["cycle_landing_energy_thrust"][-1]][0]
+        at = int(np.argmin(np.abs(result["time"] - largest["time"])))
+        speed = {n: np.gradient(result[n], result["time"])[at] for n in ("skirt_top_lateral", "skirt_bottom_lateral")}
+        pin = result["piston_lateral_velocity"][at]
+        translation = 0.5 * float(values.get("piston_mass", default_mass)) * pin**2
+        rows.append(
+            (
+                shown,
+                f"{_energy_at(largest['kinetic_energy'], largest['crank_angle'])}, {largest['leading_end']} first",
+                f"{100 * translation / largest['kinetic_energy']:.0f} %",
+                f"{pin * 1e3:.1f} mm/s",
+                f"{speed['skirt_top_lateral'] * 1e3:.1f} / {speed['skirt_bottom_lateral'] * 1e3:.1f} mm/s".replace(
+                    "-", "−"
+                ),
+                f"{result['piston_tilt_rate'][at]:.3f} rad/s".replace("-", "−"),
+                f"{largest['peak_force_rate'] * 1e-6:.2f} kN/ms",
+            )
+        )
+    header = (
+        "pin offset",
+        "largest landing, thrust",
+        "pin's translation",
+        "pin's lateral speed",
+        "skirt top / bottom lateral speed",
+        "tilt rate",
+        "thrust load rise",
+    )
     return _table(header, rows)
 
 
@@ -392,6 +448,7 @@ TABLES = {
     "landings": lambda engine, *speeds: landings_table(engine, [float(s) for s in speeds]),
     "landing-clearance": lambda engine, *speeds: landing_clearance_table(engine, [float(s) for s in speeds]),
     "vanishing-film": vanishing_film_table,
+    "landing-motion": landing_motion_table,
 }
 
 

@@ -59,4 +59,4 @@ pub use event::{Event, EventKind, StepCounts};
 pub use options::{StepperOptions, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
 pub use settle::ZENO_APEX_FACTOR;
 pub use stepper::Stepper;
-pub use system::{Absorbed, Evaluation, System, Tangents};
+pub use system::{Evaluation, Powers, System, Tangents};

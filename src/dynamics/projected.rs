@@ -1,6 +1,6 @@
 //! The held motion of a system whose inertia carries a force made linearly implicit (a stiff
 //! damper `−D q̇` applied as `−D (q̇ + τ q̈)`, its `K = τ D` added to `M`; see
-//! `System::absorbed_power`), with that implicit term kept out of the held constraints' normals.
+//! `System::powers`), with that implicit term kept out of the held constraints' normals.
 //!
 //! Through `M + K` the contact problem is the implicit term's, not the linkage's: where `K` ≫ `M`
 //! along the held normals, `W_NN = J (M + K)⁻¹ Jᵀ` shrinks with `K` while friction's coupling
@@ -22,7 +22,8 @@
 use super::complementarity::{Contacts, Frame, Set};
 use super::contact_laws::{sliding_law, Tolerances};
 use super::sample::motion;
-use super::{Absorbed, DynamicsError, Evaluation, Stepper, System};
+use super::system::absorbed;
+use super::{DynamicsError, Evaluation, Powers, Stepper, System};
 use nalgebra::{SMatrix, SVector};
 
 /// A held motion's evaluation with the implicit term projected (see the module).
@@ -67,10 +68,10 @@ impl<const N: usize, const M: usize> Projected<N, M> {
 
     /// What the implicit impulse `−Pᵀ K P Δq̇` of a jump `before → after` takes, its negative work
     /// on the mean velocity, J, in the whole channel alone (the system's channels assume `K`).
-    pub fn by_jump(&self, before: &SVector<f64, N>, after: &SVector<f64, N>) -> Absorbed {
+    pub fn by_jump(&self, before: &SVector<f64, N>, after: &SVector<f64, N>) -> Powers {
         let mean = (before + after) * 0.5;
         let impulse = self.projector.transpose() * self.implicit * self.projector * (after - before);
-        Absorbed::new(mean.dot(&impulse), 0.0, 0.0, 0.0)
+        absorbed(mean.dot(&impulse))
     }
 
     /// The contact frame of the projected evaluation.

@@ -2,9 +2,9 @@
 //! and the step of a sample with its contacts held and that step's local error estimate.
 
 use super::complementarity::{Contacts, Frame, Set};
-use super::sample::{absorbed_power, acceleration, dissipated, free_motion, motion, sample, sample_of, Forces, Sample};
+use super::sample::{acceleration, dissipated, free_motion, motion, powers, sample, sample_of, Forces, Motion, Sample};
 use super::system::friction_of;
-use super::{Absorbed, DynamicsError, Evaluation, System};
+use super::{DynamicsError, Evaluation, Powers, System};
 use nalgebra::SVector;
 
 /// One RK4 step of size `dt` from `(t0, q0, v0)`. `a0 = a(t0, q0, v0)` is passed in because the
@@ -160,7 +160,7 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     contacts: Contacts,
     prepare: bool,
 ) -> Result<Stepped<N, M>, DynamicsError> {
-    // A system that absorbs nothing gets a step without a trace of the absorbed power.
+    // A system that absorbs nothing gets a step without a trace of the refreshed start.
     if sys.absorbs() {
         rk4_step_of::<S, N, M, true>(sys, s0, t, contacts, prepare)
     } else {
@@ -198,19 +198,21 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
     let by_weights = |first: SVector<f64, M>, [_, a, b, c]: [SVector<f64, M>; 4]| (first + (a + b) * 2.0 + c) * (dt / 6.0);
     let mut lambdas = [SVector::<f64, M>::zeros(); 4];
     let mut middle = Forces::zeros();
-    // The system's own absorbed power at stages 2–4, by the same weights, where it absorbs.
-    let (mut absorbed, mut absorbing_stage) = ([Absorbed::zeros(); 4], 0);
-    let mut absorb = |t, q: &SVector<f64, N>, v: &SVector<f64, N>, acc: &SVector<f64, N>, taken: f64| {
-        if ABSORBS {
-            absorbing_stage += 1;
-            absorbed[absorbing_stage] = absorbed_power(sys, (t, q, v, acc), taken);
+    // The system's rates at stages 2–4, by the same weights, where it reports them.
+    let (mut rates, mut rate_stage) = ([Powers::zeros(); 4], 0);
+    let mut report = |t, q: &SVector<f64, N>, v: &SVector<f64, N>, m: &Motion<N, M>| {
+        if S::POWERS {
+            rate_stage += 1;
+            rates[rate_stage] = powers(sys, (t, q, v), m);
         }
     };
     let (end, work, impulse) = if contacts.held == 0 {
         let flight = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let (mass, force) = sys.inertia_and_force(t, q, v);
             let acc = free_motion(&mass, &force, t)?.1;
-            absorb(t, q, v, &acc, 0.0);
+            if S::POWERS {
+                report(t, q, v, &Motion::free(acc));
+            }
             Ok(acc)
         };
         (step(flight, s0.t, &s0.q, &s0.v, &s0.acc, dt)?, s0.friction_work, s0.contact_impulse)
@@ -218,7 +220,9 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
         let mut stage = 0;
         let held = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let (acc, lambda) = acceleration(&sys.evaluate(t, q, v), t, contacts.held)?;
-            absorb(t, q, v, &acc, 0.0);
+            if S::POWERS {
+                report(t, q, v, &Motion { lambda, ..Motion::free(acc) });
+            }
             stage += 1;
             lambdas[stage] = lambda;
             Ok(acc)
@@ -230,7 +234,7 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
         let (mut powers, mut stage) = ([0.0; 4], 0);
         let rubbing = |t, q: &SVector<f64, N>, v: &SVector<f64, N>| {
             let m = motion(sys, &sys.evaluate(t, q, v), (t, q, v), contacts)?;
-            absorb(t, q, v, &m.acc, m.taken);
+            report(t, q, v, &m);
             stage += 1;
             powers[stage] = dissipated(&m.friction, &m.slip);
             lambdas[stage] = m.lambda;
@@ -246,9 +250,9 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
     let ev = sys.evaluate(t, &end.q, &end.v);
     let mut s = sample_of(sys, &ev, t, end.q, end.v, contacts)?;
     (s.friction_work, s.contact_impulse) = (work, impulse);
-    s.absorbed_work = s0.absorbed_work;
-    if ABSORBS {
-        s.absorbed_work += (s0.absorbed_power + (absorbed[1] + absorbed[2]) * 2.0 + absorbed[3]) * (dt / 6.0);
+    s.energies = s0.energies;
+    if S::POWERS {
+        s.energies += (s0.powers + (rates[1] + rates[2]) * 2.0 + rates[3]) * (dt / 6.0);
     }
     Ok((s, ev, end.last_slopes, middle, refreshed))
 }

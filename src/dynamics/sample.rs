@@ -5,8 +5,8 @@ use super::complementarity::{contains, held_acceleration, Contacts, Frame, Mode,
 use super::coulomb::Tangential;
 use super::inertia::Inertia;
 use super::projected::Projected;
-use super::system::friction_of;
-use super::{Absorbed, DynamicsError, Evaluation, System};
+use super::system::{absorbed, friction_of};
+use super::{DynamicsError, Evaluation, Powers, System};
 use nalgebra::{SMatrix, SVector};
 use serde::{Deserialize, Serialize};
 
@@ -34,12 +34,11 @@ pub(super) struct Sample<const N: usize, const M: usize> {
     /// ∫ λ dt per constraint since the start, N·s: the persistent contact forces' impulse, by the
     /// same quadrature as `friction_work` (impacts record their own, `Event::impulses`).
     pub(super) contact_impulse: SVector<f64, M>,
-    /// The power the system's own forces take from the motion here (`System::absorbed_power`), W,
-    /// and their work since the start, J, integrated like `friction_work` and carried alike, with
-    /// the jumps' shares (`System::absorbed_by_jump`) added where they happen. Zero where the
-    /// system does not absorb.
-    pub(super) absorbed_power: Absorbed,
-    pub(super) absorbed_work: Absorbed,
+    /// The rates the system reports here (`System::powers`), and their integrals since the start,
+    /// integrated like `friction_work` and carried alike, with the jumps' shares
+    /// (`System::absorbed_by_jump`) added where they happen. Zero where the system reports none.
+    pub(super) powers: Powers,
+    pub(super) energies: Powers,
 }
 
 impl<const N: usize, const M: usize> Sample<N, M> {
@@ -52,7 +51,7 @@ impl<const N: usize, const M: usize> Sample<N, M> {
 
     /// This sample, continuing the friction work of `from`.
     pub(super) fn after(self, from: &Sample<N, M>) -> Self {
-        Self { friction_work: from.friction_work, contact_impulse: from.contact_impulse, absorbed_work: from.absorbed_work, ..self }
+        Self { friction_work: from.friction_work, contact_impulse: from.contact_impulse, energies: from.energies, ..self }
     }
 }
 
@@ -140,15 +139,23 @@ pub(super) struct Motion<const N: usize, const M: usize> {
     pub taken: f64,
 }
 
-/// The system's absorbed power at `(t, q, q̇, q̈)` with the power `taken` from its implicit force
-/// by projected held contacts (`Motion::taken`) in the whole channel.
+impl<const N: usize, const M: usize> Motion<N, M> {
+    /// The free motion with the acceleration `acc`.
+    #[inline(always)]
+    pub(super) fn free(acc: SVector<f64, N>) -> Self {
+        Self { acc, lambda: SVector::zeros(), friction: SVector::zeros(), slip: SVector::zeros(), taken: 0.0 }
+    }
+}
+
+/// The system's rates at `(t, q, q̇)` with the motion `m` the held contacts give there, the power
+/// `m.taken` from its implicit force by projected held contacts added to the absorbed channel.
 #[inline(always)]
-pub(super) fn absorbed_power<S: System<N, M>, const N: usize, const M: usize>(
+pub(super) fn powers<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
-    (t, q, v, acc): (f64, &SVector<f64, N>, &SVector<f64, N>, &SVector<f64, N>),
-    taken: f64,
-) -> Absorbed {
-    sys.absorbed_power(t, q, v, acc) + Absorbed::new(taken, 0.0, 0.0, 0.0)
+    (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
+    m: &Motion<N, M>,
+) -> Powers {
+    sys.powers(t, (q, v, &m.acc), (&m.lambda, &m.friction)) + absorbed(m.taken)
 }
 
 /// `Motion` at `(t, q, q̇)` with `contacts` held, from the evaluation there.
@@ -252,10 +259,11 @@ pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
     v: SVector<f64, N>,
     contacts: Contacts,
 ) -> Result<Sample<N, M>, DynamicsError> {
-    let Motion { acc, lambda, friction, slip, taken } = motion(sys, ev, (t, &q, &v), contacts)?;
+    let m = motion(sys, ev, (t, &q, &v), contacts)?;
+    let powers = if S::POWERS { powers(sys, (t, &q, &v), &m) } else { Powers::zeros() };
+    let Motion { acc, lambda, friction, slip, .. } = m;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let hdd = ev.gap_jacobian * acc + ev.gap_bias;
-    let absorbed_power = if sys.absorbs() { absorbed_power(sys, (t, &q, &v, &acc), taken) } else { Absorbed::zeros() };
     let s = Sample {
         t,
         q,
@@ -269,11 +277,11 @@ pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
         friction,
         friction_work: 0.0,
         contact_impulse: SVector::zeros(),
-        absorbed_power,
-        absorbed_work: Absorbed::zeros(),
+        powers,
+        energies: Powers::zeros(),
     };
     // One sum clears every number (x · 0 is NaN exactly for an infinite or NaN x).
-    let coordinates = (s.q * 0.0 + s.v * 0.0 + s.acc * 0.0).sum() + (s.absorbed_power * 0.0).sum();
+    let coordinates = (s.q * 0.0 + s.v * 0.0 + s.acc * 0.0).sum() + (s.powers * 0.0).sum();
     let constraints = (s.lambda * 0.0 + s.gap * 0.0 + s.hd * 0.0 + s.hdd * 0.0 + s.slip * 0.0 + s.friction * 0.0).sum();
     if coordinates + constraints == 0.0 {
         Ok(s)

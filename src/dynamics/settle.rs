@@ -7,7 +7,7 @@ use super::contact_laws::{energy_lost, impact, stick_jump, Jump, Tolerances};
 use super::projected::Projected;
 use super::sample::{frame_at, sample, sample_of, Sample};
 use super::system::friction_of;
-use super::{Absorbed, DynamicsError, Evaluation, Event, EventKind, Stepper, System};
+use super::{DynamicsError, Evaluation, Event, EventKind, Powers, Stepper, System};
 use nalgebra::SVector;
 
 /// Zeno guard: after an impact a closed constraint whose free flight would rise no higher than
@@ -45,7 +45,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let ev = self.system.evaluate(t, &q, &v);
         let absorbed = self.absorbed_by_jump(t, &q, &self.state.v, &v);
         self.state = sample_of(&self.system, &ev, t, q, v, self.contacts)?.after(&self.state);
-        self.state.absorbed_work += absorbed;
+        self.state.energies += absorbed;
         Ok(Some(ev))
     }
 
@@ -95,11 +95,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
 
     /// The work the system's own forces take from the jump `before → after` at `(t, q)` onto the
     /// held contacts, J (none where they are projected: see `onto_held`).
-    fn absorbed_by_jump(&self, t: f64, q: &SVector<f64, N>, before: &SVector<f64, N>, after: &SVector<f64, N>) -> Absorbed {
+    fn absorbed_by_jump(&self, t: f64, q: &SVector<f64, N>, before: &SVector<f64, N>, after: &SVector<f64, N>) -> Powers {
         if self.system.absorbs() && !self.contacts.projected {
             self.system.absorbed_by_jump(t, q, before, after)
         } else {
-            Absorbed::zeros()
+            Powers::zeros()
         }
     }
 
@@ -189,7 +189,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let mut hd = ev.gap_jacobian * v + ev.gap_time_rate;
 
         let mut approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
-        let mut absorbed = Absorbed::zeros();
+        let mut absorbed = Powers::zeros();
         let mut impacted: Set = 0;
         let zeno_apex = ZENO_APEX_FACTOR * opts.gap_tolerance;
         let contacts = loop {
@@ -310,7 +310,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.record((EventKind::Slip, &v), slipping, (&hd, &hd), (&none, &none), (none, none));
         self.contacts = contacts;
         self.state = state.after(&self.state);
-        self.state.absorbed_work += absorbed;
+        self.state.energies += absorbed;
         Ok(())
     }
 }

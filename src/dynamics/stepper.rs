@@ -6,7 +6,7 @@ use super::complementarity::{bit, contains, select, Contacts};
 use super::options::{MAX_STEPS_PER_ADVANCE, PENETRATION_FACTOR, TOO_MANY_STEPS};
 use super::rk4::{local_error, rk4_cut, rk4_step, rk4_to, Hermite5};
 use super::sample::{sample, sample_of, Evaluated, Forces, Sample};
-use super::{Absorbed, DynamicsError, Evaluation, Event, StepCounts, StepperOptions, System, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
+use super::{DynamicsError, Evaluation, Event, Powers, StepCounts, StepperOptions, System, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
 use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
@@ -233,7 +233,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             (q, v, ev)
         };
         let mut s = sample_of(&self.system, &ev, t, q, v, contacts)?;
-        (s.friction_work, s.contact_impulse, s.absorbed_work) = interpolated_totals(s0, end, t);
+        (s.friction_work, s.contact_impulse, s.energies) = interpolated_totals(s0, end, t);
         Ok(s)
     }
 
@@ -322,11 +322,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let s = self.current();
         (s.friction_power(), s.friction_work)
     }
-    /// The power the system's own forces take from the motion now, W, and their work since the
-    /// start, J (`System::absorbed_power`, `System::absorbed_by_jump`; zero where it does not absorb).
-    pub fn absorbed(&self) -> (Absorbed, Absorbed) {
+    /// The rates the system reports now, and their integrals since the start (`System::powers`,
+    /// `System::absorbed_by_jump`; zero where it reports none).
+    pub fn powers(&self) -> (Powers, Powers) {
         let s = self.current();
-        (s.absorbed_power, s.absorbed_work)
+        (s.powers, s.energies)
     }
     /// ∫ λ dt per constraint since the start, N·s: the impulse of the persistent contact forces
     /// (impacts: `Event::impulses`).
@@ -546,9 +546,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
 }
 
-/// The totals a step integrates (friction work, contact impulse, absorbed work) at `t` inside the
+/// The totals a step integrates (friction work, contact impulse, the system's reported energies) at `t` inside the
 /// step from `s0` to `end`, interpolated from their values and rates at the ends.
-fn interpolated_totals<const N: usize, const M: usize>(s0: &Sample<N, M>, end: &Sample<N, M>, t: f64) -> (f64, SVector<f64, M>, Absorbed) {
+fn interpolated_totals<const N: usize, const M: usize>(s0: &Sample<N, M>, end: &Sample<N, M>, t: f64) -> (f64, SVector<f64, M>, Powers) {
     let friction_work = if end.friction_work != s0.friction_work {
         // The friction work by the cubic Hermite of its values and rates (the powers) at the ends,
         // the rates scaled down where they would make it fall or overshoot (Fritsch–Carlson:
@@ -567,7 +567,7 @@ fn interpolated_totals<const N: usize, const M: usize>(s0: &Sample<N, M>, end: &
     } else {
         s0.friction_work
     };
-    // The contact impulse and the absorbed work by the cubic Hermite of their values and rates
+    // The contact impulse and the reported energies by the cubic Hermite of their values and rates
     // (the forces, the powers) at the ends.
     let weights = |h: f64| {
         let x = (t - s0.t) / h;
@@ -580,11 +580,11 @@ fn interpolated_totals<const N: usize, const M: usize>(s0: &Sample<N, M>, end: &
     } else {
         s0.contact_impulse
     };
-    let absorbed_work = if end.absorbed_work != s0.absorbed_work {
+    let energies = if end.energies != s0.energies {
         let [a, b, c, d] = weights(end.t - s0.t);
-        s0.absorbed_work * a + s0.absorbed_power * b + end.absorbed_work * c + end.absorbed_power * d
+        s0.energies * a + s0.powers * b + end.energies * c + end.powers * d
     } else {
-        s0.absorbed_work
+        s0.energies
     };
-    (friction_work, contact_impulse, absorbed_work)
+    (friction_work, contact_impulse, energies)
 }

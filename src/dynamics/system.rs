@@ -1,14 +1,13 @@
 //! What the core integrates: the system's interface and the terms it evaluates.
 
-use nalgebra::{SMatrix, SVector, Vector4};
+use nalgebra::{SMatrix, SVector};
 
-/// Rates and their integrals along the motion of the forces a system absorbs
-/// (`System::absorbed_power`), in four channels: `[0]` their power (W; work, J), all of it, what the
-/// energy books need; `[1]` a share of it the system reports apart (the crank train: the skirt's
-/// friction); `[2]`, `[3]` two forces (N; impulses, N·s) the system reports (the crank train: the
-/// push of the anti-thrust and the thrust wall's film and asperities). The core integrates each
-/// alike, with every step's own weights.
-pub type Absorbed = Vector4<f64>;
+/// Rates a system reports along the motion (`System::powers`) and their integrals, which the core
+/// keeps with every step's own weights and carries across events alike, in up to eight channels the
+/// system names (W and J, or N and N·s for a force it reports). One is the core's own: `[0]`, the
+/// power the system's forces absorb beyond its mechanical energy (`System::absorbs`), to which the
+/// power taken from an implicit force by projected contacts is added.
+pub type Powers = SVector<f64, 8>;
 
 /// Everything one RK4 stage, one impact or one sliding solve needs, evaluated at `(t, q, q̇)`.
 ///
@@ -105,24 +104,35 @@ pub trait System<const N: usize, const M: usize> {
     }
 
     /// Whether the system has forces of its own that take energy from the motion beyond what its
-    /// mechanical energy holds (`absorbed_power`), such as a lubricating film's. False, the
-    /// default: the core never asks for their power, and takes its paths as without them.
+    /// mechanical energy holds, such as a lubricating film's: their power is [`Powers`]`[0]`. False,
+    /// the default: the core takes its paths as without them.
     fn absorbs(&self) -> bool {
         false
     }
 
-    /// The power those forces take from the motion at `(t, q, q̇)` with the acceleration `q̈`, W
-    /// (and the reported forces, N: every channel of [`Absorbed`]). `q̈` is given because a force
-    /// made linearly implicit through `M` (a stiff damper `−D q̇` applied as `−D (q̇ + τ q̈)`, its
-    /// `τ D` added to the inertia) does work, and acts, through it. The stepper integrates it along
-    /// each step with the step's own weights; asked for only where [`Self::absorbs`].
-    fn absorbed_power(&self, _t: f64, _q: &SVector<f64, N>, _qd: &SVector<f64, N>, _qdd: &SVector<f64, N>) -> Absorbed {
-        Absorbed::zeros()
+    /// Whether the system reports [`Self::powers`] for the core to integrate; an absorbing system
+    /// must. False, the default: no step evaluates them, and every total reads zero.
+    const POWERS: bool = false;
+
+    /// The rates the system reports at `(t, q, q̇)` with the acceleration `q̈` and the held
+    /// constraints' normal and tangential forces `(λ, λ_T)` (zero in flight): the power of its own
+    /// forces (a drive's, say, which acts through the contact forces too), and, where it absorbs,
+    /// `[0]`. `q̈` is given because a force made linearly implicit through `M` (a stiff damper `−D q̇`
+    /// applied as `−D (q̇ + τ q̈)`, its `τ D` added to the inertia) does work, and acts, through it.
+    /// The stepper integrates them along each step with the step's own weights; asked for only
+    /// where [`Self::POWERS`].
+    fn powers(
+        &self,
+        _t: f64,
+        _state: (&SVector<f64, N>, &SVector<f64, N>, &SVector<f64, N>),
+        _forces: (&SVector<f64, M>, &SVector<f64, M>),
+    ) -> Powers {
+        Powers::zeros()
     }
 
     /// The inertia an impact acts through at `(t, q, q̇)`, the evaluation there `ev`: `ev.mass`, the
     /// default. A system that adds to its inertia a force made linearly implicit (a stiff damper's
-    /// `τ D`, see [`Self::absorbed_power`]) returns its inertia without it: that force is finite, so
+    /// `τ D`, see [`Self::powers`]) returns its inertia without it: that force is finite, so
     /// it takes no impulse in an instantaneous impact. (Through `M + τ D`, Newton's law dissipates
     /// in that metric, not in the kinetic energy's: where D turns between impacts, as on a piston
     /// rocking between two corners on a thin film, each impact can feed the motion.)
@@ -135,8 +145,8 @@ pub trait System<const N: usize, const M: usize> {
     /// [`Self::impact_mass`] and is not asked), J, and the impulses of the reported forces, N·s: a
     /// force implicit in `q̈` takes an impulse at such a jump.
     /// Asked for only where [`Self::absorbs`].
-    fn absorbed_by_jump(&self, _t: f64, _q: &SVector<f64, N>, _before: &SVector<f64, N>, _after: &SVector<f64, N>) -> Absorbed {
-        Absorbed::zeros()
+    fn absorbed_by_jump(&self, _t: f64, _q: &SVector<f64, N>, _before: &SVector<f64, N>, _after: &SVector<f64, N>) -> Powers {
+        Powers::zeros()
     }
 
     /// Newton's restitution coefficient `e ∈ [0, 1]`, one for every constraint: an impact's
@@ -162,4 +172,12 @@ pub trait System<const N: usize, const M: usize> {
 pub(super) fn friction_of<S: System<N, M>, const N: usize, const M: usize>(sys: &S) -> Option<SVector<f64, M>> {
     let mu = SVector::<f64, M>::from_fn(|i, _| sys.friction(i));
     mu.iter().any(|&m| m != 0.0).then_some(mu)
+}
+
+/// `w` in the absorbed channel `[0]` alone (the core's share of [`Powers`]).
+#[inline(always)]
+pub(super) fn absorbed(w: f64) -> Powers {
+    let mut p = Powers::zeros();
+    p[0] = w;
+    p
 }

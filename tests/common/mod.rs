@@ -110,3 +110,30 @@ pub fn impacts_per_landing(events: &[EngineEvent]) -> Vec<usize> {
 pub fn impacts(events: &[EngineEvent]) -> impl Iterator<Item = &EngineEvent> {
     events.iter().filter(|e| e.kind == EngineEventKind::Impact)
 }
+
+/// The crank train's energy books between two communication points, from the outputs there (read
+/// by name): the mechanical energy lost, and what the drive (or load) and the gas did less the joint
+/// damping, against what was dissipated.
+pub struct ClosedBooks {
+    /// Δ(kinetic_energy + potential_energy) lost, J.
+    pub lost: f64,
+    /// Δ(drive_work_total + gas_work_total − damping_energy_total), J.
+    pub work: f64,
+    /// Δdissipated_energy_total, J.
+    pub dissipated: f64,
+    /// |Δdrive_work_total| + |Δgas_work_total| + Δdamping_energy_total: the energy that flowed, J.
+    pub gross: f64,
+    /// `lost + work − dissipated`, J: zero where the books close.
+    pub residual: f64,
+}
+
+impl ClosedBooks {
+    pub fn between(start: impl Fn(&str) -> f64, end: impl Fn(&str) -> f64) -> Self {
+        let delta = |names: &[&str], sign: f64| names.iter().map(|n| sign * (end(n) - start(n))).sum::<f64>();
+        let lost = delta(&["kinetic_energy", "potential_energy"], -1.0);
+        let work = delta(&["drive_work_total", "gas_work_total"], 1.0) - delta(&["damping_energy_total"], 1.0);
+        let dissipated = delta(&["dissipated_energy_total"], 1.0);
+        let gross = ["drive_work_total", "gas_work_total", "damping_energy_total"].iter().map(|&n| delta(&[n], 1.0).abs()).sum();
+        Self { lost, work, dissipated, gross, residual: lost + work - dissipated }
+    }
+}

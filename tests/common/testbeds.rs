@@ -4,7 +4,7 @@
 #![allow(dead_code)]
 
 use nalgebra::{Matrix1, Matrix2, Matrix3, RowVector2, SMatrix, SVector, Vector1, Vector2, Vector3};
-use pistonslap::dynamics::{Absorbed, Evaluation, System, Tangents};
+use pistonslap::dynamics::{Evaluation, Powers, System, Tangents};
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
 
@@ -104,10 +104,15 @@ impl System<1, 1> for Ball {
     }
 }
 
+/// The first three channels of [`Powers`], the rest zero.
+fn channels(first: [f64; 3]) -> Powers {
+    Powers::from_fn(|i, _| first.get(i).copied().unwrap_or(0.0))
+}
+
 /// A [`Ball`] with a viscous damper to the ground, `−c ẏ`, made linearly implicit over the time
 /// `relaxation` τ as a stiff film is: `M = m + τ c` and `f = −m g − c ẏ`, so that the damper acts
 /// as `−c (ẏ + τ ÿ)` and its mode relaxes over ≈ τ whatever c. The damper's work, through `ÿ` and
-/// at the projections onto a resting contact, is absorbed (`System::absorbed_power`); an impact acts
+/// at the projections onto a resting contact, is absorbed (`System::powers`); an impact acts
 /// through m alone (`System::impact_mass`: the damper is a finite force). Steps are bounded by τ.
 /// With c = 0 it is the `Ball`, bit for bit.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -133,18 +138,19 @@ impl System<1, 1> for DampedBall {
     fn absorbs(&self) -> bool {
         true
     }
+    const POWERS: bool = true;
     /// All of it in both power channels; the damper's force on the ball, `−c (ẏ + τ ÿ)`, in the third.
-    fn absorbed_power(&self, _t: f64, _q: &Vector1<f64>, qd: &Vector1<f64>, qdd: &Vector1<f64>) -> Absorbed {
+    fn powers(&self, _t: f64, (_, qd, qdd): (&Vector1<f64>, &Vector1<f64>, &Vector1<f64>), _: (&Vector1<f64>, &Vector1<f64>)) -> Powers {
         let force = -self.damping * (qd[0] + self.relaxation * qdd[0]);
-        Absorbed::new(-force * qd[0], -force * qd[0], force, 0.0)
+        channels([-force * qd[0], -force * qd[0], force])
     }
     fn impact_mass(&self, _t: f64, _q: &Vector1<f64>, _qd: &Vector1<f64>, _ev: &Evaluation<1, 1>) -> Matrix1<f64> {
         Matrix1::new(self.ball.mass)
     }
-    fn absorbed_by_jump(&self, _t: f64, _q: &Vector1<f64>, before: &Vector1<f64>, after: &Vector1<f64>) -> Absorbed {
+    fn absorbed_by_jump(&self, _t: f64, _q: &Vector1<f64>, before: &Vector1<f64>, after: &Vector1<f64>) -> Powers {
         let impulse = -self.relaxation * self.damping * (after[0] - before[0]);
         let work = -impulse * 0.5 * (after[0] + before[0]);
-        Absorbed::new(work, work, impulse, 0.0)
+        channels([work, work, impulse])
     }
     fn restitution(&self) -> f64 {
         self.ball.restitution

@@ -2,6 +2,7 @@
 //! the Flores benchmark, and seeded random designs.
 
 mod angle;
+mod books;
 mod energy;
 mod flores_benchmark;
 mod liner_impulse;

@@ -325,14 +325,17 @@ fn fuzz_setters(seed: u64, cases: usize) -> usize {
             case += 1;
         }
         // Whatever was accepted must initialize or be refused by name, then step or be refused. An
-        // accepted random impact_log would name a file: cleared first (refused once fixed, in step mode).
+        // accepted random log or map path would name a file it writes: cleared first (refused once
+        // fixed, in step mode).
         let label = format!("seed {seed} after case {case}");
-        // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        let cleared = unsafe { functions::set_string::<ModelVariant>(host.c, &vr("impact_log"), 1, &c"".as_ptr()) };
+        let cleared = ["impact_log", "landing_log", "skirt_map"].map(|name| {
+            // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
+            unsafe { functions::set_string::<ModelVariant>(host.c, &vr(name), 1, &c"".as_ptr()) }
+        });
         let _ = (host.setup(0.0, None), host.enter());
         let status = host.exit();
         assert!(matches!(status, Status::Ok | Status::Error), "{label}: exit {status:?}");
-        assert!(cleared == Status::Ok || time(&host).is_some(), "{label}");
+        assert!(cleared.iter().all(|&c| c == Status::Ok) || time(&host).is_some(), "{label}");
         step_checked(&host, &label);
     }
     case

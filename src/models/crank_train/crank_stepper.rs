@@ -5,7 +5,7 @@
 
 use super::drive::{Engine, FreeCrank, PrescribedCrank};
 use super::linkage::LinkAngles;
-use crate::dynamics::{Absorbed, DynamicsError, Event, EventKind, StepCounts, Stepper, System};
+use crate::dynamics::{DynamicsError, Event, EventKind, Powers, StepCounts, Stepper, System};
 use crate::models::{EngineEvent, InputPolynomial, CYCLE};
 use nalgebra::{SVector, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -166,8 +166,8 @@ pub(super) trait CrankStepper {
     fn friction(&self) -> (Vector4<f64>, (f64, f64));
     /// N·s, the persistent contact forces' impulse per corner since the start.
     fn contact_impulses(&self) -> Vector4<f64>;
-    /// What the skirt has absorbed: power now and work since the start.
-    fn absorbed(&self) -> (Absorbed, Absorbed);
+    /// The rates the crank train reports now and their integrals since the start (`books`).
+    fn powers(&self) -> (Powers, Powers);
     /// The integrator's work so far.
     fn counts(&self) -> StepCounts;
     /// Follows the drive input `speed` or `load` unless it already does (a change makes the core
@@ -217,8 +217,8 @@ impl<S: CrankDrive<N>, const N: usize> CrankStepper for Stepper<S, N, 4> {
     fn contact_impulses(&self) -> Vector4<f64> {
         Stepper::contact_impulses(self)
     }
-    fn absorbed(&self) -> (Absorbed, Absorbed) {
-        Stepper::absorbed(self)
+    fn powers(&self) -> (Powers, Powers) {
+        Stepper::powers(self)
     }
     fn counts(&self) -> StepCounts {
         Stepper::counts(self)

@@ -7,10 +7,11 @@
 //!   yields the drive torque.
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
+use super::books;
 use super::linkage::{LinkAngles, Linkage, Loads};
 use super::lubrication::{predicted, Lubrication};
 use super::model::MAX_STEP_ANGLE;
-use crate::dynamics::{Absorbed, Evaluation, System, Tangents};
+use crate::dynamics::{Evaluation, Powers, System, Tangents};
 use crate::models::gas::GasPressure;
 use crate::models::numerics::{trig, LastValue};
 use crate::models::{InputPolynomial, ModelError, Parameters};
@@ -33,6 +34,10 @@ pub struct Engine {
     /// The lubricated skirt (`skirt_model = 2`); none: the dry corners alone.
     pub lubrication: Option<Lubrication>,
 }
+
+/// The gas's power on the crown and the joint damping's dissipation rate at one state, W
+/// (`Linkage::gas_and_damping_power`).
+type Applied = (f64, f64);
 
 /// What an evaluation needs of the crank angle alone.
 #[derive(Clone, Copy, Debug)]
@@ -97,18 +102,18 @@ impl Engine {
     }
 
     /// The linkage's evaluation at (t, φ, φ̇) with the gas force at t and the crank angle of `crank`
-    /// and the load torque `load_torque`.
+    /// and the load torque `load_torque`, and the gas's and the damping's power there.
     #[inline(always)]
-    fn evaluate(&self, t: f64, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> Evaluation<3, 4> {
+    fn evaluate(&self, t: f64, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> (Evaluation<3, 4>, Applied) {
         let (trig, loads) = self.trig_and_loads(t, phi, load_torque, &crank);
         let mut ev = self.linkage.evaluate_with(&trig, phid, loads);
         if let Some(lubrication) = &self.lubrication {
             lubrication.apply((phi, &trig), phid, (&mut ev.mass, &mut ev.force));
         }
-        ev
+        (ev, self.linkage.gas_and_damping_power(&trig, phid, loads.gas_force))
     }
 
-    /// M and f of [`Self::evaluate`] alone.
+    /// M and f of [`Self::evaluate`] alone, and the gas's and the damping's power.
     #[inline(always)]
     fn inertia_and_force(
         &self,
@@ -117,13 +122,13 @@ impl Engine {
         phid: &Vector3<f64>,
         load_torque: f64,
         crank: Crank,
-    ) -> (Matrix3<f64>, Vector3<f64>) {
+    ) -> (Matrix3<f64>, Vector3<f64>, Applied) {
         let (trig, loads) = self.trig_and_loads(t, phi, load_torque, &crank);
         let (mut mass, mut force) = self.linkage.inertia_and_force_with(&trig, phid, loads);
         if let Some(lubrication) = &self.lubrication {
             lubrication.apply((phi, &trig), phid, (&mut mass, &mut force));
         }
-        (mass, force)
+        (mass, force, self.linkage.gas_and_damping_power(&trig, phid, loads.gas_force))
     }
 
     /// The linkage's inertia at φ, without the film's implicit `τ Gᵀ D G` (`System::impact_mass`).
@@ -155,14 +160,29 @@ impl Engine {
         self.lubrication.as_ref().map_or(nominal, |l| l.local_error(nominal, gaps))
     }
 
-    /// What the lubricated skirt takes from the motion at (φ, φ̇, φ̈), W (`Lubrication::absorbed_power`).
-    fn absorbed_power(&self, phi: &Vector3<f64>, trig: &LinkAngles, phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
-        self.lubrication.as_ref().map_or(Absorbed::zeros(), |l| l.absorbed_power((phi, trig), phid, phidd))
+    /// The rates the crank train reports at (φ, φ̇, φ̈) (`books`), the drive's power `drive` and the
+    /// gas's and the damping's `applied` given: with the lubricated skirt's
+    /// (`Lubrication::absorbed_power`).
+    #[inline(always)]
+    fn powers(
+        &self,
+        (phi, crank): (&Vector3<f64>, &Crank),
+        phid: &Vector3<f64>,
+        phidd: &Vector3<f64>,
+        drive: f64,
+        (gas, damping): Applied,
+    ) -> Powers {
+        let film = self
+            .lubrication
+            .as_ref()
+            .map_or(Vector4::zeros(), |l| l.absorbed_power((phi, &LinkAngles::with_crank((crank.sin, crank.cos), phi)), phid, phidd));
+        books::powers(&film, drive, gas, damping)
     }
 
     /// What the lubricated skirt takes from a velocity jump at φ, J (`Lubrication::absorbed_by_jump`).
-    fn absorbed_by_jump(&self, phi: &Vector3<f64>, trig: &LinkAngles, before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
-        self.lubrication.as_ref().map_or(Absorbed::zeros(), |l| l.absorbed_by_jump((phi, trig), before, after))
+    fn absorbed_by_jump(&self, phi: &Vector3<f64>, trig: &LinkAngles, before: &Vector3<f64>, after: &Vector3<f64>) -> Powers {
+        let film = self.lubrication.as_ref().map_or(Vector4::zeros(), |l| l.absorbed_by_jump((phi, trig), before, after));
+        books::powers(&film, 0.0, 0.0, 0.0)
     }
 
     #[inline(always)]
@@ -182,23 +202,31 @@ pub struct PrescribedCrank {
     /// The crank's terms at the last crank angle evaluated (RK4's paired stages share it).
     #[serde(skip)]
     last_crank: LastValue<Crank>,
-    /// The crank row at the last communication point (`evaluate_point`), for its drive torque.
+    /// The crank row at the state last evaluated, for its drive torque.
     #[serde(skip)]
-    point_row: LastValue<CrankRow, 7>,
+    row: LastValue<CrankRow, 7>,
 }
 
-/// The crank row of the full equations at one state, the drive torque's terms: `M_1·`, `f_1` and
-/// the gaps' crank column `∂h/∂φ1`.
+/// The crank row of the full equations at one state, the drive torque's terms: `M_1·`, `f_1` and,
+/// from a full evaluation, the gaps' crank column `∂h/∂φ1`; and the gas's and the damping's power
+/// there, the other terms of the powers the crank reports.
 #[derive(Clone, Copy, Debug)]
 struct CrankRow {
     mass: Vector3<f64>,
     force: f64,
-    gaps: Vector4<f64>,
+    gaps: Option<Vector4<f64>>,
+    applied: Applied,
 }
 
 impl CrankRow {
-    fn of(full: &Evaluation<3, 4>) -> Self {
-        Self { mass: full.mass.row(0).transpose(), force: full.force[0], gaps: full.gap_jacobian.column(0).into_owned() }
+    #[inline(always)]
+    fn of((full, applied): &(Evaluation<3, 4>, Applied)) -> Self {
+        Self { gaps: Some(full.gap_jacobian.column(0).into_owned()), ..Self::of_inertia(&(full.mass, full.force, *applied)) }
+    }
+
+    #[inline(always)]
+    fn of_inertia((mass, force, applied): &(Matrix3<f64>, Vector3<f64>, Applied)) -> Self {
+        Self { mass: mass.row(0).transpose(), force: force[0], gaps: None, applied: *applied }
     }
 }
 
@@ -206,7 +234,7 @@ impl PrescribedCrank {
     /// The crank at `crank_angle` at `time`, turning at `speed` held.
     pub fn new(engine: Engine, crank_angle: f64, time: f64, speed: f64) -> Self {
         let speed = InputPolynomial { time, ..InputPolynomial::held(speed) };
-        Self { engine, angle_ref: crank_angle, speed, last_crank: LastValue::default(), point_row: LastValue::default() }
+        Self { engine, angle_ref: crank_angle, speed, last_crank: LastValue::default(), row: LastValue::default() }
     }
 
     /// φ1(t): the speed integrated exactly.
@@ -242,8 +270,8 @@ impl PrescribedCrank {
     /// The same crank with the crank angle `angle` at time `t` (a whole number of cycles away from
     /// its own), the speed's reference moved to `t`.
     pub fn rebased(&self, t: f64, angle: f64) -> Self {
-        let (last_crank, point_row) = (LastValue::default(), LastValue::default());
-        Self { engine: self.engine.clone(), angle_ref: angle, speed: self.speed.from(t), last_crank, point_row }
+        let (last_crank, row) = (LastValue::default(), LastValue::default());
+        Self { engine: self.engine.clone(), angle_ref: angle, speed: self.speed.from(t), last_crank, row }
     }
 
     /// The crank terms at `angle`, from the cache when it is the last angle evaluated (inlined:
@@ -264,12 +292,13 @@ impl PrescribedCrank {
         (Vector3::new(self.crank_angle(t), q[0], q[1]), Vector3::new(self.speed.at(t), qd[0], qd[1]))
     }
 
-    /// Linkage evaluation in full coordinates. Inlined, with what it calls, into the reduced
-    /// evaluation, where the crank row's unused terms and a copy then drop out.
+    /// Linkage evaluation in full coordinates, its crank row kept for the drive torque there.
     #[inline(always)]
     pub fn evaluate_full(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<3, 4> {
         let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
-        self.engine.evaluate(t, &phi, &phid, 0.0, crank)
+        let full = self.engine.evaluate(t, &phi, &phid, 0.0, crank);
+        self.row.set(self.row_key(t, &phi, &phid, &crank), CrankRow::of(&full));
+        full.0
     }
 
     /// The linkage's inertia in full coordinates, without the film's implicit term (`System::impact_mass`).
@@ -300,13 +329,37 @@ impl PrescribedCrank {
         (q, qd, qdd): (&Vector2<f64>, &Vector2<f64>, &Vector2<f64>),
         forces: (&Vector4<f64>, &Vector4<f64>),
     ) -> f64 {
-        // The point's own evaluation kept the row, where this is the point's state.
         let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
-        let row =
-            self.point_row.get_or(self.row_key(t, &phi, &phid, &crank), || CrankRow::of(&self.engine.evaluate(t, &phi, &phid, 0.0, crank)));
+        self.torque_and_row(t, (&phi, &phid, &crank), qdd, forces).0
+    }
+
+    /// The drive torque at (t, φ, φ̇) (φ̈ = (ω̇, q̈)) and the crank row there: the evaluation at this
+    /// state kept the row (a stage's or a point's), with the gaps' column where it was a full one.
+    #[inline(always)]
+    fn torque_and_row(
+        &self,
+        t: f64,
+        (phi, phid, crank): (&Vector3<f64>, &Vector3<f64>, &Crank),
+        qdd: &Vector2<f64>,
+        forces: (&Vector4<f64>, &Vector4<f64>),
+    ) -> (f64, CrankRow) {
+        let (q, crank) = (Vector2::new(phi[1], phi[2]), *crank);
+        let key = self.row_key(t, phi, phid, &crank);
+        let full = || CrankRow::of(&self.engine.evaluate(t, phi, phid, 0.0, crank));
+        let mut row = self.row.get_or(key, full);
+        let normal = if *forces.0 == Vector4::zeros() {
+            0.0
+        } else {
+            let gaps = row.gaps.unwrap_or_else(|| {
+                row = full();
+                self.row.set(key, row);
+                row.gaps.unwrap_or_default()
+            });
+            gaps.dot(forces.0)
+        };
         let driven = if self.speed.is_held() { 0.0 } else { row.mass[0] * self.acceleration(t) };
-        let contact = row.gaps.dot(forces.0) + self.friction_reaction(t, q, forces.1);
-        driven + row.mass[1] * qdd[0] + row.mass[2] * qdd[1] - row.force - contact
+        let contact = normal + self.friction_reaction(t, &q, forces.1);
+        (driven + row.mass[1] * qdd[0] + row.mass[2] * qdd[1] - row.force - contact, row)
     }
 
     /// The generalized forces `J_Tᵀ λ_T` of the friction forces `friction` in full coordinates (zero
@@ -352,18 +405,12 @@ impl System<2, 4> for PrescribedCrank {
         self.reduce(t, self.evaluate_full(t, q, qd))
     }
 
-    /// Keeps the crank row for the point's drive torque.
-    fn evaluate_point(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
-        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
-        let full = self.engine.evaluate(t, &phi, &phid, 0.0, crank);
-        self.point_row.set(self.row_key(t, &phi, &phid, &crank), CrankRow::of(&full));
-        self.reduce(t, full)
-    }
-
+    /// Keeps the crank row, without the gaps' column, for the drive torque of a free stage.
     fn inertia_and_force(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Matrix2<f64>, Vector2<f64>) {
-        let (phi, phid) = self.full_state(t, q, qd);
-        let (mass, force) = self.engine.inertia_and_force(t, &phi, &phid, 0.0, self.crank(phi[0]));
-        self.reduced(t, &mass, &force)
+        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
+        let terms = self.engine.inertia_and_force(t, &phi, &phid, 0.0, crank);
+        self.row.set(self.row_key(t, &phi, &phid, &crank), CrankRow::of_inertia(&terms));
+        self.reduced(t, &terms.0, &terms.1)
     }
 
     fn begin_step(&self, t: f64, (q, qd, qdd): (&Vector2<f64>, &Vector2<f64>, &Vector2<f64>), dt: f64) {
@@ -394,10 +441,20 @@ impl System<2, 4> for PrescribedCrank {
         self.engine.lubrication.is_some()
     }
 
-    fn absorbed_power(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>, qdd: &Vector2<f64>) -> Absorbed {
+    const POWERS: bool = true;
+
+    /// The drive's power is its torque (`drive_torque`) times ω; the row kept at this state gives
+    /// the gas's and the damping's.
+    fn powers(
+        &self,
+        t: f64,
+        (q, qd, qdd): (&Vector2<f64>, &Vector2<f64>, &Vector2<f64>),
+        forces: (&Vector4<f64>, &Vector4<f64>),
+    ) -> Powers {
         let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
+        let (torque, row) = self.torque_and_row(t, (&phi, &phid, &crank), qdd, forces);
         let phidd = Vector3::new(self.acceleration(t), qdd[0], qdd[1]);
-        self.engine.absorbed_power(&phi, &LinkAngles::with_crank((crank.sin, crank.cos), &phi), &phid, &phidd)
+        self.engine.powers((&phi, &crank), &phid, &phidd, torque * phid[0], row.applied)
     }
 
     fn impact_mass(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>, _ev: &Evaluation<2, 4>) -> Matrix2<f64> {
@@ -405,7 +462,7 @@ impl System<2, 4> for PrescribedCrank {
     }
 
     /// The crank keeps its speed through a jump.
-    fn absorbed_by_jump(&self, t: f64, q: &Vector2<f64>, before: &Vector2<f64>, after: &Vector2<f64>) -> Absorbed {
+    fn absorbed_by_jump(&self, t: f64, q: &Vector2<f64>, before: &Vector2<f64>, after: &Vector2<f64>) -> Powers {
         let (phi, before, crank) = self.full_state_and_crank(t, q, before);
         let after = Vector3::new(before[0], after[0], after[1]);
         self.engine.absorbed_by_jump(&phi, &LinkAngles::with_crank((crank.sin, crank.cos), &phi), &before, &after)
@@ -450,11 +507,12 @@ pub struct FreeCrank {
 
 impl System<3, 4> for FreeCrank {
     fn evaluate(&self, t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> Evaluation<3, 4> {
-        self.engine.evaluate(t, q, qd, self.load_torque.at(t), self.engine.crank(q[0]))
+        self.engine.evaluate(t, q, qd, self.load_torque.at(t), self.engine.crank(q[0])).0
     }
 
     fn inertia_and_force(&self, t: f64, q: &Vector3<f64>, qd: &Vector3<f64>) -> (Matrix3<f64>, Vector3<f64>) {
-        self.engine.inertia_and_force(t, q, qd, self.load_torque.at(t), self.engine.crank(q[0]))
+        let (mass, force, _) = self.engine.inertia_and_force(t, q, qd, self.load_torque.at(t), self.engine.crank(q[0]));
+        (mass, force)
     }
 
     fn begin_step(&self, _t: f64, (q, qd, qdd): (&Vector3<f64>, &Vector3<f64>, &Vector3<f64>), dt: f64) {
@@ -483,15 +541,21 @@ impl System<3, 4> for FreeCrank {
         self.engine.lubrication.is_some()
     }
 
-    fn absorbed_power(&self, _t: f64, q: &Vector3<f64>, qd: &Vector3<f64>, qdd: &Vector3<f64>) -> Absorbed {
-        self.engine.absorbed_power(q, &LinkAngles::new(q), qd, qdd)
+    const POWERS: bool = true;
+
+    /// The load torque's power stands in the drive's channel.
+    fn powers(&self, t: f64, (q, qd, qdd): (&Vector3<f64>, &Vector3<f64>, &Vector3<f64>), _: (&Vector4<f64>, &Vector4<f64>)) -> Powers {
+        let crank = self.engine.crank(q[0]);
+        let trig = LinkAngles::with_crank((crank.sin, crank.cos), q);
+        let applied = self.engine.linkage.gas_and_damping_power(&trig, qd, self.engine.gas_force_at(t, &crank));
+        self.engine.powers((q, &crank), qd, qdd, -self.load_torque.at(t) * qd[0], applied)
     }
 
     fn impact_mass(&self, t: f64, q: &Vector3<f64>, qd: &Vector3<f64>, _ev: &Evaluation<3, 4>) -> Matrix3<f64> {
         self.engine.impact_mass(t, q, qd, self.engine.crank(q[0]))
     }
 
-    fn absorbed_by_jump(&self, _t: f64, q: &Vector3<f64>, before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
+    fn absorbed_by_jump(&self, _t: f64, q: &Vector3<f64>, before: &Vector3<f64>, after: &Vector3<f64>) -> Powers {
         self.engine.absorbed_by_jump(q, &LinkAngles::new(q), before, after)
     }
 

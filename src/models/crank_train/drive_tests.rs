@@ -64,14 +64,14 @@ fn the_crank_cache_never_changes_a_result() {
 /// The drive torque from the row a point's evaluation kept is the one computed afresh, also
 /// after the pressure and the speed changed at the same state.
 #[test]
-fn the_point_row_never_changes_a_drive_torque() {
+fn the_kept_row_never_changes_a_drive_torque() {
     let (t, q, qd, qdd) = (0.013, Vector2::new(-0.05, 0.0007), Vector2::new(-28.0, 3.0), Vector2::new(-3000.0, 50.0));
     let forces = (Vector4::new(120.0, 0.0, 0.0, 35.0), Vector4::new(3.0, 0.0, 0.0, -1.0));
     let mut sys = ramping();
     for (pressure, speed) in [(2e6, 125.66), (5e6, 125.66), (5e6, 80.0)] {
         sys.engine.hold_pressure(InputPolynomial { time: 0.01, value: pressure, slope: 4e8, curvature: 0.0 });
         sys.hold_speed(InputPolynomial { time: 0.01, value: speed, slope: 3000.0, curvature: 0.0 });
-        let fresh = PrescribedCrank { point_row: LastValue::default(), ..sys.clone() };
+        let fresh = PrescribedCrank { row: LastValue::default(), ..sys.clone() };
         assert_eq!(sys.evaluate_point(t, &q, &qd), fresh.evaluate(t, &q, &qd));
         let torque = sys.drive_torque(t, (&q, &qd, &qdd), (&forces.0, &forces.1));
         assert_eq!(torque.to_bits(), fresh.drive_torque(t, (&q, &qd, &qdd), (&forces.0, &forces.1)).to_bits(), "{pressure} {speed}");

@@ -6,8 +6,8 @@
 //! `Δq̇ = M_rr⁻¹ J_rᵀ Λ` and from the crank row `P_d = M_1r Δq̇ − (∂h/∂φ1)ᵀ Λ`. The drive does the
 //! work `P_d ω`, and `ΔT = −(dissipation) + P_d ω` with dissipation `−Λᵀ(ḣ⁻ + ḣ⁺)/2`.
 
+use super::books::{DAMPING, DRIVE, FILM, GAS};
 use super::drive::PrescribedCrank;
-use super::linkage::Loads;
 use super::model::CrankTrain;
 use crate::models::{EnergyBalance, PowerFlows};
 use nalgebra::{Vector2, Vector4};
@@ -61,22 +61,11 @@ impl EnergyBalance for CrankTrain {
         kinetic + potential
     }
 
+    /// The rates the crank train reports to the core (`books`) at the state now.
     fn power_flows(&self) -> PowerFlows {
-        let (phi, phid) = self.state();
-        let engine = self.engine();
-        // The gas force (0, −F) acts at O3 − a n(φ3), whose height is l1 cos φ1 + l2 cos φ2 − a sin φ3.
-        let g = &self.geometry;
-        let height_rate = -g.crank_radius * libm::sin(phi[0]) * phid[0]
-            - g.rod_length * libm::sin(phi[1]) * phid[1]
-            - g.pin_offset * libm::cos(phi[2]) * phid[2];
-        // Damping is the part of the generalized force odd in φ̇ (gyroscopic terms are even).
-        let bare = Loads { gas_force: 0.0, load_torque: 0.0 };
-        let odd = engine.linkage.evaluate(&phi, &phid, bare).force - engine.linkage.evaluate(&phi, &-phid, bare).force;
-        let (friction, friction_power, _) = self.friction();
-        let (forces, _) = self.contacts();
-        let drive = self.drive.stepper().crank_torque(&forces, &friction) * phid[0];
-        let gas = -engine.gas_force(self.time(), phi[0]) * height_rate;
-        PowerFlows { drive, gas, damping: -0.5 * odd.dot(&phid), friction: friction_power, film: self.absorbed().0[0] }
+        let (rates, _) = self.drive.stepper().powers();
+        let (_, friction, _) = self.friction();
+        PowerFlows { drive: rates[DRIVE], gas: rates[GAS], damping: rates[DAMPING], friction, film: rates[FILM] }
     }
 
     fn impulse_work(&self) -> f64 {

@@ -309,6 +309,20 @@ impl Linkage {
         (mass, force)
     }
 
+    /// The power of the gas force `gas_force` on the crown, W, and the joint damping's dissipation
+    /// rate, ≥ 0, W, at the angles `trig` and rates φ̇: the gas and damping terms of
+    /// [`Self::inertia_and_force_with`]'s generalized force times φ̇ (the gas's with its sign, the
+    /// damping's negated).
+    #[inline(always)]
+    pub fn gas_and_damping_power(&self, trig: &LinkAngles, phid: &Vector3<f64>, gas_force: f64) -> (f64, f64) {
+        let ([s1, s2, _], [_, _, c3]) = (trig.sin, trig.cos);
+        let [l1, l2] = self.bodies.links;
+        let [cb1, cb2, cb3] = self.bodies.damping;
+        let (crank_pin, piston_pin) = (phid[1] - phid[0], phid[2] - phid[1]);
+        let gas = gas_force * (l1 * s1 * phid[0] + l2 * s2 * phid[1] + self.bodies.pin_offset * c3 * phid[2]);
+        (gas, cb1 * phid[0] * phid[0] + cb2 * crank_pin * crank_pin + cb3 * piston_pin * piston_pin)
+    }
+
     /// Kinetic and gravitational potential energy (zero at the crank axis), J.
     pub fn energy(&self, phi: &Vector3<f64>, phid: &Vector3<f64>) -> (f64, f64) {
         self.energy_with(&LinkAngles::new(phi), phi, phid)

@@ -21,7 +21,7 @@
 //! along `g` (slope c): a skirt that stops on its asperities is held by a friction that would
 //! otherwise flip with V at every step. What the skirt takes from the motion,
 //! `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and at a projection onto held corners (a jump Δφ̇) the impulse
-//! `−τ Gᵀ D G Δφ̇`'s share, is booked by the core as the absorbed work (`System::absorbed_power`);
+//! `−τ Gᵀ D G Δφ̇`'s share, is booked by the core as the absorbed work (`System::powers`);
 //! each wall's push, its side's share of the lateral force with its share of the implicit term (and
 //! of the impulse at a projection), as two further channels: the film's and asperities' impulse on
 //! the liner. An impact acts through the linkage's inertia alone (`System::impact_mass`): the film,
@@ -34,7 +34,6 @@
 
 use super::linkage::LinkAngles;
 use super::step_film::{key, Solved, StepFilm};
-use crate::dynamics::Absorbed;
 use crate::models::numerics::LastValue;
 use crate::models::skirt::{PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
 use crate::models::{ModelError, Parameters};
@@ -298,7 +297,7 @@ impl Lubrication {
     /// `−(F_a ẏ + M_a φ̇3) + τ c ẏ ÿ`; and the anti-thrust and the thrust wall's
     /// push as the motion takes it, N: each wall's share of the lateral force with the implicit term,
     /// `P + τ ∂P/∂(ẋ, φ̇3) (G φ̈ + Ġ φ̇)` (`SkirtLoads::wall_push`, whose rates' rows differ by D's first row).
-    pub fn absorbed_power(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Absorbed {
+    pub fn absorbed_power(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Vector4<f64> {
         let k = self.kinematics(at, phid);
         let loads = self.loads(&k.motion);
         let tau = self.design.relaxation;
@@ -307,21 +306,21 @@ impl Lubrication {
         let boundary = tau * loads.boundary_damping * k.motion.sliding_speed * (k.axial.dot(phidd) + k.axial_bias);
         let [thrust, antithrust] = (loads.wall_push + loads.wall_push_rates * acceleration * tau).into();
         let friction = boundary - friction_power(&k, &loads);
-        Absorbed::new(implicit + boundary - generalized(&k, &loads).dot(phid), friction, antithrust, thrust)
+        Vector4::new(implicit + boundary - generalized(&k, &loads).dot(phid), friction, antithrust, thrust)
     }
 
     /// What the implicit film impulse `−τ (Gᵀ D G + c g gᵀ) Δφ̇` of a projection `before → after` at
     /// φ takes, J: the negative of its work on the mean velocity (D and c at the velocity before),
     /// the boundary friction's part also as the axial friction's share; and each wall's
     /// share of its lateral impulse, `τ ∂P/∂(ẋ, φ̇3) G Δφ̇`, N·s (anti-thrust, thrust).
-    pub fn absorbed_by_jump(&self, at: (&Vector3<f64>, &LinkAngles), before: &Vector3<f64>, after: &Vector3<f64>) -> Absorbed {
+    pub fn absorbed_by_jump(&self, at: (&Vector3<f64>, &LinkAngles), before: &Vector3<f64>, after: &Vector3<f64>) -> Vector4<f64> {
         let k = self.kinematics(at, before);
         let loads = self.loads(&k.motion);
         let (jump, tau) = (k.lateral * (after - before), self.design.relaxation);
         let mean = (before + after) * 0.5;
         let [thrust, antithrust] = (loads.wall_push_rates * jump * tau).into();
         let boundary = tau * loads.boundary_damping * k.axial.dot(&mean) * k.axial.dot(&(after - before));
-        Absorbed::new((k.lateral * mean).dot(&(loads.damping * tau * jump)) + boundary, boundary, antithrust, thrust)
+        Vector4::new((k.lateral * mean).dot(&(loads.damping * tau * jump)) + boundary, boundary, antithrust, thrust)
     }
 
     /// The axial friction's power at (φ, φ̇), W (≥ 0 where it opposes the sliding).

@@ -2,6 +2,7 @@
 //! against the liner: the linkage's equations, the two crank modes as systems for the core, the
 //! model the FMU drives, its energy books, its declared design space and the efficiency calibration.
 
+pub mod books;
 mod crank_stepper;
 mod design_space;
 pub mod drive;

@@ -1,6 +1,7 @@
 //! Variant 1: the piston – connecting rod – crankshaft system of Awrejcewicz & Kudra on the core,
 //! as the FMU drives it (prescribed crank speed, or a free crank under a load torque).
 
+use super::books::{DAMPING, DRIVE, GAS};
 use super::crank_stepper::Drive;
 use super::design_space::{self, validate};
 use super::drive::{Engine, FreeCrank, PrescribedCrank};
@@ -370,6 +371,9 @@ impl EngineModel for CrankTrain {
         out.liner_impulse_total = std::array::from_fn(|w| contact[w] + self.impact_impulse[w]);
         [out.friction_force_1, out.friction_force_2, out.friction_force_3, out.friction_force_4] = friction.into();
         (out.friction_power, out.friction_energy_total) = (friction_power, friction_energy);
+        let (_, books) = stepper.powers();
+        out.drive_work_total = books[DRIVE] + self.impulse_work;
+        (out.gas_work_total, out.damping_energy_total) = (books[GAS], books[DAMPING]);
         self.write_skirt((&phi, &trig, &phid), &gaps, &forces, out);
     }
 }

@@ -2,9 +2,9 @@
 //! asperity and friction loads and the work it absorbed; dry, the corners' gaps as the film
 //! thickness and zero loads. The side force is the liner's net lateral force in either case.
 
+use super::books::{FILM, SKIRT_FRICTION, WALL_PUSH};
 use super::linkage::LinkAngles;
 use super::model::CrankTrain;
-use crate::dynamics::Absorbed;
 use crate::models::skirt::PressureMap;
 use crate::models::Outputs;
 use nalgebra::{Vector3, Vector4};
@@ -15,12 +15,6 @@ impl CrankTrain {
         let lubrication = self.engine().lubrication.as_ref()?;
         let (phi, phid) = self.state_within_cycle();
         Some(lubrication.pressure_map((&phi, &LinkAngles::new(&phi)), &phid))
-    }
-
-    /// What the skirt has absorbed: power now and work since the start, [all, friction], and its
-    /// walls' push now and impulse since the start, [anti-thrust, thrust] (zero dry).
-    pub(super) fn absorbed(&self) -> (Absorbed, Absorbed) {
-        self.drive.stepper().absorbed()
     }
 
     /// Writes the skirt's outputs and `side_force` at (φ, φ̇), the corners' gaps `gaps` and contact
@@ -50,13 +44,13 @@ impl CrankTrain {
             return;
         };
         let loads = lubrication.loads_at((phi, trig), phid);
-        let (_, work) = self.absorbed();
+        let (_, work) = self.drive.stepper().powers();
         out.side_force = corners + loads.lateral_force;
         [out.min_film_thickness_thrust, out.min_film_thickness_antithrust] = loads.min_film;
         (out.film_force, out.asperity_force) = (loads.film_force, loads.asperity_force);
         out.skirt_friction_force = loads.friction_force;
         out.skirt_friction_power = lubrication.friction_power((phi, trig), phid);
-        out.film_energy_total = work[0];
+        out.film_energy_total = work[FILM];
         // A side's moment about the pin is its push times the height above the pin (thrust), or
         // minus that (anti-thrust): about the skirt top, the push times the pin's depth less it.
         let pin = linkage.pin_depth();
@@ -64,9 +58,9 @@ impl CrankTrain {
         walls[0] = (walls[0].0 + anti, walls[0].1 + anti * pin + loads.wall_moment[1]);
         walls[1] = (walls[1].0 + thrust, walls[1].1 + thrust * pin - loads.wall_moment[0]);
         write_walls(walls, out);
-        out.liner_friction_work = out.friction_energy_total + work[1];
+        out.liner_friction_work = out.friction_energy_total + work[SKIRT_FRICTION];
         // The walls' film and asperity impulses join the corners' (anti-thrust, thrust).
-        out.liner_impulse_total = [out.liner_impulse_total[0] + work[2], out.liner_impulse_total[1] + work[3]];
+        out.liner_impulse_total = [0, 1].map(|w| out.liner_impulse_total[w] + work[WALL_PUSH[w]]);
     }
 }
 
