@@ -5,6 +5,7 @@
 
 use crate::common::*;
 use pistonslap::dynamics::StepperOptions;
+use pistonslap::models::crank_train::linkage::Linkage;
 use pistonslap::models::crank_train::LOCAL_ERROR;
 use pistonslap::models::skirt::BOUNDARY_SLIP;
 use pistonslap::models::{CrankTrain, EnergyBalance, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
@@ -315,4 +316,33 @@ fn painleve_through_the_films_inertia_is_the_linkages_contact_problem() {
         let Books { work, residual, .. } = books(&mut model, &design.inputs, (t_end, 1000));
         assert!(residual.abs() < 1e-4 * work.abs(), "seed {seed}: residual {residual:e} J of {work:e} J");
     }
+}
+
+/// The asperities are elastic: what their load takes is stored (`potential_energy`) and comes back as
+/// they part, so `film_energy_total` never falls. The random declared design 0 (σ = 0.43 µm on
+/// dense summits, 63 impacts through the film in 0.1 s) lies on its asperities: booked as dissipation
+/// their energy made the total fall by 1.4e-4 J within a step; kept apart, not by a joule's 1e-12
+/// part. Its books close as before, the energy moved from the dissipation to the potential energy.
+#[test]
+fn the_asperities_store_what_they_take_and_the_film_total_never_falls() {
+    use crate::common::designs::{lubricated_declared, Random};
+    let design = lubricated_declared(&mut Random::new(0));
+    let mut model = CrankTrain::new(&design.params, 0.0).unwrap();
+    let mut events = Vec::new();
+    let linkage = Linkage::new(&design.params);
+    let (mut t, mut last, mut stored) = (0.0, 0.0f64, 0.0f64);
+    while t < 0.1 {
+        t += design.step;
+        model.advance(&design.inputs, t, &mut events).unwrap();
+        let out = outputs(&model);
+        assert!(out.film_energy_total >= last - 1e-12 * last.abs().max(1.0), "{t} s: {} J after {last} J", out.film_energy_total);
+        last = out.film_energy_total;
+        let (phi, phid) = model.state();
+        let (_, gravity) = linkage.energy(&phi, &phid);
+        stored = stored.max(out.potential_energy - gravity);
+    }
+    assert!(impacts(&events).count() > 10 && stored > 1e-5, "{} impacts, {stored:e} J stored", impacts(&events).count());
+    let mut model = CrankTrain::new(&design.params, 0.0).unwrap();
+    let Books { work, residual, .. } = books(&mut model, &design.inputs, (0.1, 1000));
+    assert!(residual.abs() < 1e-4 * work.abs(), "residual {residual:e} J of {work:e} J");
 }

@@ -48,6 +48,8 @@ pub struct CrankTrain {
     /// The impacts' impulse on the piston since the start per wall [anti-thrust (K1, K2), major
     /// thrust (K3, K4)], N·s.
     impact_impulse: [f64; 2],
+    /// The asperities' elastic energy where the stepper's totals start, J (`skirt_outputs`).
+    pub(super) asperity_energy_start: f64,
 }
 
 /// How the start departs from the nominal (zero-clearance) slider-crank state: the pin's lateral
@@ -128,7 +130,7 @@ impl CrankTrain {
             let system = FreeCrank { engine, load_torque: InputPolynomial::held(Inputs::default().load_torque) };
             Drive::Free(Self::free(system, &geometry, &start, angle, start_time, speed, &options)?)
         };
-        Ok(Self {
+        let mut model = Self {
             drive,
             geometry,
             start,
@@ -138,7 +140,10 @@ impl CrankTrain {
             cycles: 0.0,
             impact_friction_energy: 0.0,
             impact_impulse: [0.0; 2],
-        })
+            asperity_energy_start: 0.0,
+        };
+        model.asperity_energy_start = model.asperity_energy();
+        Ok(model)
     }
 
     fn prescribed(
@@ -183,6 +188,7 @@ impl CrankTrain {
             }
         };
         self.started = true;
+        self.asperity_energy_start = self.asperity_energy();
         Ok(())
     }
 

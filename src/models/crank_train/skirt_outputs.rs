@@ -1,6 +1,12 @@
 //! The outputs of the piston's skirt against the liner: with the lubricated skirt its film,
 //! asperity and friction loads and the work it absorbed; dry, the corners' gaps as the film
 //! thickness and zero loads. The side force is the liner's net lateral force in either case.
+//!
+//! The asperities are elastic: the work their load takes from the motion is stored, not
+//! dissipated, and comes back as the skirt leaves the liner. Their energy is potential energy
+//! (`potential_energy`), and the skirt's absorbed work less its change since the start is what the
+//! film and the friction dissipated (`film_energy_total`), so that neither total falls as the
+//! asperities unload.
 
 use super::books::{FILM, SKIRT_FRICTION, WALL_PUSH};
 use super::linkage::LinkAngles;
@@ -15,6 +21,13 @@ impl CrankTrain {
         let lubrication = self.engine().lubrication.as_ref()?;
         let (phi, phid) = self.state_within_cycle();
         Some(lubrication.pressure_map((&phi, &LinkAngles::new(&phi)), &phid))
+    }
+
+    /// The asperities' elastic energy now, J (0 dry).
+    pub(super) fn asperity_energy(&self) -> f64 {
+        let Some(lubrication) = &self.engine().lubrication else { return 0.0 };
+        let (phi, phid) = self.state_within_cycle();
+        lubrication.loads_at((&phi, &LinkAngles::new(&phi)), &phid).asperity_energy
     }
 
     /// Writes the skirt's outputs and `side_force` at (φ, φ̇), the corners' gaps `gaps` and contact
@@ -50,7 +63,8 @@ impl CrankTrain {
         (out.film_force, out.asperity_force) = (loads.film_force, loads.asperity_force);
         out.skirt_friction_force = loads.friction_force;
         out.skirt_friction_power = lubrication.friction_power((phi, trig), phid);
-        out.film_energy_total = work[FILM];
+        out.film_energy_total = work[FILM] - (loads.asperity_energy - self.asperity_energy_start);
+        out.potential_energy += loads.asperity_energy;
         // A side's moment about the pin is its push times the height above the pin (thrust), or
         // minus that (anti-thrust): about the skirt top, the push times the pin's depth less it.
         let pin = linkage.pin_depth();

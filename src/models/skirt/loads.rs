@@ -41,6 +41,10 @@ pub struct SkirtLoads {
     pub film_force: f64,
     /// Total asperity load, N, both sides (≥ 0).
     pub asperity_force: f64,
+    /// The elastic energy the asperities store, J, both sides (≥ 0): the loads' potential, the work
+    /// the asperity load would do as the skirt leaves the liner (`Asperity::energy`; below the film's
+    /// floor the load is the floor's, so the energy grows linearly there).
+    pub asperity_energy: f64,
     /// Couette dissipation of the film, W (≥ 0): `∫ μ V² / h` over the wetted skirt.
     pub shear_power: f64,
     /// Poiseuille dissipation of the film, W (≥ 0): `∫ h³/(12μ) |∇p|²`, which equals the power the

@@ -336,7 +336,8 @@ impl Skirt {
             for (jj, &((a, b), (alpha, beta), z, r)) in rows.iter().enumerate() {
                 for (ii, &(c, ov)) in side.closed.iter().enumerate() {
                     let h = a + b * c + ov;
-                    let pa = self.asperity.pressure(h.max(self.floor));
+                    let read = h.max(self.floor);
+                    let pa = self.asperity.pressure(read);
                     if let Some(sm) = side_map.as_mut() {
                         let inside = ii > 0 && ii <= nx && jj > 0 && jj <= nz;
                         sm.pressure.push(if inside { pressure[(jj - 1) * nx + ii - 1] } else { 0.0 });
@@ -349,6 +350,7 @@ impl Skirt {
                     let weight = closed_weight(ii, nx) * closed_weight(jj, nz) * area;
                     let load = pa * weight;
                     out.asperity_force += load;
+                    out.asperity_energy += (self.asperity.energy(read) + pa * (read - h)) * weight;
                     out.lateral_force += load * -c;
                     pushed += load * c;
                     out.moment += load * (alpha + beta * c);
