@@ -127,3 +127,59 @@ fn drive_torque_balances_the_crank_row_of_the_free_equations() {
         assert!((rows - residual.fixed_rows::<2>(1)).norm() < 1e-9 * free.force.norm(), "{rows} vs {residual}");
     }
 }
+
+/// On the lubricated skirt each corner sits on the profiled edge of its side (`Linkage::on_profile`): at
+/// every pose its gap is the film thickness at that edge on the thrust axis, on a barrel with ovality and
+/// pin offset, to round-off; a piston tilted onto its top thrust corner touches the liner exactly where
+/// the thrust side's film reaches zero, where the papers' corner (on d/2) lies the top drop inside the liner.
+#[test]
+fn the_lubricated_corners_touch_where_the_film_at_their_edge_is_zero() {
+    // 13 circumferential nodes: a closed column at θ = 0 and π, where the corners are.
+    let p = Parameters {
+        skirt_model: 2,
+        skirt_profile: "parabola 10e-6 20e-6".into(),
+        skirt_ovality: 30e-6,
+        pin_offset: 1e-3,
+        skirt_grid_circumferential: 13,
+        ..Parameters::default()
+    };
+    let engine = Engine::new(&p).unwrap();
+    let dry = Engine::new(&Parameters { skirt_model: 1, ..p.clone() }).unwrap();
+    let lubrication = engine.lubrication.as_ref().unwrap();
+    let (l1, l2) = (p.crank_radius, p.rod_length);
+    // (map side, its row: the top edge or the bottom) of K1..K4.
+    let edges = [(1, 0), (1, 1), (0, 0), (0, 1)];
+    let film_at_corners = |phi: &Vector3<f64>| {
+        let map = lubrication.pressure_map((phi, &LinkAngles::new(phi)), &Vector3::new(125.0, -30.0, 0.5));
+        edges.map(|(side, bottom)| {
+            let s = &map.sides[side];
+            let (columns, rows) = (s.angle.len(), s.position.len());
+            let centre = columns / 2;
+            assert!((libm::cos(s.angle[centre]).abs() - 1.0).abs() < 1e-15);
+            s.film[if bottom == 1 { rows - 1 } else { 0 } * columns + centre]
+        })
+    };
+    // The rod angle that puts the pin at x (l2 sin φ2 = −(x + l1 sin φ1)).
+    let rod = |phi1: f64, x: f64| libm::asin(-(x + l1 * libm::sin(phi1)) / l2);
+    // Poses within the clearance: the pin off its centred position x = a by δ, tilted.
+    for (phi1, offset, tilt) in [(0.3, -20e-6, 2e-4), (2.0, 10e-6, -4e-4), (4.0, 0.0, 0.0), (5.5, 30e-6, 6e-4)] {
+        let phi = Vector3::new(phi1, rod(phi1, p.pin_offset + offset), tilt);
+        let (gaps, film) = (engine.linkage.gaps(&phi), film_at_corners(&phi));
+        for k in 0..4 {
+            assert!((gaps[k] - film[k]).abs() < 1e-15, "K{}: gap {} film {}", k + 1, gaps[k], film[k]);
+        }
+    }
+    // Tilted clockwise, the top thrust corner K3 leads: the rod angle that puts it on the liner (its gap
+    // falls one for one as the pin moves toward +x).
+    let (phi1, tilt) = (0.5, -1e-3);
+    let start = Vector3::new(phi1, 0.0, tilt);
+    let x = -l1 * libm::sin(phi1) + engine.linkage.gaps(&start)[2];
+    let phi = Vector3::new(phi1, rod(phi1, x), tilt);
+    let gap = engine.linkage.gaps(&phi)[2];
+    assert!(gap.abs() < 1e-15, "{gap}");
+    let thrust = lubrication.pressure_map((&phi, &LinkAngles::new(&phi)), &Vector3::zeros()).sides[0].film.clone();
+    let thinnest = thrust.iter().copied().fold(f64::INFINITY, f64::min);
+    assert!(thinnest.abs() < 1e-15 && film_at_corners(&phi)[2].abs() < 1e-15, "{thinnest}");
+    // The papers' corner lies the top drop further out, across the tilted axis: 10 µm cos φ3.
+    assert!((dry.linkage.gaps(&phi)[2] + 10e-6 * libm::cos(tilt)).abs() < 1e-15, "{}", dry.linkage.gaps(&phi)[2]);
+}

@@ -66,6 +66,13 @@ impl SkirtDesign {
         }
     }
 
+    /// The profile's radial drop at the skirt's top and bottom edges, m: where the crank train puts its
+    /// corners on the lubricated skirt, so that a corner's gap is the film thickness at its edge on the
+    /// thrust axis (θ = 0 or π, where the ovality's `sin²θ` term vanishes).
+    pub fn edge_drops(&self) -> [f64; 2] {
+        [self.profile.drop(0.0, self.length), self.profile.drop(self.length, self.length)]
+    }
+
     /// Refuses a design the film cannot be solved on, naming the field and the reason.
     pub fn validate(&self) -> Result<(), ModelError> {
         let refuse = |what: &str| Err(ModelError(format!("skirt: {what}")));
