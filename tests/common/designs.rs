@@ -206,9 +206,8 @@ fn running_temperatures(r: &mut Random, params: Parameters) -> Parameters {
 /// 0.1 mPa·s – 0.5 Pa·s, each side 10–180° of arc, a barrel dropping up to 3e-4 of the diameter at either
 /// edge, ovality up to 2e-4 of it one time in two, roughness 0.05–5 µm with Greenwood–Tripp's ηβσ of
 /// 0.001–1 and σ/β of 1e-5–0.1 (the accepted ranges), a composite modulus of
-/// 10–300 GPa, boundary friction 0.001–1, a film relaxation of 10 µs – 0.1 ms, a grid of 2–12 × 2–16
-/// nodes (coarse, to keep the family fast), running hot one time in two (`running_temperatures`). Redrawn
-/// until the model accepts it.
+/// 10–300 GPa, boundary friction 0.001–1, a film relaxation of 10 µs – 0.1 ms and a grid of 2–12 × 2–16
+/// nodes (coarse, to keep the family fast). Redrawn until the model accepts it.
 pub fn lubricated_declared(r: &mut Random) -> Design {
     loop {
         let design = declared(r);
@@ -231,7 +230,6 @@ pub fn lubricated_declared(r: &mut Random) -> Design {
         let (group, ratio) = (decades(r, 1e-3, 1.0), decades(r, 1e-5, 0.1));
         params.asperity_radius = params.skirt_roughness / ratio;
         params.asperity_density = group / (params.asperity_radius * params.skirt_roughness);
-        let params = running_temperatures(r, params);
         if CrankTrain::new(&params, 0.0).is_ok() {
             return Design { params, ..design };
         }
