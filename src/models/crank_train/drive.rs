@@ -47,19 +47,13 @@ impl Engine {
     /// The engine of validated parameters; a held pressure starts at the input's default. Reads the
     /// pressure trace (`pressure_source = 3`), refusing a bad file.
     pub fn new(params: &Parameters) -> Result<Self, ModelError> {
-        let lubrication = Lubrication::of(params)?;
-        // The lubricated skirt's corners sit on its profiled edges; the dry skirt's on d/2 (the papers').
-        let linkage = match &lubrication {
-            Some(skirt) => Linkage::new(params).on_profile(skirt.edge_drops()),
-            None => Linkage::new(params),
-        };
         Ok(Self {
-            linkage,
+            linkage: Linkage::new(params),
             pressure: GasPressure::new(params)?,
             crown_area: 0.25 * std::f64::consts::PI * params.piston_diameter * params.piston_diameter,
             restitution: params.restitution,
             friction: params.friction,
-            lubrication,
+            lubrication: Lubrication::of(params)?,
         })
     }
 

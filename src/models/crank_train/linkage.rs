@@ -182,19 +182,6 @@ impl Linkage {
         .into()
     }
 
-    /// The linkage with its corners moved onto a profiled skirt's edges: each corner sits `drops[0]`
-    /// (top, K1 and K3) or `drops[1]` (bottom, K2 and K4) inside the piston's d/2, toward the axis, so that
-    /// its gap is the film thickness at that edge on the thrust axis (`SkirtDesign::edge_drops`).
-    pub fn on_profile(self, [top, bottom]: [f64; 2]) -> Self {
-        let mut bodies = self.bodies;
-        let top_height = bodies.corners[0].0;
-        for (z, w, side) in &mut bodies.corners {
-            // σ = +1 on the −D/2 wall, where w = −(d/2 + a): a drop moves w toward the axis by σ·drop.
-            *w += *side * if *z == top_height { top } else { bottom };
-        }
-        bodies.into()
-    }
-
     /// Pin O3 position (x, y), m.
     pub fn pin(&self, phi: &Vector3<f64>) -> Vector2<f64> {
         self.bodies.links[0] * along(phi[0]) + self.bodies.links[1] * along(phi[1])

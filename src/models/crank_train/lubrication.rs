@@ -203,11 +203,6 @@ impl Lubrication {
         Self::try_from(design).map(Some)
     }
 
-    /// The skirt profile's drops at its top and bottom edges, m (`SkirtDesign::edge_drops`).
-    pub fn edge_drops(&self) -> [f64; 2] {
-        self.skirt.design().edge_drops()
-    }
-
     /// The largest RK4 step, s: τ / [`STEPS_PER_RELAXATION`].
     pub fn largest_step(&self) -> f64 {
         self.design.relaxation / STEPS_PER_RELAXATION

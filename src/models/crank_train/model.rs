@@ -471,7 +471,11 @@ mod tests {
         for skirt_model in [1, 2] {
             let hot = Parameters { skirt_model, piston_temperature: 373.15, liner_temperature: 383.15, ..Parameters::default() };
             let geometry = RunningGeometry::of(&hot);
-            let cold = Parameters { bore: geometry.bore, piston_diameter: geometry.piston_diameter, ..Parameters { skirt_model, ..Parameters::default() } };
+            let cold = Parameters {
+                bore: geometry.bore,
+                piston_diameter: geometry.piston_diameter,
+                ..Parameters { skirt_model, ..Parameters::default() }
+            };
             let (a, b) = (run(&hot, &Inputs::default(), 1e-3, 30), run(&cold, &Inputs::default(), 1e-3, 30));
             assert_eq!(a, b, "skirt_model {skirt_model}");
             assert!(a.iter().all(|out| (out.running_clearance - 24.8792e-6).abs() < 1e-15), "{}", a[0].running_clearance);

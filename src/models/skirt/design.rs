@@ -10,9 +10,8 @@ use crate::models::ModelError;
 /// top edge, the corners K1, K3) to `pin_from_top − length` (its bottom edge, K2, K4). A point of the
 /// skirt at axial distance z above the pin and angle θ from +x has the film thickness
 /// `h = R − r(z)·cos φ3 − e(z)·cos θ + ovality·sin²θ`, with `e(z) = x − z·sin φ3 − a·cos φ3` the axis's
-/// lateral position there and `r(z) = d/2 − drop(z)`: at θ = 0 and π on the skirt's edges it is exactly
-/// the crank train's corner gap (K3/K4 on +x, K1/K2 on −x; the corners sit on the profiled edges,
-/// [`SkirtDesign::edge_drops`]), so a corner touches the liner where the film at its edge reaches zero.
+/// lateral position there and `r(z) = d/2 − drop(z)`: at θ = 0 and π with no drop it is exactly the
+/// linkage's corner gap (K3/K4 on +x, K1/K2 on −x), so a collapsed film meets the dry contact.
 /// `d` and `D` are the running (hot) diameters; the profile and ovality are the hot shape's drops below d/2.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SkirtDesign {
@@ -66,13 +65,6 @@ impl SkirtDesign {
             boundary_friction: Self::DEFAULT_BOUNDARY_FRICTION,
             grid: Self::DEFAULT_GRID,
         }
-    }
-
-    /// The profile's radial drop at the skirt's top and bottom edges, m: where the crank train puts its
-    /// corners on the lubricated skirt, so that a corner's gap is the film thickness at its edge on the
-    /// thrust axis (θ = 0 or π, where the ovality's `sin²θ` term vanishes).
-    pub fn edge_drops(&self) -> [f64; 2] {
-        [self.profile.drop(0.0, self.length), self.profile.drop(self.length, self.length)]
     }
 
     /// Refuses a design the film cannot be solved on, naming the field and the reason.
