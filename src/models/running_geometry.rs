@@ -38,19 +38,19 @@ impl RunningGeometry {
     /// design whose piston does not fit its bore when hot is refused, naming the temperatures.
     pub fn apply(p: &Parameters) -> Result<Parameters, ModelError> {
         let hot = Self::of(p);
-        if !(hot.clearance() > 0.0) {
-            return Err(ModelError(format!(
-                "running clearance {:e} m ≤ 0: at piston_temperature = {} K and liner_temperature = {} K (reference_temperature = {} K) \
-                 the piston ({} m) does not fit the bore ({} m); lower the piston's temperature or piston_expansion, or give a larger bore",
-                hot.clearance(),
-                p.piston_temperature,
-                p.liner_temperature,
-                p.reference_temperature,
-                hot.piston_diameter,
-                hot.bore
-            )));
+        if hot.clearance() > 0.0 {
+            return Ok(Parameters { bore: hot.bore, piston_diameter: hot.piston_diameter, ..p.clone() });
         }
-        Ok(Parameters { bore: hot.bore, piston_diameter: hot.piston_diameter, ..p.clone() })
+        Err(ModelError(format!(
+            "running clearance {:e} m ≤ 0: at piston_temperature = {} K and liner_temperature = {} K (reference_temperature = {} K) \
+             the piston ({} m) does not fit the bore ({} m); lower the piston's temperature or piston_expansion, or give a larger bore",
+            hot.clearance(),
+            p.piston_temperature,
+            p.liner_temperature,
+            p.reference_temperature,
+            hot.piston_diameter,
+            hot.bore
+        )))
     }
 }
 
