@@ -249,3 +249,19 @@ fn core_errors_give_the_engine_time() {
     let message = model.advance(&speed(125.66), 1001.0, &mut Vec::new()).unwrap_err().0;
     assert!(message.contains("at t = 1 s") && message.contains("10⁷ RK4 steps"), "{message}");
 }
+
+/// The roller's walls stand at the running clearance: the thesis case's ρ = 0.015 (bore 0.11 m on an 80 mm piston)
+/// with the piston grown by 0.08 × 21e-6 × 80 = 134.4 µm and the bore by 0.11 × 11e-6 × 80 = 96.8 µm (100 °C
+/// from 20 °C) runs as the cold design of those diameters, with a running clearance of 0.03 m − 37.6 µm.
+#[test]
+fn the_roller_runs_at_its_running_clearance() {
+    let cold = thesis_case(0.05, 0.015, 0.9);
+    let hot = Parameters { piston_temperature: 373.15, liner_temperature: 373.15, ..cold.clone() };
+    let grown = Parameters { bore: 0.11 + 96.8e-6, piston_diameter: 0.08 + 134.4e-6, ..cold };
+    let (hot_run, grown_run) = (run(&hot, 1.0, 4), run(&grown, 1.0, 4));
+    assert_eq!(hot_run.1.len(), grown_run.1.len());
+    for (a, b) in hot_run.1.iter().zip(&grown_run.1) {
+        assert!((a.crank_angle - b.crank_angle).abs() < 1e-9 && (a.normal_velocity_before - b.normal_velocity_before).abs() < 1e-9);
+    }
+    assert!((outputs(&hot_run.0).running_clearance - (0.03 - 37.6e-6)).abs() < 1e-15);
+}

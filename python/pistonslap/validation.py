@@ -9,6 +9,7 @@ markdown its page holds (`python/tests/test_validation_tables.py` checks every p
     python -m pistonslap.validation landing-clearance ENGINE RPM ...  landings on oil against the clearance
     python -m pistonslap.validation vanishing-film ENGINE RPM         landings as the oil thins toward the dry skirt
     python -m pistonslap.validation landing-motion ENGINE RPM         the thrust landing's translation and tilt, ±1 mm
+    python -m pistonslap.validation hot-film ENGINE RPM [RPM ...]     thinnest films on oil, cold against ENGINE-hot
 
 The runs are cached per process, so that the tests which assert on the same runs share them.
 """
@@ -23,6 +24,7 @@ from fmpy.fmi2 import FMU2Slave
 from .demo import SAMPLE_DEG
 from .fmu import CENTRED, CYCLE, fmu_path, simulate, simulate_with_logs
 from .presets import PRESETS
+from .tables import sampled_metrics
 
 MJ = 1e3
 
@@ -255,6 +257,58 @@ def landing_motion_table(engine, rpm):
     return _table(header, rows)
 
 
+# --- the hot running clearance ---------------------------------------------------------------------------------------
+
+
+@cache
+def oil_cycle(engine, rpm):
+    """`sampled_metrics` of the last of `OIL_CYCLES` cycles (about firing TDC) of preset `engine` on oil at `rpm`,
+    sampled as `last_cycle` samples, with its running clearance and skirt FMEP."""
+    omega = rpm * np.pi / 30
+    interval = np.radians(SAMPLE_DEG) / omega
+    values = dict(PRESETS[engine].values, crank_speed=omega, skirt_model=2)
+    result = simulate(
+        stop_time=(OIL_CYCLES * CYCLE - CENTRED) / omega + interval, output_interval=interval, start_values=values
+    )
+    last = result[-1]
+    metrics = sampled_metrics(result, OIL_CYCLES)
+    return dict(metrics, running_clearance=last["running_clearance"], cycle_skirt_fmep=last["cycle_skirt_fmep"])
+
+
+def _thinnest(m, wall):
+    angle = np.degrees(m[f"cycle_min_film_crank_angle_{wall}"])
+    return f"{m[f'cycle_min_film_thickness_{wall}'] * 1e6:.3g} µm at {angle:.0f}°".replace("-", "−")
+
+
+def hot_film_table(engine, speeds):
+    """The thinnest film per side on oil, preset `engine` at 20 °C against `engine-hot` at its running temperature."""
+    rows = []
+    for rpm in speeds:
+        for name, shown in ((engine, "cold"), (f"{engine}-hot", "hot")):
+            m = oil_cycle(name, rpm)
+            rows.append(
+                (
+                    f"{rpm:g} rpm",
+                    shown,
+                    f"{m['running_clearance'] * 1e6:.3g} µm",
+                    _thinnest(m, "thrust"),
+                    _thinnest(m, "antithrust"),
+                    f"{m['cycle_max_asperity_force']:.3g} N",
+                    f"{m['cycle_skirt_fmep'] * 1e-5:.3f} bar",
+                )
+            )
+    header = (
+        "speed",
+        "temperature",
+        "running clearance",
+        "thinnest film, thrust",
+        "thinnest film, anti-thrust",
+        "peak asperity load",
+        "skirt FMEP",
+    )
+    return _table(header, rows)
+
+
 # --- a fed pressure: held against first-order input derivatives ------------------------------------------------------
 
 #: rad/s, the crank speed of the fed-pressure runs (1200 rpm).
@@ -449,6 +503,7 @@ TABLES = {
     "landing-clearance": lambda engine, *speeds: landing_clearance_table(engine, [float(s) for s in speeds]),
     "vanishing-film": vanishing_film_table,
     "landing-motion": landing_motion_table,
+    "hot-film": lambda engine, *speeds: hot_film_table(engine, [float(s) for s in speeds]),
 }
 
 

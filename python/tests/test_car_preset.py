@@ -4,10 +4,13 @@ the major-thrust side changes the power-stroke slap over as offset pistons are d
 
 import numpy as np
 import pytest
+from fmpy.fmi1 import FMICallException
 
 from pistonslap.fmu import simulate, simulate_with_events
 from pistonslap.presets import PRESETS
 from pistonslap.tables import side_changes
+
+from harness import FMI_ERROR, Instance
 
 CAR = PRESETS["ford-gasoline"].values
 
@@ -64,3 +67,31 @@ def test_a_thrust_side_pin_offset_changes_over_earlier_on_the_lower_skirt(rpm):
     toward, centred, away = (power_stroke_landing(offset, rpm) for offset in (1e-3, 0.0, -1e-3))
     assert toward[0] < min(centred[0], away[0]) - 1.0, (toward, centred, away)
     assert toward[1] == 4 and away[1] == 3, (toward, away)
+
+
+def test_the_running_clearance_of_the_hot_car_engine_is_the_hand_calculation():
+    """At 100 °C from 20 °C the 80 mm piston grows 0.08 × 21e-6 × 80 = 134.4 µm and the 80.08 mm bore
+    0.08008 × 11e-6 × 80 = 70.4704 µm: 80 + 70.4704 − 134.4 = 16.0704 µm of running clearance, on both skirt models."""
+    for skirt_model in (1, 2):
+        values = dict(PRESETS["ford-gasoline-hot"].values, skirt_model=skirt_model)
+        result = simulate(stop_time=1e-4, output_interval=1e-4, start_values=values, output=["running_clearance"])
+        assert result["running_clearance"][-1] == pytest.approx(16.0704e-6, abs=1e-15)
+    cold = simulate(stop_time=1e-4, output_interval=1e-4, start_values=CAR, output=["running_clearance"])
+    assert cold["running_clearance"][-1] == pytest.approx(80e-6, abs=1e-15)
+
+
+def test_a_piston_too_hot_for_its_bore_is_refused_at_initialization(unpacked_fmu):
+    """The skirt at 150 °C in the 100 °C liner: 0.08 × 21e-6 × 130 = 218.4 µm of growth against the bore's 70.4704 µm
+    and the 80 µm clearance, −67.9296 µm: fmi2ExitInitializationMode refuses it, naming the temperatures."""
+    with Instance(unpacked_fmu) as fmu:
+        fmu.slave.setupExperiment(startTime=0.0)
+        fmu.set(**dict(PRESETS["ford-gasoline-hot"].values, piston_temperature=423.15))
+        fmu.slave.enterInitializationMode()
+        with pytest.raises(FMICallException) as refusal:
+            fmu.slave.exitInitializationMode()
+        assert refusal.value.status == FMI_ERROR
+        message = fmu.messages(FMI_ERROR)[-1]
+    assert message.startswith("fmi2ExitInitializationMode") and "m ≤ 0" in message, message
+    clearance = float(message.split("running clearance ")[1].split(" m")[0])
+    assert clearance == pytest.approx(-67.9296e-6, abs=1e-15), message
+    assert "piston_temperature = 423.15 K" in message and "liner_temperature = 373.15 K" in message, message

@@ -11,6 +11,7 @@ mod error;
 pub mod gas;
 pub mod numerics;
 pub mod roller;
+mod running_geometry;
 pub mod skirt;
 
 pub use contract::{InputDerivatives, Inputs, Outputs, Parameters};
@@ -20,3 +21,4 @@ pub use engine_model::{EngineEvent, EngineEventKind, EngineModel, CYCLE};
 pub use error::{check_real, ModelError};
 pub use numerics::{EnergyBalance, InputPolynomial, PowerFlows};
 pub use roller::{Forcing, Jet, Roller, RollerMechanism, RollerSystem, SlidingRegion};
+pub use running_geometry::RunningGeometry;

@@ -163,7 +163,8 @@ pub fn rubbing_engine(r: &mut Random) -> Design {
 }
 
 /// An engine on a lubricated skirt: oil of 2–20 mPa·s, each side 50–90° of arc, a barrel dropping
-/// up to 30 µm at either edge; the Reynolds grid coarse (6 × 8) to keep the family fast.
+/// up to 30 µm at either edge, running hot one time in two (`running_temperatures`); the Reynolds grid
+/// coarse (6 × 8) to keep the family fast.
 pub fn lubricated_engine(r: &mut Random) -> Design {
     let design = engine(r);
     let params = Parameters {
@@ -175,7 +176,30 @@ pub fn lubricated_engine(r: &mut Random) -> Design {
         skirt_grid_axial: 8,
         ..design.params
     };
-    Design { params, ..design }
+    Design { params: running_temperatures(r, params), ..design }
+}
+
+/// One time in two, `params` at running temperatures: an aluminium piston (18–24e-6 1/K) in an iron liner
+/// (10–12e-6 1/K), the liner 0–100 K above a reference of 0–40 °C, the piston as hot as leaves 10–100 % of
+/// the clearance (above or below the liner's temperature as that asks); otherwise as drawn (at the reference).
+fn running_temperatures(r: &mut Random, params: Parameters) -> Parameters {
+    if r.next() < 0.5 {
+        return params;
+    }
+    let reference_temperature = 273.15 + r.between(0.0, 40.0);
+    let (piston_expansion, liner_expansion) = (r.between(18e-6, 24e-6), r.between(10e-6, 12e-6));
+    let liner_temperature = reference_temperature + r.between(0.0, 100.0);
+    let hot_bore = params.bore * (1.0 + liner_expansion * (liner_temperature - reference_temperature));
+    let hot_clearance = (params.bore - params.piston_diameter) * r.between(0.1, 1.0);
+    let piston_rise = (hot_bore - hot_clearance - params.piston_diameter) / (params.piston_diameter * piston_expansion);
+    Parameters {
+        reference_temperature,
+        liner_temperature,
+        piston_temperature: reference_temperature + piston_rise,
+        piston_expansion,
+        liner_expansion,
+        ..params
+    }
 }
 
 /// A design of the declared space (`declared`) on a lubricated skirt over the film's own ranges: oil of

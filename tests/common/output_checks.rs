@@ -4,7 +4,7 @@
 
 use pistonslap::fmi::{Causality, Kind};
 use pistonslap::fmus::piston_slap::{value_reference, DESCRIPTION, VARIABLES};
-use pistonslap::models::{Inputs, Outputs, Parameters};
+use pistonslap::models::{Inputs, Outputs, Parameters, RunningGeometry};
 
 /// Deepest a corner may lie outside the bore at a communication point, m: ten times the depth the core
 /// refuses at a step's end (measured: 2.6e-10 m at points read from the dense output).
@@ -51,18 +51,19 @@ fn get(values: &[f64], name: &str) -> f64 {
 
 /// The gaps of the corners to the bore, m, from the outputs alone. Variant 1: K1..K4 from `piston_lateral`
 /// and `piston_tilt` by the documented corner geometry (DESIGN.md §3: K1, K2 on the −D/2 wall at the
-/// pin's height and `skirt_length` below it, the pin `pin_offset` toward +x). Variant 2: the roller's
-/// `piston_lateral` against the walls at ∓(bore − piston_diameter)/2.
+/// pin's height and `skirt_length` below it, the pin `pin_offset` toward +x). Variant 2: the roller's `piston_lateral` against the walls at
+/// ∓(bore − piston_diameter)/2. Both with the diameters at their running temperatures.
 pub fn corner_gaps(p: &Parameters, values: &[f64]) -> Vec<f64> {
     let (lateral, tilt) = (get(values, "piston_lateral"), get(values, "piston_tilt"));
+    let hot = RunningGeometry::of(p);
     if p.model_variant == 2 {
-        let clearance = (p.bore - p.piston_diameter) / 2.0;
+        let clearance = (hot.bore - hot.piston_diameter) / 2.0;
         return vec![clearance + lateral, clearance - lateral];
     }
-    let (half, a, h, s) = (p.piston_diameter / 2.0, p.pin_offset, p.pin_height, p.skirt_length);
+    let (half, a, h, s) = (hot.piston_diameter / 2.0, p.pin_offset, p.pin_height, p.skirt_length);
     let corners = [(h, -(half + a), 1.0), (h - s, -(half + a), 1.0), (h, half - a, -1.0), (h - s, half - a, -1.0)];
     let (sin, cos) = (libm::sin(tilt), libm::cos(tilt));
-    corners.iter().map(|&(z, w, side)| p.bore / 2.0 + side * (lateral - z * sin + w * cos)).collect()
+    corners.iter().map(|&(z, w, side)| hot.bore / 2.0 + side * (lateral - z * sin + w * cos)).collect()
 }
 
 /// What the outputs `now` after `before` of a design with parameters `p` say against the model, if

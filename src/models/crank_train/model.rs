@@ -10,7 +10,9 @@ use super::kinematics::SliderCrank;
 use super::linkage::LinkAngles;
 use crate::dynamics::{DynamicsError, StepCounts, Stepper, StepperOptions};
 use crate::models::skirt::PressureMap;
-use crate::models::{EngineEvent, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters};
+use crate::models::{
+    EngineEvent, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, RunningGeometry,
+};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -50,6 +52,8 @@ pub struct CrankTrain {
     impact_impulse: [f64; 2],
     /// The asperities' elastic energy where the stepper's totals start, J (`skirt_outputs`).
     pub(super) asperity_energy_start: f64,
+    /// The diametral clearance at running temperature, m (`RunningGeometry`).
+    running_clearance: f64,
 }
 
 /// How the start departs from the nominal (zero-clearance) slider-crank state: the pin's lateral
@@ -104,7 +108,12 @@ fn dynamics_error(e: DynamicsError) -> ModelError {
 
 impl CrankTrain {
     /// Builds with explicit integrator options (the FMU uses `MAX_STEP`, `LOCAL_ERROR` and the core's tolerances).
+    /// The model runs with the bore and piston diameter at their running temperatures (`RunningGeometry`),
+    /// the dry corners and the lubricated skirt alike.
     pub fn with_options(params: &Parameters, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
+        params.validate()?;
+        let running = RunningGeometry::apply(params)?;
+        let params = &running;
         validate(params)?;
         check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
         let engine = Engine::new(params)?;
@@ -141,6 +150,7 @@ impl CrankTrain {
             impact_friction_energy: 0.0,
             impact_impulse: [0.0; 2],
             asperity_energy_start: 0.0,
+            running_clearance: params.bore - params.piston_diameter,
         };
         model.asperity_energy_start = model.asperity_energy();
         Ok(model)
@@ -380,6 +390,7 @@ impl EngineModel for CrankTrain {
         let (_, books) = stepper.powers();
         out.drive_work_total = books[DRIVE] + self.impulse_work;
         (out.gas_work_total, out.damping_energy_total) = (books[GAS], books[DAMPING]);
+        out.running_clearance = self.running_clearance;
         self.write_skirt((&phi, &trig, &phid), &gaps, &forces, out);
     }
 }
@@ -460,6 +471,30 @@ mod tests {
             }
         }
         assert!(contacts > 100, "the default cycle slides on both walls: {contacts}");
+    }
+
+    /// Both skirt models run with the diameters at their running temperatures: a design at 100 °C skirt and
+    /// 110 °C liner runs as the design at the reference temperature with those hot diameters, bit for bit,
+    /// and `running_clearance` is the hand calculation of `RunningGeometry`'s test (24.8792 µm).
+    #[test]
+    fn a_hot_design_runs_as_the_design_of_its_hot_diameters() {
+        for skirt_model in [1, 2] {
+            let hot = Parameters { skirt_model, piston_temperature: 373.15, liner_temperature: 383.15, ..Parameters::default() };
+            let geometry = RunningGeometry::of(&hot);
+            let cold = Parameters {
+                bore: geometry.bore,
+                piston_diameter: geometry.piston_diameter,
+                ..Parameters { skirt_model, ..Parameters::default() }
+            };
+            let (a, b) = (run(&hot, &Inputs::default(), 1e-3, 30), run(&cold, &Inputs::default(), 1e-3, 30));
+            assert_eq!(a, b, "skirt_model {skirt_model}");
+            assert!(a.iter().all(|out| (out.running_clearance - 24.8792e-6).abs() < 1e-15), "{}", a[0].running_clearance);
+        }
+        let defaults = run(&Parameters::default(), &Inputs::default(), 1e-3, 1);
+        assert_eq!(defaults[0].running_clearance, 0.08008 - 0.08);
+        let seized = Parameters { piston_temperature: 413.15, liner_temperature: 383.15, ..Parameters::default() };
+        let message = CrankTrain::new(&seized, 0.0).unwrap_err().0;
+        assert!(message.starts_with("running clearance -4.23208") && message.contains("≤ 0"), "{message}");
     }
 
     #[test]

@@ -20,7 +20,7 @@
 use super::forcing::{AtAngle, Forcing, RollerMechanism};
 use crate::dynamics::{DynamicsError, Evaluation, Event, Stepper, StepperOptions, System};
 use crate::models::numerics::LastValue;
-use crate::models::{EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, CYCLE};
+use crate::models::{EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, RunningGeometry, CYCLE};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -244,9 +244,11 @@ impl Roller {
 
 impl EngineModel for Roller {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
-        let p = params;
+        let variant = |e: ModelError| ModelError(format!("model_variant 2: {e}"));
+        params.validate().map_err(variant)?;
+        // The bore and piston diameter at their running temperatures.
+        let p = &RunningGeometry::apply(params).map_err(variant)?;
         let clearance = (p.bore - p.piston_diameter) / 2.0;
-        p.validate().map_err(|e| ModelError(format!("model_variant 2: {e}")))?;
         require(p.crank_mode == 1, "crank_mode", "1 (the thesis's crank turns at a prescribed speed)")?;
         require(p.skirt_model == 1, "skirt_model", "1 (the roller has no skirt to lubricate)")?;
         // The model is linear in ψ ≤ ρ/Λ: beyond a few degrees it no longer describes the mechanism.
@@ -398,6 +400,7 @@ impl EngineModel for Roller {
         [out.liner_force_antithrust, out.liner_force_thrust] = [forces[UPPER], forces[LOWER]];
         out.lateral_kinetic_energy = 0.5 * self.piston_mass * out.piston_lateral_velocity * out.piston_lateral_velocity;
         out.crank_speed_actual = omega;
+        out.running_clearance = 2.0 * self.stepper.system().rho * l;
         out.kinetic_energy = mechanism.kinetic_energy(theta, psi, dpsi) * self.energy_scale() + 0.5 * self.crank_inertia * omega * omega;
     }
 }

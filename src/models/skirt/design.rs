@@ -12,6 +12,7 @@ use crate::models::ModelError;
 /// `h = R − r(z)·cos φ3 − e(z)·cos θ + ovality·sin²θ`, with `e(z) = x − z·sin φ3 − a·cos φ3` the axis's
 /// lateral position there and `r(z) = d/2 − drop(z)`: at θ = 0 and π with no drop it is exactly the
 /// linkage's corner gap (K3/K4 on +x, K1/K2 on −x), so a collapsed film meets the dry contact.
+/// `d` and `D` are the running (hot) diameters; the profile and ovality are the hot shape's drops below d/2.
 #[derive(Clone, Debug, PartialEq)]
 pub struct SkirtDesign {
     /// Bore radius D/2, m.
