@@ -4,6 +4,7 @@
                     [--firing-tdc DEG] [--friction MU] [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM]
                     [--restitution E] [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S] [--crank-0-720]
                     [--skirt-map DEG] [--liner-loads FILE.csv [--liner-load-step DEG] [--liner-load-spectrum]]
+                    [--plots LIST] [--no-gif]
 
 Values apply in that order, a later one over an earlier one: the engine preset, the parameter file, then the options.
 What none sets keeps the FMU's default (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
@@ -11,14 +12,17 @@ What none sets keeps the FMU's default (Awrejcewicz & Kudra's engine: 1200 rpm, 
 
 import os
 import shutil
+import tempfile
+import time
 from pathlib import Path
 
 import fmpy
 import numpy as np
 
-from . import liner_load
+from . import liner_load, trace_file
 from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate_with_logs
 from .presets import PRESETS, help_text
+from .progress import Progress
 from .refusal import Parser, Refusal, check_start_values, number
 from .settings import parse_set, read_params, to_fmu
 from .tables import LANDING_RUN_ON, SAMPLE_DEG, WALLS, cycle_metrics, energy_unit, slap_rows, write_table
@@ -26,6 +30,9 @@ from .trace_tdc import place_firing_tdc
 
 #: Magnification of clearance and tilt in the piston-position pictures.
 MAGNIFICATION = 200
+#: The plots `--plots` may name, and those drawn by default (the animation takes most of a run's time).
+PLOTS = ("slap", "forces", "motion", "positions", "gif", "film")
+DEFAULT_PLOTS = ("slap", "forces", "motion", "positions", "film")
 
 
 def _parser():
@@ -45,7 +52,9 @@ def _parser():
     parser.add_argument(
         "--pressure-trace",
         type=Path,
-        help="CSV trace (header: crank angle [deg], pressure [bar|Pa|kPa|MPa|psi] absolute|gauge)",
+        help="cylinder pressure over 720°: a CSV or text export (',', ';' or tab apart; units in [..], (..) or a row "
+        "under the header; absolute unless the header says gauge); a bare name not in the working directory is "
+        "looked up in the FMU's resources (full_load.csv, motored.csv)",
     )
     parser.add_argument(
         "--firing-tdc",
@@ -96,7 +105,27 @@ def _parser():
         action="store_true",
         help="also plot the liner load's spectrum in engine orders and third-octave bands (FILE_spectrum.png)",
     )
+    parser.add_argument(
+        "--plots",
+        default=",".join(DEFAULT_PLOTS),
+        metavar="LIST",
+        help=f"the plots to draw, comma-separated, of {', '.join(PLOTS)} (film on oil only), 'all' or 'none' "
+        f"(default {','.join(DEFAULT_PLOTS)}: gif, the animated piston positions, takes seconds more)",
+    )
+    parser.add_argument("--no-gif", action="store_true", help="draw no animation, whatever --plots says")
     return parser
+
+
+def plots_asked(args):
+    """The plots to draw, of `PLOTS`."""
+    text = args.plots.strip().lower()
+    asked = PLOTS if text == "all" else () if text == "none" else tuple(w.strip() for w in text.split(",") if w.strip())
+    unknown = [w for w in asked if w not in PLOTS]
+    if unknown:
+        raise Refusal(
+            f"--plots {args.plots}: no plot {', '.join(unknown)}; give some of {', '.join(PLOTS)}, all or none"
+        )
+    return tuple(w for w in asked if not (args.no_gif and w == "gif"))
 
 
 def check(args):
@@ -114,6 +143,9 @@ def check(args):
         )
     if args.cycles < 1:
         raise Refusal(f"--cycles = {args.cycles}: give a whole number of engine cycles >= 1")
+    if args.out.exists() and not args.out.is_dir():
+        raise Refusal(f"--out {args.out}: is a file; give a folder (new or existing) for the results")
+    plots_asked(args)
     if args.skirt_map is not None:
         number(args.skirt_map, "--skirt-map", unit="°", meaning="the crank angle of the skirt map")
     if args.liner_loads is None and (args.liner_load_step is not None or args.liner_load_spectrum):
@@ -134,17 +166,14 @@ def liner_load_step(args):
 
 
 def all_start_values(args, md, defaults):
-    """The start values (SI) of the preset, the parameter file, the options and --set, in that order, and what
-    was said of a --pressure-trace's firing TDC (or None)."""
-    values, placed = dict(PRESETS[args.engine].values) if args.engine else {}, None
+    """The start values (SI) of the preset, the parameter file, the options and --set, in that order, and the
+    pressure trace to run (`TraceRun`, or None)."""
+    values = dict(PRESETS[args.engine].values) if args.engine else {}
     if args.params:
         values.update(read_params(args.params, md))
     values.update(start_values(args, dict(defaults, **values)))
     if args.pressure_trace is not None:
-        if not args.pressure_trace.is_file():
-            raise Refusal(f"--pressure-trace {args.pressure_trace}: no such file")
-        trace, placed = place_firing_tdc(args.pressure_trace, args.out, args.firing_tdc)
-        values.update(pressure_source=3, pressure_trace=str(Path(trace).resolve()))
+        values.update(pressure_source=3, pressure_trace=str(args.pressure_trace))
     if args.friction is not None:
         values["friction"] = number(args.friction, "--friction", low=0, meaning="the friction coefficient")
     values.update(parse_set(args.set, md))
@@ -153,7 +182,25 @@ def all_start_values(args, md, defaults):
             skirt_map=str((args.out / SKIRT_MAP_PASSES).resolve()),
             skirt_map_crank_angle=np.radians(args.skirt_map % 720),
         )
-    return to_fmu(values, defaults), placed
+    values = to_fmu(values, defaults)
+    trace = values.get("pressure_trace") if values.get("pressure_source") == 3 else None
+    return values, TraceRun(trace, args.firing_tdc) if trace else None
+
+
+class TraceRun:
+    """A pressure trace (`--pressure-trace`, or `pressure_trace` set otherwise) read as exported, its firing TDC
+    placed, and written in the FMU's own form for the run: into a scratch folder to check the start values, into
+    --out once they are accepted, so that a refusal leaves nothing behind."""
+
+    def __init__(self, path, firing_tdc):
+        self.trace = trace_file.load(path, fmu_path())
+        self.shift, self.said = place_firing_tdc(self.trace, firing_tdc)
+
+    def write(self, folder):
+        """The trace as the FMU runs it, written into `folder`; its path."""
+        path = Path(folder) / "pressure_trace_as_run.csv"
+        path.write_text(self.trace.for_fmu(self.shift))
+        return str(path.resolve())
 
 
 def start_values(args, defaults):
@@ -174,10 +221,11 @@ def start_values(args, defaults):
     return values
 
 
-def case_title(p):
-    """The operating point in the words of an engine test sheet; `p` holds every parameter by name (SI)."""
+def case_title(p, trace_name=None):
+    """The operating point in the words of an engine test sheet; `p` holds every parameter by name (SI),
+    `trace_name` names the pressure trace as the user gave it (default: the file's name)."""
     pressure = (
-        f"pressure trace {Path(p['pressure_trace']).name}"
+        f"pressure trace {trace_name or Path(p['pressure_trace']).name}"
         if p.get("pressure_source") == 3
         else f"peak pressure {p['peak_pressure'] * 1e-5:g} bar"
     )
@@ -247,6 +295,7 @@ def _landings(row, side, name):
 
 
 def main(argv=None):
+    started = time.monotonic()
     args = _parser().parse_args(argv)
     check(args)
     try:
@@ -255,13 +304,19 @@ def main(argv=None):
         raise Refusal(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
     md = fmpy.read_model_description(str(fmu_path()))
     defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
-    values, placed = all_start_values(args, md, defaults)
-    # Checked before anything is written: the skirt map's file is the null device until the run.
-    check_start_values(dict(values, skirt_map=os.devnull) if "skirt_map" in values else values, fmu_path(), md)
-    if placed:
-        print(placed)
+    values, trace = all_start_values(args, md, defaults)
     p = dict(defaults, **values)
+    check_speed(p)
     check_liner_loads(args, p)
+    # Checked before anything is written: the trace goes to a scratch folder, the skirt map to the null device.
+    with tempfile.TemporaryDirectory() as scratch:
+        checked = dict(values, skirt_map=os.devnull) if "skirt_map" in values else dict(values)
+        if trace:
+            checked["pressure_trace"] = trace.write(scratch)
+        check_start_values(checked, fmu_path(), md)
+    args.out.mkdir(parents=True, exist_ok=True)
+    if trace:
+        values["pressure_trace"] = trace.write(args.out)
     omega, origin = p["crank_speed"], FROM_FIRING_TDC if args.crank_0_720 else CENTRED
     interval = np.radians(SAMPLE_DEG) / omega
     # The cycle drawn ends at `drawn_end`: the one about the last firing TDC on the axis centred on firing TDC, the
@@ -270,7 +325,8 @@ def main(argv=None):
     drawn_end, landed_by = (args.cycles * CYCLE - origin) / omega, (args.cycles * CYCLE - CENTRED) / omega
     stop_time = landed_by + LANDING_RUN_ON / omega + interval
 
-    args.out.mkdir(parents=True, exist_ok=True)
+    progress = Progress("pistonslap demo: simulating", stop_time)
+    simulating = time.monotonic()
     result, events, landings = simulate_with_logs(
         log_path=args.out / "impact_log.csv",
         landing_log_path=args.out / "landing_log.csv",
@@ -280,10 +336,13 @@ def main(argv=None):
         landed_by=landed_by,
         # the FMU rewrites the skirt map at each pass: the drawn cycle's is the last one by its end
         at_times=[(drawn_end, lambda: keep_skirt_map(args.out))] if args.skirt_map is not None else (),
+        step_finished=progress,
     )
+    progress.done()
+    simulated = time.monotonic() - simulating
     lubricated = p.get("skirt_model") == 2
     per_cycle = cycle_metrics(result, landings)
-    case = (f"{args.engine}: " if args.engine else "") + case_title(p)
+    case = case_title(p, trace.trace.name if trace else None)
     units = {v.name: v.unit or (v.declaredType.unit if v.declaredType else None) for v in md.modelVariables}
     units["time"] = "s"
     written = [
@@ -292,6 +351,8 @@ def main(argv=None):
         args.out / "landing_log.csv",
         write_table(args.out / "cycles.csv", *per_cycle),
     ]
+    if trace:
+        written.append(Path(values["pressure_trace"]))
 
     cycle, angle = last_cycle(result["crank_angle"], origin=origin)
     times = result["time"][cycle]
@@ -299,11 +360,12 @@ def main(argv=None):
     in_cycle = events[window]
     geometry = (p["bore"], p["piston_diameter"], p["skirt_length"], p["pin_height"])
     half_clearance = (p["bore"] - p["piston_diameter"]) / 2
-    written += [
-        plots.piston_motion(
+    asked = plots_asked(args)
+    drawn = {
+        "motion": lambda: plots.piston_motion(
             angle[cycle], result[cycle], half_clearance, args.out / "piston_motion.png", case, origin, lubricated
         ),
-        plots.slap(
+        "slap": lambda: plots.slap(
             in_cycle,
             slap_rows(events, p["slap_threshold"])[window],
             p["slap_threshold"],
@@ -314,8 +376,8 @@ def main(argv=None):
             loads=(angle[cycle], result[cycle]),
             lubricated=lubricated,
         ),
-        plots.forces(angle[cycle], result[cycle], args.out / "forces.png", case, origin),
-        plots.piston_positions(
+        "forces": lambda: plots.forces(angle[cycle], result[cycle], args.out / "forces.png", case, origin),
+        "positions": lambda: plots.piston_positions(
             angle[cycle],
             result[cycle],
             in_cycle,
@@ -325,7 +387,7 @@ def main(argv=None):
             case,
             origin=origin,
         ),
-        plots.piston_animation(
+        "gif": lambda: plots.piston_animation(
             angle[cycle],
             result[cycle],
             in_cycle,
@@ -335,23 +397,43 @@ def main(argv=None):
             case,
             origin=origin,
         ),
-    ]
-    if lubricated:
-        written.append(plots.film(angle[cycle], result[cycle], args.out / "film.png", case, origin))
+        "film": lambda: plots.film(angle[cycle], result[cycle], args.out / "film.png", case, origin),
+    }
+    written += [drawn[name]() for name in PLOTS if name in asked and (lubricated or name != "film")]
     if args.skirt_map is not None:
         (args.out / SKIRT_MAP_PASSES).unlink(missing_ok=True)
         written += [
             args.out / "skirt_map.csv",
             skirt_map.plot(skirt_map.read(args.out / "skirt_map.csv"), args.out / "skirt_map.png", case),
         ]
+    print(operating_point(args, case, trace))
     print(
-        f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. "
+        f"{args.cycles} cycles simulated to t = {result['time'][-1]:g} s in {simulated:.1f} s ({fmu_path().name}). "
         + summary(dict(zip(per_cycle[0].dtype.names, per_cycle[0][-1].tolist(), strict=True)), lubricated)
     )
     if args.liner_loads is not None:
         written += write_liner_loads(args, values, omega, origin, case, plots)
     for path in written:
         print(f"wrote {path}")
+    print(f"done in {time.monotonic() - started:.1f} s, of which the simulation {simulated:.1f} s")
+
+
+def operating_point(args, case, trace):
+    """The run's first line: the engine, where its values came from, the operating point, and the trace's reading."""
+    engine = f"engine {args.engine}" if args.engine else "engine: the FMU's defaults (Awrejcewicz & Kudra)"
+    sources = [f"parameters {args.params}"] if args.params else []
+    sources += ["--set " + " ".join(args.set)] if args.set else []
+    line = f"{engine}{' with ' + ', '.join(sources) if sources else ''}; {case}"
+    return line + (f"\n{trace.said}" if trace else "")
+
+
+def check_speed(p):
+    """Refuses a crank speed the demo cannot sample at (`p`: every start value, SI): it samples in crank angle."""
+    if not p["crank_speed"] > 0:
+        raise Refusal(
+            f"crank_speed = {p['crank_speed'] * 30 / np.pi:g} rpm: the demo samples the cycle in crank angle; give a "
+            "crank speed > 0 (crank_speed=1200rpm)"
+        )
 
 
 #: The file the FMU rewrites at each pass of the skirt map's crank angle; `keep_skirt_map` copies the drawn cycle's.
