@@ -20,11 +20,12 @@ import fmpy
 import numpy as np
 
 from . import liner_load, trace_file
+from .cycle_figures import SETTLED, change, cycle_before, figures
 from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate_with_logs
 from .presets import PRESETS, help_text
 from .progress import Progress
 from .refusal import Parser, Refusal, check_start_values, number
-from .settings import parse_set, read_params, to_fmu
+from .settings import parse_set, read_params, to_fmu, within_range
 from .tables import LANDING_RUN_ON, SAMPLE_DEG, WALLS, cycle_metrics, energy_unit, slap_rows, write_table
 from .trace_tdc import place_firing_tdc
 
@@ -131,7 +132,7 @@ def plots_asked(args):
 def check(args):
     """Refuses options no run can take before anything runs (the FMU checks the rest, `check_start_values`)."""
     if args.rpm is not None:
-        number(args.rpm, "--rpm", low=0, high=30000, low_open=True, unit=" rpm", meaning="the crank speed")
+        number(args.rpm, "--rpm", low=0, low_open=True, unit=" rpm", meaning="the crank speed")
     if args.clearance is not None:
         number(
             args.clearance,
@@ -147,13 +148,21 @@ def check(args):
         raise Refusal(f"--out {args.out}: is a file; give a folder (new or existing) for the results")
     plots_asked(args)
     if args.skirt_map is not None:
-        number(args.skirt_map, "--skirt-map", unit="°", meaning="the crank angle of the skirt map")
+        number(
+            args.skirt_map,
+            "--skirt-map",
+            low=-360,
+            high=720,
+            unit="°",
+            meaning="the crank angle of the skirt map, within the cycle from firing TDC (-360…360° or 0…720°),",
+        )
     if args.liner_loads is None and (args.liner_load_step is not None or args.liner_load_spectrum):
         raise Refusal("--liner-load-step and --liner-load-spectrum go with --liner-loads FILE.csv: give the file")
     if args.liner_loads is not None:
         if args.liner_loads.suffix.lower() != ".csv":
             raise Refusal(f"--liner-loads {args.liner_loads}: give a .csv file name")
         liner_load.samples_per_cycle(liner_load_step(args), "--liner-load-step")
+    same_as_set(args)
     if args.firing_tdc is not None:
         if args.pressure_trace is None:
             raise Refusal("--firing-tdc places the firing TDC of a --pressure-trace: give the trace")
@@ -171,7 +180,7 @@ def all_start_values(args, md, defaults):
     values = dict(PRESETS[args.engine].values) if args.engine else {}
     if args.params:
         values.update(read_params(args.params, md))
-    values.update(start_values(args, dict(defaults, **values)))
+    values.update(start_values(args, dict(defaults, **values), md))
     if args.pressure_trace is not None:
         values.update(pressure_source=3, pressure_trace=str(args.pressure_trace))
     if args.friction is not None:
@@ -203,22 +212,39 @@ class TraceRun:
         return str(path.resolve())
 
 
-def start_values(args, defaults):
-    """FMU start values (SI) for the operating-point options given; `defaults` are the start values so far."""
+#: The operating-point options: (option, the variable it sets, its unit, SI per unit).
+OPTIONS = (
+    ("rpm", "crank_speed", "rpm", np.pi / 30),
+    ("peak_pressure", "peak_pressure", "bar", 1e5),
+    ("clearance", "clearance", "µm", 1e-6),
+    ("restitution", "restitution", "", 1.0),
+    ("pin_offset", "pin_offset", "mm", 1e-3),
+    ("slap_threshold", "slap_threshold", "", 1e-3),
+    ("friction", "friction", "", 1.0),
+)
+
+
+def start_values(args, defaults, md):
+    """FMU start values (SI) for the operating-point options given, each within its variable's declared range;
+    `defaults` are the start values so far."""
     values = {}
-    if args.rpm is not None:
-        values["crank_speed"] = args.rpm * np.pi / 30
-    if args.peak_pressure is not None:
-        values["peak_pressure"] = args.peak_pressure * 1e5
-    if args.clearance is not None:
-        values["bore"] = defaults["piston_diameter"] + args.clearance * 1e-6
-    if args.restitution is not None:
-        values["restitution"] = args.restitution
-    if args.pin_offset is not None:
-        values["pin_offset"] = args.pin_offset * 1e-3
-    if args.slap_threshold is not None:
-        values["slap_threshold"] = args.slap_threshold * 1e-3
+    for option, name, unit, si in OPTIONS:
+        typed = getattr(args, option)
+        if typed is not None and option != "friction":
+            where = f"--{option.replace('_', '-')} {typed:g}"
+            values[name] = within_range(name, typed * si, md, where, (typed, unit) if unit else None)
+    if "clearance" in values:
+        values["bore"] = defaults["piston_diameter"] + values.pop("clearance")
     return values
+
+
+def same_as_set(args):
+    """Refuses an operating-point option and a --set of the same variable (or of the bore and the clearance)."""
+    named = {a.partition("=")[0].strip() for a in args.set}
+    for option, name, _, _ in OPTIONS:
+        said = named & ({"bore", "clearance"} if name == "clearance" else {name})
+        if getattr(args, option) is not None and said:
+            raise Refusal(f"--{option.replace('_', '-')} and --set {said.pop()}=... say the same thing: give one")
 
 
 def case_title(p, trace_name=None):
@@ -237,10 +263,11 @@ def case_title(p, trace_name=None):
 
 
 def summary(row, lubricated):
-    """The last completed cycle in words: slaps (side changes) per wall with their energy, then all impacts; the
+    """The cycle drawn in words: slaps (side changes) per wall with their energy, then all impacts; the
     landings per wall (the largest one's energy, its loss and crank angle) and the wall loads' peak and rise rate; the
     skirt FMEP and, on oil (`lubricated`), the thinnest film per side and the peak film and asperity loads. `row` is
-    the last row of `tables.cycle_metrics`, by column name."""
+    the last row of `tables.cycle_metrics` by column name, its slaps and impacts those of the cycle drawn
+    (`cycle_figures.figures`)."""
     mj = 1e3
     walls = "; ".join(
         f"{row[f'cycle_slaps_{side}']} on the {name} wall, {row[f'cycle_slap_energy_{side}'] * mj:.3g} mJ "
@@ -248,7 +275,7 @@ def summary(row, lubricated):
         for side, name in zip(WALLS, WALL_NAMES, strict=True)
     )
     text = (
-        f"Last cycle: {row['cycle_slap_events']} slaps (landings on the other wall): {walls}. "
+        f"The cycle drawn: {row['cycle_slap_events']} slaps (landings on the other wall): {walls}. "
         f"{row['cycle_impacts']} impacts (every bounce) dissipated {row['cycle_impact_energy'] * mj:.3g} mJ, "
         f"the largest {row['cycle_max_impact_energy_thrust'] * mj:.3g} mJ on the major-thrust wall and "
         f"{row['cycle_max_impact_energy_antithrust'] * mj:.3g} mJ on the anti-thrust wall."
@@ -407,15 +434,40 @@ def main(argv=None):
             skirt_map.plot(skirt_map.read(args.out / "skirt_map.csv"), args.out / "skirt_map.png", case),
         ]
     print(operating_point(args, case, trace))
+    drawn_figures = figures(events, window, p["slap_threshold"])
+    table = per_cycle[0]
+    last = table[-1].tolist() if len(table) else [np.nan] * len(table.dtype.names)
     print(
         f"{args.cycles} cycles simulated to t = {result['time'][-1]:g} s in {simulated:.1f} s ({fmu_path().name}). "
-        + summary(dict(zip(per_cycle[0].dtype.names, per_cycle[0][-1].tolist(), strict=True)), lubricated)
+        + summary(dict(zip(table.dtype.names, last, strict=True), **drawn_figures), lubricated)
     )
+    print(settling(result, events, cycle, origin, drawn_figures, p["slap_threshold"]))
     if args.liner_loads is not None:
         written += write_liner_loads(args, values, omega, origin, case, plots)
     for path in written:
         print(f"wrote {path}")
     print(f"done in {time.monotonic() - started:.1f} s, of which the simulation {simulated:.1f} s")
+
+
+def settling(result, events, cycle, origin, drawn_figures, slap_threshold):
+    """The main figures' change from the cycle before the drawn one (`cycle`, a mask of the samples), with a warning
+    when they have not settled or the run holds no whole cycle before it."""
+    before = cycle_before(result["crank_angle"], cycle, origin)
+    if before is None:
+        turned = (result["crank_angle"][-1] - result["crank_angle"][0]) / CYCLE
+        return (
+            f"Warning: the run holds no whole cycle before the one drawn (the crank turned {turned:.2g} engine "
+            "cycles), whose figures may hold the start-up transient: give more --cycles to see whether they settled."
+        )
+    line, moved = change(
+        drawn_figures, figures(events, in_window(events["time"], result["time"][before]), slap_threshold)
+    )
+    if moved:
+        line += (
+            f"\nWarning: not settled: the {', '.join(moved)} changed by more than {SETTLED:.0%} from the cycle before; "
+            "give more --cycles."
+        )
+    return line
 
 
 def operating_point(args, case, trace):

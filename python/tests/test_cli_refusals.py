@@ -32,6 +32,23 @@ CASES = {
     "too few cycles to count": (["coupled", "--cycles", "2"], ["--cycles"]),
     "missing sweep results": (["map", "nowhere", "--x", "a", "--y", "b", "--metric", "c"], ["results.parquet"]),
     "analysis FMU refusal": (["analysis", "case", "--lam", "0.05", "--rho", "-1"], ["bore"]),
+    "no crank speed in --set": (["demo", "--set", "crank_speed=0rpm"], ["crank_speed = 0 rpm", "more than 0 rpm"]),
+    "a bare crank speed in --set": (["demo", "--set", "crank_speed=3000"], ["crank_speed = 3000", "3000rpm"]),
+    "a speed above the declared maximum": (["demo", "--rpm", "25000"], ["--rpm 25000", "maximum 20000 rpm"]),
+    "a peak pressure above the declared maximum": (
+        ["demo", "--peak-pressure", "1000"],
+        ["--peak-pressure 1000", "1000 bar", "maximum 300 bar"],
+    ),
+    "a negative peak pressure in bar, not Pa": (["demo", "--peak-pressure", "-5"], ["-5 bar", "minimum 0 bar"]),
+    "the same in --set": (["demo", "--set", "peak_pressure=1000bar"], ["peak_pressure = 1000 bar", "300 bar"]),
+    "oil of a million Pa s": (["demo", "--set", "oil_viscosity=1e6"], ["oil_viscosity = 1e+06 Pa.s", "maximum 10"]),
+    "bore and clearance in --set": (
+        ["demo", "--set", "bore=80.1mm", "--set", "clearance=40um"],
+        ["bore and clearance", "give one"],
+    ),
+    "--clearance and --set bore": (["demo", "--clearance", "40", "--set", "bore=80.1mm"], ["--clearance", "bore"]),
+    "a skirt map past the cycle": (["demo", "--skirt-map", "800"], ["--skirt-map", "800", "720"]),
+    "an unknown plot": (["demo", "--plots", "slap,gifs"], ["--plots", "gifs"]),
 }
 
 
@@ -64,6 +81,49 @@ def test_a_bad_spec_is_one_line(tmp_path):
     spec.write_text('name = "x"\ncycles = 0\n[grid]\nbore = [0.08008]\n')
     done = _run(["sweep", str(spec)], tmp_path)
     assert done.returncode == 2 and len(done.stderr.splitlines()) == 1 and "cycles" in done.stderr, done.stderr
+
+
+@pytest.mark.parametrize(
+    "toml, words",
+    [
+        ("crank_speed = 3000\n", ["crank_speed = 3000 names no unit", '"3000 rpm"']),
+        ('crank_speed = "0 rpm"\n', ["crank_speed = 0 rpm", "more than 0"]),
+        ('bore = "80.1 mm"\nclearance = "40 um"\n', ["bore and clearance"]),
+    ],
+)
+def test_a_params_file_is_refused_by_the_entry_at_fault(toml, words, tmp_path):
+    (tmp_path / "engine.toml").write_text(toml)
+    done = _run(["demo", "--params", "engine.toml", "--out", "out"], tmp_path)
+    assert done.returncode == 2 and len(done.stderr.splitlines()) == 1, done.stderr
+    for word in words:
+        assert word in done.stderr, (word, done.stderr)
+    assert not (tmp_path / "out").exists()
+
+
+@pytest.mark.parametrize(
+    "entry, words",
+    [
+        ('[start]\ncrank_speed = "0 rpm"', ["crank_speed = 0 rpm", "more than 0"]),
+        ("[start]\ncrank_speed = 0.0", ["crank_speed = 0.0", "more than 0"]),
+        ('[start]\nbore = 0.0801\n[grid]\nclearance = ["40 um", "60 um"]', ["bore and clearance"]),
+    ],
+)
+def test_a_spec_is_refused_before_any_worker_starts(entry, words, tmp_path):
+    spec = tmp_path / "spec.toml"
+    grid = "" if "[grid]" in entry else "\n[grid]\nrestitution = [0.3, 0.5]"
+    spec.write_text(f'name = "x"\ncycles = 2\n{entry}{grid}\n')
+    done = _run(["sweep", str(spec), "--workers", "1", "--out", "sweeps"], tmp_path)
+    assert done.returncode == 2 and len(done.stderr.splitlines()) == 1, done.stderr
+    for word in words:
+        assert word in done.stderr, (word, done.stderr)
+    assert not (tmp_path / "sweeps").exists(), "nothing is written before the spec is checked"
+
+
+def test_out_naming_an_existing_file_is_refused(tmp_path):
+    (tmp_path / "out").write_text("results of another day\n")
+    done = _run(["demo", "--out", "out"], tmp_path)
+    assert done.returncode == 2 and len(done.stderr.splitlines()) == 1 and "--out out: is a file" in done.stderr
+    assert (tmp_path / "out").read_text() == "results of another day\n"
 
 
 def test_debug_shows_the_traceback(tmp_path):
