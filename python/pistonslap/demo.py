@@ -325,10 +325,14 @@ def main(argv=None):
     started = time.monotonic()
     args = _parser().parse_args(argv)
     check(args)
-    try:
-        from . import plots, skirt_map
-    except ImportError as e:
-        raise Refusal(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
+    asked = plots_asked(args)
+    if asked or args.skirt_map is not None or args.liner_load_spectrum:
+        try:
+            from . import plots, skirt_map
+        except ImportError as e:
+            raise Refusal(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
+    else:
+        plots = skirt_map = None
     md = fmpy.read_model_description(str(fmu_path()))
     defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
     values, trace = all_start_values(args, md, defaults)
@@ -387,7 +391,6 @@ def main(argv=None):
     in_cycle = events[window]
     geometry = (p["bore"], p["piston_diameter"], p["skirt_length"], p["pin_height"])
     half_clearance = (p["bore"] - p["piston_diameter"]) / 2
-    asked = plots_asked(args)
     drawn = {
         "motion": lambda: plots.piston_motion(
             angle[cycle], result[cycle], half_clearance, args.out / "piston_motion.png", case, origin, lubricated

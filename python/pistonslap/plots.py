@@ -448,7 +448,7 @@ def piston_positions(angle, result, events, geometry, magnification, path, case,
     frames = position_frames(angle, result, events, every_deg, origin)
     columns = 8
     rows = -(-len(frames) // columns)
-    fig, axes = plt.subplots(rows, columns, figsize=(1.5 * columns, 2.1 * rows + 1.0), squeeze=False)
+    fig, axes = plt.subplots(rows, columns, figsize=(1.5 * columns, 1.45 * rows + 1.1), squeeze=False)
     for ax, frame in zip(axes.flat, frames, strict=False):
         _draw_piston(ax, frame, geometry, magnification)
     for ax in axes.flat[len(frames) :]:
@@ -457,7 +457,8 @@ def piston_positions(angle, result, events, geometry, magnification, path, case,
         f"Successive piston positions in the bore over one engine cycle (0° = firing TDC)\n{case}", fontsize="medium"
     )
     fig.text(0.5, 0.01, _positions_caption(magnification), ha="center", fontsize="small")
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    # laid out by hand: a tight layout of the many small panels costs a drawing of its own
+    fig.subplots_adjust(left=0.01, right=0.99, bottom=0.05, top=1 - 0.9 / fig.get_figheight(), wspace=0.05, hspace=0.2)
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
