@@ -167,3 +167,12 @@ def test_an_export_that_cannot_be_read_is_refused_in_one_line_leaving_nothing(st
         assert word in line, (word, line)
     assert "pressure_trace_as_run" not in line, "the message names the user's file"
     assert not (tmp_path / "out").exists(), "a refusal leaves nothing behind"
+
+
+def test_a_trace_set_as_a_parameter_is_read_as_exported(tmp_path):
+    """`pressure_trace` from --set (or a parameter file) goes through the same reader as --pressure-trace."""
+    name, text, reference = READ["semicolons and decimal commas"]
+    (tmp_path / name).write_text(text)
+    done = demo("--set", "pressure_source=3", "--set", f"pressure_trace={name}", "--out", "out", cwd=tmp_path)
+    assert done.returncode == 0 and reference in done.stdout, done.stderr
+    np.testing.assert_allclose(as_run(tmp_path / "out")[1], BAR * 1e5, rtol=1e-15)
