@@ -10,10 +10,12 @@ Values apply in that order, a later one over an earlier one: the engine preset, 
 What none sets keeps the FMU's default (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
 """
 
+import multiprocessing
 import os
 import shutil
 import tempfile
 import time
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 import fmpy
@@ -31,8 +33,9 @@ from .trace_tdc import place_firing_tdc
 
 #: Magnification of clearance and tilt in the piston-position pictures.
 MAGNIFICATION = 200
-#: The plots `--plots` may name, and those drawn by default (the animation takes most of a run's time).
-PLOTS = ("slap", "forces", "motion", "positions", "gif", "film")
+#: The plots `--plots` may name, costliest first (the order `draw` takes them in), and those drawn by default (the
+#: animation takes most of a run's time).
+PLOTS = ("gif", "positions", "slap", "motion", "film", "forces")
 DEFAULT_PLOTS = ("slap", "forces", "motion", "positions", "film")
 
 
@@ -429,7 +432,7 @@ def main(argv=None):
         ),
         "film": lambda: plots.film(angle[cycle], result[cycle], args.out / "film.png", case, origin),
     }
-    written += [drawn[name]() for name in PLOTS if name in asked and (lubricated or name != "film")]
+    written += draw([name for name in PLOTS if name in asked and (lubricated or name != "film")], drawn)
     if args.skirt_map is not None:
         (args.out / SKIRT_MAP_PASSES).unlink(missing_ok=True)
         written += [
@@ -471,6 +474,28 @@ def settling(result, events, cycle, origin, drawn_figures, slap_threshold):
             "give more --cycles."
         )
     return line
+
+
+#: The plots being drawn by `draw`, which its forked processes inherit.
+_DRAWING = {}
+
+
+def _draw_one(name):
+    return _DRAWING[name]()
+
+
+def draw(names, drawing):
+    """Draws the plots `names` of `drawing` (name → a function drawing it and returning its path) and returns their
+    paths, in that order: in two forked processes where the machine has two cores (matplotlib draws on one)."""
+    if len(names) < 2 or (os.cpu_count() or 1) < 2 or "fork" not in multiprocessing.get_all_start_methods():
+        return [drawing[name]() for name in names]
+    _DRAWING.clear()
+    _DRAWING.update(drawing)
+    try:
+        with ProcessPoolExecutor(2, mp_context=multiprocessing.get_context("fork")) as pool:
+            return list(pool.map(_draw_one, names))
+    finally:
+        _DRAWING.clear()
 
 
 def operating_point(args, case, trace):

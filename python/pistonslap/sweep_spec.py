@@ -152,7 +152,8 @@ def _value(variables, entry, name, value):
         value = int(value)
     low, high = bound(variable, "min"), bound(variable, "max")
     if (low is not None and value < low) or (high is not None and value > high):
-        raise SpecError(f"{entry} = {value!r} is outside {name}'s range [{low}, {high}]")
+        shown = (-math.inf if low is None else low, math.inf if high is None else high)
+        raise SpecError(f"{entry} = {value!r} is outside {name}'s range [{shown[0]}, {shown[1]}] (SI)")
     if name in POSITIVE and not value > 0:
         raise SpecError(f"{entry} = {value!r}: give more than 0: {POSITIVE[name]}")
     return float(value) if variable.type == "Real" else value

@@ -106,6 +106,7 @@ def test_a_params_file_is_refused_by_the_entry_at_fault(toml, words, tmp_path):
     [
         ('[start]\ncrank_speed = "0 rpm"', ["crank_speed = 0 rpm", "more than 0"]),
         ("[start]\ncrank_speed = 0.0", ["crank_speed = 0.0", "more than 0"]),
+        ("[start]\ncrank_speed = 3000.0", ["crank_speed = 3000.0 is outside", "2094.3", "(SI)"]),
         ('[start]\nbore = 0.0801\n[grid]\nclearance = ["40 um", "60 um"]', ["bore and clearance"]),
     ],
 )
