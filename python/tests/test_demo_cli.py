@@ -102,9 +102,36 @@ def test_progress_is_printed_once_a_run_has_taken_its_quiet_time():
     progress = Progress("run", stop_time=1.0, quiet_for=0.0, stream=stream)
     for k in range(1, 101):
         progress(k / 100)
-    assert stream.getvalue().split("\n")[:-1] == [f"\rrun: {p:3d} % of the run, 0 s" for p in range(10, 101, 10)]
+    assert stream.getvalue().split("\n")[:-1] == [f"run: {p:3d} % of the run, 0 s" for p in range(10, 101, 10)]
     quiet = io.StringIO()
     progress = Progress("run", stop_time=1.0, stream=quiet)
     for k in range(1, 101):
         progress(k / 100)
     assert quiet.getvalue() == ""
+
+
+@pytest.mark.parametrize(
+    "command, label",
+    [
+        (["demo", "--plots", "none"], "pistonslap demo: simulating"),
+        (["coupled", "--cycles", "3"], "pistonslap coupled"),
+    ],
+)
+def test_the_commands_show_their_progress_once_the_run_is_long(tmp_path, command, label):
+    """With no quiet time (`PISTONSLAP_PROGRESS_AFTER=0`) every tenth of the run is a line on stderr, and its end
+    (the demo stops once the landing figures are complete, before its stop time); a short run in the default quiet
+    time of 3 s prints none."""
+    runs = {
+        after: subprocess.run(
+            [str(PISTONSLAP), *command, "--out", f"o{after}"],
+            cwd=tmp_path,
+            env=dict(os.environ, MPLBACKEND="Agg", **({"PISTONSLAP_PROGRESS_AFTER": after} if after else {})),
+            capture_output=True,
+            text=True,
+        )
+        for after in ("0", None)
+    }
+    lines = runs["0"].stderr.splitlines()
+    assert runs["0"].returncode == 0 and lines[0] == f"{label}:  10 % of the run, 0 s", lines
+    assert len(lines) >= 6 and lines[-1].startswith(f"{label}: done in "), lines
+    assert runs[None].stderr == "", runs[None].stderr
