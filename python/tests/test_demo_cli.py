@@ -114,7 +114,7 @@ def test_progress_is_printed_once_a_run_has_taken_its_quiet_time():
     "command, label",
     [
         (["demo", "--plots", "none"], "pistonslap demo: simulating"),
-        (["coupled", "--cycles", "3"], "pistonslap coupled"),
+        (["coupled", "--cycles", "3"], "pistonslap coupled: simulating"),
     ],
 )
 def test_the_commands_show_their_progress_once_the_run_is_long(tmp_path, command, label):
