@@ -114,7 +114,9 @@ def parse(data, name):
         refuse(rows[0][0], f"holds numbers, not a header: name the columns and the pressure's unit ({EXAMPLE})")
     header, units = _header(rows[:first], separator)
     fields = _split(header[1], separator)
-    angle_column, pressure_column = _columns(fields, refuse, header[0])
+    angle_column, pressure_column = _columns(
+        fields, [_unit(f, units, i) for i, f in enumerate(fields)], refuse, header[0]
+    )
     angle_unit = _unit(fields[angle_column], units, angle_column)
     if angle_unit is not None and not _is_degrees(angle_unit):
         refuse(header[0], f"crank angle in [{angle_unit}]: give it in degrees [deg]")
@@ -247,16 +249,17 @@ def _pressure_unit(unit):
     return None
 
 
-def _columns(fields, refuse, line):
-    """(angle column, pressure column) of the header row's fields: the angle first, the pressure the only other
-    column or the first whose name says pressure."""
+def _columns(fields, column_units, refuse, line):
+    """(angle column, pressure column) of the header row's fields and their units: the angle first, the pressure the
+    only other column, or the first whose name says pressure, or else the first in a pressure unit."""
     if len(fields) < 2:
         refuse(line, f"the header names {len(fields)} column: name the crank angle and the pressure ({EXAMPLE})")
     if len(fields) == 2:
         return 0, 1
     named = [i for i, f in enumerate(fields[1:], 1) if any(w in f.lower() for w in PRESSURE_WORDS)]
+    named += [i for i, u in enumerate(column_units[1:], 1) if u is not None and _pressure_unit(u) is not None]
     if not named:
-        refuse(line, f"{len(fields)} columns and none named a pressure ({', '.join(map(repr, fields[1:]))})")
+        refuse(line, f"{len(fields)} columns and none named a pressure or in a pressure unit ({', '.join(fields[1:])})")
     return 0, named[0]
 
 

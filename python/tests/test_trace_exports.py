@@ -56,6 +56,12 @@ READ = {
         "crank angle [deg],cylinder pressure [bar] absolute\n" + rows(),
         "absolute (as its header says)",
     ),
+    "three columns, the pressure told by its unit": (
+        "three.csv",
+        "CA [deg],P [bar],T [K]\n"
+        + "".join(f"{a!r},{p!r},800.0\n" for a, p in zip(ANGLES.tolist(), BAR.tolist(), strict=True)),
+        "absolute (the default for a cylinder pressure",
+    ),
     "gauge in the unit": (
         "gauge.csv",
         "crank angle [deg],cylinder pressure [barg]\n" + rows(bar=BAR - 1),
@@ -90,6 +96,11 @@ REFUSED = {
         "late.csv",
         ("CA [deg],PCYL1 [bar]\n" + rows(angles=ANGLES + 450)).encode(),
         ["late.csv", "peak pressure lies at 461°", "--firing-tdc"],
+    ),
+    "three columns, none a pressure": (
+        "columns.csv",
+        b"CA [deg],lift [mm],T [K]\n-360,1,2\n",
+        ["columns.csv", "line 1", "none named a pressure", "lift [mm], T [K]"],
     ),
     "decreasing angles": (
         "backwards.csv",
