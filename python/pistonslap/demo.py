@@ -21,7 +21,7 @@ from pathlib import Path
 import fmpy
 import numpy as np
 
-from . import liner_load, trace_file
+from . import liner_load
 from .cycle_figures import SETTLED, change, cycle_before, figures
 from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate_with_logs
 from .presets import PRESETS, help_text
@@ -29,7 +29,7 @@ from .progress import Progress
 from .refusal import Parser, Refusal, check_start_values, number
 from .settings import parse_set, read_params, to_fmu, within_range
 from .tables import LANDING_RUN_ON, SAMPLE_DEG, WALLS, cycle_metrics, energy_unit, slap_rows, write_table
-from .trace_tdc import place_firing_tdc
+from .trace_tdc import PlacedTrace
 
 #: Magnification of clearance and tilt in the piston-position pictures.
 MAGNIFICATION = 200
@@ -179,7 +179,7 @@ def liner_load_step(args):
 
 def all_start_values(args, md, defaults):
     """The start values (SI) of the preset, the parameter file, the options and --set, in that order, and the
-    pressure trace to run (`TraceRun`, or None)."""
+    pressure trace to run (`trace_tdc.PlacedTrace`, or None)."""
     values = dict(PRESETS[args.engine].values) if args.engine else {}
     if args.params:
         values.update(read_params(args.params, md))
@@ -196,23 +196,7 @@ def all_start_values(args, md, defaults):
         )
     values = to_fmu(values, defaults)
     trace = values.get("pressure_trace") if values.get("pressure_source") == 3 else None
-    return values, TraceRun(trace, args.firing_tdc) if trace else None
-
-
-class TraceRun:
-    """A pressure trace (`--pressure-trace`, or `pressure_trace` set otherwise) read as exported, its firing TDC
-    placed, and written in the FMU's own form for the run: into a scratch folder to check the start values, into
-    --out once they are accepted, so that a refusal leaves nothing behind."""
-
-    def __init__(self, path, firing_tdc):
-        self.trace = trace_file.load(path, fmu_path())
-        self.shift, self.said = place_firing_tdc(self.trace, firing_tdc)
-
-    def write(self, folder):
-        """The trace as the FMU runs it, written into `folder`; its path."""
-        path = Path(folder) / "pressure_trace_as_run.csv"
-        path.write_text(self.trace.for_fmu(self.shift))
-        return str(path.resolve())
+    return values, PlacedTrace(trace, args.firing_tdc, fmu_path()) if trace else None
 
 
 #: The operating-point options: (option, the variable it sets, its unit, SI per unit).

@@ -9,8 +9,11 @@ reaches 5–20° after firing TDC and a motored one at it. The FMU runs the trac
 (`trace_file.Trace.for_fmu`), so that the −360…360° axis has firing TDC at 0.
 """
 
+from pathlib import Path
+
 import numpy as np
 
+from . import trace_file
 from .refusal import Refusal
 
 #: Farthest the peak pressure may lie from the TDC taken as firing TDC, deg: late combustion peaks within ~40°
@@ -47,3 +50,20 @@ def place_firing_tdc(trace, stated=None):
     if (tdc / 720.0).is_integer():
         return 0.0, said
     return -tdc, f"{said}; run with its angles shifted by {-tdc:g}°"
+
+
+class PlacedTrace:
+    """A pressure trace (`--pressure-trace`, or `pressure_trace` set otherwise) read as exported
+    (`trace_file.load`, a bare name among the FMU `fmu`'s resources), its firing TDC placed (`firing_tdc` stated,
+    or None), and written in the FMU's own form for a run into the folder the caller names: a scratch folder to check
+    the start values, the results' folder once they are accepted, so that a refusal leaves nothing behind."""
+
+    def __init__(self, path, firing_tdc, fmu):
+        self.trace = trace_file.load(path, fmu)
+        self.shift, self.said = place_firing_tdc(self.trace, firing_tdc)
+
+    def write(self, folder):
+        """The trace as the FMU runs it, written into `folder`; its path."""
+        path = Path(folder) / "pressure_trace_as_run.csv"
+        path.write_text(self.trace.for_fmu(self.shift))
+        return str(path.resolve())

@@ -187,3 +187,34 @@ def test_a_trace_set_as_a_parameter_is_read_as_exported(tmp_path):
     done = demo("--set", "pressure_source=3", "--set", f"pressure_trace={name}", "--out", "out", cwd=tmp_path)
     assert done.returncode == 0 and reference in done.stdout, done.stderr
     np.testing.assert_allclose(as_run(tmp_path / "out")[1], BAR * 1e5, rtol=1e-15)
+
+
+def sweep(spec, cwd):
+    (cwd / "spec.toml").write_text(spec)
+    return subprocess.run(
+        [str(PISTONSLAP), "sweep", "spec.toml", "--workers", "1", "--out", "sweeps"],
+        cwd=cwd,
+        env=dict(os.environ, MPLBACKEND="Agg"),
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
+
+
+def test_a_sweep_runs_an_exported_trace_and_refuses_a_bad_one_before_starting(tmp_path):
+    """A spec's [start] trace goes through the same reader: an export runs (its FMU form in the results' folder), a
+    PNG is refused in one line before any worker starts."""
+    name, text, reference = READ["units in parentheses"]
+    (tmp_path / name).write_text(text)
+    spec = 'name = "traced"\ncycles = 2\n[start]\npressure_source = 3\npressure_trace = "{}"\n'
+    spec += "[grid]\nrestitution = [0.5]\n"
+    done = sweep(spec.format(name), tmp_path)
+    assert done.returncode == 0 and reference in done.stdout and "(1 points, 1 run now, 0 failed)" in done.stdout, (
+        done.stdout,
+        done.stderr,
+    )
+    np.testing.assert_allclose(as_run(tmp_path / "sweeps" / "traced")[1], BAR * 1e5, rtol=1e-15)
+    (tmp_path / "plot.png").write_bytes(REFUSED["a PNG image"][1])
+    done = sweep(spec.format("plot.png").replace("traced", "png"), tmp_path)
+    assert done.returncode == 2 and len(done.stderr.splitlines()) == 1 and "not a text file" in done.stderr
+    assert not (tmp_path / "sweeps" / "png").exists()
