@@ -131,3 +131,53 @@ def test_out_naming_an_existing_file_is_refused(tmp_path):
 def test_debug_shows_the_traceback(tmp_path):
     done = _run(["--debug", "demo", "--rpm", "0", "--out", str(tmp_path / "out")], tmp_path)
     assert done.returncode != 0 and "Traceback" in done.stderr and "Refusal" in done.stderr, done.stderr
+
+
+@pytest.fixture(scope="module")
+def swept(tmp_path_factory):
+    """A sweep of two restitutions and two clearances, two cycles each, for `pistonslap map`."""
+    folder = tmp_path_factory.mktemp("map")
+    (folder / "s.toml").write_text(
+        'name = "m"\ncycles = 2\n[grid]\nrestitution = [0.3, 0.5]\nclearance = ["40 um", "60 um"]\n'
+    )
+    done = _run(["sweep", "s.toml", "--workers", "1", "--out", "sw"], folder)
+    assert done.returncode == 0, done.stderr
+    return folder
+
+
+@pytest.mark.parametrize(
+    "args, words",
+    [
+        (["--where", "restitution=0.4"], ["--where restitution=0.4", "no point", "0.3, 0.5"]),
+        (["--where", "clearance=50um"], ["--where clearance=50um", "no point has clearance = 5e-05"]),
+        (["--out", "map.toml"], ["--out map.toml", ".png"]),
+        (["--metric", "nosuch"], ["--metric nosuch"]),
+    ],
+)
+def test_map_refuses_in_one_line(swept, args, words):
+    base = ["map", "sw/m", "--x", "restitution", "--y", "clearance", "--metric", "impacts_per_cycle"]
+    done = _run([*base, *args], swept)
+    assert done.returncode == 2 and len(done.stderr.splitlines()) == 1 and "Traceback" not in done.stderr, done.stderr
+    for word in words:
+        assert word in done.stderr, (word, done.stderr)
+
+
+def test_map_selects_in_the_unit_typed(swept):
+    done = _run(
+        [
+            "map",
+            "sw/m",
+            "--x",
+            "restitution",
+            "--y",
+            "clearance",
+            "--metric",
+            "impacts_per_cycle",
+            "--where",
+            "clearance=40um",
+            "--out",
+            "c40.png",
+        ],
+        swept,
+    )
+    assert done.returncode == 0 and (swept / "c40.png").stat().st_size > 1000, done.stderr
