@@ -50,20 +50,13 @@ class Trace:
 
     #: the file as the user named it (with where it was found, for a resource)
     name: str
-    #: crank angle of each sample, deg, and as written
+    #: crank angle of each sample, deg
     angles: np.ndarray
-    angle_texts: list
     #: pressure of each sample, Pa
     pressures: np.ndarray
-    #: the file's line of each sample, from 1
-    lines: list
     absolute: bool
     #: the column read and how its reference was taken, in words
     reference: str
-
-    def at(self, index):
-        """Where sample `index` is, for a message: the file, its line and its angle as written."""
-        return f"{self.name}, line {self.lines[index]} (crank angle {self.angle_texts[index]}°)"
 
     def for_fmu(self, shift=0.0):
         """The FMU's own form of the trace, its angles moved by `shift` degrees, pressures in Pa."""
@@ -160,9 +153,7 @@ def parse(data, name):
     return Trace(
         name=name,
         angles=np.array(angles),
-        angle_texts=angle_texts,
         pressures=np.array(pressures),
-        lines=lines,
         absolute=absolute,
         reference=f"{column} [{pressure_unit}], {reference}",
     )
