@@ -428,7 +428,8 @@ def main(argv=None):
     table = per_cycle[0]
     last = table[-1].tolist() if len(table) else [np.nan] * len(table.dtype.names)
     print(
-        f"{args.cycles} cycles simulated to t = {result['time'][-1]:g} s in {simulated:.1f} s ({fmu_path().name}). "
+        f"{args.cycles} cycle{'' if args.cycles == 1 else 's'} simulated to t = {result['time'][-1]:g} s in "
+        f"{simulated:.1f} s ({fmu_path().name}). "
         + summary(dict(zip(table.dtype.names, last, strict=True), **drawn_figures), lubricated)
     )
     print(settling(result, events, cycle, origin, drawn_figures, p["slap_threshold"]))
