@@ -19,8 +19,12 @@ import fmpy
 import numpy as np
 from fmpy.fmi2 import FMU2Slave
 
-from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, from_firing_tdc
-from .refusal import Parser, Refusal, number
+from .engine_cycle_presets import slap_geometry
+from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, from_firing_tdc, read_impact_log
+from .presets import PRESETS as PISTON_PRESETS
+from .progress import Progress
+from .refusal import Parser, Refusal, check_start_values, number
+from .settings import parse_set, read_params, to_fmu
 
 #: The partner FMU the package carries next to PistonSlap.fmu (`make fmu` copies both).
 ENGINE_FMU = Path(__file__).resolve().parent / "fmu" / "EngineCycle.fmu"
@@ -88,12 +92,13 @@ class Slave:
         shutil.rmtree(self.unzipdir, ignore_errors=True)
 
 
-def run(stop_time, step, engine_values=None, slap_values=None, derivatives=True, start_time=0.0):
+def run(stop_time, step, engine_values=None, slap_values=None, derivatives=True, start_time=0.0, step_finished=None):
     """Runs the coupled system from `start_time` to `stop_time` with communication step `step` (s).
 
     `engine_values` and `slap_values` are start values by name; PistonSlap always gets `pressure_source = 1`.
     With `derivatives`, the engine's output derivatives are passed on as PistonSlap's input derivatives.
-    Returns a structured array with `COLUMNS`, one row per communication point including the start.
+    `step_finished(time)` is called after each step (a progress line). Returns a structured array with `COLUMNS`,
+    one row per communication point including the start.
     """
     steps = round((stop_time - start_time) / step)
     if steps < 1 or abs(start_time + steps * step - stop_time) > 1e-9 * max(1.0, abs(stop_time)):
@@ -136,6 +141,8 @@ def run(stop_time, step, engine_values=None, slap_values=None, derivatives=True,
             engine.fmu.doStep(t, step)
             slap.fmu.doStep(t, step)
             record(k + 1, start_time + (k + 1) * step)
+            if step_finished is not None:
+                step_finished(start_time + (k + 1) * step)
         return rows
     finally:
         engine.free()
@@ -195,10 +202,13 @@ def energy_per_cycle(rows, first_cycle, last_cycle):
     return (rows["impact_energy_total"][end] - rows["impact_energy_total"][start]) / (last_cycle - first_cycle)
 
 
-def write(rows, out, origin=CENTRED):
+def write(rows, out, origin=CENTRED, events=None, case="", synchronisation=False):
     """`out/coupled.csv` and the plots: pressure and impacts against crank angle from firing TDC (the axis from
-    `origin`, rad: `CENTRED` -360...360°, or 0...720°), both FMUs' crank angles."""
+    `origin`, rad: `CENTRED` -360...360°, or 0...720°), with `events` (the impact log) each impact coloured by its
+    wall; with `synchronisation`, both FMUs' crank angles. Returns the paths written."""
     import matplotlib.pyplot as plt
+
+    from .plots import SIDES
 
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
@@ -206,25 +216,38 @@ def write(rows, out, origin=CENTRED):
         writer = csv.writer(f)
         writer.writerow(COLUMNS)
         writer.writerows(rows.tolist())
+    written = [out / "coupled.csv", out / "pressure_and_impacts.png"]
     degrees = np.degrees(from_firing_tdc(rows["crank_angle"], origin))
     fig, (ax_p, ax_i) = plt.subplots(2, 1, sharex=True, figsize=(9, 6))
     fig.suptitle(
         f"PistonSlap driven by EngineCycle: {len(rows) - 1} steps of {rows['time'][1] - rows['time'][0]:g} s, "
-        "every cycle overlaid"
+        f"every cycle overlaid\n{case}",
+        fontsize="medium",
     )
     # One line per engine cycle: broken where the angle wraps to the axis' start.
     wraps = np.flatnonzero(np.diff(degrees) < 0) + 1
     ax_p.plot(np.insert(degrees, wraps, np.nan), np.insert(rows["gas_pressure"] / 1e5, wraps, np.nan), lw=1)
     ax_p.set_ylabel("gas pressure (EngineCycle) [bar]")
-    hit = rows["impacts_in_step"] > 0
-    ax_i.plot(degrees[hit], rows["max_impact_velocity_in_step"][hit], ".", ms=4)
-    ax_i.set_ylabel("largest impact velocity in step [m/s]")
+    if events is None:
+        hit = rows["impacts_in_step"] > 0
+        ax_i.plot(degrees[hit], rows["max_impact_velocity_in_step"][hit], ".", ms=4)
+        ax_i.set_ylabel("largest impact velocity in step [m/s]")
+    else:
+        impacts = events[events["kind"] == "impact"]
+        for label, corners, colour in SIDES:
+            mine = impacts[np.isin(impacts["corner"], corners)]
+            angle = np.degrees(from_firing_tdc(mine["crank_angle"], origin))
+            ax_i.plot(angle, mine["normal_velocity_before"], ".", ms=4, color=colour, label=f"{label}: {len(mine)}")
+        ax_i.legend(fontsize="small", title="impacts, every cycle", title_fontsize="small")
+        ax_i.set_ylabel("impact velocity [m/s]")
     ax_i.set_xlabel("crank angle [deg]  (0 = firing TDC)")
     ax_i.set_xlim(np.degrees(origin), np.degrees(origin) + 720)
     ax_i.set_xticks(np.arange(np.degrees(origin), np.degrees(origin) + 721, 90))
     fig.tight_layout()
     fig.savefig(out / "pressure_and_impacts.png", dpi=120)
     plt.close(fig)
+    if not synchronisation:
+        return written
     fig, (ax_a, ax_d) = plt.subplots(2, 1, sharex=True, figsize=(9, 6))
     ax_a.plot(rows["time"], rows["engine_crank_angle"], label="EngineCycle")
     ax_a.plot(rows["time"], rows["crank_angle"], "--", label="PistonSlap")
@@ -236,51 +259,125 @@ def write(rows, out, origin=CENTRED):
     fig.tight_layout()
     fig.savefig(out / "crank_angles.png", dpi=120)
     plt.close(fig)
+    return [*written, out / "crank_angles.png"]
 
 
-def main(argv=None):
-    from .engine_cycle_presets import PRESETS, slap_geometry
+#: PistonSlap's inputs and settings the engine drives: a preset's, a parameter file's or a --set's value of them is
+#: not PistonSlap's to take.
+DRIVEN = ("crank_speed", "gas_pressure", "pressure_source", "peak_pressure", "crank_mode", "load_torque")
+#: Default communication step: 1 ms, or this crank angle (1 ms at 1200 rpm) where 1 ms would be more, deg.
+DEFAULT_STEP_DEG = 7.2
 
+
+def _parser(presets):
     parser = Parser(prog="pistonslap coupled", description=__doc__.split("\n\n")[0])
-    parser.add_argument("--out", default="out/coupled")
+    parser.add_argument("--out", type=Path, default=Path("out/coupled"), help="output folder (default out/coupled)")
     parser.add_argument(
         "--cycles", type=int, default=20, help="engine cycles at the engine's constant speed, at least 3 (default 20)"
     )
     parser.add_argument(
         "--step",
         type=float,
-        default=1e-3,
-        help=f"communication step, s (default 0.001; at most {MAX_STEP_DEG:g}° of crank angle)",
+        help=f"communication step, s (default 0.001, or {DEFAULT_STEP_DEG:g}° of crank angle where that is less; at "
+        f"most {MAX_STEP_DEG:g}°)",
     )
     parser.add_argument("--held", action="store_true", help="hold the inputs over each step (no derivatives)")
-    parser.add_argument("--engine", help=f"EngineCycle preset: {', '.join(PRESETS)} (default: the FMU's defaults)")
+    parser.add_argument("--engine", help=f"EngineCycle preset: {', '.join(presets)} (default: the FMU's defaults)")
+    parser.add_argument(
+        "--piston",
+        choices=PISTON_PRESETS,
+        help="PistonSlap's engine preset for the piston, rod and clearance (the engine's bore, stroke and rod "
+        "length win where --engine gives them; speed and pressure are the engine's)",
+    )
+    parser.add_argument("--params", type=Path, help='TOML file of PistonSlap parameters: name = SI or "number unit"')
+    parser.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="any PistonSlap parameter, SI or with a unit it declares (skirt_model=2 for the lubricated skirt, "
+        "clearance=40um); repeatable",
+    )
     parser.add_argument(
         "--crank-0-720",
         action="store_true",
         help="draw the crank angle from 0 to 720° (default -360 to 360°; 0 = firing TDC either way)",
     )
-    args = parser.parse_args(argv)
+    parser.add_argument(
+        "--synchronisation",
+        action="store_true",
+        help="also plot both FMUs' crank angles and their difference (crank_angles.png), a check of the coupling",
+    )
+    return parser
+
+
+def slap_start_values(args, engine, md):
+    """PistonSlap's start values: the --piston preset, the geometry of the --engine preset, the parameter file and
+    --set, in that order, without what the engine drives (`DRIVEN`)."""
+    values = {k: v for k, v in PISTON_PRESETS[args.piston].values.items() if k not in DRIVEN} if args.piston else {}
+    values.update(slap_geometry(engine) if args.engine else {})
+    given = read_params(args.params, md) if args.params else {}
+    given.update(parse_set(args.set, md))
+    driven = sorted(set(given) & set(DRIVEN))
+    if driven:
+        raise Refusal(
+            f"{', '.join(driven)}: the engine drives PistonSlap's speed and pressure; set them in EngineCycle"
+        )
+    values.update(given)
+    defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
+    return to_fmu(values, dict(defaults, **values))
+
+
+def main(argv=None):
+    from .engine_cycle_presets import PRESETS
+
+    args = _parser(PRESETS).parse_args(argv)
     if args.engine is not None and args.engine not in PRESETS:
         raise Refusal(f"unknown --engine {args.engine!r} (presets: {', '.join(PRESETS)})")
     if args.cycles < 3:
         raise Refusal(f"--cycles = {args.cycles}: give at least 3 (the energy per cycle is counted after two)")
+    if args.out.exists() and not args.out.is_dir():
+        raise Refusal(f"--out {args.out}: is a file; give a folder (new or existing) for the results")
     engine = PRESETS[args.engine]["engine"] if args.engine else {}
-    slap = slap_geometry(engine) if args.engine else {}
     speed = engine.get("speed_start", SPEED)
     largest = np.radians(MAX_STEP_DEG) / speed
-    number(args.step, "--step", low=0, low_open=True, unit=" s", meaning="the communication step")
-    if args.step > largest:
+    step = min(1e-3, np.radians(DEFAULT_STEP_DEG) / speed) if args.step is None else args.step
+    number(step, "--step", low=0, low_open=True, unit=" s", meaning="the communication step")
+    if step > largest:
         raise Refusal(
-            f"--step = {args.step:g} s is {np.degrees(args.step * speed):.3g}° of crank angle at "
+            f"--step = {step:g} s is {np.degrees(step * speed):.3g}° of crank angle at "
             f"{speed * 30 / np.pi:.0f} rpm: give at most {largest:.3g} s ({MAX_STEP_DEG:g}°), since over a "
             "step the gas pressure only follows its value and slope at the step's start"
         )
+    md = fmpy.read_model_description(str(fmu_path()))
+    slap = slap_start_values(args, engine, md)
+    check_start_values({**slap, "pressure_source": 1, "crank_speed": speed}, fmu_path(), md)
     period = CYCLE / speed
-    stop = round(args.cycles * period / args.step) * args.step
-    rows = run(stop, args.step, engine_values=engine, slap_values=slap, derivatives=not args.held)
-    write(rows, args.out, FROM_FIRING_TDC if args.crank_0_720 else CENTRED)
-    print(
-        f"{args.out}: {len(rows) - 1} steps, {int(rows['impact_count'][-1])} impacts, "
-        f"{energy_per_cycle(rows, 2, args.cycles):.4g} J per cycle after "
-        "two cycles"
+    stop = round(args.cycles * period / step) * step
+    origin = FROM_FIRING_TDC if args.crank_0_720 else CENTRED
+    p = dict({v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start}, **slap)
+    case = (
+        f"engine {args.engine or 'EngineCycle defaults'} at {speed * 30 / np.pi:.0f} rpm; piston "
+        f"{args.piston or 'PistonSlap defaults'}: clearance {(p['bore'] - p['piston_diameter']) * 1e6:g} µm, "
+        f"e = {p['restitution']:g}, {'lubricated skirt' if p.get('skirt_model') == 2 else 'dry skirt'}"
     )
+    print(case)
+    args.out.mkdir(parents=True, exist_ok=True)
+    log = args.out / "impact_log.csv"
+    progress = Progress("pistonslap coupled: simulating", stop)
+    rows = run(
+        stop,
+        step,
+        engine_values=engine,
+        slap_values={**slap, "impact_log": str(log)},
+        derivatives=not args.held,
+        step_finished=progress,
+    )
+    progress.done()
+    written = write(rows, args.out, origin, read_impact_log(log), case, args.synchronisation)
+    print(
+        f"{len(rows) - 1} steps of {step:.3g} s, {int(rows['impact_count'][-1])} impacts, "
+        f"{energy_per_cycle(rows, 2, args.cycles):.4g} J per cycle after two cycles"
+    )
+    for path in [*written, log]:
+        print(f"wrote {path}")

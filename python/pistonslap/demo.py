@@ -4,28 +4,39 @@
                     [--firing-tdc DEG] [--friction MU] [--out DIR] [--rpm RPM] [--peak-pressure BAR] [--clearance UM]
                     [--restitution E] [--pin-offset MM] [--cycles N] [--slap-threshold MM_PER_S] [--crank-0-720]
                     [--skirt-map DEG] [--liner-loads FILE.csv [--liner-load-step DEG] [--liner-load-spectrum]]
+                    [--plots LIST] [--no-gif]
 
 Values apply in that order, a later one over an earlier one: the engine preset, the parameter file, then the options.
 What none sets keeps the FMU's default (Awrejcewicz & Kudra's engine: 1200 rpm, 80 bar, 80 µm, e = 0.5).
 """
 
+import multiprocessing
 import os
 import shutil
+import tempfile
+import time
+from concurrent.futures import ProcessPoolExecutor
 from pathlib import Path
 
 import fmpy
 import numpy as np
 
 from . import liner_load
+from .cycle_figures import SETTLED, change, cycle_before, figures
 from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate_with_logs
 from .presets import PRESETS, help_text
+from .progress import Progress
 from .refusal import Parser, Refusal, check_start_values, number
-from .settings import parse_set, read_params, to_fmu
+from .settings import parse_set, read_params, to_fmu, within_range
 from .tables import LANDING_RUN_ON, SAMPLE_DEG, WALLS, cycle_metrics, energy_unit, slap_rows, write_table
-from .trace_tdc import place_firing_tdc
+from .trace_tdc import PlacedTrace
 
 #: Magnification of clearance and tilt in the piston-position pictures.
 MAGNIFICATION = 200
+#: The plots `--plots` may name, costliest first (the order `draw` takes them in), and those drawn by default (the
+#: animation takes most of a run's time).
+PLOTS = ("gif", "positions", "slap", "motion", "film", "forces")
+DEFAULT_PLOTS = ("slap", "forces", "motion", "positions", "film")
 
 
 def _parser():
@@ -45,7 +56,9 @@ def _parser():
     parser.add_argument(
         "--pressure-trace",
         type=Path,
-        help="CSV trace (header: crank angle [deg], pressure [bar|Pa|kPa|MPa|psi] absolute|gauge)",
+        help="cylinder pressure over 720°: a CSV or text export (',', ';' or tab apart; units in [..], (..) or a row "
+        "under the header; absolute unless the header says gauge); a bare name not in the working directory is "
+        "looked up in the FMU's resources (full_load.csv, motored.csv)",
     )
     parser.add_argument(
         "--firing-tdc",
@@ -96,13 +109,33 @@ def _parser():
         action="store_true",
         help="also plot the liner load's spectrum in engine orders and third-octave bands (FILE_spectrum.png)",
     )
+    parser.add_argument(
+        "--plots",
+        default=",".join(DEFAULT_PLOTS),
+        metavar="LIST",
+        help=f"the plots to draw, comma-separated, of {', '.join(PLOTS)} (film on oil only), 'all' or 'none' "
+        f"(default {','.join(DEFAULT_PLOTS)}: gif, the animated piston positions, takes seconds more)",
+    )
+    parser.add_argument("--no-gif", action="store_true", help="draw no animation, whatever --plots says")
     return parser
+
+
+def plots_asked(args):
+    """The plots to draw, of `PLOTS`."""
+    text = args.plots.strip().lower()
+    asked = PLOTS if text == "all" else () if text == "none" else tuple(w.strip() for w in text.split(",") if w.strip())
+    unknown = [w for w in asked if w not in PLOTS]
+    if unknown:
+        raise Refusal(
+            f"--plots {args.plots}: no plot {', '.join(unknown)}; give some of {', '.join(PLOTS)}, all or none"
+        )
+    return tuple(w for w in asked if not (args.no_gif and w == "gif"))
 
 
 def check(args):
     """Refuses options no run can take before anything runs (the FMU checks the rest, `check_start_values`)."""
     if args.rpm is not None:
-        number(args.rpm, "--rpm", low=0, high=30000, low_open=True, unit=" rpm", meaning="the crank speed")
+        number(args.rpm, "--rpm", low=0, low_open=True, unit=" rpm", meaning="the crank speed")
     if args.clearance is not None:
         number(
             args.clearance,
@@ -114,14 +147,25 @@ def check(args):
         )
     if args.cycles < 1:
         raise Refusal(f"--cycles = {args.cycles}: give a whole number of engine cycles >= 1")
+    if args.out.exists() and not args.out.is_dir():
+        raise Refusal(f"--out {args.out}: is a file; give a folder (new or existing) for the results")
+    plots_asked(args)
     if args.skirt_map is not None:
-        number(args.skirt_map, "--skirt-map", unit="°", meaning="the crank angle of the skirt map")
+        number(
+            args.skirt_map,
+            "--skirt-map",
+            low=-360,
+            high=720,
+            unit="°",
+            meaning="the crank angle of the skirt map, within the cycle from firing TDC (-360…360° or 0…720°),",
+        )
     if args.liner_loads is None and (args.liner_load_step is not None or args.liner_load_spectrum):
         raise Refusal("--liner-load-step and --liner-load-spectrum go with --liner-loads FILE.csv: give the file")
     if args.liner_loads is not None:
         if args.liner_loads.suffix.lower() != ".csv":
             raise Refusal(f"--liner-loads {args.liner_loads}: give a .csv file name")
         liner_load.samples_per_cycle(liner_load_step(args), "--liner-load-step")
+    same_as_set(args)
     if args.firing_tdc is not None:
         if args.pressure_trace is None:
             raise Refusal("--firing-tdc places the firing TDC of a --pressure-trace: give the trace")
@@ -134,17 +178,14 @@ def liner_load_step(args):
 
 
 def all_start_values(args, md, defaults):
-    """The start values (SI) of the preset, the parameter file, the options and --set, in that order, and what
-    was said of a --pressure-trace's firing TDC (or None)."""
-    values, placed = dict(PRESETS[args.engine].values) if args.engine else {}, None
+    """The start values (SI) of the preset, the parameter file, the options and --set, in that order, and the
+    pressure trace to run (`trace_tdc.PlacedTrace`, or None)."""
+    values = dict(PRESETS[args.engine].values) if args.engine else {}
     if args.params:
         values.update(read_params(args.params, md))
-    values.update(start_values(args, dict(defaults, **values)))
+    values.update(start_values(args, dict(defaults, **values), md))
     if args.pressure_trace is not None:
-        if not args.pressure_trace.is_file():
-            raise Refusal(f"--pressure-trace {args.pressure_trace}: no such file")
-        trace, placed = place_firing_tdc(args.pressure_trace, args.out, args.firing_tdc)
-        values.update(pressure_source=3, pressure_trace=str(Path(trace).resolve()))
+        values.update(pressure_source=3, pressure_trace=str(args.pressure_trace))
     if args.friction is not None:
         values["friction"] = number(args.friction, "--friction", low=0, meaning="the friction coefficient")
     values.update(parse_set(args.set, md))
@@ -153,31 +194,51 @@ def all_start_values(args, md, defaults):
             skirt_map=str((args.out / SKIRT_MAP_PASSES).resolve()),
             skirt_map_crank_angle=np.radians(args.skirt_map % 720),
         )
-    return to_fmu(values, defaults), placed
+    values = to_fmu(values, defaults)
+    trace = values.get("pressure_trace") if values.get("pressure_source") == 3 else None
+    return values, PlacedTrace(trace, args.firing_tdc, fmu_path()) if trace else None
 
 
-def start_values(args, defaults):
-    """FMU start values (SI) for the operating-point options given; `defaults` are the start values so far."""
+#: The operating-point options: (option, the variable it sets, its unit, SI per unit).
+OPTIONS = (
+    ("rpm", "crank_speed", "rpm", np.pi / 30),
+    ("peak_pressure", "peak_pressure", "bar", 1e5),
+    ("clearance", "clearance", "µm", 1e-6),
+    ("restitution", "restitution", "", 1.0),
+    ("pin_offset", "pin_offset", "mm", 1e-3),
+    ("slap_threshold", "slap_threshold", "", 1e-3),
+    ("friction", "friction", "", 1.0),
+)
+
+
+def start_values(args, defaults, md):
+    """FMU start values (SI) for the operating-point options given, each within its variable's declared range;
+    `defaults` are the start values so far."""
     values = {}
-    if args.rpm is not None:
-        values["crank_speed"] = args.rpm * np.pi / 30
-    if args.peak_pressure is not None:
-        values["peak_pressure"] = args.peak_pressure * 1e5
-    if args.clearance is not None:
-        values["bore"] = defaults["piston_diameter"] + args.clearance * 1e-6
-    if args.restitution is not None:
-        values["restitution"] = args.restitution
-    if args.pin_offset is not None:
-        values["pin_offset"] = args.pin_offset * 1e-3
-    if args.slap_threshold is not None:
-        values["slap_threshold"] = args.slap_threshold * 1e-3
+    for option, name, unit, si in OPTIONS:
+        typed = getattr(args, option)
+        if typed is not None and option != "friction":
+            where = f"--{option.replace('_', '-')} {typed:g}"
+            values[name] = within_range(name, typed * si, md, where, (typed, unit) if unit else None)
+    if "clearance" in values:
+        values["bore"] = defaults["piston_diameter"] + values.pop("clearance")
     return values
 
 
-def case_title(p):
-    """The operating point in the words of an engine test sheet; `p` holds every parameter by name (SI)."""
+def same_as_set(args):
+    """Refuses an operating-point option and a --set of the same variable (or of the bore and the clearance)."""
+    named = {a.partition("=")[0].strip() for a in args.set}
+    for option, name, _, _ in OPTIONS:
+        said = named & ({"bore", "clearance"} if name == "clearance" else {name})
+        if getattr(args, option) is not None and said:
+            raise Refusal(f"--{option.replace('_', '-')} and --set {said.pop()}=... say the same thing: give one")
+
+
+def case_title(p, trace_name=None):
+    """The operating point in the words of an engine test sheet; `p` holds every parameter by name (SI),
+    `trace_name` names the pressure trace as the user gave it (default: the file's name)."""
     pressure = (
-        f"pressure trace {Path(p['pressure_trace']).name}"
+        f"pressure trace {trace_name or Path(p['pressure_trace']).name}"
         if p.get("pressure_source") == 3
         else f"peak pressure {p['peak_pressure'] * 1e-5:g} bar"
     )
@@ -189,10 +250,11 @@ def case_title(p):
 
 
 def summary(row, lubricated):
-    """The last completed cycle in words: slaps (side changes) per wall with their energy, then all impacts; the
+    """The cycle drawn in words: slaps (side changes) per wall with their energy, then all impacts; the
     landings per wall (the largest one's energy, its loss and crank angle) and the wall loads' peak and rise rate; the
     skirt FMEP and, on oil (`lubricated`), the thinnest film per side and the peak film and asperity loads. `row` is
-    the last row of `tables.cycle_metrics`, by column name."""
+    the last row of `tables.cycle_metrics` by column name, its slaps and impacts those of the cycle drawn
+    (`cycle_figures.figures`)."""
     mj = 1e3
     walls = "; ".join(
         f"{row[f'cycle_slaps_{side}']} on the {name} wall, {row[f'cycle_slap_energy_{side}'] * mj:.3g} mJ "
@@ -200,7 +262,7 @@ def summary(row, lubricated):
         for side, name in zip(WALLS, WALL_NAMES, strict=True)
     )
     text = (
-        f"Last cycle: {row['cycle_slap_events']} slaps (landings on the other wall): {walls}. "
+        f"The cycle drawn: {row['cycle_slap_events']} slaps (landings on the other wall): {walls}. "
         f"{row['cycle_impacts']} impacts (every bounce) dissipated {row['cycle_impact_energy'] * mj:.3g} mJ, "
         f"the largest {row['cycle_max_impact_energy_thrust'] * mj:.3g} mJ on the major-thrust wall and "
         f"{row['cycle_max_impact_energy_antithrust'] * mj:.3g} mJ on the anti-thrust wall."
@@ -247,21 +309,32 @@ def _landings(row, side, name):
 
 
 def main(argv=None):
+    started = time.monotonic()
     args = _parser().parse_args(argv)
     check(args)
-    try:
-        from . import plots, skirt_map
-    except ImportError as e:
-        raise Refusal(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
+    asked = plots_asked(args)
+    if asked or args.skirt_map is not None or args.liner_load_spectrum:
+        try:
+            from . import plots, skirt_map
+        except ImportError as e:
+            raise Refusal(f"pistonslap demo plots with matplotlib ({e}): pip install 'pistonslap[plot]'") from e
+    else:
+        plots = skirt_map = None
     md = fmpy.read_model_description(str(fmu_path()))
     defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
-    values, placed = all_start_values(args, md, defaults)
-    # Checked before anything is written: the skirt map's file is the null device until the run.
-    check_start_values(dict(values, skirt_map=os.devnull) if "skirt_map" in values else values, fmu_path(), md)
-    if placed:
-        print(placed)
+    values, trace = all_start_values(args, md, defaults)
     p = dict(defaults, **values)
+    check_speed(p)
     check_liner_loads(args, p)
+    # Checked before anything is written: the trace goes to a scratch folder, the skirt map to the null device.
+    with tempfile.TemporaryDirectory() as scratch:
+        checked = dict(values, skirt_map=os.devnull) if "skirt_map" in values else dict(values)
+        if trace:
+            checked["pressure_trace"] = trace.write(scratch)
+        check_start_values(checked, fmu_path(), md)
+    args.out.mkdir(parents=True, exist_ok=True)
+    if trace:
+        values["pressure_trace"] = trace.write(args.out)
     omega, origin = p["crank_speed"], FROM_FIRING_TDC if args.crank_0_720 else CENTRED
     interval = np.radians(SAMPLE_DEG) / omega
     # The cycle drawn ends at `drawn_end`: the one about the last firing TDC on the axis centred on firing TDC, the
@@ -270,7 +343,8 @@ def main(argv=None):
     drawn_end, landed_by = (args.cycles * CYCLE - origin) / omega, (args.cycles * CYCLE - CENTRED) / omega
     stop_time = landed_by + LANDING_RUN_ON / omega + interval
 
-    args.out.mkdir(parents=True, exist_ok=True)
+    progress = Progress("pistonslap demo: simulating", stop_time)
+    simulating = time.monotonic()
     result, events, landings = simulate_with_logs(
         log_path=args.out / "impact_log.csv",
         landing_log_path=args.out / "landing_log.csv",
@@ -280,10 +354,13 @@ def main(argv=None):
         landed_by=landed_by,
         # the FMU rewrites the skirt map at each pass: the drawn cycle's is the last one by its end
         at_times=[(drawn_end, lambda: keep_skirt_map(args.out))] if args.skirt_map is not None else (),
+        step_finished=progress,
     )
+    progress.done()
+    simulated = time.monotonic() - simulating
     lubricated = p.get("skirt_model") == 2
     per_cycle = cycle_metrics(result, landings)
-    case = (f"{args.engine}: " if args.engine else "") + case_title(p)
+    case = case_title(p, trace.trace.name if trace else None)
     units = {v.name: v.unit or (v.declaredType.unit if v.declaredType else None) for v in md.modelVariables}
     units["time"] = "s"
     written = [
@@ -292,6 +369,8 @@ def main(argv=None):
         args.out / "landing_log.csv",
         write_table(args.out / "cycles.csv", *per_cycle),
     ]
+    if trace:
+        written.append(Path(values["pressure_trace"]))
 
     cycle, angle = last_cycle(result["crank_angle"], origin=origin)
     times = result["time"][cycle]
@@ -299,11 +378,11 @@ def main(argv=None):
     in_cycle = events[window]
     geometry = (p["bore"], p["piston_diameter"], p["skirt_length"], p["pin_height"])
     half_clearance = (p["bore"] - p["piston_diameter"]) / 2
-    written += [
-        plots.piston_motion(
+    drawn = {
+        "motion": lambda: plots.piston_motion(
             angle[cycle], result[cycle], half_clearance, args.out / "piston_motion.png", case, origin, lubricated
         ),
-        plots.slap(
+        "slap": lambda: plots.slap(
             in_cycle,
             slap_rows(events, p["slap_threshold"])[window],
             p["slap_threshold"],
@@ -314,8 +393,8 @@ def main(argv=None):
             loads=(angle[cycle], result[cycle]),
             lubricated=lubricated,
         ),
-        plots.forces(angle[cycle], result[cycle], args.out / "forces.png", case, origin),
-        plots.piston_positions(
+        "forces": lambda: plots.forces(angle[cycle], result[cycle], args.out / "forces.png", case, origin),
+        "positions": lambda: plots.piston_positions(
             angle[cycle],
             result[cycle],
             in_cycle,
@@ -325,7 +404,7 @@ def main(argv=None):
             case,
             origin=origin,
         ),
-        plots.piston_animation(
+        "gif": lambda: plots.piston_animation(
             angle[cycle],
             result[cycle],
             in_cycle,
@@ -335,23 +414,91 @@ def main(argv=None):
             case,
             origin=origin,
         ),
-    ]
-    if lubricated:
-        written.append(plots.film(angle[cycle], result[cycle], args.out / "film.png", case, origin))
+        "film": lambda: plots.film(angle[cycle], result[cycle], args.out / "film.png", case, origin),
+    }
+    written += draw([name for name in PLOTS if name in asked and (lubricated or name != "film")], drawn)
     if args.skirt_map is not None:
         (args.out / SKIRT_MAP_PASSES).unlink(missing_ok=True)
         written += [
             args.out / "skirt_map.csv",
             skirt_map.plot(skirt_map.read(args.out / "skirt_map.csv"), args.out / "skirt_map.png", case),
         ]
+    print(operating_point(args, case, trace))
+    drawn_figures = figures(events, window, p["slap_threshold"])
+    table = per_cycle[0]
+    last = table[-1].tolist() if len(table) else [np.nan] * len(table.dtype.names)
     print(
-        f"Simulated {fmu_path()}: {case}; {args.cycles} cycles to t = {result['time'][-1]:g} s. "
-        + summary(dict(zip(per_cycle[0].dtype.names, per_cycle[0][-1].tolist(), strict=True)), lubricated)
+        f"{args.cycles} cycle{'' if args.cycles == 1 else 's'} simulated to t = {result['time'][-1]:g} s in "
+        f"{simulated:.1f} s ({fmu_path().name}). "
+        + summary(dict(zip(table.dtype.names, last, strict=True), **drawn_figures), lubricated)
     )
+    print(settling(result, events, cycle, origin, drawn_figures, p["slap_threshold"]))
     if args.liner_loads is not None:
         written += write_liner_loads(args, values, omega, origin, case, plots)
     for path in written:
         print(f"wrote {path}")
+    print(f"done in {time.monotonic() - started:.1f} s, of which the simulation {simulated:.1f} s")
+
+
+def settling(result, events, cycle, origin, drawn_figures, slap_threshold):
+    """The main figures' change from the cycle before the drawn one (`cycle`, a mask of the samples), with a warning
+    when they have not settled or the run holds no whole cycle before it."""
+    before = cycle_before(result["crank_angle"], cycle, origin)
+    if before is None:
+        turned = (result["crank_angle"][-1] - result["crank_angle"][0]) / CYCLE
+        return (
+            f"Warning: the run holds no whole cycle before the one drawn (the crank turned {turned:.2g} engine "
+            "cycles), whose figures may hold the start-up transient: give more --cycles to see whether they settled."
+        )
+    line, moved = change(
+        drawn_figures, figures(events, in_window(events["time"], result["time"][before]), slap_threshold)
+    )
+    if moved:
+        line += (
+            f"\nWarning: not settled: the {', '.join(moved)} changed by more than {SETTLED:.0%} from the cycle before; "
+            "give more --cycles."
+        )
+    return line
+
+
+#: The plots being drawn by `draw`, which its forked processes inherit.
+_DRAWING = {}
+
+
+def _draw_one(name):
+    return _DRAWING[name]()
+
+
+def draw(names, drawing):
+    """Draws the plots `names` of `drawing` (name → a function drawing it and returning its path) and returns their
+    paths, in that order: in two forked processes where the machine has two cores (matplotlib draws on one)."""
+    if len(names) < 2 or (os.cpu_count() or 1) < 2 or "fork" not in multiprocessing.get_all_start_methods():
+        return [drawing[name]() for name in names]
+    _DRAWING.clear()
+    _DRAWING.update(drawing)
+    try:
+        with ProcessPoolExecutor(2, mp_context=multiprocessing.get_context("fork")) as pool:
+            return list(pool.map(_draw_one, names))
+    finally:
+        _DRAWING.clear()
+
+
+def operating_point(args, case, trace):
+    """The run's first line: the engine, where its values came from, the operating point, and the trace's reading."""
+    engine = f"engine {args.engine}" if args.engine else "engine: the FMU's defaults (Awrejcewicz & Kudra)"
+    sources = [f"parameters {args.params}"] if args.params else []
+    sources += ["--set " + " ".join(args.set)] if args.set else []
+    line = f"{engine}{' with ' + ', '.join(sources) if sources else ''}; {case}"
+    return line + (f"\n{trace.said}" if trace else "")
+
+
+def check_speed(p):
+    """Refuses a crank speed the demo cannot sample at (`p`: every start value, SI): it samples in crank angle."""
+    if not p["crank_speed"] > 0:
+        raise Refusal(
+            f"crank_speed = {p['crank_speed'] * 30 / np.pi:g} rpm: the demo samples the cycle in crank angle; give a "
+            "crank speed > 0 (crank_speed=1200rpm)"
+        )
 
 
 #: The file the FMU rewrites at each pass of the skirt map's crank angle; `keep_skirt_map` copies the drawn cycle's.

@@ -16,7 +16,7 @@ from matplotlib.colors import ListedColormap
 
 from .fmu import fmu_path
 from .refusal import Parser, Refusal, number
-from .settings import display_unit
+from .settings import display_unit, settable, value_of
 from .sweep_point import METRICS, all_zero
 
 #: The response classes in the order of their colours.
@@ -42,12 +42,22 @@ def _parser():
     return parser
 
 
-def _select(table, where):
+def _select(table, where, model_description):
+    """The rows of `table` where each `NAME=VALUE` of `where` holds (VALUE in SI or a unit the FMU declares)."""
     for condition in where:
-        name, _, value = condition.partition("=")
+        name, _, text = condition.partition("=")
         if name not in table.column_names:
             raise Refusal(f"--where {condition}: no column {name!r}")
-        table = table.filter(pc.equal(table[name], pc.cast(number(value, f"--where {condition}"), table[name].type)))
+        value = (
+            value_of(name, text, model_description, f"--where {condition}")
+            if name in settable(model_description)
+            else number(text, f"--where {condition}")
+        )
+        kept = table.filter(pc.equal(table[name], pc.cast(value, table[name].type)))
+        if kept.num_rows == 0:
+            values = ", ".join(f"{v:g}" for v in sorted(set(table[name].to_pylist())))
+            raise Refusal(f"--where {condition}: no point has {name} = {value:g} (SI); its values: {values}")
+        table = kept
     return table
 
 
@@ -137,7 +147,9 @@ def main(argv=None):
     results = args.folder / "results.parquet"
     if not results.exists():
         raise Refusal(f"{results} is missing: run the sweep (pistonslap sweep SPEC --out ...) into it first")
-    table = _select(pq.read_table(results), args.where)
+    if args.out is not None and (args.out.suffix.lower() != ".png" or args.out.is_dir()):
+        raise Refusal(f"--out {args.out}: give the name of a .png file")
+    table = _select(pq.read_table(results), args.where, fmpy.read_model_description(str(fmu_path())))
     out = args.out or args.folder / f"{args.metric}_{args.x}_{args.y}.png"
     condition = f" ({', '.join(args.where)})" if args.where else ""
     print(f"wrote {heat_map(table, args.x, args.y, args.metric, out, f'{args.folder.name}: {args.metric}{condition}')}")

@@ -448,7 +448,7 @@ def piston_positions(angle, result, events, geometry, magnification, path, case,
     frames = position_frames(angle, result, events, every_deg, origin)
     columns = 8
     rows = -(-len(frames) // columns)
-    fig, axes = plt.subplots(rows, columns, figsize=(1.5 * columns, 2.1 * rows + 1.0), squeeze=False)
+    fig, axes = plt.subplots(rows, columns, figsize=(1.5 * columns, 1.45 * rows + 1.1), squeeze=False)
     for ax, frame in zip(axes.flat, frames, strict=False):
         _draw_piston(ax, frame, geometry, magnification)
     for ax in axes.flat[len(frames) :]:
@@ -457,25 +457,47 @@ def piston_positions(angle, result, events, geometry, magnification, path, case,
         f"Successive piston positions in the bore over one engine cycle (0° = firing TDC)\n{case}", fontsize="medium"
     )
     fig.text(0.5, 0.01, _positions_caption(magnification), ha="center", fontsize="small")
-    fig.tight_layout(rect=(0, 0.03, 1, 1))
+    # laid out by hand: a tight layout of the many small panels costs a drawing of its own
+    fig.subplots_adjust(left=0.01, right=0.99, bottom=0.05, top=1 - 0.9 / fig.get_figheight(), wspace=0.05, hspace=0.2)
     fig.savefig(path, dpi=110)
     plt.close(fig)
     return path
 
 
 def piston_animation(angle, result, events, geometry, magnification, path, case, every_deg=5, origin=CENTRED):
-    """The positions of `piston_positions` as an animated GIF, one frame every `every_deg` degrees."""
+    """The positions of `piston_positions` as an animated GIF, one frame every `every_deg` degrees: the first frame
+    drawn as a panel, the later ones moving its outline and corner marks."""
     frames = position_frames(angle, result, events, every_deg, origin)
+    _, diameter, skirt, pin_height = geometry
     fig, ax = plt.subplots(figsize=(4, 5))
+    _draw_piston(ax, frames[0], geometry, magnification)
+    outline = ax.patches[0]
+    sliding = ax.plot([], [], "o", color="k", ms=5)[0]
+    hit = ax.plot([], [], "o", mfc="none", mec="tab:orange", ms=9, mew=1.5)[0]
 
     def draw(frame):
-        ax.clear()
-        _draw_piston(ax, frame, geometry, magnification)
+        corners = _outline(frame["top"], frame["bottom"], pin_height, skirt, diameter, magnification)
+        outline.set_xy(corners)
+        for marks, which in ((sliding, frame["sliding"]), (hit, frame["hit"])):
+            at = corners[[_OUTLINE_INDEX[c] for c in which]] if which else np.empty((0, 2))
+            marks.set_data(at[:, 0], at[:, 1])
         ax.set_title(f"crank angle {frame['deg']:.0f}° (0° = firing TDC)", fontsize="small")
 
-    fig.suptitle(textwrap.fill(case, 70), fontsize="x-small")
-    fig.text(0.5, 0.01, _positions_caption(magnification).replace("; ", "\n"), ha="center", fontsize="x-small")
+    for line in ax.lines[:]:
+        # the first frame's own corner marks give way to the marks each frame moves
+        if line not in (sliding, hit) and line.get_marker() == "o":
+            line.remove()
+    title = fig.suptitle(textwrap.fill(case, 70), fontsize="x-small")
+    caption = fig.text(
+        0.5, 0.01, _positions_caption(magnification).replace("; ", "\n"), ha="center", fontsize="x-small"
+    )
     fig.subplots_adjust(bottom=0.18)
+    # the title and caption, the same in every frame, drawn once into a background image: text is most of a frame
+    ax.set_title("")
+    fig.canvas.draw()
+    fig.figimage(np.asarray(fig.canvas.buffer_rgba()).copy(), zorder=-1, origin="upper")
+    title.set_visible(False)
+    caption.set_visible(False)
     FuncAnimation(fig, draw, frames=frames).save(path, writer=PillowWriter(fps=12))
     plt.close(fig)
     return path

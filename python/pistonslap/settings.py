@@ -1,8 +1,10 @@
 """Start values as users write them: `NAME=VALUE` with a unit the model description declares (`crank_speed=3000rpm`,
 `peak_pressure=90bar`, `bore=80.08mm`; no unit = SI), a TOML file of such values, and the engine presets.
 
-Every value is checked against the FMU's model description here: an unknown name or unit is a `Refusal` naming it;
-ranges and relations the FMU checks itself (`refusal.check_start_values`).
+Every value is checked against the FMU's model description here: an unknown name or unit is a `Refusal` naming it,
+and so is a number outside the variable's declared range (`within_range`, in the unit the user typed), a bare crank
+speed (rpm or rad/s?) and two values that set the same thing (`bore` and `clearance`); the relations between
+parameters the FMU checks itself (`refusal.check_start_values`).
 """
 
 import difflib
@@ -62,6 +64,53 @@ def to_fmu(values, defaults):
     return values
 
 
+#: Variables a bare number may not be given for: engine people and the SI read it in different units.
+NEEDS_UNIT = {"crank_speed": "rpm"}
+#: Variables whose value must be above 0: the runs sample the cycle in crank angle.
+POSITIVE = {"crank_speed": "the runs sample the cycle in crank angle"}
+#: Names that set the same thing, refused together in one source.
+SAME_THING = (("bore", "clearance"),)
+
+
+def bound(variable, which):
+    """The variable's declared `min` or `max` (SI), or None."""
+    text = getattr(variable, which) or (variable.declaredType and getattr(variable.declaredType, which))
+    return None if text is None else float(text)
+
+
+def within_range(name, si, model_description, where, typed=None):
+    """`si` (the SI value of `name`) when within its declared range (and above 0 where `POSITIVE`), else a `Refusal`
+    naming `where` with the bounds in the unit typed (`typed`: the number and display unit as written; None: SI)."""
+    variable = settable(model_description)[name]
+    unit = _unit_of(variable) or ""
+    number, shown = typed or (si, unit)
+    factor, offset = units(model_description).get(unit, {}).get(shown, (1.0, 0.0))
+    low, high = bound(variable, "min"), bound(variable, "max")
+    said = f"{where}: {name} = {number:g}{' ' + shown if shown else ''}"
+    if name in POSITIVE and not si > 0:
+        raise Refusal(f"{said}: give more than 0 {shown}: {POSITIVE[name]}".rstrip())
+    for limit, wrong, word in (
+        (low, low is not None and si < low, "below"),
+        (high, high is not None and si > high, "above"),
+    ):
+        if wrong:
+            raise Refusal(
+                f"{said} is {word} its declared {'minimum' if word == 'below' else 'maximum'} "
+                f"{limit * factor + offset:g} {shown}".rstrip()
+            )
+    return si
+
+
+def same_thing(names, where):
+    """Refuses names of one source that set the same thing (`SAME_THING`)."""
+    for group in SAME_THING:
+        given = [n for n in group if n in names]
+        if len(given) > 1:
+            raise Refusal(
+                f"{where}: {' and '.join(given)} both set the bore (clearance = bore - piston_diameter): give one"
+            )
+
+
 def _unknown(name, names, where):
     close = difflib.get_close_matches(name, names, n=3)
     hint = f" (did you mean {', '.join(close)}?)" if close else ""
@@ -83,24 +132,33 @@ def value_of(name, text, model_description, where):
         return text if isinstance(text, bool) else text == "true"
     if isinstance(text, (int, float)):
         number, unit = float(text), ""
+        if name in NEEDS_UNIT:
+            raise Refusal(
+                f'{where}: {name} = {text} names no unit: write "{text} {NEEDS_UNIT[name]}" or "{text} '
+                f'{_unit_of(variable)}"'
+            )
     else:
         match = _NUMBER_AND_UNIT.match(str(text))
         if not match:
             raise Refusal(f"{where}: {name} = {text!r} is not a number with an optional unit")
         number, unit = float(match.group(1)), _ALIASES.get(match.group(2), match.group(2))
-    si = _unit_of(variable)
-    if unit and unit != si:
-        display = units(model_description).get(si, {})
+        if name in NEEDS_UNIT and not unit:
+            raise Refusal(
+                f"{where}: {name} = {text} names no unit: write {text}{NEEDS_UNIT[name]} or {text}{_unit_of(variable)}"
+            )
+    si_unit, value = _unit_of(variable), number
+    if unit and unit != si_unit:
+        display = units(model_description).get(si_unit, {})
         if unit not in display:
-            known = [u for u in (si, *display) if u]
+            known = [u for u in (si_unit, *display) if u]
             raise Refusal(f"{where}: {name} takes {' or '.join(known) if known else 'no unit'}, not {unit!r}")
         factor, offset = display[unit]
-        number = (number - offset) / factor
+        value = (number - offset) / factor
     if variable.type in ("Integer", "Enumeration"):
-        if number != int(number):
+        if value != int(value):
             raise Refusal(f"{where}: {name} = {text} is an {variable.type}: give a whole number")
-        return int(number)
-    return number
+        return int(value)
+    return within_range(name, value, model_description, where, (number, unit or si_unit or ""))
 
 
 def parse_set(assignments, model_description):
@@ -111,6 +169,7 @@ def parse_set(assignments, model_description):
         if not equals or not name.strip():
             raise Refusal(f"--set {assignment!r}: give NAME=VALUE, e.g. crank_speed=3000rpm")
         values[name.strip()] = value_of(name.strip(), text.strip(), model_description, f"--set {assignment}")
+    same_thing(values, "--set")
     return values
 
 
@@ -124,6 +183,7 @@ def read_params(path, model_description):
             raw = tomllib.load(f)
     except tomllib.TOMLDecodeError as e:
         raise Refusal(f"--params {path}: not TOML: {e}") from None
+    same_thing(raw, f"--params {path}")
     return {name: value_of(name, value, model_description, f"{path}: {name}") for name, value in raw.items()}
 
 

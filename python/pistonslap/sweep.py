@@ -5,6 +5,7 @@ and keeps; a task carries only a batch of points and the spec's fixed settings, 
 writes each finished batch as a parquet part, so a rerun runs only the points not recorded yet.
 """
 
+import dataclasses
 import math
 import os
 import sys
@@ -22,6 +23,7 @@ from .refusal import Parser, Refusal
 from .sweep_point import METRICS, all_zero, run_point, zero_note
 from .sweep_spec import SpecError, load
 from .sweep_store import Store
+from .trace_tdc import PlacedTrace
 
 #: Batches per worker when the batch size is left to the sweep: enough to balance uneven run times, few enough
 #: that a task's overhead (milliseconds) stays small against its runs.
@@ -129,6 +131,19 @@ def summary(path, ran):
     return line + (f"\n{note}" if note else "")
 
 
+def with_trace(spec, out):
+    """`spec` with its [start] pressure trace (pressure_source = 3) read as exported, refused with the file's line
+    before anything runs, and written in the FMU's own form into the results' folder, where the workers read it."""
+    fixed = spec.fixed
+    if fixed.get("pressure_source") != 3 or not fixed.get("pressure_trace"):
+        return spec
+    placed = PlacedTrace(fixed["pressure_trace"], None, fmu_path())
+    print(placed.said)
+    folder = Path(out) / spec.name
+    folder.mkdir(parents=True, exist_ok=True)
+    return dataclasses.replace(spec, fixed=dict(fixed, pressure_trace=placed.write(folder)))
+
+
 def main(argv=None):
     args = _parser().parse_args(argv)
     if args.batch is not None and args.batch < 1:
@@ -139,6 +154,7 @@ def main(argv=None):
         raise Refusal(f"{args.spec}: no such spec file")
     try:
         spec = load(args.spec, fmpy.read_model_description(str(fmu_path())))
+        spec = with_trace(spec, args.out)
         with connect(args.workers, args.scheduler) as client:
             path, ran = run(spec, args.out, client, batch_size=args.batch)
     except SpecError as e:

@@ -25,7 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from .refusal import Refusal
-from .settings import CLEARANCE, value_of
+from .settings import CLEARANCE, POSITIVE, bound, same_thing, value_of
 
 #: The sweep sets the impact log itself (one per run, read for the metrics).
 RESERVED = ("impact_log",)
@@ -85,6 +85,10 @@ def parse(raw, model_description):
     random = _latin_hypercube(variables, raw["random"]) if "random" in raw else {}
     for name in grid.keys() & random.keys() | (grid.keys() | random.keys()) & fixed.keys():
         raise SpecError(f"{name} is given in more than one of [start], [grid] and [random]")
+    try:
+        same_thing(fixed.keys() | grid.keys() | random.keys(), "[start], [grid] and [random]")
+    except Refusal as e:
+        raise SpecError(str(e)) from None
     if not grid and not random:
         raise SpecError("nothing to sweep: give [grid] or [random]")
 
@@ -124,11 +128,6 @@ def _variable(variables, name, entry):
     return variable
 
 
-def _bound(variable, which):
-    text = getattr(variable, which) or (variable.declaredType and getattr(variable.declaredType, which))
-    return None if text is None else float(text)
-
-
 def _value(variables, entry, name, value):
     """`value` checked against the type and the declared range of the variable `name`."""
     variable = _variable(variables, name, entry)
@@ -151,9 +150,12 @@ def _value(variables, entry, name, value):
         if value != int(value):
             raise SpecError(f"{entry} = {value!r}: {name} is an {variable.type} and takes whole numbers")
         value = int(value)
-    low, high = _bound(variable, "min"), _bound(variable, "max")
+    low, high = bound(variable, "min"), bound(variable, "max")
     if (low is not None and value < low) or (high is not None and value > high):
-        raise SpecError(f"{entry} = {value!r} is outside {name}'s range [{low}, {high}]")
+        shown = (-math.inf if low is None else low, math.inf if high is None else high)
+        raise SpecError(f"{entry} = {value!r} is outside {name}'s range [{shown[0]}, {shown[1]}] (SI)")
+    if name in POSITIVE and not value > 0:
+        raise SpecError(f"{entry} = {value!r}: give more than 0: {POSITIVE[name]}")
     return float(value) if variable.type == "Real" else value
 
 

@@ -5,34 +5,20 @@ outputs count from there. Indicating systems also export cycles from 0 to 720° 
 gas-exchange TDC at 0: such a trace, taken as it is, would fire half a cycle late against the crank. So the demo
 places firing TDC before the run: where the user states it (`--firing-tdc DEG`, in the trace's own angles), or else
 at the top dead centre (a multiple of 360° of the trace's angle) nearest the peak pressure, which a fired cycle
-reaches 5–20° after firing TDC and a motored one at it. A trace whose firing TDC is not at 0° is handed to the FMU
-as a copy with its angles shifted by −TDC (pressures as written), so that the −360…360° axis has firing TDC at 0.
+reaches 5–20° after firing TDC and a motored one at it. The FMU runs the trace with its angles shifted by −TDC
+(`trace_file.Trace.for_fmu`), so that the −360…360° axis has firing TDC at 0.
 """
 
 from pathlib import Path
 
 import numpy as np
 
+from . import trace_file
 from .refusal import Refusal
 
 #: Farthest the peak pressure may lie from the TDC taken as firing TDC, deg: late combustion peaks within ~40°
 #: after TDC; farther than this the trace's angles are not counted from a TDC and firing TDC must be stated.
 PEAK_FROM_TDC = 60.0
-
-
-def read_trace(path):
-    """(header row, angles [deg], pressures in the file's unit, pressure cells as written) of a trace, or None
-    when its rows are not all `angle, pressure` numbers (the FMU then refuses it naming the line)."""
-    lines = [line.strip() for line in Path(path).read_text().splitlines()]
-    rows = [line.split(",") for line in lines[1:] if line]
-    try:
-        angles = np.array([float(row[0]) for row in rows])
-        pressures = np.array([float(row[1]) for row in rows])
-    except (IndexError, ValueError):
-        return None
-    if len(rows) < 2:
-        return None
-    return lines[0], angles, pressures, [",".join(row[1:]).strip() for row in rows]
 
 
 def detect_firing_tdc(angles, pressures):
@@ -48,28 +34,36 @@ def detect_firing_tdc(angles, pressures):
     return tdc, peak
 
 
-def place_firing_tdc(path, out, stated=None):
-    """The trace the FMU should read, with firing TDC at its 0°, and one line saying where firing TDC was taken.
-
-    `stated` is firing TDC in the trace's angles (deg) or None to detect it from the peak; a trace whose firing
-    TDC is not at 0 (mod 720°) is written shifted into `out`."""
-    trace = read_trace(path)
-    if trace is None:
-        return path, f"pressure trace {path}: not read here (the FMU checks it); its 0° taken as firing TDC"
-    header, angles, pressures, cells = trace
-    try:
-        tdc, peak = detect_firing_tdc(angles, pressures)
-    except Refusal as refusal:
-        if stated is None:
-            raise Refusal(f"--pressure-trace {path}: {refusal}") from None
-        peak = float(angles[np.argmax(pressures)])
-    how = "stated" if stated is not None else "detected: the TDC nearest the peak"
+def place_firing_tdc(trace, stated=None):
+    """(the shift, deg, that puts firing TDC at the FMU's 0°, one line saying where firing TDC was taken) of the
+    `trace_file.Trace` `trace`; `stated` is firing TDC in the trace's angles (deg) or None to detect it from the
+    peak."""
+    peak = float(trace.angles[np.argmax(trace.pressures)])
+    if stated is None:
+        try:
+            tdc, peak = detect_firing_tdc(trace.angles, trace.pressures)
+        except Refusal as refusal:
+            raise Refusal(f"--pressure-trace {trace.name}: {refusal}") from None
     tdc = float(stated) if stated is not None else tdc
-    said = f"pressure trace {path}: peak at {peak:g}°, firing TDC at {tdc:g}° ({how})"
+    how = "stated" if stated is not None else "detected: the TDC nearest the peak"
+    said = f"pressure trace {trace.name}: {trace.reference}; peak at {peak:g}°, firing TDC at {tdc:g}° ({how})"
     if (tdc / 720.0).is_integer():
-        return path, said
-    shifted = Path(out) / f"{Path(path).stem}_firing_tdc_0.csv"
-    Path(out).mkdir(parents=True, exist_ok=True)
-    rows = "".join(f"{angle - tdc!r},{cell}\n" for angle, cell in zip(angles.tolist(), cells, strict=True))
-    shifted.write_text(f"{header}\n{rows}")
-    return shifted, f"{said}; its angles shifted by {-tdc:g}° into {shifted}"
+        return 0.0, said
+    return -tdc, f"{said}; run with its angles shifted by {-tdc:g}°"
+
+
+class PlacedTrace:
+    """A pressure trace (`--pressure-trace`, or `pressure_trace` set otherwise) read as exported
+    (`trace_file.load`, a bare name among the FMU `fmu`'s resources), its firing TDC placed (`firing_tdc` stated,
+    or None), and written in the FMU's own form for a run into the folder the caller names: a scratch folder to check
+    the start values, the results' folder once they are accepted, so that a refusal leaves nothing behind."""
+
+    def __init__(self, path, firing_tdc, fmu):
+        self.trace = trace_file.load(path, fmu)
+        self.shift, self.said = place_firing_tdc(self.trace, firing_tdc)
+
+    def write(self, folder):
+        """The trace as the FMU runs it, written into `folder`; its path."""
+        path = Path(folder) / "pressure_trace_as_run.csv"
+        path.write_text(self.trace.for_fmu(self.shift))
+        return str(path.resolve())

@@ -22,7 +22,6 @@ def test_display_units_convert_to_si(md):
         [
             "crank_speed=3000rpm",
             "peak_pressure=90 bar",
-            "bore=80.1mm",
             "clearance=40um",
             "restitution=0.3",
             "pressure_source=3",
@@ -33,7 +32,7 @@ def test_display_units_convert_to_si(md):
     )
     assert values["crank_speed"] == pytest.approx(3000 * np.pi / 30, rel=1e-15)
     assert values["peak_pressure"] == pytest.approx(9e6, rel=1e-15)
-    assert values["bore"] == pytest.approx(0.0801, rel=1e-15)
+    assert parse_set(["bore=80.1mm"], md)["bore"] == pytest.approx(0.0801, rel=1e-15)
     assert values["crank_angle_start"] == pytest.approx(np.pi, rel=1e-15)
     assert (values["restitution"], values["pressure_source"], values["pressure_trace"]) == (0.3, 3, "x.csv")
     # the diametral clearance sets the bore from the piston diameter
