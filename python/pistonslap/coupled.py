@@ -24,7 +24,7 @@ from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, from_firing_tdc, rea
 from .presets import PRESETS as PISTON_PRESETS
 from .progress import Progress
 from .refusal import Parser, Refusal, check_start_values, number
-from .settings import parse_set, read_params, to_fmu
+from .settings import add_parameter_options, parse_set, read_params, to_fmu
 
 #: The partner FMU the package carries next to PistonSlap.fmu (`make fmu` copies both).
 ENGINE_FMU = Path(__file__).resolve().parent / "fmu" / "EngineCycle.fmu"
@@ -289,15 +289,7 @@ def _parser(presets):
         help="PistonSlap's engine preset for the piston, rod and clearance (the engine's bore, stroke and rod "
         "length win where --engine gives them; speed and pressure are the engine's)",
     )
-    parser.add_argument("--params", type=Path, help='TOML file of PistonSlap parameters: name = SI or "number unit"')
-    parser.add_argument(
-        "--set",
-        action="append",
-        default=[],
-        metavar="NAME=VALUE",
-        help="any PistonSlap parameter, SI or with a unit it declares (skirt_model=2 for the lubricated skirt, "
-        "clearance=40um); repeatable",
-    )
+    add_parameter_options(parser, "PistonSlap", "skirt_model=2 for the lubricated skirt, clearance=40um")
     parser.add_argument(
         "--crank-0-720",
         action="store_true",

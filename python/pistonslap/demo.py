@@ -27,7 +27,7 @@ from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate
 from .presets import PRESETS, help_text
 from .progress import Progress
 from .refusal import Parser, Refusal, check_start_values, number
-from .settings import parse_set, read_params, to_fmu, within_range
+from .settings import add_parameter_options, parse_set, read_params, to_fmu, within_range
 from .tables import LANDING_RUN_ON, SAMPLE_DEG, WALLS, cycle_metrics, energy_unit, slap_rows, write_table
 from .trace_tdc import PlacedTrace
 
@@ -42,17 +42,7 @@ DEFAULT_PLOTS = ("slap", "forces", "motion", "positions", "film")
 def _parser():
     parser = Parser(prog="pistonslap demo", description=__doc__.splitlines()[0])
     parser.add_argument("--engine", choices=PRESETS, help=f"engine preset: {help_text()}")
-    parser.add_argument("--params", type=Path, help='TOML file of parameters: name = SI number or "number unit"')
-    parser.add_argument(
-        "--set",
-        action="append",
-        default=[],
-        metavar="NAME=VALUE",
-        help=(
-            "any FMU parameter, SI or with a unit the FMU declares (crank_speed=3000rpm, "
-            "peak_pressure=90bar, bore=80.08mm); repeatable"
-        ),
-    )
+    add_parameter_options(parser, "FMU", "crank_speed=3000rpm, peak_pressure=90bar, bore=80.08mm")
     parser.add_argument(
         "--pressure-trace",
         type=Path,

@@ -161,6 +161,19 @@ def value_of(name, text, model_description, where):
     return within_range(name, value, model_description, where, (number, unit or si_unit or ""))
 
 
+def add_parameter_options(parser, whose, examples):
+    """`--params FILE` and repeatable `--set NAME=VALUE` for `whose` parameters (`parse_set`, `read_params`), the
+    help naming `examples` of assignments."""
+    parser.add_argument("--params", type=Path, help=f'TOML file of {whose} parameters: name = SI or "number unit"')
+    parser.add_argument(
+        "--set",
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help=f"any {whose} parameter, SI or with a unit it declares ({examples}); repeatable",
+    )
+
+
 def parse_set(assignments, model_description):
     """`--set NAME=VALUE` arguments as start values."""
     values = {}
