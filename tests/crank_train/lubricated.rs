@@ -321,8 +321,8 @@ fn painleve_through_the_films_inertia_is_the_linkages_contact_problem() {
 /// The asperities are elastic: what their load takes is stored (`potential_energy`) and comes back as
 /// they part, so `film_energy_total` never falls. The random declared design 0 (σ = 0.43 µm on
 /// dense summits, 63 impacts through the film in 0.1 s) lies on its asperities: booked as dissipation
-/// their energy made the total fall by 1.4e-4 J within a step; kept apart, not by a joule's 1e-12
-/// part. Its books close as before, the energy moved from the dissipation to the potential energy.
+/// their energy would make the total fall (by 1.4e-4 J within a step); kept apart, it falls by no
+/// more than a joule's 1e-12 part, and the books close with that energy in the potential energy.
 #[test]
 fn the_asperities_store_what_they_take_and_the_film_total_never_falls() {
     use crate::common::designs::{lubricated_declared, Random};
