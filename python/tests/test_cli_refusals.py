@@ -1,14 +1,8 @@
 """Every refusal class of the `pistonslap` commands: exit status 2, exactly one line on stderr naming the cause,
 no traceback; `--debug` shows the traceback instead. The cases are the ones a new user tried."""
 
-import os
-import subprocess
-import sys
-from pathlib import Path
-
 import pytest
-
-PISTONSLAP = Path(sys.executable).parent / "pistonslap"
+from cli import pistonslap
 
 #: (arguments, words the one line must hold), one per refusal class.
 CASES = {
@@ -54,14 +48,7 @@ CASES = {
 
 
 def _run(args, cwd):
-    return subprocess.run(
-        [str(PISTONSLAP), *args],
-        cwd=cwd,
-        env=dict(os.environ, MPLBACKEND="Agg"),
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
+    return pistonslap(*args, cwd=cwd)
 
 
 @pytest.mark.parametrize("case", CASES)

@@ -2,27 +2,14 @@
 parameter files and --set (the lubricated skirt too) reach PistonSlap, what the engine drives is refused, the
 summary opens with the operating point, and the synchronisation check is drawn only when asked for."""
 
-import os
-import subprocess
-import sys
-from pathlib import Path
-
 import pytest
+from cli import pistonslap
 
 from pistonslap.engine_cycle_presets import PRESETS
 
-PISTONSLAP = Path(sys.executable).parent / "pistonslap"
-
 
 def coupled(*args, cwd):
-    return subprocess.run(
-        [str(PISTONSLAP), "coupled", "--cycles", "3", "--out", "out", *args],
-        cwd=cwd,
-        env=dict(os.environ, MPLBACKEND="Agg"),
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
+    return pistonslap("coupled", "--cycles", "3", "--out", "out", *args, cwd=cwd)
 
 
 @pytest.mark.parametrize("engine", PRESETS)

@@ -3,26 +3,15 @@ figures from the cycle before, a warning when they moved by more than 10 % or wh
 drawn (the start-up)."""
 
 import csv
-import os
 import re
-import subprocess
-import sys
-from pathlib import Path
+
+from cli import pistonslap
 
 from pistonslap.cycle_figures import change
 
-PISTONSLAP = Path(sys.executable).parent / "pistonslap"
-
 
 def demo(*args, cwd):
-    done = subprocess.run(
-        [str(PISTONSLAP), "demo", "--plots", "none", "--out", "out", *args],
-        cwd=cwd,
-        env=dict(os.environ, MPLBACKEND="Agg"),
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
+    done = pistonslap("demo", "--plots", "none", "--out", "out", *args, cwd=cwd)
     assert done.returncode == 0, done.stderr
     return done.stdout
 

@@ -4,15 +4,12 @@
 says; the styles that cannot be read are refused in one line naming the file, the line and the angle as written, and
 leave nothing in --out."""
 
-import os
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from cli import pistonslap
 
-PISTONSLAP = Path(sys.executable).parent / "pistonslap"
 RESOURCES = Path(__file__).resolve().parents[2] / "resources"
 #: The full-load example: -360…359.5° every 0.5°, absolute bar.
 ANGLES, BAR = np.loadtxt(RESOURCES / "full_load.csv", delimiter=",", skiprows=1, unpack=True)
@@ -111,14 +108,7 @@ REFUSED = {
 
 
 def demo(*args, cwd):
-    return subprocess.run(
-        [str(PISTONSLAP), "demo", "--cycles", "1", "--plots", "none", *args],
-        cwd=cwd,
-        env=dict(os.environ, MPLBACKEND="Agg"),
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
+    return pistonslap("demo", "--cycles", "1", "--plots", "none", *args, cwd=cwd)
 
 
 def as_run(out):
@@ -191,14 +181,7 @@ def test_a_trace_set_as_a_parameter_is_read_as_exported(tmp_path):
 
 def sweep(spec, cwd):
     (cwd / "spec.toml").write_text(spec)
-    return subprocess.run(
-        [str(PISTONSLAP), "sweep", "spec.toml", "--workers", "1", "--out", "sweeps"],
-        cwd=cwd,
-        env=dict(os.environ, MPLBACKEND="Agg"),
-        capture_output=True,
-        text=True,
-        timeout=300,
-    )
+    return pistonslap("sweep", "spec.toml", "--workers", "1", "--out", "sweeps", cwd=cwd)
 
 
 def test_a_sweep_runs_an_exported_trace_and_refuses_a_bad_one_before_starting(tmp_path):

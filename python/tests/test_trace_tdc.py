@@ -2,20 +2,17 @@
 counted from another TDC handed to the FMU shifted so that it runs exactly as the same cycle counted from firing TDC.
 """
 
-import os
-import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+from cli import pistonslap
 
 from pistonslap.fmu import simulate
 from pistonslap.refusal import Refusal
 from pistonslap.trace_file import load
 from pistonslap.trace_tdc import detect_firing_tdc, place_firing_tdc
 
-PISTONSLAP = Path(sys.executable).parent / "pistonslap"
 RESOURCES = Path(__file__).resolve().parents[2] / "resources"
 
 
@@ -80,12 +77,6 @@ def test_a_stated_firing_tdc_wins_over_the_peak(tmp_path):
 
 def test_the_demo_refuses_a_trace_whose_firing_tdc_cannot_be_told_in_one_line(tmp_path):
     path = moved(tmp_path, "full_load.csv", 90)
-    done = subprocess.run(
-        [str(PISTONSLAP), "demo", "--pressure-trace", str(path), "--out", str(tmp_path / "out")],
-        env=dict(os.environ, MPLBACKEND="Agg"),
-        capture_output=True,
-        text=True,
-        timeout=120,
-    )
+    done = pistonslap("demo", "--pressure-trace", path, "--out", tmp_path / "out", cwd=None)
     assert done.returncode == 2 and len(done.stderr.splitlines()) == 1, done.stderr
     assert "--pressure-trace" in done.stderr and "--firing-tdc" in done.stderr, done.stderr
