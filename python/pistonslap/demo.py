@@ -423,6 +423,8 @@ def main(argv=None):
         + summary(dict(zip(table.dtype.names, last, strict=True), **drawn_figures), lubricated)
     )
     print(settling(result, events, cycle, origin, drawn_figures, p["slap_threshold"]))
+    if lubricated and (warning := relaxation(result)):
+        print(warning)
     if args.liner_loads is not None:
         written += write_liner_loads(args, values, omega, origin, case, plots)
     for path in written:
@@ -449,6 +451,22 @@ def settling(result, events, cycle, origin, drawn_figures, slap_threshold):
             "give more --cycles."
         )
     return line
+
+
+#: The share of the film's dissipation beyond which the work of its relaxation term says film_relaxation is too long.
+RELAXATION_SHARE = 0.01
+
+
+def relaxation(result):
+    """A warning when the film's relaxation term did more work than `RELAXATION_SHARE` of the film's dissipation: the
+    film then acts on the motion too late for the design (its damping at the rates film_relaxation ahead)."""
+    work, film = result["film_relaxation_work"][-1], result["film_energy_total"][-1]
+    if abs(work) <= RELAXATION_SHARE * abs(film):
+        return None
+    return (
+        f"Warning: the film's relaxation term did {work:.3g} J of work beside the {film:.3g} J the film dissipated: "
+        "its force lags the motion too much for this design; lower film_relaxation."
+    )
 
 
 #: The plots being drawn by `draw`, which its forked processes inherit.

@@ -4,9 +4,9 @@ use nalgebra::{SMatrix, SVector};
 
 /// Rates a system reports along the motion (`System::powers`) and their integrals, which the core
 /// keeps with every step's own weights and carries across events alike, in up to eight channels the
-/// system names (W and J, or N and N·s for a force it reports). One is the core's own: `[0]`, the
-/// power the system's forces absorb beyond its mechanical energy (`System::absorbs`), to which the
-/// power taken from an implicit force by projected contacts is added.
+/// system names (W and J, or N and N·s for a force it reports). One is the core's own: `[0]` holds
+/// the power the system's force made linearly implicit through `M` takes from the motion
+/// (`System::absorbs`), and the core adds to it the share projected contacts take over from that force.
 pub type Powers = SVector<f64, 8>;
 
 /// Everything one RK4 stage, one impact or one sliding solve needs, evaluated at `(t, q, q̇)`.
@@ -103,9 +103,9 @@ pub trait System<const N: usize, const M: usize> {
         nominal
     }
 
-    /// Whether the system has forces of its own that take energy from the motion beyond what its
-    /// mechanical energy holds, such as a lubricating film's: their power is [`Powers`]`[0]`. False,
-    /// the default: the core takes its paths as without them.
+    /// Whether the system has a force made linearly implicit through `M` (a lubricating film's,
+    /// see [`Self::powers`]), whose power [`Powers`]`[0]` holds. False, the default: the core takes
+    /// its paths as without one.
     fn absorbs(&self) -> bool {
         false
     }

@@ -115,7 +115,7 @@ pub fn impacts(events: &[EngineEvent]) -> impl Iterator<Item = &EngineEvent> {
 /// by name): the mechanical energy lost, and what the drive (or load) and the gas did less the joint
 /// damping, against what was dissipated.
 pub struct ClosedBooks {
-    /// Δ(kinetic_energy + potential_energy) lost, J.
+    /// Δ(kinetic_energy + potential_energy) lost less the film's relaxation work (Δfilm_relaxation_work), J.
     pub lost: f64,
     /// Δ(drive_work_total + gas_work_total − damping_energy_total), J.
     pub work: f64,
@@ -130,7 +130,7 @@ pub struct ClosedBooks {
 impl ClosedBooks {
     pub fn between(start: impl Fn(&str) -> f64, end: impl Fn(&str) -> f64) -> Self {
         let delta = |names: &[&str], sign: f64| names.iter().map(|n| sign * (end(n) - start(n))).sum::<f64>();
-        let lost = delta(&["kinetic_energy", "potential_energy"], -1.0);
+        let lost = delta(&["kinetic_energy", "potential_energy", "film_relaxation_work"], -1.0);
         let work = delta(&["drive_work_total", "gas_work_total"], 1.0) - delta(&["damping_energy_total"], 1.0);
         let dissipated = delta(&["dissipated_energy_total"], 1.0);
         let gross = ["drive_work_total", "gas_work_total", "damping_energy_total"].iter().map(|&n| delta(&[n], 1.0).abs()).sum();

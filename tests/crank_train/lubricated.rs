@@ -54,6 +54,7 @@ fn booked(model: &CrankTrain, events: &[EngineEvent]) -> std::collections::HashM
     [
         ("kinetic_energy", out.kinetic_energy),
         ("potential_energy", out.potential_energy),
+        ("film_relaxation_work", out.film_relaxation_work),
         ("drive_work_total", out.drive_work_total),
         ("gas_work_total", out.gas_work_total),
         ("damping_energy_total", out.damping_energy_total),
@@ -103,10 +104,10 @@ fn the_film_closes_the_energy_books_in_both_crank_modes() {
 
 /// Thrown sideways at 2 m/s onto oil of 0.1 mPa·s with corner friction 0.1, on a crank held at speed
 /// without gas or damping: five impacts, each met by an impulse of the drive, which acts through the
-/// linkage's inertia as the impact does (`System::impact_mass`). The books close to 1.1e-3 of the
-/// energy lost (measured: 3.3e-3 J of 3.03 J, from the film's transients after each impact, which RK4
-/// follows at two steps per τ to ≈ 2e-3 of their energy: `tests/core/absorbing.rs`). The drive's
-/// impulse reckoned through the film's implicit inertia instead misses 0.74 J, which this catches.
+/// linkage's inertia as the impact does (`System::impact_mass`). The books close to 2e-3 of what the
+/// motion lost (measured: 6.7e-7 J of 23.4 J; the film's relaxation term gave back 20.4 J of it, the
+/// throw reaching the liner within τ), and the drive's impulses do 1.48 J: reckoned through the
+/// film's implicit inertia instead they miss 0.74 J, which this catches.
 #[test]
 fn impacts_through_the_film_close_the_books_with_the_drives_impulses() {
     let params = Parameters {
@@ -127,7 +128,7 @@ fn impacts_through_the_film_close_the_books_with_the_drives_impulses() {
         "{impacts} impacts, lost {lost:.6e} J, drive {work:.6e} J, through impulses {:.4e} J, residual {residual:.3e} J",
         model.impulse_work()
     );
-    assert!(impacts >= 3 && model.impulse_work().abs() > 0.1 * lost, "{impacts} impacts, {} J", model.impulse_work());
+    assert!(impacts >= 3 && model.impulse_work().abs() > 0.1, "{impacts} impacts, {} J", model.impulse_work());
     assert!(residual.abs() < 2e-3 * lost, "residual {residual} J of {lost} J");
 }
 
@@ -345,4 +346,36 @@ fn the_asperities_store_what_they_take_and_the_film_total_never_falls() {
     let mut model = CrankTrain::new(&design.params, 0.0).unwrap();
     let Books { work, residual, .. } = books(&mut model, &design.inputs, (0.1, 1000));
     assert!(residual.abs() < 1e-4 * work.abs(), "residual {residual:e} J of {work:e} J");
+}
+
+/// The film's relaxation term (its damping at the rates τ ahead, an added inertia τ D) does work of
+/// its own, no dissipation: while D holds it stores `½ τ vᵀ D v`, and D is renewed at every film solve.
+/// Booked with the film, that work made `film_energy_total` fall within a step on random declared
+/// designs with impacts (seeds 5, 13, 19: by 2.1e-6, 4.8e-6, 1.7e-6 J), gone at τ ≤ 1e-5 s. Booked
+/// apart (`film_relaxation_work`), neither the film's total nor the dissipated energy falls on 30
+/// random designs over 0.1 s, by more than 1e-12 of their size.
+#[test]
+fn the_film_and_dissipation_totals_never_fall_on_random_lubricated_designs() {
+    use crate::common::designs::{lubricated_declared, Random};
+    let mut impacting = 0;
+    for seed in 0..30 {
+        let design = lubricated_declared(&mut Random::new(seed));
+        let mut model = CrankTrain::new(&design.params, 0.0).unwrap();
+        let (mut events, mut t, mut impact_loss) = (Vec::new(), 0.0, 0.0);
+        let (mut film, mut dissipated, mut impacted) = (0.0f64, 0.0f64, false);
+        while t < 0.1 {
+            t += design.step;
+            model.advance(&design.inputs, t, &mut events).unwrap();
+            impacted |= impacts(&events).count() > 0;
+            impact_loss += events.drain(..).map(|e| e.energy_lost - e.friction_energy).sum::<f64>();
+            let out = outputs(&model);
+            let now = [out.film_energy_total, out.film_energy_total + out.friction_energy_total + impact_loss];
+            for (total, last) in now.iter().zip([&mut film, &mut dissipated]) {
+                assert!(*total >= *last - 1e-12 * last.abs().max(1.0), "seed {seed} at {t} s: {total} J after {last} J");
+                *last = *total;
+            }
+        }
+        impacting += usize::from(impacted);
+    }
+    assert!(impacting >= 20, "{impacting} of 30 designs with impacts");
 }

@@ -7,7 +7,7 @@
 //!   yields the drive torque.
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
-use super::books;
+use super::books::{self, SkirtRates};
 use super::linkage::{LinkAngles, Linkage, Loads};
 use super::lubrication::{predicted, Lubrication};
 use super::model::MAX_STEP_ANGLE;
@@ -175,13 +175,13 @@ impl Engine {
         let film = self
             .lubrication
             .as_ref()
-            .map_or(Vector4::zeros(), |l| l.absorbed_power((phi, &LinkAngles::with_crank((crank.sin, crank.cos), phi)), phid, phidd));
+            .map_or(SkirtRates::zeros(), |l| l.absorbed_power((phi, &LinkAngles::with_crank((crank.sin, crank.cos), phi)), phid, phidd));
         books::powers(&film, drive, gas, damping)
     }
 
     /// What the lubricated skirt takes from a velocity jump at φ, J (`Lubrication::absorbed_by_jump`).
     fn absorbed_by_jump(&self, phi: &Vector3<f64>, trig: &LinkAngles, before: &Vector3<f64>, after: &Vector3<f64>) -> Powers {
-        let film = self.lubrication.as_ref().map_or(Vector4::zeros(), |l| l.absorbed_by_jump((phi, trig), before, after));
+        let film = self.lubrication.as_ref().map_or(SkirtRates::zeros(), |l| l.absorbed_by_jump((phi, trig), before, after));
         books::powers(&film, 0.0, 0.0, 0.0)
     }
 

@@ -6,7 +6,7 @@
 //! `Δq̇ = M_rr⁻¹ J_rᵀ Λ` and from the crank row `P_d = M_1r Δq̇ − (∂h/∂φ1)ᵀ Λ`. The drive does the
 //! work `P_d ω`, and `ΔT = −(dissipation) + P_d ω` with dissipation `−Λᵀ(ḣ⁻ + ḣ⁺)/2`.
 
-use super::books::{DAMPING, DRIVE, FILM, GAS};
+use super::books::{DAMPING, DRIVE, FILM, GAS, IMPLICIT};
 use super::drive::PrescribedCrank;
 use super::model::CrankTrain;
 use crate::models::{EnergyBalance, PowerFlows};
@@ -65,7 +65,8 @@ impl EnergyBalance for CrankTrain {
     fn power_flows(&self) -> PowerFlows {
         let (rates, _) = self.drive.stepper().powers();
         let (_, friction, _) = self.friction();
-        PowerFlows { drive: rates[DRIVE], gas: rates[GAS], damping: rates[DAMPING], friction, film: rates[FILM] }
+        let film = rates[FILM] + rates[IMPLICIT];
+        PowerFlows { drive: rates[DRIVE], gas: rates[GAS], damping: rates[DAMPING], friction, film }
     }
 
     fn impulse_work(&self) -> f64 {

@@ -19,9 +19,12 @@
 //! with D → 0 the dry equations come back exactly. Boundary friction on the asperities, linear in
 //! the sliding speed V across a narrow band (`skirt::BOUNDARY_SLIP`), is made implicit the same way
 //! along `g` (slope c): a skirt that stops on its asperities is held by a friction that would
-//! otherwise flip with V at every step. What the skirt takes from the motion,
-//! `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇))·φ̇`, and at a projection onto held corners (a jump Δφ̇) the impulse
-//! `−τ Gᵀ D G Δφ̇`'s share, is booked by the core as the absorbed work (`System::powers`);
+//! otherwise flip with V at every step. The books (`System::powers`, `books`) keep apart what the
+//! loads at the instant's rates take from the motion, `−Q·φ̇` (the film's and boundary friction's
+//! dissipation, and the asperities' stored energy's rise), and what the implicit term takes,
+//! `τ (G φ̇)ᵀ D (G φ̈ + Ġ φ̇)`, with at a projection onto held corners (a jump Δφ̇) the impulse
+//! `−τ Gᵀ D G Δφ̇`'s share: with v = G φ̇ the rise of `½ τ vᵀ D v` less `½ τ vᵀ Ḋ v`, no loss but
+//! the relaxation's own work (D renewed at each film solve, so no function of the state either);
 //! each wall's push, its side's share of the lateral force with its share of the implicit term (and
 //! of the impulse at a projection), as two further channels: the film's and asperities' impulse on
 //! the liner. An impact acts through the linkage's inertia alone (`System::impact_mass`): the film,
@@ -32,6 +35,7 @@
 //! (`Skirt::loads_with`), and carried on to the next steps while the piston moves little
 //! (`step_film`).
 
+use super::books::SkirtRates;
 use super::linkage::LinkAngles;
 use super::step_film::{key, Solved, StepFilm};
 use crate::models::numerics::LastValue;
@@ -292,12 +296,13 @@ impl Lubrication {
         self.loads(&self.kinematics(at, phid).motion)
     }
 
-    /// What the skirt takes from the motion at (φ, φ̇, φ̈), W: all of it,
-    /// `−(Q − τ Gᵀ D (G φ̈ + Ġ φ̇) − τ c g ÿ)·φ̇`, and the axial friction's share,
-    /// `−(F_a ẏ + M_a φ̇3) + τ c ẏ ÿ`; and the anti-thrust and the thrust wall's
-    /// push as the motion takes it, N: each wall's share of the lateral force with the implicit term,
+    /// The skirt's rates at (φ, φ̇, φ̈) (`books::SkirtRates`): what its implicit term takes,
+    /// `τ (G φ̇)ᵀ D (G φ̈ + Ġ φ̇) + τ c ẏ ÿ`, W (the relaxation's work, no dissipation); what
+    /// its loads at the instant's rates take, `−Q·φ̇`, W, and their axial friction's share,
+    /// `−(F_a ẏ + M_a φ̇3)`; and the anti-thrust and the thrust wall's push as the motion takes it, N:
+    /// each wall's share of the lateral force with the implicit term,
     /// `P + τ ∂P/∂(ẋ, φ̇3) (G φ̈ + Ġ φ̇)` (`SkirtLoads::wall_push`, whose rates' rows differ by D's first row).
-    pub fn absorbed_power(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, phidd: &Vector3<f64>) -> Vector4<f64> {
+    pub fn absorbed_power(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, phidd: &Vector3<f64>) -> SkirtRates {
         let k = self.kinematics(at, phid);
         let loads = self.loads(&k.motion);
         let tau = self.design.relaxation;
@@ -305,22 +310,23 @@ impl Lubrication {
         let implicit = (k.lateral * phid).dot(&(loads.damping * acceleration)) * tau;
         let boundary = tau * loads.boundary_damping * k.motion.sliding_speed * (k.axial.dot(phidd) + k.axial_bias);
         let [thrust, antithrust] = (loads.wall_push + loads.wall_push_rates * acceleration * tau).into();
-        let friction = boundary - friction_power(&k, &loads);
-        Vector4::new(implicit + boundary - generalized(&k, &loads).dot(phid), friction, antithrust, thrust)
+        let film = -generalized(&k, &loads).dot(phid);
+        SkirtRates::new(implicit + boundary, film, -friction_power(&k, &loads), antithrust, thrust)
     }
 
     /// What the implicit film impulse `−τ (Gᵀ D G + c g gᵀ) Δφ̇` of a projection `before → after` at
-    /// φ takes, J: the negative of its work on the mean velocity (D and c at the velocity before),
-    /// the boundary friction's part also as the axial friction's share; and each wall's
-    /// share of its lateral impulse, `τ ∂P/∂(ẋ, φ̇3) G Δφ̇`, N·s (anti-thrust, thrust).
-    pub fn absorbed_by_jump(&self, at: (&Vector3<f64>, &LinkAngles), before: &Vector3<f64>, after: &Vector3<f64>) -> Vector4<f64> {
+    /// φ takes, J: the negative of its work on the mean velocity (D and c at the velocity before), in
+    /// the relaxation's channel; and each wall's share of its lateral impulse,
+    /// `τ ∂P/∂(ẋ, φ̇3) G Δφ̇`, N·s (anti-thrust, thrust). The loads at the instant's rates take no impulse.
+    pub fn absorbed_by_jump(&self, at: (&Vector3<f64>, &LinkAngles), before: &Vector3<f64>, after: &Vector3<f64>) -> SkirtRates {
         let k = self.kinematics(at, before);
         let loads = self.loads(&k.motion);
         let (jump, tau) = (k.lateral * (after - before), self.design.relaxation);
         let mean = (before + after) * 0.5;
         let [thrust, antithrust] = (loads.wall_push_rates * jump * tau).into();
         let boundary = tau * loads.boundary_damping * k.axial.dot(&mean) * k.axial.dot(&(after - before));
-        Vector4::new((k.lateral * mean).dot(&(loads.damping * tau * jump)) + boundary, boundary, antithrust, thrust)
+        let implicit = (k.lateral * mean).dot(&(loads.damping * tau * jump)) + boundary;
+        SkirtRates::new(implicit, 0.0, 0.0, antithrust, thrust)
     }
 
     /// The axial friction's power at (φ, φ̇), W (≥ 0 where it opposes the sliding).

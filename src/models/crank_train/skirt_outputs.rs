@@ -6,9 +6,10 @@
 //! dissipated, and comes back as the skirt leaves the liner. Their energy is potential energy
 //! (`potential_energy`), and the skirt's absorbed work less its change since the start is what the
 //! film and the friction dissipated (`film_energy_total`), so that neither total falls as the
-//! asperities unload.
+//! asperities unload. The work of the film's relaxation term (`books::IMPLICIT`) is no
+//! dissipation either: it is `film_relaxation_work`.
 
-use super::books::{FILM, SKIRT_FRICTION, WALL_PUSH};
+use super::books::{FILM, IMPLICIT, SKIRT_FRICTION, WALL_PUSH};
 use super::linkage::LinkAngles;
 use super::model::CrankTrain;
 use crate::models::skirt::PressureMap;
@@ -65,6 +66,7 @@ impl CrankTrain {
         out.skirt_friction_power = lubrication.friction_power((phi, trig), phid);
         out.film_energy_total = work[FILM] - (loads.asperity_energy - self.asperity_energy_start);
         out.potential_energy += loads.asperity_energy;
+        out.film_relaxation_work = work[IMPLICIT];
         // A side's moment about the pin is its push times the height above the pin (thrust), or
         // minus that (anti-thrust): about the skirt top, the push times the pin's depth less it.
         let pin = linkage.pin_depth();
