@@ -6,7 +6,7 @@
 
 use nalgebra::{SVector, Vector2, Vector3};
 use pistonslap::dynamics::System;
-use pistonslap::models::crank_train::drive::{Engine, FreeCrank, PrescribedCrank};
+use pistonslap::models::crank_train::engine::{Engine, FreeCrank, PrescribedCrank};
 use pistonslap::models::crank_train::kinematics::SliderCrank;
 use pistonslap::models::{CrankTrain, EngineModel, InputPolynomial, Inputs, Parameters};
 use std::hint::black_box;

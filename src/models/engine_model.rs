@@ -1,7 +1,7 @@
 //! The interface the FMU drives a mechanism through, and the events it reports.
 
 use super::skirt::PressureMap;
-use super::{InputDerivatives, Inputs, ModelError, Outputs, Parameters};
+use super::{InputPolynomial, Inputs, ModelError, Outputs, Parameters};
 use crate::dynamics::EventKind;
 use serde::{Deserialize, Serialize};
 
@@ -64,6 +64,29 @@ pub struct EngineEvent {
     pub lateral_kinetic_energy: f64,
 }
 
+/// The inputs over a step, each a polynomial in time from the step's start: the host's values and
+/// derivatives there, built once per step by the façade.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepInputs {
+    /// rad/s.
+    pub crank_speed: InputPolynomial,
+    /// Pa, gauge.
+    pub gas_pressure: InputPolynomial,
+    /// N·m.
+    pub load_torque: InputPolynomial,
+}
+
+impl StepInputs {
+    /// `inputs` held over the step.
+    pub fn held(inputs: &Inputs) -> Self {
+        Self {
+            crank_speed: InputPolynomial::held(inputs.crank_speed),
+            gas_pressure: InputPolynomial::held(inputs.gas_pressure),
+            load_torque: InputPolynomial::held(inputs.load_torque),
+        }
+    }
+}
+
 /// A model variant as the FMU drives it: built from parameters, advanced with held inputs.
 pub trait EngineModel: Sized + Clone {
     /// Builds the model at `start_time` in the initial state of ARCHITECTURE.md §4, or refuses the
@@ -74,22 +97,16 @@ pub trait EngineModel: Sized + Clone {
     /// Advances to exactly `t_end` with `inputs` held, appending every event to `events`.
     /// On error the model may be left anywhere: the caller restores its own copy.
     fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
-        self.advance_interpolated(inputs, &InputDerivatives::default(), t_end, events)
+        self.advance_interpolated(&StepInputs::held(inputs), t_end, events)
     }
 
-    /// As [`Self::advance`], the inputs following the polynomials of their values and `derivatives`
-    /// at the current time; a model that cannot follow a derivative refuses it.
-    fn advance_interpolated(
-        &mut self,
-        inputs: &Inputs,
-        derivatives: &InputDerivatives,
-        t_end: f64,
-        events: &mut Vec<EngineEvent>,
-    ) -> Result<(), ModelError>;
+    /// As [`Self::advance`], the inputs following their polynomials from the current time; a model
+    /// that cannot follow a derivative refuses it.
+    fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError>;
 
     /// Before the first step, the state that step would start from with `inputs` (whose outputs are
     /// then the initial ones); the first step rebuilds it from its own inputs.
-    fn prepare(&mut self, _inputs: &Inputs) -> Result<(), ModelError> {
+    fn prepare(&mut self, _inputs: &StepInputs) -> Result<(), ModelError> {
         Ok(())
     }
 
@@ -105,7 +122,7 @@ pub trait EngineModel: Sized + Clone {
     /// there from a step already taken (no events): all or nothing, and a point the caller then
     /// refuses is undone by [`Self::serve_again`] at the time before it, with no copy. None, with
     /// nothing done, where it is not such a point.
-    fn serve(&mut self, _inputs: &Inputs, _derivatives: &InputDerivatives, _t_end: f64) -> Option<Result<(), ModelError>> {
+    fn serve(&mut self, _inputs: &StepInputs, _t_end: f64) -> Option<Result<(), ModelError>> {
         None
     }
 

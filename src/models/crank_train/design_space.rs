@@ -3,7 +3,6 @@
 
 use super::kinematics::SliderCrank;
 use super::linkage::{Linkage, Loads};
-use super::model::check;
 use crate::models::{ModelError, Parameters};
 use nalgebra::{DMatrix, Vector3};
 use std::f64::consts::PI;
@@ -42,6 +41,15 @@ pub const PISTON_DENSITY: (f64, f64) = (40.0, 15_000.0);
 
 /// Crank angles over one revolution at which the contact problem's consistency is checked.
 const ANGLES: usize = 720;
+
+/// `Ok` where `ok`, otherwise the refusal `message` gives.
+pub(super) fn check(ok: bool, message: impl FnOnce() -> String) -> Result<(), ModelError> {
+    if ok {
+        Ok(())
+    } else {
+        Err(ModelError(message()))
+    }
+}
 
 /// Refuses parameters the crank train cannot run with, naming the parameter: the ranges every
 /// model needs (`Parameters::validate`), then what the corner geometry and the linkage need.

@@ -7,8 +7,8 @@
 //! work `P_d ω`, and `ΔT = −(dissipation) + P_d ω` with dissipation `−Λᵀ(ḣ⁻ + ḣ⁺)/2`.
 
 use super::books::{DAMPING, DRIVE, FILM, GAS};
-use super::drive::PrescribedCrank;
-use super::model::CrankTrain;
+use super::crank_train::{by_wall, CrankTrain};
+use super::engine::PrescribedCrank;
 use crate::models::{EnergyBalance, PowerFlows};
 use nalgebra::{Vector2, Vector4};
 
@@ -48,11 +48,6 @@ impl CrankTrain {
     }
 }
 
-/// A per-corner quantity summed per wall: [K1 + K2 (anti-thrust), K3 + K4 (major thrust)].
-pub(super) fn by_wall(x: &Vector4<f64>) -> [f64; 2] {
-    [x[0] + x[1], x[2] + x[3]]
-}
-
 impl EnergyBalance for CrankTrain {
     /// Kinetic plus gravitational potential energy of the links.
     fn mechanical_energy(&self) -> f64 {
@@ -76,7 +71,7 @@ impl EnergyBalance for CrankTrain {
 #[cfg(test)]
 mod tests {
     use crate::dynamics::System;
-    use crate::models::crank_train::drive::{Engine, PrescribedCrank};
+    use crate::models::crank_train::engine::{Engine, PrescribedCrank};
     use crate::models::Parameters;
     use nalgebra::{Matrix4, Vector2, Vector3, Vector4};
 

@@ -9,8 +9,8 @@
 //! asperities unload.
 
 use super::books::{FILM, SKIRT_FRICTION, WALL_PUSH};
+use super::crank_train::CrankTrain;
 use super::linkage::LinkAngles;
-use super::model::CrankTrain;
 use crate::models::skirt::PressureMap;
 use crate::models::Outputs;
 use nalgebra::{Vector3, Vector4};

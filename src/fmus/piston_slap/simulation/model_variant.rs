@@ -2,7 +2,7 @@
 //! Kudra), 2 → roller slider crank (Farahanchi).
 
 use crate::models::skirt::PressureMap;
-use crate::models::{CrankTrain, EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, Roller};
+use crate::models::{CrankTrain, EngineEvent, EngineModel, ModelError, Outputs, Parameters, Roller, StepInputs};
 use serde::{Deserialize, Serialize};
 
 /// The engine model the FMU runs (one per instance, so the variants' size difference costs nothing).
@@ -34,17 +34,11 @@ impl EngineModel for ModelVariant {
         }
     }
 
-    fn advance_interpolated(
-        &mut self,
-        inputs: &Inputs,
-        derivatives: &InputDerivatives,
-        t_end: f64,
-        events: &mut Vec<EngineEvent>,
-    ) -> Result<(), ModelError> {
-        on_variant!(self, m => m.advance_interpolated(inputs, derivatives, t_end, events))
+    fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        on_variant!(self, m => m.advance_interpolated(inputs, t_end, events))
     }
 
-    fn prepare(&mut self, inputs: &Inputs) -> Result<(), ModelError> {
+    fn prepare(&mut self, inputs: &StepInputs) -> Result<(), ModelError> {
         on_variant!(self, m => m.prepare(inputs))
     }
 
@@ -56,8 +50,8 @@ impl EngineModel for ModelVariant {
         on_variant!(self, m => m.pressure_map())
     }
 
-    fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
-        on_variant!(self, m => m.serve(inputs, derivatives, t_end))
+    fn serve(&mut self, inputs: &StepInputs, t_end: f64) -> Option<Result<(), ModelError>> {
+        on_variant!(self, m => m.serve(inputs, t_end))
     }
 
     fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {

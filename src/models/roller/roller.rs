@@ -20,7 +20,7 @@
 use super::forcing::{AtAngle, Forcing, RollerMechanism};
 use crate::dynamics::{DynamicsError, Evaluation, Event, Stepper, StepperOptions, System};
 use crate::models::numerics::LastValue;
-use crate::models::{EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, RunningGeometry, CYCLE};
+use crate::models::{EngineEvent, EngineModel, ModelError, Outputs, Parameters, RunningGeometry, StepInputs, CYCLE};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -198,15 +198,16 @@ impl Roller {
 
     /// The crank speed the inputs hold over a step, refused unless finite, positive and without
     /// derivatives (the thesis's equations are in crank angle at constant speed).
-    fn held_speed(inputs: &Inputs, derivatives: &InputDerivatives) -> Result<f64, ModelError> {
-        if derivatives.crank_speed != [0.0; 2] {
+    fn held_speed(inputs: &StepInputs) -> Result<f64, ModelError> {
+        let speed = &inputs.crank_speed;
+        if [speed.slope, speed.curvature] != [0.0; 2] {
             return Err(ModelError(format!(
                 "model_variant 2 holds crank_speed over a step (its equations are in crank angle at constant speed): \
                  derivatives {:?} refused",
-                derivatives.crank_speed
+                [speed.slope, speed.curvature]
             )));
         }
-        let omega = inputs.crank_speed;
+        let omega = speed.value;
         if !(omega.is_finite() && omega > 0.0) {
             return Err(ModelError(format!("model_variant 2: crank_speed must be finite and > 0, got {omega}")));
         }
@@ -308,14 +309,8 @@ impl EngineModel for Roller {
 
     /// The thesis's equations are in crank-angle time at a constant Ω: a crank speed derivative is
     /// refused; the gas pressure and load torque do not act on this model.
-    fn advance_interpolated(
-        &mut self,
-        inputs: &Inputs,
-        derivatives: &InputDerivatives,
-        t_end: f64,
-        events: &mut Vec<EngineEvent>,
-    ) -> Result<(), ModelError> {
-        let omega = Self::held_speed(inputs, derivatives)?;
+    fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        let omega = Self::held_speed(inputs)?;
         if t_end <= self.time {
             return Ok(());
         }
@@ -335,8 +330,8 @@ impl EngineModel for Roller {
 
     /// With the crank speed held as it is, no turns to take off and the step ahead past `t_end`,
     /// `advance_interpolated` would only have the stepper serve the point.
-    fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
-        let omega = match Self::held_speed(inputs, derivatives) {
+    fn serve(&mut self, inputs: &StepInputs, t_end: f64) -> Option<Result<(), ModelError>> {
+        let omega = match Self::held_speed(inputs) {
             Ok(omega) => omega,
             Err(e) => return Some(Err(e)),
         };

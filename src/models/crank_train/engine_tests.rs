@@ -1,4 +1,4 @@
-//! Tests of the crank modes as core systems (`drive.rs`).
+//! Tests of the crank modes as core systems (`engine.rs`).
 
 use super::*;
 use crate::models::Parameters;

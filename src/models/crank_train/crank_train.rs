@@ -2,35 +2,18 @@
 //! as the FMU drives it (prescribed crank speed, or a free crank under a load torque).
 
 use super::books::{DAMPING, DRIVE, GAS};
-use super::crank_stepper::Drive;
-use super::design_space::{self, validate};
-use super::drive::{Engine, FreeCrank, PrescribedCrank};
-use super::energy::by_wall;
+use super::design_space::{self, check, validate};
+use super::drive::Drive;
+use super::engine::{Engine, FreeCrank, PrescribedCrank};
 use super::kinematics::SliderCrank;
 use super::linkage::LinkAngles;
+use super::step_bounds::{LOCAL_ERROR, MAX_STEP};
 use crate::dynamics::{DynamicsError, StepCounts, Stepper, StepperOptions};
 use crate::models::skirt::PressureMap;
-use crate::models::{
-    EngineEvent, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, RunningGeometry,
-};
+use crate::models::{EngineEvent, EngineModel, InputPolynomial, Inputs, ModelError, Outputs, Parameters, RunningGeometry, StepInputs};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
-
-/// The adaptive RK4 step's largest size, s (7.2° of crank angle at 1200 rpm), and its bound on
-/// the local error of each step on the corner gaps, m. Event times and velocities do not depend
-/// on the step (events are located by root finding); the step follows the motion: near 1e-3 s
-/// where the piston lies flat on a wall (fully constrained, no error to control), ≈ 1e-4 s in
-/// flight. Over ten cycles of the default case against a 2.5 µs fixed-step reference (958
-/// impacts faster than 0.1 mm/s, `tools/step_study.rs`): impact times agree to 4.6e-9 s and
-/// speeds to 2.3e-4 relative, as a fixed 1e-4 s step does (4.5e-9 s, 2.8e-4) with 2.3×
-/// as many RK4 steps; 1e-10 m gives 3.0e-8 s and 8.7e-4.
-pub const MAX_STEP: f64 = 1e-3;
-/// The crank angle one step of the prescribed crank may span, rad (7.2°: `MAX_STEP` at 1200 rpm, so
-/// that slower cranks keep `MAX_STEP`); see `PrescribedCrank::largest_step`.
-pub const MAX_STEP_ANGLE: f64 = 2.0 * PI / 50.0;
-/// The bound on the local error of each step on the corner gaps, m (see `MAX_STEP`).
-pub const LOCAL_ERROR: f64 = 1e-11;
 
 /// The crank train in one of its two crank modes.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -88,14 +71,6 @@ impl StartOffset {
     }
 }
 
-pub(super) fn check(ok: bool, message: impl FnOnce() -> String) -> Result<(), ModelError> {
-    if ok {
-        Ok(())
-    } else {
-        Err(ModelError(message()))
-    }
-}
-
 /// The core's error in the crank train's words: a violated constraint is a corner in the liner.
 fn dynamics_error(e: DynamicsError) -> ModelError {
     match e {
@@ -104,6 +79,11 @@ fn dynamics_error(e: DynamicsError) -> ModelError {
         }
         e => ModelError(format!("crank train: {e}")),
     }
+}
+
+/// A per-corner quantity summed per wall: [K1 + K2 (anti-thrust), K3 + K4 (major thrust)].
+pub(super) fn by_wall(x: &Vector4<f64>) -> [f64; 2] {
+    [x[0] + x[1], x[2] + x[3]]
 }
 
 impl CrankTrain {
@@ -281,25 +261,19 @@ impl EngineModel for CrankTrain {
         )
     }
 
-    fn prepare(&mut self, inputs: &Inputs) -> Result<(), ModelError> {
-        if !self.started && inputs.crank_speed.is_finite() {
-            self.start(inputs.crank_speed)?;
+    fn prepare(&mut self, inputs: &StepInputs) -> Result<(), ModelError> {
+        if !self.started && inputs.crank_speed.value.is_finite() {
+            self.start(inputs.crank_speed.value)?;
             self.started = false;
         }
         Ok(())
     }
 
-    fn advance_interpolated(
-        &mut self,
-        inputs: &Inputs,
-        derivatives: &InputDerivatives,
-        t_end: f64,
-        events: &mut Vec<EngineEvent>,
-    ) -> Result<(), ModelError> {
+    fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
         // The façade has checked them finite.
-        let [speed, pressure, load] = derivatives.polynomials(inputs, self.time());
+        let StepInputs { crank_speed: speed, gas_pressure: pressure, load_torque: load } = *inputs;
         if !self.started {
-            self.start(inputs.crank_speed)?;
+            self.start(speed.value)?;
         }
         // The system is touched only where an input changed: the core re-examines the contacts
         // after a change, and a communication point with the same inputs then costs nothing.
@@ -334,13 +308,13 @@ impl EngineModel for CrankTrain {
 
     /// With the inputs held as they are, no cycle to take off the crank angle and the step ahead
     /// past `t_end`, `advance_interpolated` would only have the stepper serve the point.
-    fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
-        let [speed, pressure, load] = derivatives.polynomials(inputs, self.time());
-        if !(self.started && self.engine().holds(&pressure) && self.angle_past_cycles().1 == 0.0) {
+    fn serve(&mut self, inputs: &StepInputs, t_end: f64) -> Option<Result<(), ModelError>> {
+        let StepInputs { crank_speed: speed, gas_pressure: pressure, load_torque: load } = inputs;
+        if !(self.started && self.engine().holds(pressure) && self.angle_past_cycles().1 == 0.0) {
             return None;
         }
         let stepper = self.drive.stepper_mut();
-        if !stepper.serves_with(&speed, &load, t_end) {
+        if !stepper.serves_with(speed, load, t_end) {
             return None;
         }
         Some(stepper.serve(t_end).map_err(dynamics_error))
