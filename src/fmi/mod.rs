@@ -7,7 +7,8 @@
 //! - `reentry`: refuses a call into an instance from inside its own call (its logger calling back);
 //! - `registry`: dispatch over the FMUs of `crate::fmus::registry!`, naming none;
 //! - `identity`: which FMU a copy of the binary belongs to (stamped by the packer);
-//! - `model`: what the layer needs of a model (each FMU's room implements it);
+//! - `model`: what the layer needs of a model (each FMU's room implements it); `error`: what a model answers
+//!   when it refuses or fails;
 //! - `package`: what the packer needs of an FMU;
 //! - `instance`: what each function does, in safe code;
 //! - `resources`: the FMU's resources directory and the lookup of bare file names in it;
@@ -15,6 +16,7 @@
 //! - `snapshot`: what an FMU state points to; `state_bytes`: the serialized FMU state.
 
 pub mod description;
+mod error;
 pub mod exports;
 mod functions;
 pub mod identity;
@@ -32,6 +34,7 @@ mod state_machine;
 pub mod types;
 
 pub use description::{Causality, Description, Kind, Variable};
+pub use error::Error;
 pub use logger::{fixed_argument_logger, FixedArgumentLogger, Logger};
 pub use model::Model;
 pub use package::Package;
