@@ -1,7 +1,7 @@
 //! What the FMI layer needs of a model, so that one glue serves every FMU of the crate (as Reference-FMUs'
 //! `fmi2Functions.c` serves every model): its variable table and a simulation to start, step and save.
-//! Each FMU's room in `crate::fmus` implements it; the layer reaches them through the registry
-//! (`crate::fmus::registry!`) and names none. Safe code.
+//! Each FMU's room implements it; the layer reaches them through the symbols the rooms' registry has
+//! [`super::exports!`] write, and names none. Safe code.
 
 use super::description::Description;
 use super::error::Error;
