@@ -5,7 +5,7 @@
 
 use crate::common::*;
 use pistonslap::dynamics::StepperOptions;
-use pistonslap::models::crank_train::linkage::Linkage;
+use pistonslap::models::crank_train::design;
 use pistonslap::models::crank_train::LOCAL_ERROR;
 use pistonslap::models::skirt::BOUNDARY_SLIP;
 use pistonslap::models::{CrankTrain, EnergyBalance, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
@@ -329,7 +329,7 @@ fn the_asperities_store_what_they_take_and_the_film_total_never_falls() {
     let design = lubricated_declared(&mut Random::new(0));
     let mut model = CrankTrain::new(&design.params, 0.0).unwrap();
     let mut events = Vec::new();
-    let linkage = Linkage::new(&design.params);
+    let linkage = design::linkage(&design.params);
     let (mut t, mut last, mut stored) = (0.0, 0.0f64, 0.0f64);
     while t < 0.1 {
         t += design.step;

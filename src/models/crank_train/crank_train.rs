@@ -2,6 +2,7 @@
 //! as the FMU drives it (prescribed crank speed, or a free crank under a load torque).
 
 use super::books::{DAMPING, DRIVE, GAS};
+use super::design;
 use super::design_space::{self, check, validate};
 use super::drive::Drive;
 use super::engine::{Engine, FreeCrank, PrescribedCrank};
@@ -96,7 +97,7 @@ impl CrankTrain {
         let params = &running;
         validate(params)?;
         check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
-        let engine = Engine::new(params)?;
+        let engine = design::engine(params)?;
         design_space::consistent_friction(&engine.linkage, params)?;
         let geometry = SliderCrank { crank_radius: params.crank_radius, rod_length: params.rod_length, pin_offset: params.pin_offset };
         let start = StartOffset::of(params);

@@ -217,7 +217,7 @@ mod tests {
     #[test]
     fn touching_poses_put_two_corners_on_the_liner_and_none_outside() {
         let p = Parameters::default();
-        let linkage = Linkage::new(&p);
+        let linkage = super::super::design::linkage(&p);
         let clearance = 0.5 * (p.bore - p.piston_diameter);
         for angle in [0.0, 0.7, 2.0, PI, 4.5] {
             let poses = linkage.touching_poses(angle);

@@ -9,13 +9,13 @@
 //! - [`FreeCrank`]: q = (φ1, φ2, φ3) under gas force, load torque and damping (A&K eq 55).
 
 use super::books;
-use super::linkage::{LinkAngles, Linkage, Loads};
-use super::lubrication::{predicted, Lubrication};
+use super::linkage::{Bodies, LinkAngles, Linkage, Loads};
+use super::lubrication::{self, predicted, Lubrication};
 use super::step_bounds::MAX_STEP_ANGLE;
 use crate::dynamics::{Evaluation, Powers, System, Tangents};
 use crate::models::gas::GasPressure;
 use crate::models::numerics::{trig, LastValue};
-use crate::models::{InputPolynomial, ModelError, Parameters};
+use crate::models::{InputPolynomial, ModelError};
 use nalgebra::{Matrix2, Matrix3, Matrix4x2, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 
@@ -36,6 +36,23 @@ pub struct Engine {
     pub lubrication: Option<Lubrication>,
 }
 
+/// What an [`Engine`] is built from, SI.
+#[derive(Clone, Debug)]
+pub(crate) struct EngineDesign {
+    /// The links and the corners.
+    pub(crate) linkage: Bodies,
+    /// Where the gas pressure comes from (a held input starts at the input's default).
+    pub(crate) pressure: GasPressure,
+    /// d, m: the crown's diameter.
+    pub(crate) piston_diameter: f64,
+    /// e.
+    pub(crate) restitution: f64,
+    /// μ.
+    pub(crate) friction: f64,
+    /// The lubricated skirt; none: the dry corners alone.
+    pub(crate) skirt: Option<lubrication::Design>,
+}
+
 /// The gas's power on the crown and the joint damping's dissipation rate at one state, W
 /// (`Linkage::gas_and_damping_power`).
 type Applied = (f64, f64);
@@ -50,16 +67,16 @@ struct Crank {
 }
 
 impl Engine {
-    /// The engine of validated parameters; a held pressure starts at the input's default. Reads the
-    /// pressure trace (`pressure_source = 3`), refusing a bad file.
-    pub fn new(params: &Parameters) -> Result<Self, ModelError> {
+    /// The engine of a validated design; a skirt the film cannot be solved on is refused.
+    pub(crate) fn new(design: EngineDesign) -> Result<Self, ModelError> {
+        let d = design.piston_diameter;
         Ok(Self {
-            linkage: Linkage::new(params),
-            pressure: GasPressure::new(params)?,
-            crown_area: 0.25 * std::f64::consts::PI * params.piston_diameter * params.piston_diameter,
-            restitution: params.restitution,
-            friction: params.friction,
-            lubrication: Lubrication::of(params)?,
+            linkage: design.linkage.into(),
+            pressure: design.pressure,
+            crown_area: 0.25 * std::f64::consts::PI * d * d,
+            restitution: design.restitution,
+            friction: design.friction,
+            lubrication: design.skirt.map(Lubrication::try_from).transpose()?,
         })
     }
 
