@@ -16,7 +16,7 @@ pub mod skirt;
 
 pub use contract::{InputDerivatives, Inputs, Outputs, Parameters};
 pub use crank_train::{CrankTrain, EfficiencyCalibration, EfficiencyTarget};
-pub use engine_cycle::{EngineCycle, EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters, EngineCycleRun};
+pub use engine_cycle::{EngineCycle, EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters};
 pub use engine_model::{EngineEvent, EngineEventKind, EngineModel, StepInputs, CYCLE};
 pub use error::{check_real, ModelError};
 pub use numerics::{EnergyBalance, InputPolynomial, PowerFlows};

@@ -1,9 +1,10 @@
 //! EngineCycle as the FMI layer runs it: the engine cycle model on its own variable table, with the
 //! time derivatives of its outputs.
 
+use super::run::EngineCycleRun;
 use super::variables::DESCRIPTION as TABLE;
 use crate::fmi::{self, Causality, Description, Model};
-use crate::models::{EngineCycle, EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters, EngineCycleRun};
+use crate::models::{EngineCycle, EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters};
 use std::path::Path;
 
 impl Model for EngineCycle {
