@@ -213,7 +213,7 @@ fn the_film_carries_the_default_engine_at_3000_rpm() {
 fn peak_film_force(tau: f64, step: f64) -> f64 {
     let params = Parameters { film_relaxation: tau, ..lubricated(1) };
     let options = StepperOptions { step, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() };
-    let mut model = CrankTrain::with_options(&params, 0.0, options).unwrap();
+    let mut model = CrankTrain::with_options(design::crank_train(&params).unwrap(), 0.0, options).unwrap();
     let (mut events, mut peak) = (Vec::new(), 0.0_f64);
     let quarter = 0.5 * std::f64::consts::PI / Inputs::default().crank_speed;
     for k in 1..=90 {

@@ -3,7 +3,7 @@
 
 use super::books::{DAMPING, DRIVE, GAS};
 use super::design;
-use super::design_space::{self, check, validate};
+use super::design_space::check;
 use super::drive::Drive;
 use super::engine::{Engine, FreeCrank, PrescribedCrank};
 use super::kinematics::SliderCrank;
@@ -11,7 +11,7 @@ use super::linkage::LinkAngles;
 use super::step_bounds::{LOCAL_ERROR, MAX_STEP};
 use crate::dynamics::{DynamicsError, StepCounts, Stepper, StepperOptions};
 use crate::models::skirt::PressureMap;
-use crate::models::{EngineEvent, EngineModel, InputPolynomial, Inputs, ModelError, Outputs, Parameters, RunningGeometry, StepInputs};
+use crate::models::{EngineEvent, EngineModel, InputPolynomial, ModelError, Outputs, Parameters, StepInputs};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -40,26 +40,40 @@ pub struct CrankTrain {
     running_clearance: f64,
 }
 
+/// What a [`CrankTrain`] is built from: a validated design at running temperature.
+#[derive(Clone, Debug)]
+pub struct CrankTrainDesign {
+    /// The engine the crank turns.
+    pub engine: Engine,
+    /// The slider crank's lengths and pin offset.
+    pub geometry: SliderCrank,
+    /// How the start departs from the nominal slider-crank state.
+    pub start: StartOffset,
+    /// φ1 at the start time, rad.
+    pub crank_angle: f64,
+    /// A free crank under a load torque (else the crank turns at the prescribed speed).
+    pub free_crank: bool,
+    /// The crank speed, rad/s, and load torque, N·m, the inputs hold until the first step.
+    pub inputs: (f64, f64),
+    /// The diametral clearance at running temperature, m.
+    pub running_clearance: f64,
+}
+
 /// How the start departs from the nominal (zero-clearance) slider-crank state: the pin's lateral
 /// displacement from its centred position x = pin_offset, the piston's tilt, and their rates.
 #[derive(Clone, Copy, Debug, Serialize, Deserialize)]
-struct StartOffset {
-    lateral: f64,
-    lateral_velocity: f64,
-    tilt: f64,
-    tilt_rate: f64,
+pub struct StartOffset {
+    /// m.
+    pub lateral: f64,
+    /// m/s.
+    pub lateral_velocity: f64,
+    /// rad.
+    pub tilt: f64,
+    /// rad/s.
+    pub tilt_rate: f64,
 }
 
 impl StartOffset {
-    fn of(p: &Parameters) -> Self {
-        Self {
-            lateral: p.piston_lateral_start,
-            lateral_velocity: p.piston_lateral_velocity_start,
-            tilt: p.piston_tilt_start,
-            tilt_rate: p.piston_tilt_rate_start,
-        }
-    }
-
     /// (φ2, φ3) and their rates at crank angle φ1 turning at ω: the pin at x = a + x₀ (l2 sin φ2 =
     /// −(a + x₀ + l1 sin φ1)) moving at ẋ₀ (−l2 cos φ2 φ̇2 = ẋ₀ + l1 cos φ1 ω), the tilt as given.
     fn state(&self, geometry: &SliderCrank, crank_angle: f64, speed: f64) -> Result<(Vector2<f64>, Vector2<f64>), ModelError> {
@@ -88,20 +102,11 @@ pub(super) fn by_wall(x: &Vector4<f64>) -> [f64; 2] {
 }
 
 impl CrankTrain {
-    /// Builds with explicit integrator options (the FMU uses `MAX_STEP`, `LOCAL_ERROR` and the core's tolerances).
-    /// The model runs with the bore and piston diameter at their running temperatures (`RunningGeometry`),
-    /// the dry corners and the lubricated skirt alike.
-    pub fn with_options(params: &Parameters, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
-        params.validate()?;
-        let running = RunningGeometry::apply(params)?;
-        let params = &running;
-        validate(params)?;
+    /// Builds `design` with explicit integrator options (the FMU uses `MAX_STEP`, `LOCAL_ERROR` and the
+    /// core's tolerances).
+    pub fn with_options(design: CrankTrainDesign, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
         check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
-        let engine = design::engine(params)?;
-        design_space::consistent_friction(&engine.linkage, params)?;
-        let geometry = SliderCrank { crank_radius: params.crank_radius, rod_length: params.rod_length, pin_offset: params.pin_offset };
-        let start = StartOffset::of(params);
-        let angle = params.crank_angle_start;
+        let CrankTrainDesign { engine, geometry, start, crank_angle: angle, free_crank, inputs: (speed, load), running_clearance } = design;
         let (q, _) = start.state(&geometry, angle, 0.0)?;
         let gaps = engine.linkage.gaps(&Vector3::new(angle, q[0], q[1]));
         if let Some(i) = (0..4).find(|&i| gaps[i] < -options.gap_tolerance) {
@@ -113,12 +118,11 @@ impl CrankTrain {
                 -gaps[i]
             )));
         }
-        let speed = Inputs::default().crank_speed;
-        let drive = if params.crank_mode == 1 {
-            Drive::Prescribed(Self::prescribed(engine, &geometry, &start, angle, start_time, speed, &options)?)
-        } else {
-            let system = FreeCrank { engine, load_torque: InputPolynomial::held(Inputs::default().load_torque) };
+        let drive = if free_crank {
+            let system = FreeCrank { engine, load_torque: InputPolynomial::held(load) };
             Drive::Free(Self::free(system, &geometry, &start, angle, start_time, speed, &options)?)
+        } else {
+            Drive::Prescribed(Self::prescribed(engine, &geometry, &start, angle, start_time, speed, &options)?)
         };
         let mut model = Self {
             drive,
@@ -131,7 +135,7 @@ impl CrankTrain {
             impact_friction_energy: 0.0,
             impact_impulse: [0.0; 2],
             asperity_energy_start: 0.0,
-            running_clearance: params.bore - params.piston_diameter,
+            running_clearance,
         };
         model.asperity_energy_start = model.asperity_energy();
         Ok(model)
@@ -256,7 +260,7 @@ impl CrankTrain {
 impl EngineModel for CrankTrain {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         Self::with_options(
-            params,
+            design::crank_train(params)?,
             start_time,
             StepperOptions { step: MAX_STEP, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() },
         )
@@ -373,6 +377,8 @@ impl EngineModel for CrankTrain {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::models::crank_train::design_space::validate;
+    use crate::models::{Inputs, RunningGeometry};
 
     /// Outputs after each of `n` steps of `h` seconds with `inputs` held.
     fn run(params: &Parameters, inputs: &Inputs, h: f64, n: usize) -> Vec<Outputs> {

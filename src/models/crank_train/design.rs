@@ -1,12 +1,44 @@
 //! PistonSlap's parameters as the crank train's typed designs: the one place in `crank_train/` that reads the
-//! FMU's contract. Each mechanism takes a design of its own: the linkage its `Bodies`, the engine its
-//! `EngineDesign` (with the gas source and the skirt's `lubrication::Design`).
+//! FMU's contract (`design_space.rs` checks it). Each mechanism takes a design of its own: the crank train its
+//! `CrankTrainDesign`, the linkage its `Bodies`, the engine its `EngineDesign` (with the gas source and the
+//! skirt's `lubrication::Design`).
 
+use super::crank_train::{CrankTrainDesign, StartOffset};
+use super::design_space;
 use super::engine::{Engine, EngineDesign};
+use super::kinematics::SliderCrank;
 use super::linkage::{Bodies, Linkage};
 use super::lubrication;
 use crate::models::gas::{FourStrokePressure, GasPressure, PressureTrace};
-use crate::models::{InputPolynomial, Inputs, ModelError, Parameters};
+use crate::models::{InputPolynomial, Inputs, ModelError, Parameters, RunningGeometry};
+
+/// The crank train of `p`, refused with a message naming the parameter: the table's ranges
+/// (`Parameters::validate`), then the declared space (`design_space`) at running temperature, where the
+/// model runs with the bore and piston diameter grown (`RunningGeometry`), the dry corners and the
+/// lubricated skirt alike.
+pub fn crank_train(p: &Parameters) -> Result<CrankTrainDesign, ModelError> {
+    p.validate()?;
+    let p = &RunningGeometry::apply(p)?;
+    design_space::validate(p)?;
+    let engine = engine(p)?;
+    design_space::consistent_friction(&engine.linkage, p)?;
+    let start = StartOffset {
+        lateral: p.piston_lateral_start,
+        lateral_velocity: p.piston_lateral_velocity_start,
+        tilt: p.piston_tilt_start,
+        tilt_rate: p.piston_tilt_rate_start,
+    };
+    let inputs = Inputs::default();
+    Ok(CrankTrainDesign {
+        engine,
+        geometry: SliderCrank { crank_radius: p.crank_radius, rod_length: p.rod_length, pin_offset: p.pin_offset },
+        start,
+        crank_angle: p.crank_angle_start,
+        free_crank: p.crank_mode != 1,
+        inputs: (inputs.crank_speed, inputs.load_torque),
+        running_clearance: p.bore - p.piston_diameter,
+    })
+}
 
 /// The linkage of parameters taken as given (`CrankTrain::new` validates them first).
 pub fn linkage(p: &Parameters) -> Linkage {

@@ -19,6 +19,6 @@ mod skirt_outputs;
 mod step_bounds;
 mod step_film;
 
-pub use crank_train::CrankTrain;
+pub use crank_train::{CrankTrain, CrankTrainDesign, StartOffset};
 pub use efficiency::{EfficiencyCalibration, EfficiencyTarget};
 pub use step_bounds::{LOCAL_ERROR, MAX_STEP, MAX_STEP_ANGLE};
