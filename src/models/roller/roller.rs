@@ -17,10 +17,11 @@
 //! x = −r sin θ, the pin is at x = −r sin θ − l sin(ψ − φ) ≈ −l Λ ψ, so the thesis's upper wall
 //! (ψ = ψ_max) is the x = −D/2 wall of corners 1 and 2, and the lower wall that of corners 3 and 4.
 
+use super::design;
 use super::forcing::{AtAngle, Forcing, RollerMechanism};
 use crate::dynamics::{DynamicsError, Evaluation, Event, Stepper, StepperOptions, System};
 use crate::models::numerics::LastValue;
-use crate::models::{EngineEvent, EngineModel, ModelError, Outputs, Parameters, RunningGeometry, StepInputs, CYCLE};
+use crate::models::{EngineEvent, EngineModel, ModelError, Outputs, Parameters, StepInputs, CYCLE};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -115,12 +116,27 @@ pub struct Roller {
     served_from: Option<(f64, f64)>,
 }
 
-fn require(ok: bool, name: &str, range: &str) -> Result<(), ModelError> {
-    if ok {
-        Ok(())
-    } else {
-        Err(ModelError(format!("model_variant 2: parameter {name} must be {range}")))
-    }
+/// What a [`Roller`] is built from, SI: a design within the model's conditions (`design::roller`).
+#[derive(Clone, Debug)]
+pub struct RollerDesign {
+    /// ξ, α, β and the forcing.
+    pub mechanism: RollerMechanism,
+    /// Δ, the radial clearance at running temperature, m.
+    pub half_clearance: f64,
+    /// e.
+    pub restitution: f64,
+    /// The crank angle at the start time, rad.
+    pub crank_angle: f64,
+    /// r, m.
+    pub crank_radius: f64,
+    /// l, m.
+    pub rod_length: f64,
+    /// M, kg.
+    pub piston_mass: f64,
+    /// c2, N·m·s.
+    pub damping: f64,
+    /// The crank's moment of inertia about its axis, J1 + m1 ey1², kg·m².
+    pub crank_inertia: f64,
 }
 
 /// A core error with its time on the engine's clock: the core's time is the crank angle, which
@@ -243,45 +259,18 @@ impl Roller {
     }
 }
 
-impl EngineModel for Roller {
-    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
-        let variant = |e: ModelError| ModelError(format!("model_variant 2: {e}"));
-        params.validate().map_err(variant)?;
-        // The bore and piston diameter at their running temperatures.
-        let p = &RunningGeometry::apply(params).map_err(variant)?;
-        let clearance = (p.bore - p.piston_diameter) / 2.0;
-        require(p.crank_mode == 1, "crank_mode", "1 (the thesis's crank turns at a prescribed speed)")?;
-        require(p.skirt_model == 1, "skirt_model", "1 (the roller has no skirt to lubricate)")?;
-        // The model is linear in ψ ≤ ρ/Λ: beyond a few degrees it no longer describes the mechanism.
-        require(clearance <= 0.05 * p.rod_length, "bore", "larger than piston_diameter by at most 10 % of rod_length")?;
-        for (name, value) in [
-            ("piston_lateral_start", p.piston_lateral_start),
-            ("piston_lateral_velocity_start", p.piston_lateral_velocity_start),
-            ("piston_tilt_start", p.piston_tilt_start),
-            ("piston_tilt_rate_start", p.piston_tilt_rate_start),
-            ("friction", p.friction),
-            ("gravity_lateral", p.gravity_lateral),
-        ] {
-            require(
-                value == 0.0,
-                name,
-                "0 (the roller starts on its nominal path, ψ = ψ' = 0; its walls are frictionless and its cylinder vertical)",
-            )?;
-        }
+impl Roller {
+    /// The roller of `design` at `start_time`, on its nominal path (ψ = ψ' = 0).
+    pub fn with_design(design: RollerDesign, start_time: f64) -> Result<Self, ModelError> {
         if !start_time.is_finite() {
             return Err(ModelError(format!("model_variant 2: the start time ({start_time} s) must be finite")));
         }
-        let (l, mass) = (p.rod_length, p.piston_mass);
+        let d = design;
         let system = RollerSystem {
-            mechanism: RollerMechanism {
-                xi: p.crank_radius / l,
-                alpha: p.rod_mass / mass,
-                beta: p.rod_inertia / (mass * l * l),
-                forcing: if p.roller_forcing == 1 { Forcing::Printed } else { Forcing::Corrected },
-            },
-            rho: clearance / l,
+            mechanism: d.mechanism,
+            rho: d.half_clearance / d.rod_length,
             lambda: 0.0,
-            restitution: p.restitution,
+            restitution: d.restitution,
             last_angle: LastValue::default(),
         };
         let velocity_tolerance = match system.mechanism.forcing {
@@ -289,22 +278,28 @@ impl EngineModel for Roller {
             Forcing::Corrected => SLIDING_THRESHOLD_PER_CLEARANCE * system.rho,
         };
         let options = StepperOptions { step: THESIS_STEP, velocity_tolerance, ..StepperOptions::default() };
-        let stepper = Stepper::new(system, p.crank_angle_start, SVector::zeros(), SVector::zeros(), options.clone())
+        let stepper = Stepper::new(system, d.crank_angle, SVector::zeros(), SVector::zeros(), options.clone())
             .map_err(|e| core_error(e, |_| start_time))?;
         Ok(Self {
             stepper,
             options,
-            crank_radius: p.crank_radius,
-            rod_length: l,
-            piston_mass: mass,
-            damping: p.damping_crank_pin,
-            crank_inertia: p.crank_inertia + p.crank_mass * p.crank_com * p.crank_com,
+            crank_radius: d.crank_radius,
+            rod_length: d.rod_length,
+            piston_mass: d.piston_mass,
+            damping: d.damping,
+            crank_inertia: d.crank_inertia,
             crank_speed: 0.0,
             time: start_time,
             impulse_work: 0.0,
             turns: 0.0,
             served_from: None,
         })
+    }
+}
+
+impl EngineModel for Roller {
+    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
+        Self::with_design(design::roller(params)?, start_time)
     }
 
     /// The thesis's equations are in crank-angle time at a constant Ω: a crank speed derivative is
