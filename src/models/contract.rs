@@ -65,8 +65,8 @@ outputs_struct! {
 impl Parameters {
     /// Refuses what no model can run: a value outside its physical range (negative masses or lengths,
     /// `restitution` outside [0, 1], an unknown variant or mode), a bore not larger than the piston, a
-    /// crank not shorter than the rod. The message names the parameter. Model-specific checks are the
-    /// models' own (`EngineModel::new`).
+    /// crank not shorter than the rod. The message names the parameter. Model-specific checks come with
+    /// each mechanism's design.
     pub fn validate(&self) -> Result<(), ModelError> {
         self.check_ranges()?;
         if self.bore <= self.piston_diameter {

@@ -1,7 +1,7 @@
 //! The interface the FMU drives a mechanism through, and the events it reports.
 
 use super::skirt::PressureMap;
-use super::{InputPolynomial, Inputs, ModelError, Outputs, Parameters};
+use super::{InputPolynomial, Inputs, ModelError, Outputs};
 use crate::dynamics::EventKind;
 use serde::{Deserialize, Serialize};
 
@@ -87,13 +87,8 @@ impl StepInputs {
     }
 }
 
-/// A model variant as the FMU drives it: built from parameters, advanced with held inputs.
+/// A model variant as the FMU drives it: advanced with held or interpolated inputs.
 pub trait EngineModel: Sized + Clone {
-    /// Builds the model at `start_time` in the initial state of ARCHITECTURE.md §4, or refuses the
-    /// parameters with a message naming the offending one: the table's ranges (`Parameters::validate`)
-    /// and the model's own conditions, the only validation a start makes.
-    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError>;
-
     /// Advances to exactly `t_end` with `inputs` held, appending every event to `events`.
     /// On error the model may be left anywhere: the caller restores its own copy.
     fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {

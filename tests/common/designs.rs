@@ -4,6 +4,7 @@
 //! mechanisms, restitution anywhere in [0, 1].
 
 use super::output_checks::{self, GAP_TOLERANCE};
+use pistonslap::fmus::piston_slap::Mechanism;
 use pistonslap::models::{
     CrankTrain, EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, Outputs, Parameters, Roller, StepInputs,
 };

@@ -5,13 +5,14 @@
 
 use super::simulation::Simulation;
 use super::variables::DESCRIPTION as TABLE;
+use super::Mechanism;
 use crate::fmi::{self, Description, Logger, Model};
-use crate::models::{EngineModel, InputDerivatives, Inputs, Outputs, Parameters};
+use crate::models::{InputDerivatives, Inputs, Outputs, Parameters};
 use serde::{de::DeserializeOwned, Serialize};
 use std::fmt::Debug;
 use std::path::Path;
 
-impl<E: EngineModel + Debug + Serialize + DeserializeOwned + 'static> Model for E {
+impl<E: Mechanism + Debug + Serialize + DeserializeOwned + 'static> Model for E {
     const NAME: &'static str = "PistonSlap";
     type Parameters = Parameters;
     type Inputs = Inputs;

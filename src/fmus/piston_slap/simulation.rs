@@ -12,7 +12,8 @@ mod statistics;
 pub use impact_log::ImpactLog;
 pub use model_variant::ModelVariant;
 
-use crate::models::{EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, StepInputs};
+use super::Mechanism;
+use crate::models::{EngineEvent, InputDerivatives, Inputs, ModelError, Outputs, Parameters, StepInputs};
 use landings::{Landing, LandingLog, Landings};
 use serde::{Deserialize, Serialize};
 use skirt_map::SkirtMap;
@@ -58,9 +59,9 @@ impl<T: Default> PartialEq for Scratch<T> {
     }
 }
 
-impl<E: EngineModel> Simulation<E> {
+impl<E: Mechanism> Simulation<E> {
     /// Builds the model at `start_time` with its initial outputs; the model validates the parameters
-    /// (`EngineModel::new`: the table's ranges, then its own checks, once). Touches no file: the impact log
+    /// (`Mechanism::new`: the table's ranges, then its own checks, once). Touches no file: the impact log
     /// starts with [`Self::start`].
     pub fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         if !start_time.is_finite() {

@@ -2,8 +2,6 @@
 //! as the FMU drives it (prescribed crank speed, or a free crank under a load torque).
 
 use super::books::{DAMPING, DRIVE, GAS};
-use super::design;
-use super::design_space::check;
 use super::drive::Drive;
 use super::engine::{Engine, FreeCrank, PrescribedCrank};
 use super::kinematics::SliderCrank;
@@ -11,7 +9,7 @@ use super::linkage::LinkAngles;
 use super::step_bounds::{LOCAL_ERROR, MAX_STEP};
 use crate::dynamics::{DynamicsError, StepCounts, Stepper, StepperOptions};
 use crate::models::skirt::PressureMap;
-use crate::models::{EngineEvent, EngineModel, InputPolynomial, ModelError, Outputs, Parameters, StepInputs};
+use crate::models::{check, EngineEvent, EngineModel, InputPolynomial, ModelError, Outputs, StepInputs};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -102,6 +100,15 @@ pub(super) fn by_wall(x: &Vector4<f64>) -> [f64; 2] {
 }
 
 impl CrankTrain {
+    /// Builds `design` at `start_time` with the FMU's integrator options (`MAX_STEP`, `LOCAL_ERROR`).
+    pub fn of(design: CrankTrainDesign, start_time: f64) -> Result<Self, ModelError> {
+        Self::with_options(
+            design,
+            start_time,
+            StepperOptions { step: MAX_STEP, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() },
+        )
+    }
+
     /// Builds `design` with explicit integrator options (the FMU uses `MAX_STEP`, `LOCAL_ERROR` and the
     /// core's tolerances).
     pub fn with_options(design: CrankTrainDesign, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
@@ -258,14 +265,6 @@ impl CrankTrain {
 }
 
 impl EngineModel for CrankTrain {
-    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
-        Self::with_options(
-            design::crank_train(params)?,
-            start_time,
-            StepperOptions { step: MAX_STEP, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() },
-        )
-    }
-
     fn prepare(&mut self, inputs: &StepInputs) -> Result<(), ModelError> {
         if !self.started && inputs.crank_speed.value.is_finite() {
             self.start(inputs.crank_speed.value)?;
@@ -377,8 +376,10 @@ impl EngineModel for CrankTrain {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::models::crank_train::design_space::validate;
-    use crate::models::{Inputs, RunningGeometry};
+    use crate::fmus::piston_slap::mechanisms::design_space::validate;
+    use crate::fmus::piston_slap::mechanisms::RunningGeometry;
+    use crate::fmus::piston_slap::Mechanism;
+    use crate::models::{Inputs, Parameters};
 
     /// Outputs after each of `n` steps of `h` seconds with `inputs` held.
     fn run(params: &Parameters, inputs: &Inputs, h: f64, n: usize) -> Vec<Outputs> {

@@ -71,7 +71,7 @@ impl EnergyBalance for CrankTrain {
 #[cfg(test)]
 mod tests {
     use crate::dynamics::System;
-    use crate::models::crank_train::design;
+    use crate::fmus::piston_slap::mechanisms;
     use crate::models::crank_train::engine::PrescribedCrank;
     use crate::models::Parameters;
     use nalgebra::{Matrix4, Vector2, Vector3, Vector4};
@@ -82,7 +82,7 @@ mod tests {
     #[test]
     fn impulse_work_is_the_crank_row_reaction_and_closes_the_energy_of_an_impact() {
         let p = Parameters::default();
-        let mut engine = design::engine(&Parameters { pressure_source: 1, ..p.clone() }).unwrap();
+        let mut engine = mechanisms::crank_train::engine(&Parameters { pressure_source: 1, ..p.clone() }).unwrap();
         engine.hold_pressure(crate::models::InputPolynomial::held(0.0));
         let sys = PrescribedCrank::new(engine, 0.7, 0.0, 125.66);
         let (t, q, qd) = (0.003, Vector2::new(-0.12, 4e-4), Vector2::new(-25.0, 3.0));

@@ -387,11 +387,11 @@ impl Linkage {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::models::crank_train::design;
+    use crate::fmus::piston_slap::mechanisms;
     use crate::models::Parameters;
 
     fn linkage(pin_offset: f64) -> Linkage {
-        design::linkage(&Parameters { pin_offset, ..Parameters::default() })
+        mechanisms::crank_train::linkage(&Parameters { pin_offset, ..Parameters::default() })
     }
 
     /// `directions` takes `libm::sincos`, `along` and `across` `libm::sin` and `libm::cos`: the
@@ -492,7 +492,7 @@ mod tests {
     #[test]
     fn lateral_kinetic_energy_is_the_piston_centres_lateral_motion_and_its_tilt() {
         let p = Parameters { pin_offset: 0.002, piston_com: 0.013, ..Parameters::default() };
-        let l = design::linkage(&p);
+        let l = mechanisms::crank_train::linkage(&p);
         for (phi, phid) in states() {
             let dt = 1e-7;
             let x = |sign: f64| l.centre_of_mass(&(phi + phid * sign * dt), 2).x;
@@ -514,7 +514,7 @@ mod tests {
             lo + (hi - lo) * (seed >> 11) as f64 / (1u64 << 53) as f64
         };
         for a in [0.0, 0.002, -0.0035] {
-            let l = design::linkage(&Parameters {
+            let l = mechanisms::crank_train::linkage(&Parameters {
                 pin_offset: a,
                 damping_main: 0.3,
                 damping_crank_pin: 0.05,

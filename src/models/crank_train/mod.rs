@@ -6,8 +6,6 @@ pub mod books;
 // The file holds `CrankTrain`, the type the folder is named after.
 #[allow(clippy::module_inception)]
 mod crank_train;
-pub mod design;
-mod design_space;
 mod drive;
 pub mod efficiency;
 mod energy;

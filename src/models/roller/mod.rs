@@ -1,7 +1,6 @@
 //! Variant 2: Farahanchi's linearized roller slider crank — its forcing in the thesis's
 //! dimensionless variables, the model the FMU drives, and its energy books.
 
-pub mod design;
 mod energy;
 mod forcing;
 // The file holds `Roller`, the type the folder is named after.

@@ -17,11 +17,10 @@
 //! x = −r sin θ, the pin is at x = −r sin θ − l sin(ψ − φ) ≈ −l Λ ψ, so the thesis's upper wall
 //! (ψ = ψ_max) is the x = −D/2 wall of corners 1 and 2, and the lower wall that of corners 3 and 4.
 
-use super::design;
 use super::forcing::{AtAngle, Forcing, RollerMechanism};
 use crate::dynamics::{DynamicsError, Evaluation, Event, Stepper, StepperOptions, System};
 use crate::models::numerics::LastValue;
-use crate::models::{EngineEvent, EngineModel, ModelError, Outputs, Parameters, StepInputs, CYCLE};
+use crate::models::{EngineEvent, EngineModel, ModelError, Outputs, StepInputs, CYCLE};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -298,10 +297,6 @@ impl Roller {
 }
 
 impl EngineModel for Roller {
-    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
-        Self::with_design(design::roller(params)?, start_time)
-    }
-
     /// The thesis's equations are in crank-angle time at a constant Ω: a crank speed derivative is
     /// refused; the gas pressure and load torque do not act on this model.
     fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {

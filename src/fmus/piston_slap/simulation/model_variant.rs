@@ -1,6 +1,7 @@
 //! The model variants behind one type, chosen by `model_variant`: 1 → crank train (Awrejcewicz &
 //! Kudra), 2 → roller slider crank (Farahanchi).
 
+use super::super::Mechanism;
 use crate::models::skirt::PressureMap;
 use crate::models::{CrankTrain, EngineEvent, EngineModel, ModelError, Outputs, Parameters, Roller, StepInputs};
 use serde::{Deserialize, Serialize};
@@ -25,7 +26,7 @@ macro_rules! on_variant {
     };
 }
 
-impl EngineModel for ModelVariant {
+impl Mechanism for ModelVariant {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         match params.model_variant {
             1 => CrankTrain::new(params, start_time).map(ModelVariant::CrankTrain),
@@ -33,7 +34,9 @@ impl EngineModel for ModelVariant {
             other => Err(ModelError(format!("model_variant = {other} is not one of 1..=2"))),
         }
     }
+}
 
+impl EngineModel for ModelVariant {
     fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
         on_variant!(self, m => m.advance_interpolated(inputs, t_end, events))
     }

@@ -5,6 +5,7 @@
 //! A negative `gas_pressure` makes `advance` fail, `load_torque` = 42 makes it panic (to test error
 //! handling). Input derivatives are ignored (the inputs are held). Never shipped.
 
+use super::super::Mechanism;
 use crate::models::{EngineEvent, EngineEventKind, EngineModel, ModelError, Outputs, Parameters, StepInputs};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -22,7 +23,7 @@ pub struct Shuttle {
     mass: f64,
 }
 
-impl EngineModel for Shuttle {
+impl Mechanism for Shuttle {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         params.validate()?;
         Ok(Self {
@@ -35,7 +36,9 @@ impl EngineModel for Shuttle {
             mass: params.piston_mass,
         })
     }
+}
 
+impl EngineModel for Shuttle {
     fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
         assert!(inputs.load_torque.value != 42.0, "shuttle: load_torque = 42 panics (to test panic containment)");
         if inputs.gas_pressure.value < 0.0 {

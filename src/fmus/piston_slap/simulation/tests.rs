@@ -1,6 +1,7 @@
 use super::test_model::{Shuttle, SHUTTLE_SPEED};
 use super::*;
-use crate::models::ModelError;
+use crate::fmus::piston_slap::Mechanism;
+use crate::models::{EngineModel, ModelError};
 use std::path::PathBuf;
 
 type Sim = Simulation<Shuttle>;

@@ -1,22 +1,23 @@
-//! PistonSlap's parameters as the crank train's typed designs: the one place in `crank_train/` that reads the
-//! FMU's contract (`design_space.rs` checks it). Each mechanism takes a design of its own: the crank train its
-//! `CrankTrainDesign`, the linkage its `Bodies`, the engine its `EngineDesign` (with the gas source and the
-//! skirt's `lubrication::Design`).
+//! PistonSlap's parameters as the crank train's typed designs (`design_space.rs` checks them first). Each
+//! mechanism takes a design of its own: the crank train its `CrankTrainDesign`, the linkage its `Bodies`, the
+//! engine its `EngineDesign` (with the gas source and the skirt's `lubrication::Design`).
 
-use super::crank_train::{CrankTrainDesign, StartOffset};
 use super::design_space;
-use super::engine::{Engine, EngineDesign};
-use super::kinematics::SliderCrank;
-use super::linkage::{Bodies, Linkage};
-use super::lubrication;
+use super::running_geometry::RunningGeometry;
+use super::{Inputs, Parameters};
+use crate::models::crank_train::engine::{Engine, EngineDesign};
+use crate::models::crank_train::kinematics::SliderCrank;
+use crate::models::crank_train::linkage::{Bodies, Linkage};
+use crate::models::crank_train::lubrication;
+use crate::models::crank_train::{CrankTrainDesign, StartOffset};
 use crate::models::gas::{FourStrokePressure, GasPressure, PressureTrace};
-use crate::models::{InputPolynomial, Inputs, ModelError, Parameters, RunningGeometry};
+use crate::models::{InputPolynomial, ModelError};
 
 /// The crank train of `p`, refused with a message naming the parameter: the table's ranges
 /// (`Parameters::validate`), then the declared space (`design_space`) at running temperature, where the
 /// model runs with the bore and piston diameter grown (`RunningGeometry`), the dry corners and the
 /// lubricated skirt alike.
-pub fn crank_train(p: &Parameters) -> Result<CrankTrainDesign, ModelError> {
+pub fn design(p: &Parameters) -> Result<CrankTrainDesign, ModelError> {
     p.validate()?;
     let p = &RunningGeometry::apply(p)?;
     design_space::validate(p)?;

@@ -1,12 +1,12 @@
-//! PistonSlap's parameters as the roller's typed design: the one place in `roller/` that reads the FMU's
-//! contract, and the conditions of the thesis's model (prescribed speed, no skirt, a small clearance, the
+//! PistonSlap's parameters as the roller's typed design, with the conditions of the thesis's model (prescribed speed, no skirt, a small clearance, the
 //! nominal start, frictionless walls, a vertical cylinder), each refused by the parameter's name.
 
-use super::{Forcing, RollerDesign, RollerMechanism};
-use crate::models::{ModelError, Parameters, RunningGeometry};
+use super::running_geometry::RunningGeometry;
+use super::Parameters;
+use crate::models::{Forcing, ModelError, RollerDesign, RollerMechanism};
 
 /// The roller of `params`: the table's ranges, then the model's conditions, at running temperature.
-pub fn roller(params: &Parameters) -> Result<RollerDesign, ModelError> {
+pub fn design(params: &Parameters) -> Result<RollerDesign, ModelError> {
     let variant = |e: ModelError| ModelError(format!("model_variant 2: {e}"));
     params.validate().map_err(variant)?;
     // The bore and piston diameter at their running temperatures.
