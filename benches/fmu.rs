@@ -8,7 +8,7 @@
 
 use pistonslap::dynamics::StepperOptions;
 use pistonslap::fmus::piston_slap::mechanisms;
-use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters};
+use pistonslap::models::{CrankTrain, Inputs, Parameters};
 use std::time::Instant;
 
 #[path = "fmu/flop_count.rs"]

@@ -10,7 +10,7 @@ use pistonslap::fmus::piston_slap::mechanisms;
 use pistonslap::fmus::piston_slap::Mechanism;
 use pistonslap::models::crank_train::engine::{FreeCrank, PrescribedCrank};
 use pistonslap::models::crank_train::kinematics::SliderCrank;
-use pistonslap::models::{CrankTrain, EngineModel, InputPolynomial, Inputs, Parameters};
+use pistonslap::models::{CrankTrain, InputPolynomial, Inputs, Parameters};
 use std::hint::black_box;
 use std::time::Instant;
 

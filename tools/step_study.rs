@@ -4,8 +4,8 @@
 //! `cargo run --release --example step_study [cycles]`.
 
 use pistonslap::dynamics::StepperOptions;
-use pistonslap::fmus::piston_slap::mechanisms;
-use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, Inputs, Parameters};
+use pistonslap::fmus::piston_slap::{mechanisms, Mechanism};
+use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, Inputs, Parameters};
 
 fn run(options: StepperOptions, cycles: f64) -> (Vec<EngineEvent>, f64) {
     let inputs = Inputs::default();

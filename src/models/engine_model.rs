@@ -1,7 +1,7 @@
 //! The interface the FMU drives a mechanism through, and the events it reports.
 
 use super::skirt::PressureMap;
-use super::{InputPolynomial, Inputs, ModelError, Outputs};
+use super::{InputPolynomial, ModelError, Outputs};
 use crate::dynamics::EventKind;
 use serde::{Deserialize, Serialize};
 
@@ -76,27 +76,11 @@ pub struct StepInputs {
     pub load_torque: InputPolynomial,
 }
 
-impl StepInputs {
-    /// `inputs` held over the step.
-    pub fn held(inputs: &Inputs) -> Self {
-        Self {
-            crank_speed: InputPolynomial::held(inputs.crank_speed),
-            gas_pressure: InputPolynomial::held(inputs.gas_pressure),
-            load_torque: InputPolynomial::held(inputs.load_torque),
-        }
-    }
-}
-
 /// A model variant as the FMU drives it: advanced with held or interpolated inputs.
 pub trait EngineModel: Sized + Clone {
-    /// Advances to exactly `t_end` with `inputs` held, appending every event to `events`.
-    /// On error the model may be left anywhere: the caller restores its own copy.
-    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
-        self.advance_interpolated(&StepInputs::held(inputs), t_end, events)
-    }
-
-    /// As [`Self::advance`], the inputs following their polynomials from the current time; a model
-    /// that cannot follow a derivative refuses it.
+    /// Advances to exactly `t_end`, the inputs following their polynomials from the current time, appending
+    /// every event to `events`; a model that cannot follow a derivative refuses it. On error the model may be
+    /// left anywhere: the caller restores its own copy.
     fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError>;
 
     /// Before the first step, the state that step would start from with `inputs` (whose outputs are

@@ -12,7 +12,7 @@ mod statistics;
 pub use impact_log::ImpactLog;
 pub use model_variant::ModelVariant;
 
-use super::Mechanism;
+use super::{mechanisms, Mechanism};
 use crate::models::{EngineEvent, InputDerivatives, Inputs, ModelError, Outputs, Parameters, StepInputs};
 use landings::{Landing, LandingLog, Landings};
 use serde::{Deserialize, Serialize};
@@ -94,7 +94,7 @@ impl<E: Mechanism> Simulation<E> {
     /// `inputs` (a free crank at its start speed `crank_speed`), so that the initial outputs
     /// (`kinetic_energy`, `crank_speed_actual`) describe it. A step rebuilds it from the inputs then.
     pub fn prepare(&mut self, inputs: &Inputs) -> Result<(), ModelError> {
-        self.model.prepare(&StepInputs::held(inputs))?;
+        self.model.prepare(&mechanisms::held(inputs))?;
         Self::write_outputs(&self.model, (&mut self.statistics, &self.landings), None, &mut self.outputs);
         self.landings.seat(self.time, &self.outputs);
         Ok(())
