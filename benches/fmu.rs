@@ -7,7 +7,8 @@
 //! Each figure is the median of several runs.
 
 use pistonslap::dynamics::StepperOptions;
-use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters};
+use pistonslap::fmus::piston_slap::mechanisms;
+use pistonslap::models::{CrankTrain, Inputs, Parameters};
 use std::time::Instant;
 
 #[path = "fmu/flop_count.rs"]
@@ -18,6 +19,7 @@ mod flop_count;
 mod fmu_host;
 
 use fmu_host::{vr, Host};
+use pistonslap::fmus::piston_slap::Mechanism;
 
 const RUNS: usize = 5;
 /// Rounds of the communication-step runs (each a few tenths of a second).
@@ -186,7 +188,8 @@ fn do_step_instructions(h: f64) -> Result<f64, String> {
 fn plain_steps(steps: usize) -> f64 {
     let params = Parameters { bore: 0.11, ..Parameters::default() };
     let options = StepperOptions { step: 1e-4, ..StepperOptions::default() };
-    let mut model = CrankTrain::with_options(&params, 0.0, options).expect("valid parameters");
+    let mut model = CrankTrain::with_options(mechanisms::crank_train::design(&params).expect("valid parameters"), 0.0, options)
+        .expect("a finite start");
     let (inputs, mut events) = (Inputs::default(), Vec::new());
     let start = Instant::now();
     model.advance(&inputs, steps as f64 * 1e-4, &mut events).expect("no contact");

@@ -4,7 +4,8 @@
 
 use crate::common::fmu_host::{vr, Host};
 use pistonslap::fmus::piston_slap::simulation::Simulation;
-use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters, Roller};
+use pistonslap::fmus::piston_slap::Mechanism;
+use pistonslap::models::{CrankTrain, Inputs, Parameters, Roller};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 
@@ -52,7 +53,7 @@ fn roller() -> Parameters {
 
 /// Allocations and events of the measured steps of model `M`'s `advance`, the event list reused
 /// as a host of the model would.
-fn advance<M: EngineModel>(params: &Parameters) -> (usize, usize) {
+fn advance<M: Mechanism>(params: &Parameters) -> (usize, usize) {
     let (inputs, mut events) = (Inputs::default(), Vec::new());
     let mut model = M::new(params, 0.0).expect("default parameters");
     let mut step = |k: usize| {

@@ -1,6 +1,7 @@
 //! Variant 2 (Farahanchi's roller slider crank) on the core: the thesis's statements that do not hang
 //! on chaos details, with roller_forcing = 1 (f(τ) as printed, which produced the thesis's results).
 
+use pistonslap::fmus::piston_slap::Mechanism;
 use pistonslap::models::{EngineEvent, EngineEventKind, EngineModel, Forcing, Inputs, Outputs, Parameters, Roller, RollerMechanism};
 use std::f64::consts::PI;
 

@@ -6,13 +6,14 @@
 //! `cargo run --release --example cycles -- 100 [roller]`,
 //! `valgrind --tool=callgrind target/release/examples/cycles 10`.
 
-use pistonslap::models::{CrankTrain, EngineModel, Inputs, Parameters, Roller};
+use pistonslap::fmus::piston_slap::Mechanism;
+use pistonslap::models::{CrankTrain, Inputs, Parameters, Roller};
 use std::time::Instant;
 
 const CYCLE: f64 = 0.1;
 const STEP: f64 = 0.01;
 
-fn run<M: EngineModel>(params: &Parameters, cycles: usize) {
+fn run<M: Mechanism>(params: &Parameters, cycles: usize) {
     let (inputs, mut events) = (Inputs::default(), Vec::new());
     let mut model = M::new(params, 0.0).expect("default parameters");
     let (mut count, mut hash) = (0, 0u64);

@@ -6,9 +6,11 @@
 
 use nalgebra::{SVector, Vector2, Vector3};
 use pistonslap::dynamics::System;
-use pistonslap::models::crank_train::drive::{Engine, FreeCrank, PrescribedCrank};
+use pistonslap::fmus::piston_slap::mechanisms;
+use pistonslap::fmus::piston_slap::Mechanism;
+use pistonslap::models::crank_train::engine::{FreeCrank, PrescribedCrank};
 use pistonslap::models::crank_train::kinematics::SliderCrank;
-use pistonslap::models::{CrankTrain, EngineModel, InputPolynomial, Inputs, Parameters};
+use pistonslap::models::{CrankTrain, InputPolynomial, Inputs, Parameters};
 use std::hint::black_box;
 use std::time::Instant;
 
@@ -66,11 +68,11 @@ fn main() {
     let p = Parameters::default();
     let speed = Inputs::default().crank_speed;
     let states = states(&p, speed);
-    let prescribed = PrescribedCrank::new(Engine::new(&p).expect("default engine"), p.crank_angle_start, 0.0, speed);
+    let prescribed = PrescribedCrank::new(mechanisms::crank_train::engine(&p).expect("default engine"), p.crank_angle_start, 0.0, speed);
     let reduced = |x: &SVector<f64, 3>| Vector2::new(x[1], x[2]);
     let evaluate = ns_per_call(&states, |(t, q, qd)| prescribed.evaluate(*t, &reduced(q), &reduced(qd)).gap_bias[0]);
     println!("prescribed crank: evaluate {:6.1} ns (min {:6.1})", evaluate.0, evaluate.1);
-    let free = FreeCrank { engine: Engine::new(&p).expect("default engine"), load_torque: InputPolynomial::held(20.0) };
+    let free = FreeCrank { engine: mechanisms::crank_train::engine(&p).expect("default engine"), load_torque: InputPolynomial::held(20.0) };
     let evaluate = ns_per_call(&states, |(_, q, qd)| free.evaluate(0.0, q, qd).gap_bias[0]);
     println!("free crank:       evaluate {:6.1} ns (min {:6.1})", evaluate.0, evaluate.1);
 

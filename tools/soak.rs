@@ -33,9 +33,10 @@
 //! ≈ 2e-3 (the roller's impulsive wall work ≈ 7e-4). Not counted: the O(h⁵) velocity projections
 //! that keep sliding contacts on their manifold.
 
+use pistonslap::fmus::piston_slap::Mechanism;
 use pistonslap::models::crank_train::kinematics::SliderCrank;
 use pistonslap::models::gas::FourStrokePressure;
-use pistonslap::models::{CrankTrain, EfficiencyTarget, EnergyBalance, EngineEvent, EngineModel, Inputs, Parameters, Roller};
+use pistonslap::models::{CrankTrain, EfficiencyTarget, EnergyBalance, EngineEvent, Inputs, Parameters, Roller};
 use std::f64::consts::PI;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;
@@ -85,7 +86,7 @@ fn trapezoid(a: Powers, b: Powers, h: f64) -> Powers {
 }
 
 /// The powers of a copy of the model advanced to `t` (a midpoint on the same RK4 step).
-fn probe<Mo: EngineModel + EnergyBalance>(mut copy: Mo, inputs: &Inputs, t: f64) -> Result<Powers, String> {
+fn probe<Mo: Mechanism + EnergyBalance>(mut copy: Mo, inputs: &Inputs, t: f64) -> Result<Powers, String> {
     copy.advance(inputs, t, &mut Vec::new()).map_err(|e| e.0)?;
     Ok(powers(&copy))
 }
@@ -102,7 +103,7 @@ struct Run<Mo> {
     trapezoids: u64,
 }
 
-impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
+impl<Mo: Mechanism + EnergyBalance> Run<Mo> {
     fn new(model: Mo, inputs: Inputs, t0: f64) -> Result<Self, String> {
         let mut run = Self { model, inputs, now: [0.0; 5], events: Vec::new(), splits: 0, trapezoids: 0 };
         run.model.advance(&run.inputs, t0, &mut run.events).map_err(|e| e.0)?;
@@ -257,7 +258,7 @@ impl<Mo: EngineModel + EnergyBalance> Run<Mo> {
 
 /// Runs `windows` windows of `period` s, `n` samples each, with progress output; returns the worst error.
 #[allow(clippy::too_many_arguments)]
-fn soak<Mo: EngineModel + EnergyBalance>(
+fn soak<Mo: Mechanism + EnergyBalance>(
     name: &str,
     mut run: Run<Mo>,
     t0: f64,

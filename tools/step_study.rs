@@ -4,11 +4,12 @@
 //! `cargo run --release --example step_study [cycles]`.
 
 use pistonslap::dynamics::StepperOptions;
-use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, Inputs, Parameters};
+use pistonslap::fmus::piston_slap::{mechanisms, Mechanism};
+use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, Inputs, Parameters};
 
 fn run(options: StepperOptions, cycles: f64) -> (Vec<EngineEvent>, f64) {
     let inputs = Inputs::default();
-    let mut m = CrankTrain::with_options(&Parameters::default(), 0.0, options).unwrap();
+    let mut m = CrankTrain::with_options(mechanisms::crank_train::design(&Parameters::default()).unwrap(), 0.0, options).unwrap();
     let mut ev = Vec::new();
     let cycle = 4.0 * std::f64::consts::PI / inputs.crank_speed;
     let t0 = std::time::Instant::now();

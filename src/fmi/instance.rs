@@ -12,7 +12,6 @@ pub use super::model::Model;
 use super::state_bytes;
 use super::state_machine::Mode::{self, *};
 use super::types::Status;
-use crate::models::ModelError;
 use serde::{Deserialize, Serialize};
 use std::path::PathBuf;
 
@@ -375,15 +374,15 @@ impl<E: Model> Instance<E> {
         self.core.clone()
     }
 
-    /// Restores a saved state (and cuts the impact log back to it); leaves the error state.
+    /// Restores a saved state (and cuts the files the simulation writes back to it); leaves the error state.
     pub fn set_state(&mut self, core: &Core<E>) -> Outcome {
         if let Phase::StepComplete(sim) | Phase::Terminated(sim) = &core.phase {
             // Restoring cuts the state's log file: only this instance's own log may be cut, so
             // foreign or crafted state bytes cannot truncate an arbitrary file.
-            if let Some(why) = E::foreign_log(sim, &self.core.parameters) {
+            if let Some(why) = E::foreign_files(sim, &self.core.parameters) {
                 return Err(Refusal::error(format!("{why}: refused")));
             }
-            E::rewind_log(sim).map_err(|e| Refusal::error(format!("cannot restore the logs: {e}")))?;
+            E::rewind_files(sim).map_err(|e| Refusal::error(format!("cannot restore the logs: {e}")))?;
         }
         self.core = core.clone();
         self.failure = None;
@@ -397,7 +396,7 @@ impl<E: Model> Instance<E> {
         Ok(core)
     }
 
-    fn fail(&mut self, e: ModelError) -> Refusal {
+    fn fail(&mut self, e: super::Error) -> Refusal {
         self.failure = Some(Error);
         Refusal::error(e.0)
     }

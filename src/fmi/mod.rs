@@ -1,13 +1,15 @@
 //! The FMI 2.0 Co-Simulation interface: the only `unsafe` code of the crate.
 //!
-//! - `exports`: the `#[no_mangle]` fmi2* symbols, each a call of its body in `functions`;
+//! - `exports`: the macro that writes the `#[no_mangle]` fmi2* symbols for a registry's FMUs (the rooms'
+//!   registry invokes it), each a call of its body in `functions`;
 //! - `functions`: the bodies, generic over the engine model: pointers in (`pointers`), the state
 //!   machine's check, `catch_unwind`, logging out;
 //! - `state_machine`: the states and the one table of the states each function is allowed in;
 //! - `reentry`: refuses a call into an instance from inside its own call (its logger calling back);
-//! - `registry`: dispatch over the FMUs of `crate::fmus::registry!`, naming none;
+//! - `registry`: dispatch over the FMUs the symbols were written for, naming none;
 //! - `identity`: which FMU a copy of the binary belongs to (stamped by the packer);
-//! - `model`: what the layer needs of a model (each FMU's room implements it);
+//! - `model`: what the layer needs of a model (each FMU's room implements it); `error`: what a model answers
+//!   when it refuses or fails;
 //! - `package`: what the packer needs of an FMU;
 //! - `instance`: what each function does, in safe code;
 //! - `resources`: the FMU's resources directory and the lookup of bare file names in it;
@@ -15,8 +17,9 @@
 //! - `snapshot`: what an FMU state points to; `state_bytes`: the serialized FMU state.
 
 pub mod description;
-pub mod exports;
-mod functions;
+mod error;
+mod exports;
+pub(crate) mod functions;
 pub mod identity;
 mod instance;
 mod logger;
@@ -24,7 +27,7 @@ mod model;
 mod package;
 mod pointers;
 mod reentry;
-mod registry;
+pub(crate) mod registry;
 mod resources;
 mod snapshot;
 mod state_bytes;
@@ -32,6 +35,8 @@ mod state_machine;
 pub mod types;
 
 pub use description::{Causality, Description, Kind, Variable};
+pub use error::Error;
+pub(crate) use exports::exports;
 pub use logger::{fixed_argument_logger, FixedArgumentLogger, Logger};
 pub use model::Model;
 pub use package::Package;

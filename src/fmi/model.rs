@@ -1,11 +1,11 @@
 //! What the FMI layer needs of a model, so that one glue serves every FMU of the crate (as Reference-FMUs'
 //! `fmi2Functions.c` serves every model): its variable table and a simulation to start, step and save.
-//! Each FMU's room in `crate::fmus` implements it; the layer reaches them through the registry
-//! (`crate::fmus::registry!`) and names none. Safe code.
+//! Each FMU's room implements it; the layer reaches them through the symbols the rooms' registry has
+//! [`super::exports!`] write, and names none. Safe code.
 
 use super::description::Description;
+use super::error::Error;
 use super::logger::Logger;
-use crate::models::ModelError;
 use serde::{de::DeserializeOwned, Serialize};
 use std::fmt::Debug;
 use std::path::Path;
@@ -39,27 +39,32 @@ pub trait Model: Sized + Clone + Debug + 'static {
     /// The parameters with bare file names turned into their paths in the FMU's `resources/`.
     fn resolve(parameters: &Self::Parameters, resources: Option<&Path>) -> Self::Parameters;
     /// The parameters' own checks (ranges and relations), naming the parameter.
-    fn validate(parameters: &Self::Parameters) -> Result<(), ModelError>;
+    fn validate(parameters: &Self::Parameters) -> Result<(), Error>;
     /// The simulation at `start_time`, touching no file: its outputs are the initial ones, of the
     /// state the first step starts from with `inputs` (a free crank at its start speed).
-    fn preview(parameters: &Self::Parameters, inputs: &Self::Inputs, start_time: f64) -> Result<Self::Simulation, ModelError>;
+    fn preview(parameters: &Self::Parameters, inputs: &Self::Inputs, start_time: f64) -> Result<Self::Simulation, Error>;
     /// The simulation fmi2ExitInitializationMode starts (opening its files), prepared as `preview`'s.
-    fn start(parameters: &Self::Parameters, inputs: &Self::Inputs, start_time: f64) -> Result<Self::Simulation, ModelError>;
+    fn start(parameters: &Self::Parameters, inputs: &Self::Inputs, start_time: f64) -> Result<Self::Simulation, Error>;
     /// Advances to `t_end` with the inputs following their derivatives.
-    fn step(sim: &mut Self::Simulation, inputs: &Self::Inputs, derivatives: &Self::InputDerivatives, t_end: f64) -> Result<(), ModelError>;
-    /// Logs what happened during the last step (category `logEvents`).
-    fn log_step(sim: &Self::Simulation, logger: &Logger);
+    fn step(sim: &mut Self::Simulation, inputs: &Self::Inputs, derivatives: &Self::InputDerivatives, t_end: f64) -> Result<(), Error>;
+    /// Logs what happened during the last step (category `logEvents`); a model without events logs nothing.
+    fn log_step(_sim: &Self::Simulation, _logger: &Logger) {}
     /// s, the time the simulation has reached.
     fn time(sim: &Self::Simulation) -> f64;
     /// The outputs at that time.
     fn outputs(sim: &Self::Simulation) -> &Self::Outputs;
     /// A restored simulation is one the parameters can make.
-    fn check(sim: &Self::Simulation) -> Result<(), ModelError>;
+    fn check(sim: &Self::Simulation) -> Result<(), Error>;
     /// Why a restored simulation may not cut the files it writes: a file the instance's parameters
-    /// do not name (a restored state may cut only the instance's own), None when it may.
-    fn foreign_log(sim: &Self::Simulation, parameters: &Self::Parameters) -> Option<String>;
-    /// Cuts the files the simulation writes back to what it has written.
-    fn rewind_log(sim: &Self::Simulation) -> Result<(), ModelError>;
+    /// do not name (a restored state may cut only the instance's own), None when it may. A model that
+    /// writes no file has none.
+    fn foreign_files(_sim: &Self::Simulation, _parameters: &Self::Parameters) -> Option<String> {
+        None
+    }
+    /// Cuts the files the simulation writes back to what it has written (after a restore).
+    fn rewind_files(_sim: &Self::Simulation) -> Result<(), Error> {
+        Ok(())
+    }
     /// The derivatives of the input called `name`, None when it has none.
     fn input_derivatives<'a>(derivatives: &'a mut Self::InputDerivatives, name: &str) -> Option<&'a mut [f64; 2]>;
     /// The `order`-th time derivative of output `vr` now (1 ≤ order ≤ MAX_OUTPUT_DERIVATIVE_ORDER).

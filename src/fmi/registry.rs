@@ -1,19 +1,19 @@
-//! Dispatch over the registered FMUs (`crate::fmus::registry!`), naming none: each macro takes the registry's
-//! list of rooms and runs its body with `$M` the chosen room's `Fmu` type.
+//! Dispatch over a registry's FMUs, naming none: each macro takes the list of FMU types [`super::exports!`]
+//! was given and runs its body with `$M` the chosen one.
 
 /// `$body` with `$M` the FMU whose instance tag `$tag` (an `Option<u64>`) is; the last FMU when none is
 /// (its body then refuses the pointer).
 macro_rules! by_tag {
-    ([$last:ident] $tag:expr, $M:ident => $body:expr) => {{
-        type $M = crate::fmus::$last::Fmu;
+    ([$last:ty] $tag:expr, $M:ident => $body:expr) => {{
+        type $M = $last;
         $body
     }};
-    ([$first:ident, $($rest:ident),+] $tag:expr, $M:ident => $body:expr) => {
-        if $tag == Some(<crate::fmus::$first::Fmu as crate::fmi::Model>::INSTANCE_TAG) {
-            type $M = crate::fmus::$first::Fmu;
+    ([$first:ty, $($rest:ty),+] $tag:expr, $M:ident => $body:expr) => {
+        if $tag == Some(<$first as $crate::fmi::Model>::INSTANCE_TAG) {
+            type $M = $first;
             $body
         } else {
-            by_tag!([$($rest),+] $tag, $M => $body)
+            $crate::fmi::registry::by_tag!([$($rest),+] $tag, $M => $body)
         }
     };
 }
@@ -23,21 +23,21 @@ pub(crate) use by_tag;
 /// (`$stamp: Option<&str>`), or, unstamped, the first whose GUID is `$guid` (an `unsafe` C string read);
 /// the last FMU when none claims it (its own checks then refuse the GUID).
 macro_rules! by_identity {
-    ([$last:ident] $stamp:expr, $guid:expr, $M:ident => $body:expr) => {{
-        type $M = crate::fmus::$last::Fmu;
+    ([$last:ty] $stamp:expr, $guid:expr, $M:ident => $body:expr) => {{
+        type $M = $last;
         $body
     }};
-    ([$first:ident, $($rest:ident),+] $stamp:expr, $guid:expr, $M:ident => $body:expr) => {{
-        type First = crate::fmus::$first::Fmu;
+    ([$first:ty, $($rest:ty),+] $stamp:expr, $guid:expr, $M:ident => $body:expr) => {{
+        type First = $first;
         let claims = match $stamp {
-            Some(name) => name == <First as crate::fmi::Model>::NAME,
-            None => functions::has_guid::<First>($guid),
+            Some(name) => name == <First as $crate::fmi::Model>::NAME,
+            None => $crate::fmi::functions::has_guid::<First>($guid),
         };
         if claims {
             type $M = First;
             $body
         } else {
-            by_identity!([$($rest),+] $stamp, $guid, $M => $body)
+            $crate::fmi::registry::by_identity!([$($rest),+] $stamp, $guid, $M => $body)
         }
     }};
 }

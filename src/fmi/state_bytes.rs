@@ -215,27 +215,3 @@ mod tests {
         }
     }
 }
-
-#[cfg(test)]
-mod simulation_tests {
-    use super::*;
-    use crate::fmus::piston_slap::simulation::test_model::Shuttle;
-    use crate::fmus::piston_slap::simulation::Simulation;
-    use crate::models::{Inputs, Parameters};
-
-    #[test]
-    fn a_simulation_with_its_event_history_round_trips_exactly() {
-        let mut sim = Simulation::<Shuttle>::new(&Parameters::default(), 0.0).unwrap();
-        // One step over the first two impacts (4 ms and 20 ms): both are in the step's event rows.
-        sim.step(&Inputs::default(), 0.025).unwrap();
-        assert_eq!(sim.step_events().len(), 2);
-        let to = Envelope { magic: *b"SHUTTLE!", name: "Shuttle", guid: "{g}" };
-        let bytes = encode(&sim, &to).unwrap();
-        let back: Simulation<Shuttle> = decode(&bytes, &to).unwrap();
-        assert_eq!(back, sim);
-        let bits = |s: &Simulation<Shuttle>| -> Vec<u64> {
-            s.step_events().iter().flat_map(|e| [e.time, e.crank_angle, e.energy_lost].map(f64::to_bits)).collect()
-        };
-        assert_eq!(bits(&back), bits(&sim));
-    }
-}

@@ -1,6 +1,8 @@
 //! Each FMU of the library in its own room: its binding to the FMI layer ([`crate::fmi::Model`]), its run
-//! façade, its variable table and its package. The registry below is the one list the FMI layer's exported
-//! functions and the packer go through; `fmi/` names no FMU.
+//! façade, its variable table and its package. The registry below is the one list the exported fmi2*
+//! symbols ([`exports`], written by the layer's `fmi::exports!`) and the packer go through; `fmi/` names no FMU.
+
+use crate::fmi::exports;
 
 pub mod engine_cycle;
 pub mod piston_slap;
@@ -14,16 +16,17 @@ pub mod toy;
 #[cfg(not(test))]
 macro_rules! registry {
     ($callback:ident!($($args:tt)*)) => {
-        $callback!([engine_cycle, piston_slap] $($args)*)
+        $callback! { [engine_cycle, piston_slap] $($args)* }
     };
 }
 #[cfg(test)]
 macro_rules! registry {
     ($callback:ident!($($args:tt)*)) => {
-        $callback!([toy, engine_cycle, piston_slap] $($args)*)
+        $callback! { [toy, engine_cycle, piston_slap] $($args)* }
     };
 }
-pub(crate) use registry;
+
+registry!(exports!());
 
 #[cfg(not(test))]
 macro_rules! packages {

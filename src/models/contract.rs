@@ -3,7 +3,7 @@
 //! `modelDescription/` addresses these fields by name.
 
 use super::error::{check_integer, check_real};
-use super::{InputPolynomial, ModelError};
+use super::{InputPolynomial, ModelError, StepInputs};
 use serde::{Deserialize, Serialize};
 
 // From modelDescription/piston_slap.xml: the three struct macros, `impl Default for Parameters` and `for
@@ -39,10 +39,11 @@ impl InputDerivatives {
         }
     }
 
-    /// The inputs over a step starting at `t`: `inputs` there, with these derivatives, in the table's order
-    /// (`crank_speed`, `gas_pressure`, `load_torque`).
-    pub fn polynomials(&self, inputs: &Inputs, t: f64) -> [InputPolynomial; 3] {
-        self.with_values(inputs).map(|(_, value, [slope, curvature])| InputPolynomial { time: t, value, slope, curvature })
+    /// The inputs over a step starting at `t`: `inputs` there, with these derivatives.
+    pub fn polynomials(&self, inputs: &Inputs, t: f64) -> StepInputs {
+        let [crank_speed, gas_pressure, load_torque] =
+            self.with_values(inputs).map(|(_, value, [slope, curvature])| InputPolynomial { time: t, value, slope, curvature });
+        StepInputs { crank_speed, gas_pressure, load_torque }
     }
 }
 
@@ -64,8 +65,8 @@ outputs_struct! {
 impl Parameters {
     /// Refuses what no model can run: a value outside its physical range (negative masses or lengths,
     /// `restitution` outside [0, 1], an unknown variant or mode), a bore not larger than the piston, a
-    /// crank not shorter than the rod. The message names the parameter. Model-specific checks are the
-    /// models' own (`EngineModel::new`).
+    /// crank not shorter than the rod. The message names the parameter. Model-specific checks come with
+    /// each mechanism's design.
     pub fn validate(&self) -> Result<(), ModelError> {
         self.check_ranges()?;
         if self.bore <= self.piston_diameter {

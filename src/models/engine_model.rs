@@ -1,7 +1,7 @@
 //! The interface the FMU drives a mechanism through, and the events it reports.
 
 use super::skirt::PressureMap;
-use super::{InputDerivatives, Inputs, ModelError, Outputs, Parameters};
+use super::{InputPolynomial, ModelError, Outputs};
 use crate::dynamics::EventKind;
 use serde::{Deserialize, Serialize};
 
@@ -64,32 +64,28 @@ pub struct EngineEvent {
     pub lateral_kinetic_energy: f64,
 }
 
-/// A model variant as the FMU drives it: built from parameters, advanced with held inputs.
+/// The inputs over a step, each a polynomial in time from the step's start: the host's values and
+/// derivatives there, built once per step by the façade.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepInputs {
+    /// rad/s.
+    pub crank_speed: InputPolynomial,
+    /// Pa, gauge.
+    pub gas_pressure: InputPolynomial,
+    /// N·m.
+    pub load_torque: InputPolynomial,
+}
+
+/// A model variant as the FMU drives it: advanced with held or interpolated inputs.
 pub trait EngineModel: Sized + Clone {
-    /// Builds the model at `start_time` in the initial state of ARCHITECTURE.md §4, or refuses the
-    /// parameters with a message naming the offending one: the table's ranges (`Parameters::validate`)
-    /// and the model's own conditions, the only validation a start makes.
-    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError>;
-
-    /// Advances to exactly `t_end` with `inputs` held, appending every event to `events`.
-    /// On error the model may be left anywhere: the caller restores its own copy.
-    fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
-        self.advance_interpolated(inputs, &InputDerivatives::default(), t_end, events)
-    }
-
-    /// As [`Self::advance`], the inputs following the polynomials of their values and `derivatives`
-    /// at the current time; a model that cannot follow a derivative refuses it.
-    fn advance_interpolated(
-        &mut self,
-        inputs: &Inputs,
-        derivatives: &InputDerivatives,
-        t_end: f64,
-        events: &mut Vec<EngineEvent>,
-    ) -> Result<(), ModelError>;
+    /// Advances to exactly `t_end`, the inputs following their polynomials from the current time, appending
+    /// every event to `events`; a model that cannot follow a derivative refuses it. On error the model may be
+    /// left anywhere: the caller restores its own copy.
+    fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError>;
 
     /// Before the first step, the state that step would start from with `inputs` (whose outputs are
     /// then the initial ones); the first step rebuilds it from its own inputs.
-    fn prepare(&mut self, _inputs: &Inputs) -> Result<(), ModelError> {
+    fn prepare(&mut self, _inputs: &StepInputs) -> Result<(), ModelError> {
         Ok(())
     }
 
@@ -105,7 +101,7 @@ pub trait EngineModel: Sized + Clone {
     /// there from a step already taken (no events): all or nothing, and a point the caller then
     /// refuses is undone by [`Self::serve_again`] at the time before it, with no copy. None, with
     /// nothing done, where it is not such a point.
-    fn serve(&mut self, _inputs: &Inputs, _derivatives: &InputDerivatives, _t_end: f64) -> Option<Result<(), ModelError>> {
+    fn serve(&mut self, _inputs: &StepInputs, _t_end: f64) -> Option<Result<(), ModelError>> {
         None
     }
 

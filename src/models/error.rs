@@ -44,3 +44,12 @@ pub(crate) fn check_integer(name: &str, value: i32, min: Option<i32>, max: Optio
     }
     Ok(())
 }
+
+/// `Ok` where `ok`, otherwise the refusal `message` gives.
+pub fn check(ok: bool, message: impl FnOnce() -> String) -> Result<(), ModelError> {
+    if ok {
+        Ok(())
+    } else {
+        Err(ModelError(message()))
+    }
+}

@@ -11,14 +11,12 @@ mod error;
 pub mod gas;
 pub mod numerics;
 pub mod roller;
-mod running_geometry;
 pub mod skirt;
 
 pub use contract::{InputDerivatives, Inputs, Outputs, Parameters};
 pub use crank_train::{CrankTrain, EfficiencyCalibration, EfficiencyTarget};
-pub use engine_cycle::{EngineCycle, EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters, EngineCycleRun};
-pub use engine_model::{EngineEvent, EngineEventKind, EngineModel, CYCLE};
-pub use error::{check_real, ModelError};
+pub use engine_cycle::{EngineCycle, EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters};
+pub use engine_model::{EngineEvent, EngineEventKind, EngineModel, StepInputs, CYCLE};
+pub use error::{check, check_real, ModelError};
 pub use numerics::{EnergyBalance, InputPolynomial, PowerFlows};
-pub use roller::{Forcing, Jet, Roller, RollerMechanism, RollerSystem, SlidingRegion};
-pub use running_geometry::RunningGeometry;
+pub use roller::{Forcing, Jet, Roller, RollerDesign, RollerMechanism, RollerSystem, SlidingRegion};

@@ -4,7 +4,10 @@
 //! mechanisms, restitution anywhere in [0, 1].
 
 use super::output_checks::{self, GAP_TOLERANCE};
-use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, Outputs, Parameters, Roller};
+use pistonslap::fmus::piston_slap::Mechanism;
+use pistonslap::models::{
+    CrankTrain, EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, Outputs, Parameters, Roller, StepInputs,
+};
 use std::f64::consts::PI;
 
 /// The published parameters mapped onto the crank train (the benchmark file's table), frictionless
@@ -98,8 +101,8 @@ impl Design {
 
     /// The inputs a host sets at time `t`: the start values followed along their derivatives.
     pub fn inputs_at(&self, t: f64) -> Inputs {
-        let [speed, pressure, load] = self.derivatives.polynomials(&self.inputs, 0.0).map(|u| u.at(t));
-        Inputs { crank_speed: speed, gas_pressure: pressure, load_torque: load }
+        let inputs = self.derivatives.polynomials(&self.inputs, 0.0);
+        Inputs { crank_speed: inputs.crank_speed.at(t), gas_pressure: inputs.gas_pressure.at(t), load_torque: inputs.load_torque.at(t) }
     }
 }
 
@@ -399,13 +402,13 @@ fn contradiction(model: &CrankTrain, params: &Parameters, before: &[f64], now: &
 
 /// Whether `model` saved and restored continues to `t_end` as `model` does: the same events and outputs,
 /// bit for bit (compared by their printed form, which shows every bit of an f64).
-fn continues_after_a_round_trip(model: &CrankTrain, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Result<(), String> {
+fn continues_after_a_round_trip(model: &CrankTrain, inputs: &StepInputs, t_end: f64) -> Result<(), String> {
     let bytes = postcard::to_allocvec(model).map_err(|e| format!("state not saved: {e}"))?;
     let mut restored: CrankTrain = postcard::from_bytes(&bytes).map_err(|e| format!("state not restored: {e}"))?;
     let mut original = model.clone();
     let continued = |m: &mut CrankTrain| {
         let mut events = Vec::new();
-        let result = m.advance_interpolated(inputs, derivatives, t_end, &mut events).map_err(|e| e.to_string());
+        let result = m.advance_interpolated(inputs, t_end, &mut events).map_err(|e| e.to_string());
         format!("{result:?} {events:?} {:?}", outputs(m))
     };
     let (expected, got) = (continued(&mut original), continued(&mut restored));
@@ -432,11 +435,11 @@ pub fn run(design: &Design) -> Result<Finished, String> {
     for (k, &t_end) in points.iter().enumerate() {
         let first = events.len();
         let t = if k == 0 { 0.0 } else { points[k - 1] };
-        let inputs = design.inputs_at(t);
+        let inputs = design.derivatives.polynomials(&design.inputs_at(t), model.time());
         if k + 1 == points.len().div_ceil(2) {
-            continues_after_a_round_trip(&model, &inputs, &design.derivatives, t_end).map_err(|e| format!("at t = {t} s: {e}"))?;
+            continues_after_a_round_trip(&model, &inputs, t_end).map_err(|e| format!("at t = {t} s: {e}"))?;
         }
-        model.advance_interpolated(&inputs, &design.derivatives, t_end, &mut events).map_err(|e| e.to_string())?;
+        model.advance_interpolated(&inputs, t_end, &mut events).map_err(|e| e.to_string())?;
         let now = output_checks::of(&outputs(&model));
         contradiction(&model, &design.params, &before, &now, &events[first..])
             .map_or(Ok(()), |what| Err(format!("at t = {} s: {what}", model.time())))?;

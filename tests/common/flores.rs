@@ -3,6 +3,7 @@
 //! (`tools/flores_benchmark.rs`) prints.
 
 use super::designs::flores;
+use pistonslap::fmus::piston_slap::Mechanism;
 use pistonslap::models::{CrankTrain, EnergyBalance, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
 use std::f64::consts::PI;
 

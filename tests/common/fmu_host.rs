@@ -2,10 +2,10 @@
 //! own cost stays out of what is measured: shared by `benches/fmu.rs`, the allocation test and the
 //! random designs run through the FMU (`fmu_designs.rs`).
 
-use pistonslap::fmi::exports::*;
 use pistonslap::fmi::fixed_argument_logger;
 use pistonslap::fmi::types::{fmi2CallbackFunctions, fmi2Component, fmi2FMUstate, Status, FMI2_CO_SIMULATION, FMI2_FALSE};
 use pistonslap::fmi::{Causality, Kind};
+use pistonslap::fmus::exports::*;
 use pistonslap::fmus::piston_slap::{value_reference, DESCRIPTION, GUID, VARIABLES};
 use pistonslap::models::{InputDerivatives, Inputs, Outputs, Parameters};
 use std::cell::RefCell;

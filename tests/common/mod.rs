@@ -9,6 +9,7 @@ pub mod fmu_host;
 pub mod output_checks;
 pub mod testbeds;
 
+use pistonslap::fmus::piston_slap::Mechanism;
 use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
 use std::f64::consts::PI;
 

@@ -2,11 +2,12 @@
 //! integrate bounded against round-off: within one cycle (4π, the crank train), below 2048 turns
 //! (the roller).
 
-use pistonslap::models::{CrankTrain, EngineModel, Inputs, Outputs, Parameters, Roller};
+use pistonslap::fmus::piston_slap::Mechanism;
+use pistonslap::models::{CrankTrain, Inputs, Outputs, Parameters, Roller};
 use std::f64::consts::PI;
 
 /// The crank angle output after each of `steps` communication steps of `dt`.
-fn angles<Mo: EngineModel>(params: &Parameters, inputs: &Inputs, dt: f64, steps: usize) -> Vec<f64> {
+fn angles<Mo: Mechanism>(params: &Parameters, inputs: &Inputs, dt: f64, steps: usize) -> Vec<f64> {
     let mut model = Mo::new(params, 0.0).unwrap();
     (1..=steps)
         .map(|k| {

@@ -3,6 +3,8 @@
 
 use crate::common::*;
 use nalgebra::Vector3;
+use pistonslap::fmus::piston_slap::mechanisms;
+use pistonslap::fmus::piston_slap::Mechanism;
 use pistonslap::models::crank_train::kinematics::SliderCrank;
 use pistonslap::models::crank_train::linkage::{Linkage, Loads};
 use pistonslap::models::gas::FourStrokePressure;
@@ -93,7 +95,7 @@ fn tiny_clearance_follows_the_rigid_slider_crank() {
     let params = Parameters { bore: 0.080002, restitution: 0.0, ..Parameters::default() };
     let inputs = Inputs { crank_speed: SPEED, ..Inputs::default() };
     let trace = run(&params, &inputs, 1, 1, 1440);
-    let linkage = Linkage::new(&params);
+    let linkage = mechanisms::crank_train::linkage(&params);
     let geometry = SliderCrank { crank_radius: params.crank_radius, rod_length: params.rod_length, pin_offset: 0.0 };
     let curve = FourStrokePressure::new(params.peak_pressure, params.rod_length / params.crank_radius);
     let area = 0.25 * PI * params.piston_diameter.powi(2);

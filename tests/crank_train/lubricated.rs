@@ -5,7 +5,8 @@
 
 use crate::common::*;
 use pistonslap::dynamics::StepperOptions;
-use pistonslap::models::crank_train::linkage::Linkage;
+use pistonslap::fmus::piston_slap::mechanisms;
+use pistonslap::fmus::piston_slap::Mechanism;
 use pistonslap::models::crank_train::LOCAL_ERROR;
 use pistonslap::models::skirt::BOUNDARY_SLIP;
 use pistonslap::models::{CrankTrain, EnergyBalance, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
@@ -214,7 +215,7 @@ fn the_film_carries_the_default_engine_at_3000_rpm() {
 fn peak_film_force(tau: f64, step: f64) -> f64 {
     let params = Parameters { film_relaxation: tau, ..lubricated(1) };
     let options = StepperOptions { step, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() };
-    let mut model = CrankTrain::with_options(&params, 0.0, options).unwrap();
+    let mut model = CrankTrain::with_options(mechanisms::crank_train::design(&params).unwrap(), 0.0, options).unwrap();
     let (mut events, mut peak) = (Vec::new(), 0.0_f64);
     let quarter = 0.5 * std::f64::consts::PI / Inputs::default().crank_speed;
     for k in 1..=90 {
@@ -330,7 +331,7 @@ fn the_asperities_store_what_they_take_and_the_film_total_never_falls() {
     let design = lubricated_declared(&mut Random::new(0));
     let mut model = CrankTrain::new(&design.params, 0.0).unwrap();
     let mut events = Vec::new();
-    let linkage = Linkage::new(&design.params);
+    let linkage = mechanisms::crank_train::linkage(&design.params);
     let (mut t, mut last, mut stored) = (0.0, 0.0f64, 0.0f64);
     while t < 0.1 {
         t += design.step;

@@ -4,6 +4,9 @@
 #![allow(unsafe_code)]
 
 use super::*;
+use crate::fmi::state_bytes::{decode, encode, Envelope};
+use crate::fmus::piston_slap::simulation::Simulation;
+use crate::models::{Inputs, Parameters};
 
 #[test]
 fn a_failed_step_is_an_error_and_a_saved_state_continues() {
@@ -167,4 +170,20 @@ fn both_engine_variants_continue_bit_identically_after_restore_and_through_bytes
         host.free_state(state);
         other.free_state(copy);
     }
+}
+
+#[test]
+fn a_simulation_with_its_event_history_round_trips_exactly() {
+    let mut sim = Simulation::<Shuttle>::new(&Parameters::default(), 0.0).unwrap();
+    // One step over the first two impacts (4 ms and 20 ms): both are in the step's event rows.
+    sim.step(&Inputs::default(), 0.025).unwrap();
+    assert_eq!(sim.step_events().len(), 2);
+    let to = Envelope { magic: *b"SHUTTLE!", name: "Shuttle", guid: "{g}" };
+    let bytes = encode(&sim, &to).unwrap();
+    let back: Simulation<Shuttle> = decode(&bytes, &to).unwrap();
+    assert_eq!(back, sim);
+    let bits = |s: &Simulation<Shuttle>| -> Vec<u64> {
+        s.step_events().iter().flat_map(|e| [e.time, e.crank_angle, e.energy_lost].map(f64::to_bits)).collect()
+    };
+    assert_eq!(bits(&back), bits(&sim));
 }

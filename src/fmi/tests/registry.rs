@@ -3,7 +3,7 @@
 //! FMU that made it.
 
 use super::*;
-use crate::fmi::exports::*;
+use crate::fmus::exports::*;
 use crate::fmus::{engine_cycle, toy};
 
 /// An instance the exported fmi2Instantiate makes for `guid`, and the log it writes to.

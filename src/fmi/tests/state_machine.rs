@@ -8,9 +8,9 @@
 #![allow(unsafe_code)]
 
 use super::*;
-use crate::fmi::exports;
 use crate::fmi::functions::Component;
 use crate::fmi::state_machine::Mode;
+use crate::fmus::exports;
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::mem::ManuallyDrop;

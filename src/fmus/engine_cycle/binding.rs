@@ -1,9 +1,10 @@
 //! EngineCycle as the FMI layer runs it: the engine cycle model on its own variable table, with the
 //! time derivatives of its outputs.
 
+use super::run::EngineCycleRun;
 use super::variables::DESCRIPTION as TABLE;
-use crate::fmi::{Causality, Description, Logger, Model};
-use crate::models::{EngineCycle, EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters, EngineCycleRun, ModelError};
+use crate::fmi::{self, Causality, Description, Model};
+use crate::models::{EngineCycle, EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters};
 use std::path::Path;
 
 impl Model for EngineCycle {
@@ -22,33 +23,26 @@ impl Model for EngineCycle {
     fn resolve(parameters: &EngineCycleParameters, _: Option<&Path>) -> EngineCycleParameters {
         parameters.clone()
     }
-    fn validate(parameters: &EngineCycleParameters) -> Result<(), ModelError> {
-        parameters.validate()
+    fn validate(parameters: &EngineCycleParameters) -> Result<(), fmi::Error> {
+        Ok(parameters.validate()?)
     }
-    fn preview(parameters: &EngineCycleParameters, _: &EngineCycleInputs, start_time: f64) -> Result<EngineCycleRun, ModelError> {
-        EngineCycleRun::new(parameters, start_time)
+    fn preview(parameters: &EngineCycleParameters, _: &EngineCycleInputs, start_time: f64) -> Result<EngineCycleRun, fmi::Error> {
+        Ok(EngineCycleRun::new(parameters, start_time)?)
     }
-    fn start(parameters: &EngineCycleParameters, _: &EngineCycleInputs, start_time: f64) -> Result<EngineCycleRun, ModelError> {
-        EngineCycleRun::new(parameters, start_time)
+    fn start(parameters: &EngineCycleParameters, _: &EngineCycleInputs, start_time: f64) -> Result<EngineCycleRun, fmi::Error> {
+        Ok(EngineCycleRun::new(parameters, start_time)?)
     }
-    fn step(sim: &mut EngineCycleRun, _: &EngineCycleInputs, _: &(), t_end: f64) -> Result<(), ModelError> {
-        sim.step(t_end)
+    fn step(sim: &mut EngineCycleRun, _: &EngineCycleInputs, _: &(), t_end: f64) -> Result<(), fmi::Error> {
+        Ok(sim.step(t_end)?)
     }
-    fn log_step(_: &EngineCycleRun, _: &Logger) {}
     fn time(sim: &EngineCycleRun) -> f64 {
         sim.time()
     }
     fn outputs(sim: &EngineCycleRun) -> &EngineCycleOutputs {
         sim.outputs()
     }
-    fn check(sim: &EngineCycleRun) -> Result<(), ModelError> {
-        sim.check()
-    }
-    fn foreign_log(_: &EngineCycleRun, _: &EngineCycleParameters) -> Option<String> {
-        None
-    }
-    fn rewind_log(_: &EngineCycleRun) -> Result<(), ModelError> {
-        Ok(())
+    fn check(sim: &EngineCycleRun) -> Result<(), fmi::Error> {
+        Ok(sim.check()?)
     }
     fn input_derivatives<'a>(_: &'a mut (), _: &str) -> Option<&'a mut [f64; 2]> {
         None

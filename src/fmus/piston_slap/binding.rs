@@ -5,13 +5,14 @@
 
 use super::simulation::Simulation;
 use super::variables::DESCRIPTION as TABLE;
+use super::Mechanism;
 use crate::fmi::{self, Description, Logger, Model};
-use crate::models::{EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters};
+use crate::models::{InputDerivatives, Inputs, Outputs, Parameters};
 use serde::{de::DeserializeOwned, Serialize};
 use std::fmt::Debug;
 use std::path::Path;
 
-impl<E: EngineModel + Debug + Serialize + DeserializeOwned + 'static> Model for E {
+impl<E: Mechanism + Debug + Serialize + DeserializeOwned + 'static> Model for E {
     const NAME: &'static str = "PistonSlap";
     type Parameters = Parameters;
     type Inputs = Inputs;
@@ -28,21 +29,21 @@ impl<E: EngineModel + Debug + Serialize + DeserializeOwned + 'static> Model for 
         let trace = fmi::resolve_resource(&parameters.pressure_trace, resources);
         Parameters { pressure_trace: trace, ..parameters.clone() }
     }
-    fn validate(parameters: &Parameters) -> Result<(), ModelError> {
-        parameters.validate()
+    fn validate(parameters: &Parameters) -> Result<(), fmi::Error> {
+        Ok(parameters.validate()?)
     }
-    fn preview(parameters: &Parameters, inputs: &Inputs, start_time: f64) -> Result<Simulation<E>, ModelError> {
+    fn preview(parameters: &Parameters, inputs: &Inputs, start_time: f64) -> Result<Simulation<E>, fmi::Error> {
         let mut sim = Simulation::new(parameters, start_time)?;
         sim.prepare(inputs)?;
         Ok(sim)
     }
-    fn start(parameters: &Parameters, inputs: &Inputs, start_time: f64) -> Result<Simulation<E>, ModelError> {
+    fn start(parameters: &Parameters, inputs: &Inputs, start_time: f64) -> Result<Simulation<E>, fmi::Error> {
         let mut sim = Simulation::start(parameters, start_time)?;
         sim.prepare(inputs)?;
         Ok(sim)
     }
-    fn step(sim: &mut Simulation<E>, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Result<(), ModelError> {
-        sim.step_interpolated(inputs, derivatives, t_end)
+    fn step(sim: &mut Simulation<E>, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Result<(), fmi::Error> {
+        Ok(sim.step_interpolated(inputs, derivatives, t_end)?)
     }
     fn log_step(sim: &Simulation<E>, logger: &Logger) {
         for e in sim.step_events() {
@@ -60,14 +61,14 @@ impl<E: EngineModel + Debug + Serialize + DeserializeOwned + 'static> Model for 
     fn outputs(sim: &Simulation<E>) -> &Outputs {
         sim.outputs()
     }
-    fn check(sim: &Simulation<E>) -> Result<(), ModelError> {
-        sim.check()
+    fn check(sim: &Simulation<E>) -> Result<(), fmi::Error> {
+        Ok(sim.check()?)
     }
-    fn foreign_log(sim: &Simulation<E>, parameters: &Parameters) -> Option<String> {
+    fn foreign_files(sim: &Simulation<E>, parameters: &Parameters) -> Option<String> {
         sim.foreign_log(parameters)
     }
-    fn rewind_log(sim: &Simulation<E>) -> Result<(), ModelError> {
-        sim.rewind_log()
+    fn rewind_files(sim: &Simulation<E>) -> Result<(), fmi::Error> {
+        Ok(sim.rewind_log()?)
     }
     fn input_derivatives<'a>(derivatives: &'a mut InputDerivatives, name: &str) -> Option<&'a mut [f64; 2]> {
         derivatives.of_mut(name)

@@ -1,11 +1,13 @@
-//! PistonSlap.fmu's room: the run façade over the engine models ([`Simulation`]), its binding to the FMI
-//! layer, its variable table and its package.
+//! PistonSlap.fmu's room: the mechanisms built from its parameters ([`mechanisms`]), the run façade over them
+//! ([`Simulation`]), its binding to the FMI layer, its variable table and its package.
 
 mod binding;
+pub mod mechanisms;
 mod package;
 pub mod simulation;
 mod variables;
 
+pub use mechanisms::Mechanism;
 pub use package::PACKAGE;
 pub use simulation::{ModelVariant, Simulation};
 pub use variables::{value_reference, variable, DESCRIPTION, GUID, MODEL_DESCRIPTION_XML, VARIABLES};

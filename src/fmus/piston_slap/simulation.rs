@@ -12,7 +12,8 @@ mod statistics;
 pub use impact_log::ImpactLog;
 pub use model_variant::ModelVariant;
 
-use crate::models::{EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters};
+use super::{mechanisms, Mechanism};
+use crate::models::{EngineEvent, InputDerivatives, Inputs, ModelError, Outputs, Parameters, StepInputs};
 use landings::{Landing, LandingLog, Landings};
 use serde::{Deserialize, Serialize};
 use skirt_map::SkirtMap;
@@ -58,9 +59,9 @@ impl<T: Default> PartialEq for Scratch<T> {
     }
 }
 
-impl<E: EngineModel> Simulation<E> {
+impl<E: Mechanism> Simulation<E> {
     /// Builds the model at `start_time` with its initial outputs; the model validates the parameters
-    /// (`EngineModel::new`: the table's ranges, then its own checks, once). Touches no file: the impact log
+    /// (`Mechanism::new`: the table's ranges, then its own checks, once). Touches no file: the impact log
     /// starts with [`Self::start`].
     pub fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         if !start_time.is_finite() {
@@ -93,7 +94,7 @@ impl<E: EngineModel> Simulation<E> {
     /// `inputs` (a free crank at its start speed `crank_speed`), so that the initial outputs
     /// (`kinetic_energy`, `crank_speed_actual`) describe it. A step rebuilds it from the inputs then.
     pub fn prepare(&mut self, inputs: &Inputs) -> Result<(), ModelError> {
-        self.model.prepare(inputs)?;
+        self.model.prepare(&mechanisms::held(inputs))?;
         Self::write_outputs(&self.model, (&mut self.statistics, &self.landings), None, &mut self.outputs);
         self.landings.seat(self.time, &self.outputs);
         Ok(())
@@ -148,13 +149,14 @@ impl<E: EngineModel> Simulation<E> {
         // events) puts the model back if the step fails; a point the model serves from a step
         // already taken needs none: the model reads the point before it again. The statistics are
         // a few numbers, copied; the outputs are written again from the model and statistics.
-        let served = self.model.serve(inputs, derivatives, t_end);
+        let inputs = derivatives.polynomials(inputs, self.time);
+        let served = self.model.serve(&inputs, t_end);
         let before = served.is_none().then(|| self.model.clone());
         let mut events = std::mem::take(&mut self.spare_events.0);
         events.clear();
         let (statistics, landings) = (self.statistics, self.landings);
         let in_step = (self.outputs.liner_impulse_antithrust_in_step, self.outputs.liner_impulse_thrust_in_step);
-        match self.try_step(served, inputs, derivatives, t_end, &mut events) {
+        match self.try_step(served, &inputs, t_end, &mut events) {
             Ok(()) => {
                 self.time = t_end;
                 self.spare_events.0 = std::mem::replace(&mut self.step_events, events);
@@ -182,13 +184,12 @@ impl<E: EngineModel> Simulation<E> {
     fn try_step(
         &mut self,
         served: Option<Result<(), ModelError>>,
-        inputs: &Inputs,
-        derivatives: &InputDerivatives,
+        inputs: &StepInputs,
         t_end: f64,
         events: &mut Vec<EngineEvent>,
     ) -> Result<(), ModelError> {
         let failed = |what: &str, e: &dyn std::fmt::Display| ModelError(format!("step from t = {} s to {t_end} s {what}: {e}", self.time));
-        let advanced = served.unwrap_or_else(|| self.model.advance_interpolated(inputs, derivatives, t_end, events));
+        let advanced = served.unwrap_or_else(|| self.model.advance_interpolated(inputs, t_end, events));
         advanced.map_err(|e| failed("failed", &e))?;
         let (before, crank_angle) = (self.outputs.liner_impulse_total, self.outputs.crank_angle);
         Self::write_outputs(&self.model, (&mut self.statistics, &self.landings), Some(events), &mut self.outputs);

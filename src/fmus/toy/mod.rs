@@ -2,8 +2,7 @@
 //! a hand-written table. It shows what adding an FMU takes: this room, and its name in `fmus::registry!`
 //! (`fmi/tests/registry.rs` drives it through the exported functions beside the shipped FMUs).
 
-use crate::fmi::{Causality, Description, Kind, Logger, Model, Variable};
-use crate::models::ModelError;
+use crate::fmi::{self, Causality, Description, Kind, Model, Variable};
 use serde::{Deserialize, Serialize};
 use std::path::Path;
 
@@ -93,36 +92,29 @@ impl Model for Lag {
     fn resolve(parameters: &LagParameters, _: Option<&Path>) -> LagParameters {
         parameters.clone()
     }
-    fn validate(parameters: &LagParameters) -> Result<(), ModelError> {
-        crate::models::check_real("time_constant", parameters.time_constant, None, None, true, "s")
+    fn validate(parameters: &LagParameters) -> Result<(), fmi::Error> {
+        Ok(crate::models::check_real("time_constant", parameters.time_constant, None, None, true, "s")?)
     }
-    fn preview(parameters: &LagParameters, _: &LagInputs, start_time: f64) -> Result<Lag, ModelError> {
+    fn preview(parameters: &LagParameters, _: &LagInputs, start_time: f64) -> Result<Lag, fmi::Error> {
         Ok(Lag { time_constant: parameters.time_constant, time: start_time, outputs: LagOutputs::default() })
     }
-    fn start(parameters: &LagParameters, inputs: &LagInputs, start_time: f64) -> Result<Lag, ModelError> {
+    fn start(parameters: &LagParameters, inputs: &LagInputs, start_time: f64) -> Result<Lag, fmi::Error> {
         Self::preview(parameters, inputs, start_time)
     }
-    fn step(sim: &mut Lag, inputs: &LagInputs, _: &(), t_end: f64) -> Result<(), ModelError> {
+    fn step(sim: &mut Lag, inputs: &LagInputs, _: &(), t_end: f64) -> Result<(), fmi::Error> {
         let decay = libm::exp(-(t_end - sim.time) / sim.time_constant);
         sim.outputs.y = inputs.u + (sim.outputs.y - inputs.u) * decay;
         sim.time = t_end;
         Ok(())
     }
-    fn log_step(_: &Lag, _: &Logger) {}
     fn time(sim: &Lag) -> f64 {
         sim.time
     }
     fn outputs(sim: &Lag) -> &LagOutputs {
         &sim.outputs
     }
-    fn check(sim: &Lag) -> Result<(), ModelError> {
-        crate::models::check_real("time_constant", sim.time_constant, None, None, true, "s")
-    }
-    fn foreign_log(_: &Lag, _: &LagParameters) -> Option<String> {
-        None
-    }
-    fn rewind_log(_: &Lag) -> Result<(), ModelError> {
-        Ok(())
+    fn check(sim: &Lag) -> Result<(), fmi::Error> {
+        Ok(crate::models::check_real("time_constant", sim.time_constant, None, None, true, "s")?)
     }
     fn input_derivatives<'a>(_: &'a mut (), _: &str) -> Option<&'a mut [f64; 2]> {
         None

@@ -7,8 +7,8 @@
 //! work `P_d ω`, and `ΔT = −(dissipation) + P_d ω` with dissipation `−Λᵀ(ḣ⁻ + ḣ⁺)/2`.
 
 use super::books::{DAMPING, DRIVE, FILM, GAS, IMPLICIT};
-use super::drive::PrescribedCrank;
-use super::model::CrankTrain;
+use super::crank_train::{by_wall, CrankTrain};
+use super::engine::PrescribedCrank;
 use crate::models::{EnergyBalance, PowerFlows};
 use nalgebra::{Vector2, Vector4};
 
@@ -48,11 +48,6 @@ impl CrankTrain {
     }
 }
 
-/// A per-corner quantity summed per wall: [K1 + K2 (anti-thrust), K3 + K4 (major thrust)].
-pub(super) fn by_wall(x: &Vector4<f64>) -> [f64; 2] {
-    [x[0] + x[1], x[2] + x[3]]
-}
-
 impl EnergyBalance for CrankTrain {
     /// Kinetic plus gravitational potential energy of the links.
     fn mechanical_energy(&self) -> f64 {
@@ -77,7 +72,8 @@ impl EnergyBalance for CrankTrain {
 #[cfg(test)]
 mod tests {
     use crate::dynamics::System;
-    use crate::models::crank_train::drive::{Engine, PrescribedCrank};
+    use crate::fmus::piston_slap::mechanisms;
+    use crate::models::crank_train::engine::PrescribedCrank;
     use crate::models::Parameters;
     use nalgebra::{Matrix4, Vector2, Vector3, Vector4};
 
@@ -87,7 +83,7 @@ mod tests {
     #[test]
     fn impulse_work_is_the_crank_row_reaction_and_closes_the_energy_of_an_impact() {
         let p = Parameters::default();
-        let mut engine = Engine::new(&Parameters { pressure_source: 1, ..p.clone() }).unwrap();
+        let mut engine = mechanisms::crank_train::engine(&Parameters { pressure_source: 1, ..p.clone() }).unwrap();
         engine.hold_pressure(crate::models::InputPolynomial::held(0.0));
         let sys = PrescribedCrank::new(engine, 0.7, 0.0, 125.66);
         let (t, q, qd) = (0.003, Vector2::new(-0.12, 4e-4), Vector2::new(-25.0, 3.0));

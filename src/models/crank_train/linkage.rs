@@ -25,7 +25,6 @@
 
 use crate::dynamics::{Evaluation, Tangents};
 use crate::models::numerics::trig;
-use crate::models::Parameters;
 use nalgebra::{Matrix3, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 
@@ -39,24 +38,24 @@ pub struct Linkage {
 }
 
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-struct Bodies {
+pub(crate) struct Bodies {
     /// (l1, l2).
-    links: [f64; 2],
+    pub(crate) links: [f64; 2],
     /// Centre-of-mass offsets along each link (ey1, ey2, ey3).
-    along: [f64; 3],
+    pub(crate) along: [f64; 3],
     /// Centre-of-mass offsets across each link (0, 0, −a).
-    across: [f64; 3],
-    masses: [f64; 3],
-    inertias: [f64; 3],
+    pub(crate) across: [f64; 3],
+    pub(crate) masses: [f64; 3],
+    pub(crate) inertias: [f64; 3],
     /// (c̄1, c̄2, c̄3).
-    damping: [f64; 3],
-    gravity: f64,
+    pub(crate) damping: [f64; 3],
+    pub(crate) gravity: f64,
     /// Gravity's lateral component, along +x (`gravity_lateral`).
-    gravity_lateral: f64,
-    pin_offset: f64,
-    bore: f64,
+    pub(crate) gravity_lateral: f64,
+    pub(crate) pin_offset: f64,
+    pub(crate) bore: f64,
     /// Per corner: z (distance from the pin along the axis), w (offset across it), wall side σ.
-    corners: [(f64, f64, f64); 4],
+    pub(crate) corners: [(f64, f64, f64); 4],
 }
 
 impl From<Bodies> for Linkage {
@@ -162,26 +161,6 @@ fn directions(phi: &Vector3<f64>) -> [(Vector2<f64>, Vector2<f64>); 3] {
 }
 
 impl Linkage {
-    /// Takes the parameters as given; `CrankTrain::new` validates them first.
-    pub fn new(p: &Parameters) -> Self {
-        let a = p.pin_offset;
-        let (h, s, half) = (p.pin_height, p.skirt_length, 0.5 * p.piston_diameter);
-        Bodies {
-            links: [p.crank_radius, p.rod_length],
-            along: [p.crank_com, p.rod_com, p.piston_com],
-            across: [0.0, 0.0, -a],
-            masses: [p.crank_mass, p.rod_mass, p.piston_mass],
-            inertias: [p.crank_inertia, p.rod_inertia, p.piston_inertia],
-            damping: [p.damping_main, p.damping_crank_pin, p.damping_piston_pin],
-            gravity: p.gravity,
-            gravity_lateral: p.gravity_lateral,
-            pin_offset: a,
-            bore: p.bore,
-            corners: [(h, -(half + a), 1.0), (h - s, -(half + a), 1.0), (h, half - a, -1.0), (h - s, half - a, -1.0)],
-        }
-        .into()
-    }
-
     /// Pin O3 position (x, y), m.
     pub fn pin(&self, phi: &Vector3<f64>) -> Vector2<f64> {
         self.bodies.links[0] * along(phi[0]) + self.bodies.links[1] * along(phi[1])
@@ -408,9 +387,11 @@ impl Linkage {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::fmus::piston_slap::mechanisms;
+    use crate::models::Parameters;
 
     fn linkage(pin_offset: f64) -> Linkage {
-        Linkage::new(&Parameters { pin_offset, ..Parameters::default() })
+        mechanisms::crank_train::linkage(&Parameters { pin_offset, ..Parameters::default() })
     }
 
     /// `directions` takes `libm::sincos`, `along` and `across` `libm::sin` and `libm::cos`: the
@@ -511,7 +492,7 @@ mod tests {
     #[test]
     fn lateral_kinetic_energy_is_the_piston_centres_lateral_motion_and_its_tilt() {
         let p = Parameters { pin_offset: 0.002, piston_com: 0.013, ..Parameters::default() };
-        let l = Linkage::new(&p);
+        let l = mechanisms::crank_train::linkage(&p);
         for (phi, phid) in states() {
             let dt = 1e-7;
             let x = |sign: f64| l.centre_of_mass(&(phi + phid * sign * dt), 2).x;
@@ -533,7 +514,7 @@ mod tests {
             lo + (hi - lo) * (seed >> 11) as f64 / (1u64 << 53) as f64
         };
         for a in [0.0, 0.002, -0.0035] {
-            let l = Linkage::new(&Parameters {
+            let l = mechanisms::crank_train::linkage(&Parameters {
                 pin_offset: a,
                 damping_main: 0.3,
                 damping_crank_pin: 0.05,

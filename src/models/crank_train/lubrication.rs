@@ -40,7 +40,7 @@ use super::linkage::LinkAngles;
 use super::step_film::{key, Solved, StepFilm};
 use crate::models::numerics::LastValue;
 use crate::models::skirt::{PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
-use crate::models::{ModelError, Parameters};
+use crate::models::ModelError;
 use nalgebra::{Matrix2x3, Matrix3, SVector, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::cell::RefCell;
@@ -97,21 +97,21 @@ struct SavedFilm {
 
 /// What a lubricated skirt is built from (and saved as), SI.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
-struct Design {
+pub(crate) struct Design {
     /// (l1, l2).
-    links: [f64; 2],
+    pub(crate) links: [f64; 2],
     /// τ, s.
-    relaxation: f64,
+    pub(crate) relaxation: f64,
     /// D/2, d/2, s, h, a.
-    geometry: [f64; 5],
-    viscosity: f64,
-    arc: f64,
-    profile: String,
-    ovality: f64,
+    pub(crate) geometry: [f64; 5],
+    pub(crate) viscosity: f64,
+    pub(crate) arc: f64,
+    pub(crate) profile: String,
+    pub(crate) ovality: f64,
     /// σ, η, β, E'.
-    roughness: [f64; 4],
-    boundary_friction: f64,
-    grid: (usize, usize),
+    pub(crate) roughness: [f64; 4],
+    pub(crate) boundary_friction: f64,
+    pub(crate) grid: (usize, usize),
 }
 
 impl PartialEq for Lubrication {
@@ -181,31 +181,6 @@ struct Kinematics {
 }
 
 impl Lubrication {
-    /// The lubricated skirt of validated parameters with `skirt_model = 2`, or none; a design the
-    /// film cannot be solved on is refused, naming the parameter.
-    pub fn of(p: &Parameters) -> Result<Option<Self>, ModelError> {
-        if p.skirt_model != 2 {
-            return Ok(None);
-        }
-        if p.skirt_arc > std::f64::consts::PI {
-            return Err(ModelError(format!("skirt_arc = {} rad must be at most π: each side is at most a half circle", p.skirt_arc)));
-        }
-        let grid = |name: &str, n: i32| usize::try_from(n).map_err(|_| ModelError(format!("{name} = {n} must be positive")));
-        let design = Design {
-            links: [p.crank_radius, p.rod_length],
-            relaxation: p.film_relaxation,
-            geometry: [0.5 * p.bore, 0.5 * p.piston_diameter, p.skirt_length, p.pin_height, p.pin_offset],
-            viscosity: p.oil_viscosity,
-            arc: p.skirt_arc,
-            profile: p.skirt_profile.clone(),
-            ovality: p.skirt_ovality,
-            roughness: [p.skirt_roughness, p.asperity_density, p.asperity_radius, p.composite_modulus],
-            boundary_friction: p.boundary_friction,
-            grid: (grid("skirt_grid_circumferential", p.skirt_grid_circumferential)?, grid("skirt_grid_axial", p.skirt_grid_axial)?),
-        };
-        Self::try_from(design).map(Some)
-    }
-
     /// The largest RK4 step, s: τ / [`STEPS_PER_RELAXATION`].
     pub fn largest_step(&self) -> f64 {
         self.design.relaxation / STEPS_PER_RELAXATION

@@ -3,17 +3,20 @@
 //! model the FMU drives, its energy books, its declared design space and the efficiency calibration.
 
 pub mod books;
-mod crank_stepper;
-mod design_space;
-pub mod drive;
+// The file holds `CrankTrain`, the type the folder is named after.
+#[allow(clippy::module_inception)]
+mod crank_train;
+mod drive;
 pub mod efficiency;
 mod energy;
+pub mod engine;
 pub mod kinematics;
 pub mod linkage;
 pub mod lubrication;
-mod model;
 mod skirt_outputs;
+mod step_bounds;
 mod step_film;
 
+pub use crank_train::{CrankTrain, CrankTrainDesign, StartOffset};
 pub use efficiency::{EfficiencyCalibration, EfficiencyTarget};
-pub use model::{CrankTrain, LOCAL_ERROR, MAX_STEP, MAX_STEP_ANGLE};
+pub use step_bounds::{LOCAL_ERROR, MAX_STEP, MAX_STEP_ANGLE};

@@ -10,8 +10,8 @@
 //! dissipation either: it is `film_relaxation_work`.
 
 use super::books::{FILM, IMPLICIT, SKIRT_FRICTION, WALL_PUSH};
+use super::crank_train::CrankTrain;
 use super::linkage::LinkAngles;
-use super::model::CrankTrain;
 use crate::models::skirt::PressureMap;
 use crate::models::Outputs;
 use nalgebra::{Vector3, Vector4};

@@ -13,7 +13,7 @@ mod thermo;
 
 pub use closed_cycle::{wiebe, ClosedCycle, ClosedState, PEAK_PRESSURE_LIMIT, PEAK_TEMPERATURE_LIMIT};
 pub use contract::{EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters};
-pub use cycle::{EngineCycle, EngineCycleRun};
+pub use cycle::EngineCycle;
 pub use heat_transfer::Correlation;
 pub use parameters::Volume;
 pub use thermo::{stoichiometric_fuel_air, Charge, Mixture};

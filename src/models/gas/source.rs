@@ -2,7 +2,7 @@
 //! the built-in four-stroke curve (2) or a measured trace (3), all gauge (cylinder minus crankcase), Pa.
 
 use super::{FourStrokePressure, PressureTrace};
-use crate::models::{InputPolynomial, Inputs, ModelError, Parameters};
+use crate::models::InputPolynomial;
 use serde::{Deserialize, Serialize};
 
 /// The pressure on the crown, of crank angle (curve, trace) or of time (the held input).
@@ -17,16 +17,6 @@ pub enum GasPressure {
 }
 
 impl GasPressure {
-    /// The source `pressure_source` names; a held input starts at the input's default. Reads the
-    /// pressure trace, refusing a bad file.
-    pub fn new(params: &Parameters) -> Result<Self, ModelError> {
-        Ok(match params.pressure_source {
-            1 => Self::Held(InputPolynomial::held(Inputs::default().gas_pressure)),
-            3 => Self::Trace(PressureTrace::read(&params.pressure_trace, params.crankcase_pressure)?),
-            _ => Self::BuiltIn(FourStrokePressure::new(params.peak_pressure, params.rod_length / params.crank_radius)),
-        })
-    }
-
     /// Whether taking `pressure` would change nothing: it is the held input already, or the
     /// pressure comes from the built-in curve or a trace.
     pub fn holds(&self, pressure: &InputPolynomial) -> bool {

@@ -4,7 +4,7 @@
 //! with the crank (`∂h/∂τ = ψ_max'`): while sliding at the rate `λ_cᵀ J ψ'`, and at an impulse Λ
 //! by `−Λᵀ ∂h/∂τ`. The damper dissipates `λ ψ'²`; impacts their `energy_lost`.
 
-use super::model::{Roller, RollerSystem, LOWER, UPPER};
+use super::roller::{Roller, RollerSystem, LOWER, UPPER};
 use crate::dynamics::{Event, System};
 use crate::models::{EnergyBalance, PowerFlows};
 use nalgebra::Vector1;

@@ -3,7 +3,11 @@
 
 mod energy;
 mod forcing;
-mod model;
+// The file holds `Roller`, the type the folder is named after.
+#[allow(clippy::module_inception)]
+mod roller;
 
 pub use forcing::{Forcing, Jet, RollerMechanism, SlidingRegion};
-pub use model::{Roller, RollerSystem, LOWER, SLIDING_THRESHOLD_PER_CLEARANCE, THESIS_SLIDING_THRESHOLD, THESIS_STEP, UPPER};
+pub use roller::{
+    Roller, RollerDesign, RollerSystem, LOWER, SLIDING_THRESHOLD_PER_CLEARANCE, THESIS_SLIDING_THRESHOLD, THESIS_STEP, UPPER,
+};

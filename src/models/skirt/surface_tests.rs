@@ -2,7 +2,6 @@
 //! finite differences of the loads, the film's power balance, and its grid convergence.
 
 use super::{Skirt, SkirtDesign, SkirtMotion, SkirtProfile, BOUNDARY_SLIP};
-use crate::models::crank_train::linkage::Linkage;
 use crate::models::Parameters;
 use nalgebra::Vector3;
 
@@ -32,7 +31,7 @@ fn smallest_film_of_a_straight_skirt_is_the_linkage_corner_gap() {
     // linkage's K3/K4 gap (an odd circumferential node count puts θ = 0 on the closed grid); mirrored,
     // the anti-thrust side's is K1/K2. The pin offset enters both alike.
     let p = Parameters { pin_offset: 0.5e-3, ..Parameters::default() };
-    let linkage = Linkage::new(&p);
+    let linkage = crate::fmus::piston_slap::mechanisms::crank_train::linkage(&p);
     let mut d = SkirtDesign::new(0.5 * p.bore, 0.5 * p.piston_diameter, p.skirt_length, p.pin_height, p.pin_offset, 1.0, 0.01);
     d.grid = (15, 20);
     let skirt = Skirt::new(d).expect("valid design");

@@ -1,8 +1,9 @@
 //! The model variants behind one type, chosen by `model_variant`: 1 → crank train (Awrejcewicz &
 //! Kudra), 2 → roller slider crank (Farahanchi).
 
+use super::super::Mechanism;
 use crate::models::skirt::PressureMap;
-use crate::models::{CrankTrain, EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, Roller};
+use crate::models::{CrankTrain, EngineEvent, EngineModel, ModelError, Outputs, Parameters, Roller, StepInputs};
 use serde::{Deserialize, Serialize};
 
 /// The engine model the FMU runs (one per instance, so the variants' size difference costs nothing).
@@ -25,7 +26,7 @@ macro_rules! on_variant {
     };
 }
 
-impl EngineModel for ModelVariant {
+impl Mechanism for ModelVariant {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         match params.model_variant {
             1 => CrankTrain::new(params, start_time).map(ModelVariant::CrankTrain),
@@ -33,18 +34,14 @@ impl EngineModel for ModelVariant {
             other => Err(ModelError(format!("model_variant = {other} is not one of 1..=2"))),
         }
     }
+}
 
-    fn advance_interpolated(
-        &mut self,
-        inputs: &Inputs,
-        derivatives: &InputDerivatives,
-        t_end: f64,
-        events: &mut Vec<EngineEvent>,
-    ) -> Result<(), ModelError> {
-        on_variant!(self, m => m.advance_interpolated(inputs, derivatives, t_end, events))
+impl EngineModel for ModelVariant {
+    fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        on_variant!(self, m => m.advance_interpolated(inputs, t_end, events))
     }
 
-    fn prepare(&mut self, inputs: &Inputs) -> Result<(), ModelError> {
+    fn prepare(&mut self, inputs: &StepInputs) -> Result<(), ModelError> {
         on_variant!(self, m => m.prepare(inputs))
     }
 
@@ -56,8 +53,8 @@ impl EngineModel for ModelVariant {
         on_variant!(self, m => m.pressure_map())
     }
 
-    fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
-        on_variant!(self, m => m.serve(inputs, derivatives, t_end))
+    fn serve(&mut self, inputs: &StepInputs, t_end: f64) -> Option<Result<(), ModelError>> {
+        on_variant!(self, m => m.serve(inputs, t_end))
     }
 
     fn serve_again(&mut self, t: f64) -> Result<(), ModelError> {

@@ -5,7 +5,8 @@
 //! A negative `gas_pressure` makes `advance` fail, `load_torque` = 42 makes it panic (to test error
 //! handling). Input derivatives are ignored (the inputs are held). Never shipped.
 
-use crate::models::{EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters};
+use super::super::Mechanism;
+use crate::models::{EngineEvent, EngineEventKind, EngineModel, ModelError, Outputs, Parameters, StepInputs};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -22,7 +23,7 @@ pub struct Shuttle {
     mass: f64,
 }
 
-impl EngineModel for Shuttle {
+impl Mechanism for Shuttle {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         params.validate()?;
         Ok(Self {
@@ -35,16 +36,12 @@ impl EngineModel for Shuttle {
             mass: params.piston_mass,
         })
     }
+}
 
-    fn advance_interpolated(
-        &mut self,
-        inputs: &Inputs,
-        _: &InputDerivatives,
-        t_end: f64,
-        events: &mut Vec<EngineEvent>,
-    ) -> Result<(), ModelError> {
-        assert!(inputs.load_torque != 42.0, "shuttle: load_torque = 42 panics (to test panic containment)");
-        if inputs.gas_pressure < 0.0 {
+impl EngineModel for Shuttle {
+    fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        assert!(inputs.load_torque.value != 42.0, "shuttle: load_torque = 42 panics (to test panic containment)");
+        if inputs.gas_pressure.value < 0.0 {
             // Move first so that a caller that does not restore its copy would be caught.
             self.time = t_end;
             return Err(ModelError("shuttle: negative gas_pressure".into()));
@@ -54,7 +51,7 @@ impl EngineModel for Shuttle {
             let to_wall = if self.v == 0.0 { f64::INFINITY } else { (wall - self.x) / self.v };
             let dt = to_wall.min(t_end - self.time);
             self.time += dt;
-            self.crank_angle += inputs.crank_speed * dt;
+            self.crank_angle += inputs.crank_speed.value * dt;
             if dt < to_wall {
                 self.x += self.v * dt;
                 continue;

@@ -1,6 +1,7 @@
 use super::test_model::{Shuttle, SHUTTLE_SPEED};
 use super::*;
-use crate::models::ModelError;
+use crate::fmus::piston_slap::Mechanism;
+use crate::models::{EngineModel, ModelError};
 use std::path::PathBuf;
 
 type Sim = Simulation<Shuttle>;
@@ -252,7 +253,7 @@ fn a_served_point_is_undone_by_reading_the_point_before_again() {
             let before = postcard::to_allocvec(&model).unwrap();
             let mut advanced = model.clone();
             advanced.advance(&inputs, t1, &mut events).unwrap();
-            if let Some(result) = model.serve(&inputs, &derivatives, t1) {
+            if let Some(result) = model.serve(&derivatives.polynomials(&inputs, t0), t1) {
                 result.unwrap();
                 assert_eq!(postcard::to_allocvec(&model).unwrap(), postcard::to_allocvec(&advanced).unwrap(), "{model_variant} at {t1} s");
                 model.serve_again(t0).unwrap();

@@ -8,7 +8,8 @@
 //! hot shape is what its designer specifies). With the temperatures at the reference (the default) both
 //! factors are exactly 1 and the geometry is the parameters' own, bit for bit.
 
-use super::{ModelError, Parameters};
+use super::Parameters;
+use crate::models::ModelError;
 
 /// The hot bore and piston diameter, m.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,10 +1,10 @@
 //! The crank train's declared space: the designs in which its model is well posed, refused outside
 //! with the parameter and the reason (the FMU documentation, "Declared space", states the same).
 
-use super::kinematics::SliderCrank;
-use super::linkage::{Linkage, Loads};
-use super::model::check;
-use crate::models::{ModelError, Parameters};
+use super::Parameters;
+use crate::models::crank_train::kinematics::SliderCrank;
+use crate::models::crank_train::linkage::{Linkage, Loads};
+use crate::models::{check, ModelError};
 use nalgebra::{DMatrix, Vector3};
 use std::f64::consts::PI;
 
@@ -49,7 +49,7 @@ const ANGLES: usize = 720;
 /// design (e = 1, μ = 0.72) rattled from 0.3 to 2600 m/s in 0.05 s; below e = 1 the impacts' normal
 /// loss, growing as the square of the speed, bounds what the drive feeds in proportion to it (the
 /// same design: 0.14 m/s at e = 0.99, 2000 m/s at 0.999, and it runs).
-pub(super) fn validate(p: &Parameters) -> Result<(), ModelError> {
+pub fn validate(p: &Parameters) -> Result<(), ModelError> {
     p.validate()?;
     check(p.skirt_length > 0.0, || format!("skirt_length ({} m) must be positive: the corners K2, K4 lie at its end", p.skirt_length))?;
     // The corner description (A&K eq 26) holds while the piston cannot turn across the bore.
@@ -139,7 +139,7 @@ fn plausible_links(p: &Parameters) -> Result<(), ModelError> {
 /// of the region its clearance leaves it: centred alone missed one slipping corner's inconsistency
 /// off-centre), for single corners, a wall's pair and the diagonal pairs; `W` in the coordinates
 /// the crank mode leaves free.
-pub(super) fn consistent_friction(linkage: &Linkage, p: &Parameters) -> Result<(), ModelError> {
+pub fn consistent_friction(linkage: &Linkage, p: &Parameters) -> Result<(), ModelError> {
     if p.friction == 0.0 || inconsistency(linkage, p, p.friction).is_none() {
         return Ok(());
     }
@@ -209,7 +209,7 @@ mod tests {
     #[test]
     fn touching_poses_put_two_corners_on_the_liner_and_none_outside() {
         let p = Parameters::default();
-        let linkage = Linkage::new(&p);
+        let linkage = super::super::crank_train::linkage(&p);
         let clearance = 0.5 * (p.bore - p.piston_diameter);
         for angle in [0.0, 0.7, 2.0, PI, 4.5] {
             let poses = linkage.touching_poses(angle);

@@ -20,7 +20,7 @@
 use super::forcing::{AtAngle, Forcing, RollerMechanism};
 use crate::dynamics::{DynamicsError, Evaluation, Event, Stepper, StepperOptions, System};
 use crate::models::numerics::LastValue;
-use crate::models::{EngineEvent, EngineModel, InputDerivatives, Inputs, ModelError, Outputs, Parameters, RunningGeometry, CYCLE};
+use crate::models::{EngineEvent, EngineModel, ModelError, Outputs, StepInputs, CYCLE};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -115,12 +115,27 @@ pub struct Roller {
     served_from: Option<(f64, f64)>,
 }
 
-fn require(ok: bool, name: &str, range: &str) -> Result<(), ModelError> {
-    if ok {
-        Ok(())
-    } else {
-        Err(ModelError(format!("model_variant 2: parameter {name} must be {range}")))
-    }
+/// What a [`Roller`] is built from, SI: a design within the model's conditions (`design::roller`).
+#[derive(Clone, Debug)]
+pub struct RollerDesign {
+    /// ξ, α, β and the forcing.
+    pub mechanism: RollerMechanism,
+    /// Δ, the radial clearance at running temperature, m.
+    pub half_clearance: f64,
+    /// e.
+    pub restitution: f64,
+    /// The crank angle at the start time, rad.
+    pub crank_angle: f64,
+    /// r, m.
+    pub crank_radius: f64,
+    /// l, m.
+    pub rod_length: f64,
+    /// M, kg.
+    pub piston_mass: f64,
+    /// c2, N·m·s.
+    pub damping: f64,
+    /// The crank's moment of inertia about its axis, J1 + m1 ey1², kg·m².
+    pub crank_inertia: f64,
 }
 
 /// A core error with its time on the engine's clock: the core's time is the crank angle, which
@@ -198,15 +213,16 @@ impl Roller {
 
     /// The crank speed the inputs hold over a step, refused unless finite, positive and without
     /// derivatives (the thesis's equations are in crank angle at constant speed).
-    fn held_speed(inputs: &Inputs, derivatives: &InputDerivatives) -> Result<f64, ModelError> {
-        if derivatives.crank_speed != [0.0; 2] {
+    fn held_speed(inputs: &StepInputs) -> Result<f64, ModelError> {
+        let speed = &inputs.crank_speed;
+        if [speed.slope, speed.curvature] != [0.0; 2] {
             return Err(ModelError(format!(
                 "model_variant 2 holds crank_speed over a step (its equations are in crank angle at constant speed): \
                  derivatives {:?} refused",
-                derivatives.crank_speed
+                [speed.slope, speed.curvature]
             )));
         }
-        let omega = inputs.crank_speed;
+        let omega = speed.value;
         if !(omega.is_finite() && omega > 0.0) {
             return Err(ModelError(format!("model_variant 2: crank_speed must be finite and > 0, got {omega}")));
         }
@@ -242,45 +258,18 @@ impl Roller {
     }
 }
 
-impl EngineModel for Roller {
-    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
-        let variant = |e: ModelError| ModelError(format!("model_variant 2: {e}"));
-        params.validate().map_err(variant)?;
-        // The bore and piston diameter at their running temperatures.
-        let p = &RunningGeometry::apply(params).map_err(variant)?;
-        let clearance = (p.bore - p.piston_diameter) / 2.0;
-        require(p.crank_mode == 1, "crank_mode", "1 (the thesis's crank turns at a prescribed speed)")?;
-        require(p.skirt_model == 1, "skirt_model", "1 (the roller has no skirt to lubricate)")?;
-        // The model is linear in ψ ≤ ρ/Λ: beyond a few degrees it no longer describes the mechanism.
-        require(clearance <= 0.05 * p.rod_length, "bore", "larger than piston_diameter by at most 10 % of rod_length")?;
-        for (name, value) in [
-            ("piston_lateral_start", p.piston_lateral_start),
-            ("piston_lateral_velocity_start", p.piston_lateral_velocity_start),
-            ("piston_tilt_start", p.piston_tilt_start),
-            ("piston_tilt_rate_start", p.piston_tilt_rate_start),
-            ("friction", p.friction),
-            ("gravity_lateral", p.gravity_lateral),
-        ] {
-            require(
-                value == 0.0,
-                name,
-                "0 (the roller starts on its nominal path, ψ = ψ' = 0; its walls are frictionless and its cylinder vertical)",
-            )?;
-        }
+impl Roller {
+    /// The roller of `design` at `start_time`, on its nominal path (ψ = ψ' = 0).
+    pub fn with_design(design: RollerDesign, start_time: f64) -> Result<Self, ModelError> {
         if !start_time.is_finite() {
             return Err(ModelError(format!("model_variant 2: the start time ({start_time} s) must be finite")));
         }
-        let (l, mass) = (p.rod_length, p.piston_mass);
+        let d = design;
         let system = RollerSystem {
-            mechanism: RollerMechanism {
-                xi: p.crank_radius / l,
-                alpha: p.rod_mass / mass,
-                beta: p.rod_inertia / (mass * l * l),
-                forcing: if p.roller_forcing == 1 { Forcing::Printed } else { Forcing::Corrected },
-            },
-            rho: clearance / l,
+            mechanism: d.mechanism,
+            rho: d.half_clearance / d.rod_length,
             lambda: 0.0,
-            restitution: p.restitution,
+            restitution: d.restitution,
             last_angle: LastValue::default(),
         };
         let velocity_tolerance = match system.mechanism.forcing {
@@ -288,16 +277,16 @@ impl EngineModel for Roller {
             Forcing::Corrected => SLIDING_THRESHOLD_PER_CLEARANCE * system.rho,
         };
         let options = StepperOptions { step: THESIS_STEP, velocity_tolerance, ..StepperOptions::default() };
-        let stepper = Stepper::new(system, p.crank_angle_start, SVector::zeros(), SVector::zeros(), options.clone())
+        let stepper = Stepper::new(system, d.crank_angle, SVector::zeros(), SVector::zeros(), options.clone())
             .map_err(|e| core_error(e, |_| start_time))?;
         Ok(Self {
             stepper,
             options,
-            crank_radius: p.crank_radius,
-            rod_length: l,
-            piston_mass: mass,
-            damping: p.damping_crank_pin,
-            crank_inertia: p.crank_inertia + p.crank_mass * p.crank_com * p.crank_com,
+            crank_radius: d.crank_radius,
+            rod_length: d.rod_length,
+            piston_mass: d.piston_mass,
+            damping: d.damping,
+            crank_inertia: d.crank_inertia,
             crank_speed: 0.0,
             time: start_time,
             impulse_work: 0.0,
@@ -305,17 +294,13 @@ impl EngineModel for Roller {
             served_from: None,
         })
     }
+}
 
+impl EngineModel for Roller {
     /// The thesis's equations are in crank-angle time at a constant Ω: a crank speed derivative is
     /// refused; the gas pressure and load torque do not act on this model.
-    fn advance_interpolated(
-        &mut self,
-        inputs: &Inputs,
-        derivatives: &InputDerivatives,
-        t_end: f64,
-        events: &mut Vec<EngineEvent>,
-    ) -> Result<(), ModelError> {
-        let omega = Self::held_speed(inputs, derivatives)?;
+    fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
+        let omega = Self::held_speed(inputs)?;
         if t_end <= self.time {
             return Ok(());
         }
@@ -335,8 +320,8 @@ impl EngineModel for Roller {
 
     /// With the crank speed held as it is, no turns to take off and the step ahead past `t_end`,
     /// `advance_interpolated` would only have the stepper serve the point.
-    fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
-        let omega = match Self::held_speed(inputs, derivatives) {
+    fn serve(&mut self, inputs: &StepInputs, t_end: f64) -> Option<Result<(), ModelError>> {
+        let omega = match Self::held_speed(inputs) {
             Ok(omega) => omega,
             Err(e) => return Some(Err(e)),
         };

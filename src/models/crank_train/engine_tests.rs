@@ -1,15 +1,21 @@
-//! Tests of the crank modes as core systems (`drive.rs`).
+//! Tests of the crank modes as core systems (`engine.rs`).
 
 use super::*;
+use crate::fmus::piston_slap::mechanisms;
 use crate::models::Parameters;
 
 fn prescribed() -> PrescribedCrank {
-    PrescribedCrank::new(Engine::new(&Parameters::default()).unwrap(), 0.4, 0.01, 125.66)
+    PrescribedCrank::new(mechanisms::crank_train::engine(&Parameters::default()).unwrap(), 0.4, 0.01, 125.66)
 }
 
 /// The crank speeding up and the pressure rising along polynomials in time, as input derivatives give them.
 fn ramping() -> PrescribedCrank {
-    let mut sys = PrescribedCrank::new(Engine::new(&Parameters { pressure_source: 1, ..Parameters::default() }).unwrap(), 0.4, 0.01, 1.0);
+    let mut sys = PrescribedCrank::new(
+        mechanisms::crank_train::engine(&Parameters { pressure_source: 1, ..Parameters::default() }).unwrap(),
+        0.4,
+        0.01,
+        1.0,
+    );
     sys.hold_speed(InputPolynomial { time: 0.01, value: 125.66, slope: 3000.0, curvature: -2e5 });
     sys.engine.hold_pressure(InputPolynomial { time: 0.01, value: 2e6, slope: 4e8, curvature: 1e10 });
     sys
@@ -48,7 +54,7 @@ fn the_crank_cache_never_changes_a_result() {
     // new speed: every evaluation is that of a system that never evaluated before.
     for pressure_source in [1, 2] {
         let p = Parameters { pressure_source, ..Parameters::default() };
-        let mut sys = PrescribedCrank::new(Engine::new(&p).unwrap(), 0.1, 0.0, 125.66);
+        let mut sys = PrescribedCrank::new(mechanisms::crank_train::engine(&p).unwrap(), 0.1, 0.0, 125.66);
         let (q, qd) = (Vector2::new(0.05, 0.001), Vector2::new(-30.0, 2.0));
         for (t, held, speed) in
             [(0.001, 2e6, 125.66), (0.001, 2e6, 125.66), (0.002, 2e6, 125.66), (0.001, 5e6, 125.66), (0.001, 1e6, 80.0), (0.003, 1e6, 80.0)]

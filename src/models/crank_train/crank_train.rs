@@ -2,35 +2,17 @@
 //! as the FMU drives it (prescribed crank speed, or a free crank under a load torque).
 
 use super::books::{DAMPING, DRIVE, GAS};
-use super::crank_stepper::Drive;
-use super::design_space::{self, validate};
-use super::drive::{Engine, FreeCrank, PrescribedCrank};
-use super::energy::by_wall;
+use super::drive::Drive;
+use super::engine::{Engine, FreeCrank, PrescribedCrank};
 use super::kinematics::SliderCrank;
 use super::linkage::LinkAngles;
+use super::step_bounds::{LOCAL_ERROR, MAX_STEP};
 use crate::dynamics::{DynamicsError, StepCounts, Stepper, StepperOptions};
 use crate::models::skirt::PressureMap;
-use crate::models::{
-    EngineEvent, EngineModel, InputDerivatives, InputPolynomial, Inputs, ModelError, Outputs, Parameters, RunningGeometry,
-};
+use crate::models::{check, EngineEvent, EngineModel, InputPolynomial, ModelError, Outputs, StepInputs};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
-
-/// The adaptive RK4 step's largest size, s (7.2° of crank angle at 1200 rpm), and its bound on
-/// the local error of each step on the corner gaps, m. Event times and velocities do not depend
-/// on the step (events are located by root finding); the step follows the motion: near 1e-3 s
-/// where the piston lies flat on a wall (fully constrained, no error to control), ≈ 1e-4 s in
-/// flight. Over ten cycles of the default case against a 2.5 µs fixed-step reference (958
-/// impacts faster than 0.1 mm/s, `tools/step_study.rs`): impact times agree to 4.6e-9 s and
-/// speeds to 2.3e-4 relative, as a fixed 1e-4 s step does (4.5e-9 s, 2.8e-4) with 2.3×
-/// as many RK4 steps; 1e-10 m gives 3.0e-8 s and 8.7e-4.
-pub const MAX_STEP: f64 = 1e-3;
-/// The crank angle one step of the prescribed crank may span, rad (7.2°: `MAX_STEP` at 1200 rpm, so
-/// that slower cranks keep `MAX_STEP`); see `PrescribedCrank::largest_step`.
-pub const MAX_STEP_ANGLE: f64 = 2.0 * PI / 50.0;
-/// The bound on the local error of each step on the corner gaps, m (see `MAX_STEP`).
-pub const LOCAL_ERROR: f64 = 1e-11;
 
 /// The crank train in one of its two crank modes.
 #[derive(Clone, Debug, Serialize, Deserialize)]
@@ -56,26 +38,40 @@ pub struct CrankTrain {
     running_clearance: f64,
 }
 
+/// What a [`CrankTrain`] is built from: a validated design at running temperature.
+#[derive(Clone, Debug)]
+pub struct CrankTrainDesign {
+    /// The engine the crank turns.
+    pub engine: Engine,
+    /// The slider crank's lengths and pin offset.
+    pub geometry: SliderCrank,
+    /// How the start departs from the nominal slider-crank state.
+    pub start: StartOffset,
+    /// φ1 at the start time, rad.
+    pub crank_angle: f64,
+    /// A free crank under a load torque (else the crank turns at the prescribed speed).
+    pub free_crank: bool,
+    /// The crank speed, rad/s, and load torque, N·m, the inputs hold until the first step.
+    pub inputs: (f64, f64),
+    /// The diametral clearance at running temperature, m.
+    pub running_clearance: f64,
+}
+
 /// How the start departs from the nominal (zero-clearance) slider-crank state: the pin's lateral
 /// displacement from its centred position x = pin_offset, the piston's tilt, and their rates.
 #[derive(Clone, Copy, Debug, Serialize, Deserialize)]
-struct StartOffset {
-    lateral: f64,
-    lateral_velocity: f64,
-    tilt: f64,
-    tilt_rate: f64,
+pub struct StartOffset {
+    /// m.
+    pub lateral: f64,
+    /// m/s.
+    pub lateral_velocity: f64,
+    /// rad.
+    pub tilt: f64,
+    /// rad/s.
+    pub tilt_rate: f64,
 }
 
 impl StartOffset {
-    fn of(p: &Parameters) -> Self {
-        Self {
-            lateral: p.piston_lateral_start,
-            lateral_velocity: p.piston_lateral_velocity_start,
-            tilt: p.piston_tilt_start,
-            tilt_rate: p.piston_tilt_rate_start,
-        }
-    }
-
     /// (φ2, φ3) and their rates at crank angle φ1 turning at ω: the pin at x = a + x₀ (l2 sin φ2 =
     /// −(a + x₀ + l1 sin φ1)) moving at ẋ₀ (−l2 cos φ2 φ̇2 = ẋ₀ + l1 cos φ1 ω), the tilt as given.
     fn state(&self, geometry: &SliderCrank, crank_angle: f64, speed: f64) -> Result<(Vector2<f64>, Vector2<f64>), ModelError> {
@@ -85,14 +81,6 @@ impl StartOffset {
         let s = shifted.at(crank_angle);
         let rod_rate = s.rod_rate * speed - self.lateral_velocity / (shifted.rod_length * libm::cos(s.rod_angle));
         Ok((Vector2::new(s.rod_angle, self.tilt), Vector2::new(rod_rate, self.tilt_rate)))
-    }
-}
-
-pub(super) fn check(ok: bool, message: impl FnOnce() -> String) -> Result<(), ModelError> {
-    if ok {
-        Ok(())
-    } else {
-        Err(ModelError(message()))
     }
 }
 
@@ -106,21 +94,26 @@ fn dynamics_error(e: DynamicsError) -> ModelError {
     }
 }
 
+/// A per-corner quantity summed per wall: [K1 + K2 (anti-thrust), K3 + K4 (major thrust)].
+pub(super) fn by_wall(x: &Vector4<f64>) -> [f64; 2] {
+    [x[0] + x[1], x[2] + x[3]]
+}
+
 impl CrankTrain {
-    /// Builds with explicit integrator options (the FMU uses `MAX_STEP`, `LOCAL_ERROR` and the core's tolerances).
-    /// The model runs with the bore and piston diameter at their running temperatures (`RunningGeometry`),
-    /// the dry corners and the lubricated skirt alike.
-    pub fn with_options(params: &Parameters, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
-        params.validate()?;
-        let running = RunningGeometry::apply(params)?;
-        let params = &running;
-        validate(params)?;
+    /// Builds `design` at `start_time` with the FMU's integrator options (`MAX_STEP`, `LOCAL_ERROR`).
+    pub fn of(design: CrankTrainDesign, start_time: f64) -> Result<Self, ModelError> {
+        Self::with_options(
+            design,
+            start_time,
+            StepperOptions { step: MAX_STEP, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() },
+        )
+    }
+
+    /// Builds `design` with explicit integrator options (the FMU uses `MAX_STEP`, `LOCAL_ERROR` and the
+    /// core's tolerances).
+    pub fn with_options(design: CrankTrainDesign, start_time: f64, options: StepperOptions) -> Result<Self, ModelError> {
         check(start_time.is_finite(), || format!("start time ({start_time} s) must be finite"))?;
-        let engine = Engine::new(params)?;
-        design_space::consistent_friction(&engine.linkage, params)?;
-        let geometry = SliderCrank { crank_radius: params.crank_radius, rod_length: params.rod_length, pin_offset: params.pin_offset };
-        let start = StartOffset::of(params);
-        let angle = params.crank_angle_start;
+        let CrankTrainDesign { engine, geometry, start, crank_angle: angle, free_crank, inputs: (speed, load), running_clearance } = design;
         let (q, _) = start.state(&geometry, angle, 0.0)?;
         let gaps = engine.linkage.gaps(&Vector3::new(angle, q[0], q[1]));
         if let Some(i) = (0..4).find(|&i| gaps[i] < -options.gap_tolerance) {
@@ -132,12 +125,11 @@ impl CrankTrain {
                 -gaps[i]
             )));
         }
-        let speed = Inputs::default().crank_speed;
-        let drive = if params.crank_mode == 1 {
-            Drive::Prescribed(Self::prescribed(engine, &geometry, &start, angle, start_time, speed, &options)?)
-        } else {
-            let system = FreeCrank { engine, load_torque: InputPolynomial::held(Inputs::default().load_torque) };
+        let drive = if free_crank {
+            let system = FreeCrank { engine, load_torque: InputPolynomial::held(load) };
             Drive::Free(Self::free(system, &geometry, &start, angle, start_time, speed, &options)?)
+        } else {
+            Drive::Prescribed(Self::prescribed(engine, &geometry, &start, angle, start_time, speed, &options)?)
         };
         let mut model = Self {
             drive,
@@ -150,7 +142,7 @@ impl CrankTrain {
             impact_friction_energy: 0.0,
             impact_impulse: [0.0; 2],
             asperity_energy_start: 0.0,
-            running_clearance: params.bore - params.piston_diameter,
+            running_clearance,
         };
         model.asperity_energy_start = model.asperity_energy();
         Ok(model)
@@ -273,33 +265,19 @@ impl CrankTrain {
 }
 
 impl EngineModel for CrankTrain {
-    fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
-        Self::with_options(
-            params,
-            start_time,
-            StepperOptions { step: MAX_STEP, local_error: Some(LOCAL_ERROR), ..StepperOptions::default() },
-        )
-    }
-
-    fn prepare(&mut self, inputs: &Inputs) -> Result<(), ModelError> {
-        if !self.started && inputs.crank_speed.is_finite() {
-            self.start(inputs.crank_speed)?;
+    fn prepare(&mut self, inputs: &StepInputs) -> Result<(), ModelError> {
+        if !self.started && inputs.crank_speed.value.is_finite() {
+            self.start(inputs.crank_speed.value)?;
             self.started = false;
         }
         Ok(())
     }
 
-    fn advance_interpolated(
-        &mut self,
-        inputs: &Inputs,
-        derivatives: &InputDerivatives,
-        t_end: f64,
-        events: &mut Vec<EngineEvent>,
-    ) -> Result<(), ModelError> {
+    fn advance_interpolated(&mut self, inputs: &StepInputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
         // The façade has checked them finite.
-        let [speed, pressure, load] = derivatives.polynomials(inputs, self.time());
+        let StepInputs { crank_speed: speed, gas_pressure: pressure, load_torque: load } = *inputs;
         if !self.started {
-            self.start(inputs.crank_speed)?;
+            self.start(speed.value)?;
         }
         // The system is touched only where an input changed: the core re-examines the contacts
         // after a change, and a communication point with the same inputs then costs nothing.
@@ -334,13 +312,13 @@ impl EngineModel for CrankTrain {
 
     /// With the inputs held as they are, no cycle to take off the crank angle and the step ahead
     /// past `t_end`, `advance_interpolated` would only have the stepper serve the point.
-    fn serve(&mut self, inputs: &Inputs, derivatives: &InputDerivatives, t_end: f64) -> Option<Result<(), ModelError>> {
-        let [speed, pressure, load] = derivatives.polynomials(inputs, self.time());
-        if !(self.started && self.engine().holds(&pressure) && self.angle_past_cycles().1 == 0.0) {
+    fn serve(&mut self, inputs: &StepInputs, t_end: f64) -> Option<Result<(), ModelError>> {
+        let StepInputs { crank_speed: speed, gas_pressure: pressure, load_torque: load } = inputs;
+        if !(self.started && self.engine().holds(pressure) && self.angle_past_cycles().1 == 0.0) {
             return None;
         }
         let stepper = self.drive.stepper_mut();
-        if !stepper.serves_with(&speed, &load, t_end) {
+        if !stepper.serves_with(speed, load, t_end) {
             return None;
         }
         Some(stepper.serve(t_end).map_err(dynamics_error))
@@ -398,6 +376,10 @@ impl EngineModel for CrankTrain {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::fmus::piston_slap::mechanisms::design_space::validate;
+    use crate::fmus::piston_slap::mechanisms::RunningGeometry;
+    use crate::fmus::piston_slap::Mechanism;
+    use crate::models::{Inputs, Parameters};
 
     /// Outputs after each of `n` steps of `h` seconds with `inputs` held.
     fn run(params: &Parameters, inputs: &Inputs, h: f64, n: usize) -> Vec<Outputs> {
