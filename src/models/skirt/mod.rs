@@ -6,6 +6,9 @@
 mod asperity;
 mod band;
 mod design;
+mod fill;
+#[cfg(test)]
+mod fill_tests;
 mod loads;
 mod profile;
 mod reynolds;
@@ -18,6 +21,7 @@ mod surface_tests;
 
 pub use asperity::Roughness;
 pub use design::SkirtDesign;
+pub use fill::Fill;
 pub use loads::{FilmLinear, PressureMap, SideMap, SkirtLoads, SkirtMotion};
 pub use profile::SkirtProfile;
 pub use shear::Shear;

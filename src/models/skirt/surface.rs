@@ -252,7 +252,7 @@ impl Skirt {
         let (nx, area) = (self.grid.nx, self.grid.dx() * self.grid.dz());
         s.film.fill(&self.grid, (&s.film_rows, &s.face_rows), (&side.nodes, &side.faces), self.floor);
         s.wedge.fill(0.0);
-        s.film.add_wedge(&self.grid, (0.0, 0.5), &mut s.wedge);
+        s.film.add_wedge(&self.grid, (0.0, 0.5), None, &mut s.wedge);
         let (s3, c3) = (libm::sin(m.tilt), libm::cos(m.tilt));
         for (j, &(_, (alpha, beta), z, r)) in s.node_rows.iter().enumerate() {
             for (i, &(c, _)) in side.nodes.iter().enumerate() {
