@@ -15,8 +15,8 @@
 use serde::{de::DeserializeOwned, Serialize};
 
 /// Bump when the layout of the saved state changes (4: the magic is the FMU's own state tag; 5: the
-/// lubricated skirt, the absorbed work in the stepper's samples, the events' velocities; 6: the contract structs' fields in the variable tables' order; 7: the stepper without a locator choice; 8: the skirt map's file and crank angle; 9: the lubricated skirt's film solved for the current step, as the motion it was solved at; 10: the motions of the film's last two solves and of the step it is carried to; 11: four absorbed channels in the samples, the walls' film impulses beside the work; 12: whether the held contacts' motion is projected off the film's implicit inertia; 13: the landings; 14: eight reported channels in the samples, the drive's, the gas's and the damping's among them, and the asperities' energy where they start; 15: the running temperatures' parameters, the running clearance in the outputs and the crank train).
-pub const FORMAT_VERSION: u32 = 15;
+/// lubricated skirt, the absorbed work in the stepper's samples, the events' velocities; 6: the contract structs' fields in the variable tables' order; 7: the stepper without a locator choice; 8: the skirt map's file and crank angle; 9: the lubricated skirt's film solved for the current step, as the motion it was solved at; 10: the motions of the film's last two solves and of the step it is carried to; 11: four absorbed channels in the samples, the walls' film impulses beside the work; 12: whether the held contacts' motion is projected off the film's implicit inertia; 13: the landings; 14: eight reported channels in the samples, the drive's, the gas's and the damping's among them, and the asperities' energy where they start; 15: the running temperatures' parameters, the running clearance in the outputs and the crank train; 16: the cavitation condition, and each saved film solve's time and fill fraction).
+pub const FORMAT_VERSION: u32 = 16;
 
 /// Whose state the bytes hold: the FMU's magic and name, and the GUID of its model description.
 pub struct Envelope<'a> {

@@ -14,15 +14,21 @@
 //! from pressurised or carried neighbours, its squeeze at constant content). A node that fills to
 //! θ = 1 rejoins the LCP at the next solve (reformation). The balance holds node by node to round-off
 //! (the faces' fluxes are shared), so the content of the film changes only by what crosses its edges.
+//!
+//! Between solves θ moves along that rate, with the node's own outflow taken implicitly: writing
+//! `θ̇ = s − d θ`, d the wedge's outflow per unit fill over the cell's oil volume (`Film::carried_out`
+//! / (ΔA h)), the step is `θ' = (θ + Δt (θ̇ + d θ)) / (1 + Δt d)`, a convex mix of the node's fill and
+//! what flows in, so the fill stays within [0, 1] and the transport stable at any Courant number; it
+//! is the explicit step to first order in Δt.
 
-use super::reynolds::{Film, Reynolds};
+use super::reynolds::{Film, Grid, Reynolds};
 
 /// Fill fractions within this of 1 count as full: a node on the set's edge whose `w` is round-off
 /// would otherwise leave the LCP by 1e-16 and be held at p = 0 a solve later.
 const FULL: f64 = 1e-12;
 
-/// Both sides' fill fraction per node (node order j·nx + i), θ ∈ [0, 1]; empty sides under the
-/// Reynolds condition, which carries none.
+/// Both sides' values per node (node order j·nx + i): the fill fraction θ ∈ [0, 1], or its rate and
+/// decay ([`rate`]); empty sides under the Reynolds condition, which carries none.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Fill {
     /// Thrust (+x), anti-thrust (−x).
@@ -35,10 +41,10 @@ impl Fill {
         Self { sides: [vec![1.0; nodes], vec![1.0; nodes]] }
     }
 
-    /// The fill `dt` (s, either sign) after a solve that took this fill and gave `rate`: each node
-    /// moved along its rate, kept in [0, 1] (a full node stays full: its rate is 0 or negative).
-    pub fn advanced(&self, rate: &Fill, dt: f64) -> Fill {
-        Fill { sides: [0, 1].map(|k| advanced(&self.sides[k], &rate.sides[k], dt)) }
+    /// The fill `dt` (s, either sign) after a solve that took this fill and gave `rate` and `decay`
+    /// ([`rate`]), kept in [0, 1] (a full node stays full: its rate is 0 or negative).
+    pub fn advanced(&self, (rate, decay): (&Fill, &Fill), dt: f64) -> Fill {
+        Fill { sides: [0, 1].map(|k| advanced(&self.sides[k], (&rate.sides[k], &decay.sides[k]), dt)) }
     }
 
     /// The share of the nodes' film area that is wetted, Σ θ over the nodes of both sides / their number.
@@ -48,9 +54,14 @@ impl Fill {
     }
 }
 
-/// One side's fill `theta` moved `dt` along `rate` ([`Fill::advanced`]).
-pub(crate) fn advanced(theta: &[f64], rate: &[f64], dt: f64) -> Vec<f64> {
-    theta.iter().zip(rate).map(|(t, r)| settle(t + r * dt)).collect()
+/// One side's fill `theta` moved `dt` along `rate` with `decay` implicit ([`Fill::advanced`]); a step
+/// back in time (a rejected step's solve retaken earlier) is explicit.
+pub(crate) fn advanced(theta: &[f64], (rate, decay): (&[f64], &[f64]), dt: f64) -> Vec<f64> {
+    let step = |((t, r), d): ((&f64, &f64), &f64)| {
+        let implicit = dt * d;
+        settle(if implicit > 0.0 { (t + dt * (r + d * t)) / (1.0 + implicit) } else { t + dt * r })
+    };
+    theta.iter().zip(rate).zip(decay).map(step).collect()
 }
 
 /// θ kept in [0, 1], within [`FULL`] of 1 made 1.
@@ -67,23 +78,32 @@ pub(crate) fn partial(theta: f64) -> bool {
     theta < 1.0
 }
 
-/// The fill rate θ̇ per node (node order) of the mass-conserving solve `reynolds` just made, 1/s, into
-/// `out`: `fill` the fill it took, `rhs` its right-hand side, `squeeze(k)` = ΔA ḣₖ, `area` ΔA, `film`
-/// the film it solved (h at the nodes).
-pub(crate) fn rate(
-    reynolds: &Reynolds,
-    film: &Film,
-    (fill, rhs): (&[f64], &[f64]),
-    squeeze: impl Fn(usize) -> f64,
-    area: f64,
-    out: &mut [f64],
-) {
-    for (k, rate) in out.iter_mut().enumerate() {
-        *rate = if !partial(fill[k]) && reynolds.free[k] {
+/// What a mass-conserving solve is made of, for [`rate`]: the solver after it, its film (h at the
+/// nodes and faces) and grid, the fill it took, its right-hand side, the mean surface velocity, ΔA ḣ
+/// per node and the cell area ΔA.
+pub(crate) struct Solve<'a, S: Fn(usize) -> f64> {
+    pub reynolds: &'a Reynolds,
+    pub film: &'a Film,
+    pub grid: &'a Grid,
+    pub fill: &'a [f64],
+    pub rhs: &'a [f64],
+    pub velocity: (f64, f64),
+    pub squeeze: S,
+    pub area: f64,
+}
+
+/// The fill rate θ̇ (1/s) and decay d (1/s, the node's own outflow per unit fill over its oil
+/// volume) per node (node order) of a mass-conserving solve, into `rate` and `decay`.
+pub(crate) fn rate<S: Fn(usize) -> f64>(solve: &Solve<S>, (rate, decay): (&mut [f64], &mut [f64])) {
+    for (k, (rate, decay)) in rate.iter_mut().zip(decay.iter_mut()).enumerate() {
+        let volume = solve.area * solve.film.node[k];
+        let theta = solve.fill[k];
+        *decay = solve.film.carried_out(solve.grid, solve.velocity, k) / volume;
+        *rate = if !partial(theta) && solve.reynolds.free[k] {
             0.0
         } else {
-            let w = reynolds.outflow(k) - rhs[k];
-            (-w + (1.0 - fill[k]) * squeeze(k)) / (area * film.node[k])
+            let w = solve.reynolds.outflow(k) - solve.rhs[k];
+            (-w + (1.0 - theta) * (solve.squeeze)(k)) / volume
         };
     }
 }

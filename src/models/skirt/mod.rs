@@ -1,6 +1,6 @@
 //! The lubricated piston skirt: film thickness from the piston's lateral position and tilt,
-//! the Reynolds equation with the Reynolds (Swift–Stieber) cavitation condition solved as a linear
-//! complementarity problem, Greenwood–Tripp asperity contact, and the loads, damping and friction they
+//! the Reynolds equation with the Reynolds (Swift–Stieber) or the mass-conserving (JFO) cavitation
+//! condition solved as a linear complementarity problem, Greenwood–Tripp asperity contact, and the loads, damping and friction they
 //! put on the piston. Pure numerics: nothing here knows the crank train's state or the FMU.
 
 mod asperity;
@@ -20,7 +20,7 @@ mod surface;
 mod surface_tests;
 
 pub use asperity::Roughness;
-pub use design::SkirtDesign;
+pub use design::{CavitationCondition, SkirtDesign};
 pub use fill::Fill;
 pub use loads::{FilmLinear, PressureMap, SideMap, SkirtLoads, SkirtMotion};
 pub use profile::SkirtProfile;

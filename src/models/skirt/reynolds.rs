@@ -170,6 +170,17 @@ impl Film {
     }
 }
 
+impl Film {
+    /// The flow node `k` (node order) passes per unit of its own fill through its downstream faces
+    /// under the mean surface velocity (u_x, u_z), m³/s: `|u_x| h dz + |u_z| h dx` at those faces.
+    pub(crate) fn carried_out(&self, grid: &Grid, (ux, uz): (f64, f64), k: usize) -> f64 {
+        let (nx, (i, j)) = (grid.nx, (k % grid.nx, k / grid.nx));
+        let x = self.face_x[j * (nx + 1) + i + usize::from(ux >= 0.0)];
+        let z = if grid.long { 0.0 } else { self.face_z[(j + usize::from(uz >= 0.0)) * nx + i] };
+        ux.abs() * x * grid.dz() + uz.abs() * z * grid.dx()
+    }
+}
+
 /// A fill fraction carried by the wedge's flow: per node (node order j·nx + i), θ ∈ [0, 1], and the
 /// flow's direction along x and z (true: toward +x, +z). Beyond the edges the supply is full (θ = 1).
 #[derive(Clone, Copy, Debug)]
