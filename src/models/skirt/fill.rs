@@ -28,7 +28,7 @@ use super::reynolds::{Film, Grid, Reynolds};
 const FULL: f64 = 1e-12;
 
 /// Both sides' values per node (node order j·nx + i): the fill fraction θ ∈ [0, 1], or its rate and
-/// decay ([`rate`]); empty sides under the Reynolds condition, which carries none.
+/// decay (`fill::rate`); empty sides under the Reynolds condition, which carries none.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Fill {
     /// Thrust (+x), anti-thrust (−x).
@@ -42,7 +42,7 @@ impl Fill {
     }
 
     /// The fill `dt` (s, either sign) after a solve that took this fill and gave `rate` and `decay`
-    /// ([`rate`]), kept in [0, 1] (a full node stays full: its rate is 0 or negative).
+    /// (`fill::rate`), kept in [0, 1] (a full node stays full: its rate is 0 or negative).
     pub fn advanced(&self, (rate, decay): (&Fill, &Fill), dt: f64) -> Fill {
         Fill { sides: [0, 1].map(|k| advanced(&self.sides[k], (&rate.sides[k], &decay.sides[k]), dt)) }
     }
