@@ -249,7 +249,8 @@ impl Skirt {
         let (tilt, forward) = ((libm::sin(motion.tilt), libm::cos(motion.tilt)), motion.sliding_speed >= 0.0);
         linear.shear = Shear { at: Vector2::new(motion.lateral, motion.tilt), forward, ..Shear::default() };
         for side in 0..2 {
-            let (sums, gradient) = self.shear_walk::<true>(&s.closed_rows, side, &linear.free[side], forward, tilt);
+            let (sums, gradient) =
+                self.shear_walk::<true>(&s.closed_rows, side, (&linear.free[side], &linear.fill.sides[side]), forward, tilt);
             linear.shear.sums += sums;
             linear.shear.gradient += gradient;
         }
@@ -344,7 +345,11 @@ impl Skirt {
         let shear = if map.is_none() && linear.shear.serves(v, at, self.arm(), reach) {
             linear.shear.sums_at(at)
         } else {
-            (0..2).map(|side| self.shear_walk::<false>(&s.closed_rows, side, &linear.free[side], v >= 0.0, (s3, c3)).0).sum()
+            (0..2)
+                .map(|side| {
+                    self.shear_walk::<false>(&s.closed_rows, side, (&linear.free[side], &linear.fill.sides[side]), v >= 0.0, (s3, c3)).0
+                })
+                .sum()
         };
         out.friction_force -= d.viscosity * v * shear[0];
         out.friction_moment -= d.viscosity * v * shear[1];
@@ -412,17 +417,18 @@ impl Skirt {
         out
     }
 
-    /// One side's Couette shear sums (and with `GRADIENT` their gradient) at the pose of `rows`.
+    /// One side's Couette shear sums (and with `GRADIENT` their gradient) at the pose of `rows`, its
+    /// film set and fill `wetted` (`shear::walk`).
     fn shear_walk<const GRADIENT: bool>(
         &self,
         rows: &[RowTerms],
         side: usize,
-        free: &[bool],
+        wetted: (&[bool], &[f64]),
         forward: bool,
         tilt: (f64, f64),
     ) -> (Vector2<f64>, Matrix2<f64>) {
         let area = self.grid.dx() * self.grid.dz();
-        shear::walk::<GRADIENT>(rows, &self.sides[side].closed, free, forward, self.floor, tilt, self.design.pin_offset, area)
+        shear::walk::<GRADIENT>(rows, &self.sides[side].closed, wetted, forward, self.floor, tilt, self.design.pin_offset, area)
     }
 }
 
