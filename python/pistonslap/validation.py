@@ -10,6 +10,7 @@ markdown its page holds (`python/tests/test_validation_tables.py` checks every p
     python -m pistonslap.validation vanishing-film ENGINE RPM         landings as the oil thins toward the dry skirt
     python -m pistonslap.validation landing-motion ENGINE RPM         the thrust landing's translation and tilt, ±1 mm
     python -m pistonslap.validation hot-film ENGINE RPM [RPM ...]     thinnest films on oil, cold against ENGINE-hot
+    python -m pistonslap.validation cavitation ENGINE RPM [RPM ...]   the film on oil, Reynolds against mass-conserving
 
 The runs are cached per process, so that the tests which assert on the same runs share them.
 """
@@ -261,18 +262,27 @@ def landing_motion_table(engine, rpm):
 
 
 @cache
-def oil_cycle(engine, rpm):
-    """`sampled_metrics` of the last of `OIL_CYCLES` cycles (about firing TDC) of preset `engine` on oil at `rpm`,
-    sampled as `last_cycle` samples, with its running clearance and skirt FMEP."""
+def oil_cycle(engine, rpm, cavitation=1):
+    """`sampled_metrics` of the last of `OIL_CYCLES` cycles (about firing TDC) of preset `engine` on oil at `rpm`
+    with the film's `cavitation` condition, sampled as `last_cycle` samples, with its running clearance and skirt
+    FMEP."""
     omega = rpm * np.pi / 30
     interval = np.radians(SAMPLE_DEG) / omega
-    values = dict(PRESETS[engine].values, crank_speed=omega, skirt_model=2)
+    values = dict(PRESETS[engine].values, crank_speed=omega, skirt_model=2, cavitation=cavitation)
     result = simulate(
         stop_time=(OIL_CYCLES * CYCLE - CENTRED) / omega + interval, output_interval=interval, start_values=values
     )
     last = result[-1]
     metrics = sampled_metrics(result, OIL_CYCLES)
-    return dict(metrics, running_clearance=last["running_clearance"], cycle_skirt_fmep=last["cycle_skirt_fmep"])
+    # Each wall's load as the motion takes it, the mean over each communication step (its impulse over the step).
+    cycle = result["time"] > result["time"][-1] - CYCLE / omega
+    impulse = np.maximum(result["liner_impulse_thrust_in_step"], result["liner_impulse_antithrust_in_step"])
+    return dict(
+        metrics,
+        running_clearance=last["running_clearance"],
+        cycle_skirt_fmep=last["cycle_skirt_fmep"],
+        cycle_max_wall_load=float(impulse[cycle].max() / interval),
+    )
 
 
 def _thinnest(m, wall):
@@ -304,6 +314,37 @@ def hot_film_table(engine, speeds):
         "thinnest film, thrust",
         "thinnest film, anti-thrust",
         "peak asperity load",
+        "skirt FMEP",
+    )
+    return _table(header, rows)
+
+
+def cavitation_table(engine, speeds):
+    """Preset `engine` on oil with the Reynolds cavitation condition against the mass-conserving one: the thinnest
+    film per side, the largest film side force (`film_force`, the film at the rates now), the largest wall load as
+    the motion takes it (a communication step's mean) and the skirt FMEP of the last cycle."""
+    rows = []
+    for rpm in speeds:
+        for cavitation, shown in ((1, "Reynolds"), (2, "mass-conserving")):
+            m = oil_cycle(engine, rpm, cavitation)
+            rows.append(
+                (
+                    f"{rpm:g} rpm",
+                    shown,
+                    _thinnest(m, "thrust"),
+                    _thinnest(m, "antithrust"),
+                    f"{m['cycle_max_film_force']:.4g} N",
+                    f"{m['cycle_max_wall_load']:.4g} N",
+                    f"{m['cycle_skirt_fmep'] * 1e-5:.4f} bar",
+                )
+            )
+    header = (
+        "speed",
+        "cavitation",
+        "thinnest film, thrust",
+        "thinnest film, anti-thrust",
+        "film side force, peak",
+        "wall load, peak step mean",
         "skirt FMEP",
     )
     return _table(header, rows)
@@ -504,6 +545,7 @@ TABLES = {
     "vanishing-film": vanishing_film_table,
     "landing-motion": landing_motion_table,
     "hot-film": lambda engine, *speeds: hot_film_table(engine, [float(s) for s in speeds]),
+    "cavitation": lambda engine, *speeds: cavitation_table(engine, [float(s) for s in speeds]),
 }
 
 

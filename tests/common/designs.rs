@@ -182,6 +182,12 @@ pub fn lubricated_engine(r: &mut Random) -> Design {
     Design { params: running_temperatures(r, params), ..design }
 }
 
+/// A lubricated engine (`lubricated_engine`) whose film cavitates mass-conserving (`cavitation = 2`).
+pub fn mass_conserving_engine(r: &mut Random) -> Design {
+    let design = lubricated_engine(r);
+    Design { params: Parameters { cavitation: 2, ..design.params }, ..design }
+}
+
 /// One time in two, `params` at running temperatures: an aluminium piston (18–24e-6 1/K) in an iron liner
 /// (10–12e-6 1/K), the liner 0–100 K above a reference of 0–40 °C, the piston as hot as leaves 10–100 % of
 /// the clearance (above or below the liner's temperature as that asks); otherwise as drawn (at the reference).

@@ -79,11 +79,13 @@ fn on_its_asperities(params: Parameters) -> Parameters {
 
 /// Without gas, load and joint damping, thrown sideways at 0.1 m/s: the mechanical energy lost is
 /// what the film absorbed plus the impacts' and corner friction's losses and, with the crank held,
-/// less the drive's work (its torque integrated at the 20 µs points, impulses apart).
+/// less the drive's work (its torque integrated at the 20 µs points, impulses apart); with either
+/// cavitation condition.
 #[test]
 fn the_film_closes_the_energy_books_in_both_crank_modes() {
-    for crank_mode in [1, 2] {
+    for (crank_mode, cavitation) in [(1, 1), (2, 1), (1, 2), (2, 2)] {
         let params = Parameters {
+            cavitation,
             pressure_source: 1,
             damping_main: 0.0,
             damping_crank_pin: 0.0,
@@ -95,11 +97,20 @@ fn the_film_closes_the_energy_books_in_both_crank_modes() {
         let mut model = CrankTrain::new(&params, 0.0).unwrap();
         let Books { lost, work, residual, out, .. } = books(&mut model, &inputs, (0.02, 1000));
         eprintln!(
-            "crank_mode {crank_mode}: lost {lost:.6e} J, film {:.6e} J, drive {work:.6e} J, residual {residual:.3e} J",
+            "crank_mode {crank_mode}, cavitation {cavitation}: lost {lost:.6e} J, film {:.6e} J, drive {work:.6e} J, residual {residual:.3e} J",
             out.film_energy_total
         );
         assert!(out.film_energy_total > 0.0);
         assert!(residual.abs() < 1e-3 * out.film_energy_total.abs().max(work.abs()), "lost {lost} J, residual {residual} J");
+    }
+}
+
+/// A cavitation condition other than 1 (Reynolds) or 2 (mass-conserving) is refused, naming it.
+#[test]
+fn an_unknown_cavitation_condition_is_refused() {
+    for cavitation in [0, 3] {
+        let message = CrankTrain::new(&Parameters { cavitation, ..lubricated(1) }, 0.0).unwrap_err().0;
+        assert!(message.contains("cavitation"), "{message}");
     }
 }
 

@@ -4,8 +4,8 @@
 //! and sliding starts dissipated. `tools/random_designs.rs` runs the same families by the thousand.
 
 use crate::common::designs::{
-    declared, declared_conservative, declared_ramped, engine, lubricated_declared, lubricated_engine, rubbing_engine, rubbing_slider, run,
-    slider, Design, Finished, Random,
+    declared, declared_conservative, declared_ramped, engine, lubricated_declared, lubricated_engine, mass_conserving_engine,
+    rubbing_engine, rubbing_slider, run, slider, Design, Finished, Random,
 };
 
 const DESIGNS: u64 = 250;
@@ -78,6 +78,14 @@ const LUBRICATED_FOUND_BY_LARGER_SWEEPS: [u64; 16] =
 fn random_lubricated_engines_all_run() {
     let failed = failures_of((0..12).chain(LUBRICATED_FOUND_BY_LARGER_SWEEPS), lubricated_engine, |_, _| Ok(()));
     assert!(failed.is_empty(), "{} of 28 failed:\n{}", failed.len(), failed.join("\n"));
+}
+
+/// Lubricated engines with mass-conserving cavitation, the fill carried between solves and through a
+/// saved state's round trip (`run`).
+#[test]
+fn random_mass_conserving_engines_all_run() {
+    let failed = failures_of(0..12, mass_conserving_engine, |_, _| Ok(()));
+    assert!(failed.is_empty(), "{} of 12 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
 /// Designs of the lubricated declared family the sweeps found failing: 1189, a corner's stick and the

@@ -226,9 +226,11 @@ impl<E: Mechanism> Simulation<E> {
         Ok(())
     }
 
-    /// What every state must satisfy (a restored one included): a finite time and finite outputs.
+    /// What every state must satisfy (a restored one included): a finite time, finite outputs and
+    /// landings on the two walls.
     pub fn check(&self) -> Result<(), ModelError> {
-        Self::valid(self.time, &self.outputs)
+        Self::valid(self.time, &self.outputs)?;
+        self.landings.check()
     }
 
     fn valid(time: f64, outputs: &Outputs) -> Result<(), ModelError> {

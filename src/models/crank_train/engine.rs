@@ -155,16 +155,16 @@ impl Engine {
         self.linkage.inertia_and_force_with(&trig, phid, loads).0
     }
 
-    /// An RK4 step begins: the lubricated skirt prepares its film at the state (φ, φ̇) predicted
-    /// into it, with the corners' gaps there (`Lubrication::begin_step`); at the step's `start`
+    /// An RK4 step begins: the lubricated skirt prepares its film at the time and state (t, φ, φ̇)
+    /// predicted into it, with the corners' gaps there (`Lubrication::begin_step`); at the step's `start`
     /// where the prediction puts a corner through the liner, which the step's event search will
     /// stop at: there the film would sit on its floor, stiffer than the linkage by up to ≈ 1e16, and
     /// the inertia matrix with its implicit term would not be positive definite to round-off.
-    fn begin_step(&self, predicted: (Vector3<f64>, Vector3<f64>), start: (Vector3<f64>, Vector3<f64>)) {
+    fn begin_step(&self, predicted: (f64, Vector3<f64>, Vector3<f64>), start: (f64, Vector3<f64>, Vector3<f64>)) {
         if let Some(lubrication) = &self.lubrication {
-            let gaps = self.linkage.gaps(&predicted.0);
-            let ((phi, phid), gaps) = if gaps.min() >= 0.0 { (predicted, gaps) } else { (start, self.linkage.gaps(&start.0)) };
-            lubrication.begin_step(&phi, &phid, &gaps);
+            let gaps = self.linkage.gaps(&predicted.1);
+            let ((t, phi, phid), gaps) = if gaps.min() >= 0.0 { (predicted, gaps) } else { (start, self.linkage.gaps(&start.1)) };
+            lubrication.begin_step(t, &phi, &phid, &gaps);
         }
     }
 
@@ -434,7 +434,8 @@ impl System<2, 4> for PrescribedCrank {
     fn begin_step(&self, t: f64, (q, qd, qdd): (&Vector2<f64>, &Vector2<f64>, &Vector2<f64>), dt: f64) {
         if self.engine.lubrication.is_some() {
             let (s, ahead, ahead_rates) = predicted(q, qd, qdd, dt);
-            self.engine.begin_step(self.full_state(t + s, &ahead, &ahead_rates), self.full_state(t, q, qd));
+            let ((phi, phid), (phi0, phid0)) = (self.full_state(t + s, &ahead, &ahead_rates), self.full_state(t, q, qd));
+            self.engine.begin_step((t + s, phi, phid), (t, phi0, phid0));
         }
     }
 
@@ -533,10 +534,10 @@ impl System<3, 4> for FreeCrank {
         (mass, force)
     }
 
-    fn begin_step(&self, _t: f64, (q, qd, qdd): (&Vector3<f64>, &Vector3<f64>, &Vector3<f64>), dt: f64) {
+    fn begin_step(&self, t: f64, (q, qd, qdd): (&Vector3<f64>, &Vector3<f64>, &Vector3<f64>), dt: f64) {
         if self.engine.lubrication.is_some() {
-            let (_, phi, phid) = predicted(q, qd, qdd, dt);
-            self.engine.begin_step((phi, phid), (*q, *qd));
+            let (s, phi, phid) = predicted(q, qd, qdd, dt);
+            self.engine.begin_step((t + s, phi, phid), (t, *q, *qd));
         }
     }
 

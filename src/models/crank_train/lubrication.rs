@@ -39,7 +39,7 @@ use super::books::SkirtRates;
 use super::linkage::LinkAngles;
 use super::step_film::{key, Solved, StepFilm};
 use crate::models::numerics::LastValue;
-use crate::models::skirt::{PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
+use crate::models::skirt::{CavitationCondition, Fill, PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
 use crate::models::ModelError;
 use nalgebra::{Matrix2x3, Matrix3, SVector, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -79,20 +79,37 @@ pub struct Lubrication {
     last: LastValue<SkirtLoads, 10>,
 }
 
-/// What a lubricated skirt is saved as: its design and the motions of the current step's film
-/// (solved again on restoring: the same films, the discrete problem's unique solutions).
+/// What a lubricated skirt is saved as: its design and the motions of the current step's film, with
+/// the solves' times and fill fractions (solved again on restoring: the same films, the discrete
+/// problem's unique solutions).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 struct Saved {
     design: Design,
     film: Option<SavedFilm>,
 }
 
-/// A [`StepFilm`]'s motions: the solve before the latest, the latest, the current step's middle.
+/// A [`StepFilm`]'s solves: the one before the latest, the latest; and the current step's middle
+/// and its time.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 struct SavedFilm {
-    previous: Option<[f64; 5]>,
-    latest: [f64; 5],
+    previous: Option<SavedSolve>,
+    latest: SavedSolve,
     current: [f64; 5],
+    current_time: f64,
+}
+
+/// A solve's motion, time and the fill fraction it took (both sides; empty under the Reynolds condition).
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+struct SavedSolve {
+    motion: [f64; 5],
+    time: f64,
+    fill: [Vec<f64>; 2],
+}
+
+impl From<&Solved> for SavedSolve {
+    fn from(solved: &Solved) -> Self {
+        Self { motion: key(&solved.linear.at), time: solved.time, fill: solved.linear.fill.sides.clone() }
+    }
 }
 
 /// What a lubricated skirt is built from (and saved as), SI.
@@ -112,6 +129,8 @@ pub(crate) struct Design {
     pub(crate) roughness: [f64; 4],
     pub(crate) boundary_friction: f64,
     pub(crate) grid: (usize, usize),
+    /// `cavitation`: 1 Reynolds, 2 mass-conserving.
+    pub(crate) cavitation: i32,
 }
 
 impl PartialEq for Lubrication {
@@ -123,9 +142,10 @@ impl PartialEq for Lubrication {
 impl From<Lubrication> for Saved {
     fn from(lubrication: Lubrication) -> Self {
         let film = lubrication.frozen.borrow().as_ref().map(|f| SavedFilm {
-            previous: f.previous.as_ref().map(|p| key(&p.linear.at)),
-            latest: key(&f.latest.linear.at),
+            previous: f.previous.as_ref().map(SavedSolve::from),
+            latest: SavedSolve::from(&f.latest),
             current: key(&f.current.at),
+            current_time: f.current_time,
         });
         Self { design: lubrication.design, film }
     }
@@ -137,11 +157,14 @@ impl TryFrom<Saved> for Lubrication {
     fn try_from(saved: Saved) -> Result<Self, ModelError> {
         let lubrication = Self::try_from(saved.design)?;
         if let Some(film) = saved.film {
-            let solve = |m: &[f64; 5]| Solved::at(&lubrication.skirt, &motion(m));
+            let solve = |s: &SavedSolve| {
+                let fill = Fill { sides: s.fill.clone() };
+                Solved::at(&lubrication.skirt, &motion(&s.motion), s.time, Some(&fill).filter(|f| !f.sides[0].is_empty()))
+            };
             let previous = film.previous.as_ref().map(solve);
             let mut step = StepFilm::solved(solve(&film.latest), previous);
             // A current film other than the latest solve was carried there.
-            step.carry_to(&motion(&film.current), lubrication.skirt.arm(), true);
+            step.carry_to(&motion(&film.current), film.current_time, lubrication.skirt.arm(), true);
             *lubrication.frozen.borrow_mut() = Some(step);
         }
         Ok(lubrication)
@@ -160,6 +183,7 @@ impl TryFrom<Design> for Lubrication {
             roughness: Roughness { sigma, density, radius, modulus },
             boundary_friction: design.boundary_friction,
             grid: design.grid,
+            cavitation: CavitationCondition::try_from(design.cavitation)?,
             ..SkirtDesign::new(radius_bore, radius_piston, length, pin_from_top, pin_offset, design.arc, design.viscosity)
         };
         let skirt = Skirt::new(film)?;
@@ -216,20 +240,25 @@ impl Lubrication {
         Kinematics { motion, lateral, axial, bias, axial_bias }
     }
 
-    /// Prepares the film for an RK4 step at (φ, φ̇), the state [`predicted`] [`SOLVE_AT`] into it,
-    /// where the corners' gaps are `gaps`: while every corner is more than [`CLEAR_GAP`] off the
-    /// liner, the last solve carried on where `StepFilm::carry_to` allows; otherwise solved there
-    /// (near the liner, where the corners' events are, each step has its own solve). Until the next
+    /// Prepares the film for an RK4 step at (t, φ, φ̇), the time and state [`predicted`] [`SOLVE_AT`]
+    /// into it, where the corners' gaps are `gaps`: while every corner is more than [`CLEAR_GAP`] off
+    /// the liner, the last solve carried on where `StepFilm::carry_to` allows; otherwise solved there
+    /// (near the liner, where the corners' events are, each step has its own solve), with
+    /// mass-conserving cavitation at the latest solve's fill moved on to t (`Solved::next`). Until the next
     /// step begins, every evaluation takes the film's loads linear in its own rates from it
     /// (`Skirt::loads_with`). A step taken again from the same start and length (an event's search)
     /// takes the same film.
-    pub fn begin_step(&self, phi: &Vector3<f64>, phid: &Vector3<f64>, gaps: &Vector4<f64>) {
+    pub fn begin_step(&self, t: f64, phi: &Vector3<f64>, phid: &Vector3<f64>, gaps: &Vector4<f64>) {
         let motion = self.kinematics((phi, &LinkAngles::new(phi)), phid).motion;
         let mut frozen = self.frozen.borrow_mut();
         let clear = gaps.min() > CLEAR_GAP;
-        if !frozen.as_mut().is_some_and(|f| f.carry_to(&motion, self.skirt.arm(), clear)) {
+        if !frozen.as_mut().is_some_and(|f| f.carry_to(&motion, t, self.skirt.arm(), clear)) {
             let previous = frozen.take().map(|f| f.latest);
-            *frozen = Some(StepFilm::solved(Solved::at(&self.skirt, &motion), previous));
+            let solved = match &previous {
+                Some(p) => p.next(&self.skirt, &motion, t),
+                None => Solved::at(&self.skirt, &motion, t, None),
+            };
+            *frozen = Some(StepFilm::solved(solved, previous));
         }
     }
 

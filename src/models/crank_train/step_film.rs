@@ -11,10 +11,12 @@
 //! secant of the last two solves when both have the same cavitation set, so that the error left is
 //! second order in the move (the position's first-order change taken out); otherwise it is held.
 //! Near the liner (a corner or the thinnest film within `CLEAR_GAP`), where the corners' events
-//! are, every step is solved.
+//! are, every step is solved. With mass-conserving cavitation a solve is carried only while no node's
+//! fill would have moved by more than [`CARRY_FILL`] since it, and the next solve takes the fill
+//! moved on from the latest solve to its own time (`FilmLinear::fill_after`).
 
 use super::lubrication::CLEAR_GAP;
-use crate::models::skirt::{FilmLinear, PressureMap, Skirt, SkirtMotion};
+use crate::models::skirt::{Fill, FilmLinear, PressureMap, Skirt, SkirtMotion};
 use nalgebra::{Vector2, Vector3};
 
 /// How far the piston's middle of a step may lie from the last solve's position for that solve to be
@@ -26,35 +28,50 @@ pub const CARRY_MOVE: f64 = 0.01;
 /// cavitation set follows the rates' direction, which a change this small keeps (the default engine's
 /// thinnest film at 1200 rpm within 0.26 % of a solve per step).
 pub const CARRY_RATES: f64 = 0.1;
+/// With mass-conserving cavitation, how far any node's fill fraction may have moved at its solve's
+/// rate since the latest solve for that solve to be carried on: its oil content then changes by about
+/// as little as the film thickness may under [`CARRY_MOVE`].
+pub const CARRY_FILL: f64 = 0.01;
 /// The secant reaches at most this many times its own length beyond the latest solve: a slope from
 /// two solves far closer together than the move ahead (a rejected step's solve next to the latest)
 /// is not trusted that far.
 const SECANT_REACH: f64 = 16.0;
 
-/// A film solve and the thinnest film at its motion, m.
+/// A film solve, its time (s) and the thinnest film at its motion, m.
 #[derive(Clone, Debug)]
 pub(super) struct Solved {
     pub linear: FilmLinear,
+    pub time: f64,
     thinnest: f64,
 }
 
 impl Solved {
-    /// The film solved at `motion`.
-    pub fn at(skirt: &Skirt, motion: &SkirtMotion) -> Self {
-        let linear = skirt.linearise(motion);
+    /// The film solved at `motion` at `time`, with mass-conserving cavitation at the fill fraction
+    /// `fill` (flooded where none).
+    pub fn at(skirt: &Skirt, motion: &SkirtMotion, time: f64, fill: Option<&Fill>) -> Self {
+        let linear = skirt.linearise_filled(motion, fill);
         let [thrust, antithrust] = skirt.loads_with(&linear, motion).min_film;
-        Self { linear, thinnest: thrust.min(antithrust) }
+        Self { linear, time, thinnest: thrust.min(antithrust) }
     }
 
-    /// Whether a step with its middle at `motion` may take this solve, `arm` the skirt's longest
-    /// distance from the pin, m.
-    fn carries_to(&self, motion: &SkirtMotion, arm: f64) -> bool {
+    /// The film solved at `motion` at `time` after this one: the fill moved on to `time`.
+    pub fn next(&self, skirt: &Skirt, motion: &SkirtMotion, time: f64) -> Self {
+        Self::at(skirt, motion, time, Some(&self.linear.fill_after(time - self.time)))
+    }
+
+    /// Whether a step with its middle at `motion` at `time` may take this solve, `arm` the skirt's
+    /// longest distance from the pin, m.
+    fn carries_to(&self, motion: &SkirtMotion, time: f64, arm: f64) -> bool {
         let at = &self.linear.at;
         let moved = (motion.lateral - at.lateral).abs() + arm * (motion.tilt - at.tilt).abs();
         let dissipation = self.linear.gram.fixed_view::<3, 3>(0, 0).into_owned();
         let (solved, change) = (rates(at), rates(motion) - rates(at));
         let norm = |r: &Vector3<f64>| r.dot(&(dissipation * r));
-        self.thinnest > CLEAR_GAP && moved <= CARRY_MOVE * self.thinnest && norm(&change) <= CARRY_RATES * CARRY_RATES * norm(&solved)
+        let filled = self.linear.fill_rate.sides.iter().flatten().fold(0.0_f64, |m, r| m.max(r.abs())) * (time - self.time).abs();
+        self.thinnest > CLEAR_GAP
+            && moved <= CARRY_MOVE * self.thinnest
+            && norm(&change) <= CARRY_RATES * CARRY_RATES * norm(&solved)
+            && filled <= CARRY_FILL
     }
 }
 
@@ -64,6 +81,8 @@ pub(super) struct StepFilm {
     /// What the step takes: the latest solve's cavitation set with `Γ` moved to its `at`, the
     /// step's middle (the latest solve itself where it was solved).
     pub current: FilmLinear,
+    /// The time of `current`'s `at`, s.
+    pub current_time: f64,
     pub latest: Solved,
     pub previous: Option<Solved>,
     /// How far along the secant `current`'s `Γ` lies beyond the latest solve, in secants (0: held).
@@ -73,17 +92,17 @@ pub(super) struct StepFilm {
 impl StepFilm {
     /// The film of a step solved at its middle, `previous` the solve before.
     pub fn solved(latest: Solved, previous: Option<Solved>) -> Self {
-        Self { current: latest.linear.clone(), latest, previous, reach: 0.0 }
+        Self { current: latest.linear.clone(), current_time: latest.time, latest, previous, reach: 0.0 }
     }
 
-    /// Prepares a step whose middle is at `motion`: true if the current film serves (the same
-    /// middle, a step taken again) or, `carry` allowing, the latest solve is carried to it; false if
-    /// the step needs a solve of its own.
-    pub fn carry_to(&mut self, motion: &SkirtMotion, arm: f64, carry: bool) -> bool {
+    /// Prepares a step whose middle is at `motion` at `time`: true if the current film serves (the
+    /// same middle, a step taken again) or, `carry` allowing, the latest solve is carried to it; false
+    /// if the step needs a solve of its own.
+    pub fn carry_to(&mut self, motion: &SkirtMotion, time: f64, arm: f64, carry: bool) -> bool {
         if key(&self.current.at).map(f64::to_bits) == key(motion).map(f64::to_bits) {
             return true;
         }
-        if !carry || !self.latest.carries_to(motion, arm) {
+        if !carry || !self.latest.carries_to(motion, time, arm) {
             return false;
         }
         let b = &self.latest.linear;
@@ -100,6 +119,7 @@ impl StepFilm {
         self.current.lateral_by_side = self.along_secant(b.lateral_by_side, |p| p.linear.lateral_by_side);
         self.current.moment_by_side = self.along_secant(b.moment_by_side, |p| p.linear.moment_by_side);
         self.current.at = *motion;
+        self.current_time = time;
         true
     }
 
@@ -194,15 +214,15 @@ mod tests {
                 tilt_rate: 0.05,
                 sliding_speed: 6.0,
             };
-            let (a, b, at) = (Solved::at(&skirt, &pose(0.0)), Solved::at(&skirt, &pose(1.0)), pose(2.0));
+            let (a, b, at) = (Solved::at(&skirt, &pose(0.0), 0.0, None), Solved::at(&skirt, &pose(1.0), 0.0, None), pose(2.0));
             assert_eq!(a.linear.free, b.linear.free, "one cavitation set along the path");
             let thinnest = b.thinnest;
             let fresh = -skirt.linearise(&at).gram * rates(&at);
             let error = |previous: Option<Solved>| {
                 let mut film = StepFilm::solved(b.clone(), previous);
-                assert!(film.carry_to(&at, arm, true) == (delta <= CARRY_MOVE * thinnest), "δ {delta}: carried iff within the bound");
+                assert!(film.carry_to(&at, 0.0, arm, true) == (delta <= CARRY_MOVE * thinnest), "δ {delta}: carried iff within the bound");
                 film.latest.thinnest = f64::INFINITY;
-                assert!(film.carry_to(&at, arm, true));
+                assert!(film.carry_to(&at, 0.0, arm, true));
                 (-film.current.gram * rates(&at) - fresh).amax() / fresh.amax()
             };
             (delta / thinnest, error(None), error(Some(a)))

@@ -39,6 +39,32 @@ pub struct SkirtDesign {
     pub boundary_friction: f64,
     /// Interior grid nodes per side: (circumferential, axial).
     pub grid: (usize, usize),
+    /// How the film cavitates (`cavitation`).
+    pub cavitation: CavitationCondition,
+}
+
+/// The film's cavitation condition.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum CavitationCondition {
+    /// Reynolds (Swift–Stieber): p ≥ 0, the film ruptures where its pressure gradient vanishes and
+    /// re-forms wherever pressure would rise; no history (`cavitation = 1`).
+    #[default]
+    Reynolds,
+    /// Mass-conserving (JFO): the cavitated film's fill fraction is carried with the sliding between
+    /// solves as state, and the film re-forms where the oil it carries meets the full film (`cavitation = 2`).
+    MassConserving,
+}
+
+impl TryFrom<i32> for CavitationCondition {
+    type Error = ModelError;
+
+    fn try_from(value: i32) -> Result<Self, ModelError> {
+        match value {
+            1 => Ok(Self::Reynolds),
+            2 => Ok(Self::MassConserving),
+            _ => Err(ModelError(format!("cavitation = {value} must be 1 (Reynolds) or 2 (mass-conserving)"))),
+        }
+    }
 }
 
 impl SkirtDesign {
@@ -64,6 +90,7 @@ impl SkirtDesign {
             roughness: Roughness::default(),
             boundary_friction: Self::DEFAULT_BOUNDARY_FRICTION,
             grid: Self::DEFAULT_GRID,
+            cavitation: CavitationCondition::Reynolds,
         }
     }
 

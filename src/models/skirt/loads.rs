@@ -1,6 +1,6 @@
 //! What goes into and comes out of a skirt evaluation.
 
-use super::Shear;
+use super::{Fill, Shear};
 use nalgebra::{Matrix2, Matrix2x3, Matrix4x3, Vector2};
 
 /// The skirt's motion relative to the liner, in the crank train's coordinates.
@@ -98,6 +98,19 @@ pub struct FilmLinear {
     pub shear: Shear,
     /// Band Cholesky factorisations per side.
     pub factorisations: [usize; 2],
+    /// Mass-conserving cavitation: the fill fraction the solve took; empty under the Reynolds condition.
+    pub fill: Fill,
+    /// The fill's rate at the solve's rates, 1/s (`skirt/fill.rs`); empty under the Reynolds condition.
+    pub fill_rate: Fill,
+    /// The fill's decay, 1/s: each node's own outflow per unit fill over its oil volume (`skirt/fill.rs`).
+    pub fill_decay: Fill,
+}
+
+impl FilmLinear {
+    /// The fill `dt` (s) after this solve ([`Fill::advanced`]); empty under the Reynolds condition.
+    pub fn fill_after(&self, dt: f64) -> Fill {
+        self.fill.advanced((&self.fill_rate, &self.fill_decay), dt)
+    }
 }
 
 /// One side's pressure field on its grid, for plots.

@@ -1,11 +1,14 @@
 //! The lubricated piston skirt: film thickness from the piston's lateral position and tilt,
-//! the Reynolds equation with the Reynolds (Swift–Stieber) cavitation condition solved as a linear
-//! complementarity problem, Greenwood–Tripp asperity contact, and the loads, damping and friction they
+//! the Reynolds equation with the Reynolds (Swift–Stieber) or the mass-conserving (JFO) cavitation
+//! condition solved as a linear complementarity problem, Greenwood–Tripp asperity contact, and the loads, damping and friction they
 //! put on the piston. Pure numerics: nothing here knows the crank train's state or the FMU.
 
 mod asperity;
 mod band;
 mod design;
+mod fill;
+#[cfg(test)]
+mod fill_tests;
 mod loads;
 mod profile;
 mod reynolds;
@@ -17,7 +20,8 @@ mod surface;
 mod surface_tests;
 
 pub use asperity::Roughness;
-pub use design::SkirtDesign;
+pub use design::{CavitationCondition, SkirtDesign};
+pub use fill::Fill;
 pub use loads::{FilmLinear, PressureMap, SideMap, SkirtLoads, SkirtMotion};
 pub use profile::SkirtProfile;
 pub use shear::Shear;

@@ -19,14 +19,19 @@
 //! factorisation gives the damping (`gᵀA⁻¹g = |L⁻¹g|²`, forward substitutions only). A step
 //! refactorises only from the first band row its set changes touch.
 //!
-//! Why not mass-conserving JFO (Elrod–Adams): the Reynolds condition places the rupture boundary where
-//! the film's pressure gradient vanishes, which is exact for rupture, but it does not conserve mass
-//! through the cavitated zone, so it cannot place a reformation boundary (where the film refills) from the
-//! upstream oil supply, nor follow a starved inlet. On a fully flooded skirt, with p = 0 on every edge
-//! and ambient oil all round, the loads differ little (published comparisons on journal bearings differ
-//! by a few per cent in load); what is lost is the film history under squeeze reversal (a film that
-//! ruptured while separating refills at once here) and the oil-transport bookkeeping. In exchange the
-//! problem stays a convex LCP with a unique solution, solved exactly, with a damping matrix exact for it.
+//! The mass-conserving (JFO) condition (`Cavitation::MassConserving`) solves the same LCP on the nodes
+//! whose film is full, the fill fraction θ ∈ [0, 1] of the others given (`skirt/fill.rs`): a partly filled
+//! node has p = 0, and the wedge carries `u·h·θ` across each face with θ of the node upwind of it
+//! (`Film::add_wedge` with a [`Carried`] fill; the supply beyond an edge is full). The LCP's complement
+//! `w` is then the rate at which a full node starts to empty, and the flow balance of a partly filled node
+//! gives its `∂(θh)/∂t` (`fill::rate`), so θ is carried between solves as state. Why this form and not
+//! Elrod–Adams' universal variable is in `documentation/design/lubricated_skirt.md`.
+//!
+//! The Reynolds condition places the rupture boundary where the film's pressure gradient vanishes, which
+//! is exact for rupture, but it does not conserve mass through the cavitated zone, so it cannot place a
+//! reformation boundary (where the film refills) from the oil the cavitated zone carries: a film that
+//! ruptured while separating refills at once. In exchange its problem is a convex LCP with a unique
+//! solution at every motion and no history.
 
 use super::band::Band;
 
@@ -138,18 +143,64 @@ impl Film {
     }
 
     /// Adds the wedge term of a uniform mean surface velocity (u_x, u_z) to `b` (node order j·nx + i):
-    /// `−[u_x (h_e − h_w) dz + u_z (h_n − h_s) dx]`.
-    pub(crate) fn add_wedge(&self, grid: &Grid, (ux, uz): (f64, f64), b: &mut [f64]) {
-        let (dx, dz, nx) = (grid.dx(), grid.dz(), grid.nx);
-        for j in 0..grid.nz {
+    /// `−[u_x (h_e − h_w) dz + u_z (h_n − h_s) dx]`, each face's h times the fill upwind of it where
+    /// `carried` gives one.
+    pub(crate) fn add_wedge(&self, grid: &Grid, (ux, uz): (f64, f64), carried: Option<&Carried>, b: &mut [f64]) {
+        let (dx, dz, nx, nz) = (grid.dx(), grid.dz(), grid.nx, grid.nz);
+        for j in 0..nz {
             for i in 0..nx {
-                let mut s = ux * (self.face_x[j * (nx + 1) + i + 1] - self.face_x[j * (nx + 1) + i]) * dz;
-                if !grid.long {
-                    s += uz * (self.face_z[(j + 1) * nx + i] - self.face_z[j * nx + i]) * dx;
-                }
+                let (west, east) = (self.face_x[j * (nx + 1) + i], self.face_x[j * (nx + 1) + i + 1]);
+                let (south, north) = if grid.long { (0.0, 0.0) } else { (self.face_z[j * nx + i], self.face_z[(j + 1) * nx + i]) };
+                let s = match carried {
+                    None => {
+                        let mut s = ux * (east - west) * dz;
+                        if !grid.long {
+                            s += uz * (north - south) * dx;
+                        }
+                        s
+                    }
+                    Some(c) => {
+                        let [w, e, s, n] = c.upwind(grid, i, j);
+                        ux * (east * e - west * w) * dz + uz * (north * n - south * s) * dx
+                    }
+                };
                 b[j * nx + i] -= s;
             }
         }
+    }
+}
+
+impl Film {
+    /// The flow node `k` (node order) passes per unit of its own fill through its downstream faces
+    /// under the mean surface velocity (u_x, u_z), m³/s: `|u_x| h dz + |u_z| h dx` at those faces.
+    pub(crate) fn carried_out(&self, grid: &Grid, (ux, uz): (f64, f64), k: usize) -> f64 {
+        let (nx, (i, j)) = (grid.nx, (k % grid.nx, k / grid.nx));
+        let x = self.face_x[j * (nx + 1) + i + usize::from(ux >= 0.0)];
+        let z = if grid.long { 0.0 } else { self.face_z[(j + usize::from(uz >= 0.0)) * nx + i] };
+        ux.abs() * x * grid.dz() + uz.abs() * z * grid.dx()
+    }
+}
+
+/// A fill fraction carried by the wedge's flow: per node (node order j·nx + i), θ ∈ [0, 1], and the
+/// flow's direction along x and z (true: toward +x, +z). Beyond the edges the supply is full (θ = 1).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Carried<'a> {
+    pub fill: &'a [f64],
+    pub forward: (bool, bool),
+}
+
+impl Carried<'_> {
+    /// The fill each face of node (i, j) carries, [west, east, south, north]: its upwind node's.
+    fn upwind(&self, grid: &Grid, i: usize, j: usize) -> [f64; 4] {
+        let (nx, nz) = (grid.nx, grid.nz);
+        let at = |i: Option<usize>, j: Option<usize>| match (i, j) {
+            (Some(i), Some(j)) if i < nx && j < nz => self.fill[j * nx + i],
+            _ => 1.0,
+        };
+        let (here, (x, z)) = (at(Some(i), Some(j)), self.forward);
+        let (west, east) = if x { (at(i.checked_sub(1), Some(j)), here) } else { (here, at(Some(i + 1), Some(j))) };
+        let (south, north) = if z { (at(Some(i), j.checked_sub(1)), here) } else { (here, at(Some(i), Some(j + 1))) };
+        [west, east, south, north]
     }
 }
 
@@ -174,6 +225,8 @@ pub(crate) struct Reynolds {
     back: Vec<f64>,
     /// Cavitated rows in band order (identity rows of the reduced matrix).
     identity: Vec<bool>,
+    /// Band order: nodes held at p = 0 by a partial fill ([`Cavitation::MassConserving`], [`Reynolds::pin`]).
+    pinned: Vec<bool>,
     /// The last solve's pressures, Pa, node order j·nx + i.
     pub pressure: Vec<f64>,
     /// The last solve's film nodes (false: cavitated, p = 0), the next solve's starting set.
@@ -196,6 +249,16 @@ pub(crate) enum Cavitation {
     /// The film nodes held as `free` holds them (a set solved before): one direct solve, negative
     /// pressures kept.
     Held,
+    /// Mass-conserving (JFO): the Reynolds condition's LCP on the nodes not pinned by a partial fill
+    /// ([`Reynolds::pin`]), the pinned ones at p = 0.
+    MassConserving,
+}
+
+impl Cavitation {
+    /// Whether the solve is a complementarity problem (an active-set iteration).
+    fn complementary(self) -> bool {
+        matches!(self, Cavitation::Reynolds | Cavitation::MassConserving)
+    }
 }
 
 impl Reynolds {
@@ -213,6 +276,7 @@ impl Reynolds {
             work: vec![[0.0; 1 + EXTRA]; n],
             back: vec![0.0; n],
             identity: vec![false; n],
+            pinned: vec![false; n],
             pressure: vec![0.0; n],
             free: vec![true; n],
             gram: [[0.0; EXTRA]; EXTRA],
@@ -230,14 +294,14 @@ impl Reynolds {
         self.conductances(film, viscosity);
         for (k, &row) in self.order.iter().enumerate() {
             self.rhs[row] = b[k];
-            self.identity[row] = cavitation != Cavitation::None && !self.free[k];
+            self.identity[row] = cavitation != Cavitation::None && !self.free[k] || self.held(row, cavitation);
         }
         let steps = self.active_set(extra, cavitation);
         for (k, &row) in self.order.iter().enumerate() {
             self.free[k] = !self.identity[row];
             // Negative pressures under the Reynolds condition are round-off below its tolerance.
             let p = self.back[row];
-            self.pressure[k] = if cavitation == Cavitation::Reynolds && p < 0.0 { 0.0 } else { p };
+            self.pressure[k] = if cavitation.complementary() && p < 0.0 { 0.0 } else { p };
         }
         // Σ over the film rows (the cavitated ones' are 0) of the outer product, in row order.
         let mut gram = [[0.0; EXTRA]; EXTRA];
@@ -285,7 +349,7 @@ impl Reynolds {
                 *x = y[0];
             }
             self.matrix.backward(&self.identity, &mut self.back);
-            if cavitation != Cavitation::Reynolds || steps > n {
+            if !cavitation.complementary() || steps > n {
                 break;
             }
             // w = A p − b on the cavitated nodes; a node joins the film where w < 0 (oil would flow in),
@@ -294,6 +358,9 @@ impl Reynolds {
             let scale_p = self.back.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
             first = n;
             for row in 0..n {
+                if self.held(row, cavitation) {
+                    continue;
+                }
                 let free = if self.identity[row] {
                     self.residual(row) - self.rhs[row] < -1e-12 * scale_b
                 } else {
@@ -309,6 +376,25 @@ impl Reynolds {
             }
         }
         steps
+    }
+
+    /// Holds the nodes where `partial` (node order) is true at p = 0 in the next
+    /// [`Cavitation::MassConserving`] solves: the partly filled ones.
+    pub(crate) fn pin(&mut self, partial: impl Iterator<Item = bool>) {
+        for (&row, pinned) in self.order.iter().zip(partial) {
+            self.pinned[row] = pinned;
+        }
+    }
+
+    /// Whether band row `row` is held at p = 0 by a partial fill in a solve of `cavitation`.
+    fn held(&self, row: usize, cavitation: Cavitation) -> bool {
+        cavitation == Cavitation::MassConserving && self.pinned[row]
+    }
+
+    /// The last solve's net Poiseuille outflow of node `k` (node order), m³/s: `(A p)ₖ` of the full
+    /// operator, the pressure taken unclipped as solved.
+    pub(crate) fn outflow(&self, k: usize) -> f64 {
+        self.residual(self.order[k])
     }
 
     /// The face conductances in band order (see [`Reynolds::diagonal`]).

@@ -18,7 +18,7 @@ fn pressures(grid: Grid, (a, b, k): (f64, f64, f64), u: (f64, f64), ht: f64, cav
     film.fill(&grid, (&rows[..grid.nz], &rows), (&nodes, &faces), 0.0);
     let area = grid.dx() * grid.dz();
     let mut b = vec![-ht * area; grid.len()];
-    film.add_wedge(&grid, u, &mut b);
+    film.add_wedge(&grid, u, None, &mut b);
     let mut solver = Reynolds::new(grid.clone());
     solver.solve(&film, VISCOSITY, &b, cavitation, &[]);
     (grid, solver.pressure, area)

@@ -11,9 +11,10 @@
 //! squeeze resistance and the asperity law, with the true h, carries the load.
 
 use super::asperity::Asperity;
-use super::reynolds::{Cavitation, Film, Grid, Reynolds};
+use super::fill::{self, partial, Fill};
+use super::reynolds::{Carried, Cavitation, Film, Grid, Reynolds};
 use super::shear::{self, arm, closed_weight, RowTerms, Shear};
-use super::{FilmLinear, PressureMap, SideMap, SkirtDesign, SkirtLoads, SkirtMotion};
+use super::{CavitationCondition, FilmLinear, PressureMap, SideMap, SkirtDesign, SkirtLoads, SkirtMotion};
 use crate::models::ModelError;
 use nalgebra::{Matrix2, Matrix4x3, RowVector3, Vector2, Vector3};
 use std::cell::{RefCell, RefMut};
@@ -199,13 +200,43 @@ impl Skirt {
         map
     }
 
-    /// Solves the film at `motion`: its cavitation set and the pressure's loads per unit rate.
+    /// Solves the film at `motion`: its cavitation set and the pressure's loads per unit rate; with
+    /// mass-conserving cavitation, of a flooded film ([`Skirt::linearise_filled`]).
     pub fn linearise(&self, motion: &SkirtMotion) -> FilmLinear {
+        self.linearise_filled(motion, None)
+    }
+
+    /// [`Skirt::linearise`] with mass-conserving cavitation at the fill fraction `fill` (flooded where
+    /// none), giving also the fill's rate and decay at `motion`'s rates; under the Reynolds condition
+    /// `fill` is not read.
+    pub fn linearise_filled(&self, motion: &SkirtMotion, fill: Option<&Fill>) -> FilmLinear {
         let mut workspace = self.scratch.lend(&self.grid);
         let s = &mut *workspace;
         let mut linear = FilmLinear { at: *motion, ..FilmLinear::default() };
+        if self.design.cavitation == CavitationCondition::MassConserving {
+            linear.fill = fill.cloned().unwrap_or_else(|| Fill::flooded(self.grid.len()));
+            linear.fill_rate = Fill::flooded(self.grid.len());
+            linear.fill_decay = Fill::flooded(self.grid.len());
+        }
         for side in 0..2 {
-            linear.factorisations[side] = self.solve_side(s, side, motion, Cavitation::Reynolds);
+            let carried = linear.fill.sides[side].as_slice();
+            let carried = (!carried.is_empty()).then_some(carried);
+            let cavitation = if carried.is_some() { Cavitation::MassConserving } else { Cavitation::Reynolds };
+            linear.factorisations[side] = self.solve_side(s, side, motion, cavitation, carried);
+            if let Some(theta) = carried {
+                let area = self.grid.dx() * self.grid.dz();
+                let solve = fill::Solve {
+                    reynolds: &s.reynolds[side],
+                    film: &s.film,
+                    grid: &self.grid,
+                    fill: theta,
+                    rhs: &s.rhs,
+                    velocity: (0.0, 0.5 * motion.sliding_speed),
+                    squeeze: |k| -(s.rate_x[k] * motion.lateral_rate + s.rate_tilt[k] * motion.tilt_rate),
+                    area,
+                };
+                fill::rate(&solve, (&mut linear.fill_rate.sides[side], &mut linear.fill_decay.sides[side]));
+            }
             let reynolds = &s.reynolds[side];
             linear.gram += Matrix4x3::from_fn(|a, c| reynolds.gram[a][c]);
             linear.lateral_by_side.set_row(side, &RowVector3::from_fn(|_, c| reynolds.gram[0][c]));
@@ -218,7 +249,8 @@ impl Skirt {
         let (tilt, forward) = ((libm::sin(motion.tilt), libm::cos(motion.tilt)), motion.sliding_speed >= 0.0);
         linear.shear = Shear { at: Vector2::new(motion.lateral, motion.tilt), forward, ..Shear::default() };
         for side in 0..2 {
-            let (sums, gradient) = self.shear_walk::<true>(&s.closed_rows, side, &linear.free[side], forward, tilt);
+            let (sums, gradient) =
+                self.shear_walk::<true>(&s.closed_rows, side, (&linear.free[side], &linear.fill.sides[side]), forward, tilt);
             linear.shear.sums += sums;
             linear.shear.gradient += gradient;
         }
@@ -239,8 +271,10 @@ impl Skirt {
     /// One side's Reynolds solve at `m`: the film at its pose, `b = −ḣ ΔA + wedge` at its rates, and
     /// the extra right-hand sides ∂b/∂ẋ = cos θ ΔA, ∂b/∂φ̇3 = −(α + β cos θ) ΔA, ∂b/∂V (the wedge per
     /// unit speed, −½ ∂h/∂u ΔA: minus the axial push's weights) and that times the axial force's arm
-    /// (minus the axial moment's weights). Returns the active-set steps.
-    fn solve_side(&self, s: &mut Scratch, side_index: usize, m: &SkirtMotion, cavitation: Cavitation) -> usize {
+    /// (minus the axial moment's weights). With a `fill` (mass-conserving), the wedge carries it upwind
+    /// of each face along the sliding and its partly filled nodes are held at p = 0. Returns the
+    /// active-set steps.
+    fn solve_side(&self, s: &mut Scratch, side_index: usize, m: &SkirtMotion, cavitation: Cavitation, fill: Option<&[f64]>) -> usize {
         let pose = self.pose(m);
         s.node_rows.clear();
         s.node_rows.extend(self.rows.nodes.iter().map(&pose));
@@ -252,7 +286,11 @@ impl Skirt {
         let (nx, area) = (self.grid.nx, self.grid.dx() * self.grid.dz());
         s.film.fill(&self.grid, (&s.film_rows, &s.face_rows), (&side.nodes, &side.faces), self.floor);
         s.wedge.fill(0.0);
-        s.film.add_wedge(&self.grid, (0.0, 0.5), &mut s.wedge);
+        let carried = fill.map(|fill| Carried { fill, forward: (true, m.sliding_speed >= 0.0) });
+        s.film.add_wedge(&self.grid, (0.0, 0.5), carried.as_ref(), &mut s.wedge);
+        if let Some(fill) = fill {
+            s.reynolds[side_index].pin(fill.iter().map(|&t| partial(t)));
+        }
         let (s3, c3) = (libm::sin(m.tilt), libm::cos(m.tilt));
         for (j, &(_, (alpha, beta), z, r)) in s.node_rows.iter().enumerate() {
             for (i, &(c, _)) in side.nodes.iter().enumerate() {
@@ -307,7 +345,11 @@ impl Skirt {
         let shear = if map.is_none() && linear.shear.serves(v, at, self.arm(), reach) {
             linear.shear.sums_at(at)
         } else {
-            (0..2).map(|side| self.shear_walk::<false>(&s.closed_rows, side, &linear.free[side], v >= 0.0, (s3, c3)).0).sum()
+            (0..2)
+                .map(|side| {
+                    self.shear_walk::<false>(&s.closed_rows, side, (&linear.free[side], &linear.fill.sides[side]), v >= 0.0, (s3, c3)).0
+                })
+                .sum()
         };
         out.friction_force -= d.viscosity * v * shear[0];
         out.friction_moment -= d.viscosity * v * shear[1];
@@ -324,7 +366,8 @@ impl Skirt {
             if side_map.is_some() {
                 s.reynolds[side_index].free.clone_from(&linear.free[side_index]);
                 let held = SkirtMotion { lateral: linear.at.lateral, tilt: linear.at.tilt, ..*m };
-                self.solve_side(s, side_index, &held, Cavitation::Held);
+                let carried = Some(linear.fill.sides[side_index].as_slice()).filter(|f| !f.is_empty());
+                self.solve_side(s, side_index, &held, Cavitation::Held, carried);
             }
             // Asperities on the closed grid (trapezoid weights), with the true film thickness down to
             // the film's floor σ/10, below which the corners carry the collapsed film (the asperities'
@@ -374,17 +417,18 @@ impl Skirt {
         out
     }
 
-    /// One side's Couette shear sums (and with `GRADIENT` their gradient) at the pose of `rows`.
+    /// One side's Couette shear sums (and with `GRADIENT` their gradient) at the pose of `rows`, its
+    /// film set and fill `wetted` (`shear::walk`).
     fn shear_walk<const GRADIENT: bool>(
         &self,
         rows: &[RowTerms],
         side: usize,
-        free: &[bool],
+        wetted: (&[bool], &[f64]),
         forward: bool,
         tilt: (f64, f64),
     ) -> (Vector2<f64>, Matrix2<f64>) {
         let area = self.grid.dx() * self.grid.dz();
-        shear::walk::<GRADIENT>(rows, &self.sides[side].closed, free, forward, self.floor, tilt, self.design.pin_offset, area)
+        shear::walk::<GRADIENT>(rows, &self.sides[side].closed, wetted, forward, self.floor, tilt, self.design.pin_offset, area)
     }
 }
 

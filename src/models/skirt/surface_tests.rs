@@ -1,7 +1,8 @@
 //! The skirt's geometry against the crank train's corners, its symmetry and signs, the damping against
-//! finite differences of the loads, the film's power balance, and its grid convergence.
+//! finite differences of the loads, the film's power balance, its grid convergence, and the mass-conserving
+//! film against the Reynolds condition (flooded, and drained while the piston left).
 
-use super::{Skirt, SkirtDesign, SkirtMotion, SkirtProfile, BOUNDARY_SLIP};
+use super::{CavitationCondition, Skirt, SkirtDesign, SkirtMotion, SkirtProfile, BOUNDARY_SLIP};
 use crate::models::Parameters;
 use nalgebra::Vector3;
 
@@ -359,4 +360,43 @@ fn the_shear_of_a_solve_serves_nearby_poses_to_second_order() {
             assert!(whole[k] / half[k] > 3.0 && whole[k] / half[k] < 5.0, "{direction:?} {k}: {whole:?} against {half:?}");
         }
     }
+}
+
+fn mass_conserving() -> Skirt {
+    Skirt::new(SkirtDesign { cavitation: CavitationCondition::MassConserving, ..design(SkirtDesign::DEFAULT_GRID) }).expect("valid design")
+}
+
+#[test]
+fn a_flooded_mass_conserving_solve_is_the_reynolds_conditions() {
+    // Full everywhere, the carried wedge is the Reynolds condition's (each face's h times 1) and no node
+    // is held: the same LCP, solved to the bit. The fill's rate is 0 on the pressurised nodes and
+    // negative where the film ruptures (w > 0: the node starts to empty), up to the LCP's tolerance.
+    let (reynolds, jfo) = (skirt().linearise(&MOTION), mass_conserving().linearise(&MOTION));
+    assert_eq!((reynolds.gram, &reynolds.free), (jfo.gram, &jfo.free));
+    let fastest = jfo.fill_rate.sides.iter().flatten().fold(0.0_f64, |m, r| m.max(r.abs()));
+    for (rates, free) in jfo.fill_rate.sides.iter().zip(&jfo.free) {
+        for (&r, &film) in rates.iter().zip(free) {
+            assert!(if film { r == 0.0 } else { r <= 1e-9 * fastest }, "rate {r} on a node in the film: {film}");
+        }
+    }
+    assert!(fastest > 0.0, "a rupture");
+}
+
+#[test]
+fn a_side_drained_while_the_piston_left_builds_no_pressure_until_its_oil_is_squeezed_back() {
+    // Centred without sliding, the piston leaves the thrust wall: that side's whole film cavitates and
+    // empties as its gap widens (its oil kept, θ h). Coming back at the same pose, the Reynolds
+    // condition builds the squeeze pressure at once; the drained side, every node partly filled, stays
+    // at p = 0 until its oil is squeezed back to a full film, and fills meanwhile.
+    let leave = SkirtMotion { lateral_rate: -0.01, ..SkirtMotion::default() };
+    let back = SkirtMotion { lateral_rate: 0.01, ..leave };
+    let jfo = mass_conserving();
+    let left = jfo.linearise(&leave);
+    assert!(left.free[0].iter().all(|&film| !film) && left.fill_rate.sides[0].iter().all(|&r| r < 0.0), "the thrust side empties");
+    let drained = left.fill_after(1e-3);
+    assert!(drained.sides[0].iter().all(|&t| t < 1.0) && drained.sides[1].iter().all(|&t| t == 1.0), "{drained:?}");
+    let reynolds = skirt().loads(&back).wall_push[0];
+    let refilling = jfo.linearise_filled(&back, Some(&drained));
+    assert!(reynolds > 100.0 && jfo.loads_with(&refilling, &back).wall_push[0] == 0.0, "Reynolds {reynolds} N");
+    assert!(refilling.fill_rate.sides[0].iter().all(|&r| r > 0.0), "the thrust side fills");
 }

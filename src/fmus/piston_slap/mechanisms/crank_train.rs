@@ -105,6 +105,7 @@ fn skirt(p: &Parameters) -> Result<Option<lubrication::Design>, ModelError> {
         ovality: p.skirt_ovality,
         roughness: [p.skirt_roughness, p.asperity_density, p.asperity_radius, p.composite_modulus],
         boundary_friction: p.boundary_friction,
+        cavitation: p.cavitation,
         grid: (grid("skirt_grid_circumferential", p.skirt_grid_circumferential)?, grid("skirt_grid_axial", p.skirt_grid_axial)?),
     }))
 }

@@ -22,7 +22,7 @@
 
 use super::csv_log::{CsvLog, Rows};
 use crate::models::numerics::floor_to_i64;
-use crate::models::{EngineEvent, EngineEventKind, Outputs, CYCLE};
+use crate::models::{EngineEvent, EngineEventKind, ModelError, Outputs, CYCLE};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -237,6 +237,15 @@ impl Landings {
             _ => {}
         }
         self.take_point(&last, &now);
+    }
+
+    /// Every wall named is one of the two (a restored state's too).
+    pub fn check(&self) -> Result<(), ModelError> {
+        let walls = [self.wall, self.current.map(|l| l.wall)];
+        match walls.into_iter().flatten().find(|&w| w > 1) {
+            Some(w) => Err(ModelError(format!("landing on wall {w}: the walls are 0 (anti-thrust) and 1 (thrust)"))),
+            None => Ok(()),
+        }
     }
 
     /// Ends the landing in progress at `at` and starts one on `wall` there.
