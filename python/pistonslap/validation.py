@@ -11,6 +11,7 @@ markdown its page holds (`python/tests/test_validation_tables.py` checks every p
     python -m pistonslap.validation landing-motion ENGINE RPM         the thrust landing's translation and tilt, ±1 mm
     python -m pistonslap.validation hot-film ENGINE RPM [RPM ...]     thinnest films on oil, cold against ENGINE-hot
     python -m pistonslap.validation cavitation ENGINE RPM [RPM ...]   the film on oil, Reynolds against mass-conserving
+    python -m pistonslap.validation film-books ENGINE:RPM:MPAS:MM ... the oiled skirt's books against its powers
 
 The runs are cached per process, so that the tests which assert on the same runs share them.
 """
@@ -535,6 +536,72 @@ def published_piston_table():
     return _table(header, rows)
 
 
+# --- the film's books ---------------------------------------------------------------------------------------------
+
+#: Samples per engine cycle of the film-books runs, and the cycles each lasts (the table reads the last completed).
+BOOKS_SAMPLES, BOOKS_CYCLES = 4000, 3
+
+
+def film_books_row(engine, rpm, viscosity_mpas, pin_offset_mm):
+    """One row of `film_books_table`: preset `engine` on oil at `rpm`, `viscosity_mpas` and the pin offset."""
+    omega = rpm * np.pi / 30
+    period = CYCLE / omega
+    values = dict(
+        PRESETS[engine].values,
+        skirt_model=2,
+        crank_speed=omega,
+        oil_viscosity=viscosity_mpas * 1e-3,
+        pin_offset=pin_offset_mm * 1e-3,
+    )
+    outputs = ["skirt_friction_power", "cycle_skirt_fmep", "film_energy_total", "film_relaxation_work"]
+    outputs += ["dissipated_energy_total", "contact_state_3", "contact_state_4"]
+    r = simulate(
+        stop_time=BOOKS_CYCLES * period, output_interval=period / BOOKS_SAMPLES, start_values=values, output=outputs
+    )
+    t, fmep = r["time"], r["cycle_skirt_fmep"]
+    end = np.nonzero(np.diff(fmep))[0][-1] + 1
+    cycle = (t >= t[end] - period - 1e-12) & (t <= t[end])
+    integral = np.trapezoid(r["skirt_friction_power"][cycle], t[cycle])
+    start = {v.name: v.start for v in fmpy.read_model_description(str(fmu_path())).modelVariables}
+    diameter, crank = (float(values.get(name, start[name])) for name in ("piston_diameter", "crank_radius"))
+    booked = fmep[end] * np.pi / 4 * diameter**2 * 2 * crank
+    film = r["film_energy_total"][cycle][-1] - r["film_energy_total"][cycle][0]
+    relaxation = r["film_relaxation_work"][cycle][-1] - r["film_relaxation_work"][cycle][0]
+    falls = [-min(0.0, np.diff(r[name]).min()) for name in ("film_energy_total", "dissipated_energy_total")]
+    held = np.mean((r["contact_state_3"] + r["contact_state_4"])[cycle] == 2)
+    return [
+        f"{engine}, {rpm:g} rpm, {viscosity_mpas:g} mPa·s, {pin_offset_mm:+g} mm",
+        f"{held:.0%}",
+        f"{booked:.4g}",
+        f"{integral:.4g}",
+        f"{booked / integral:.4f}",
+        f"{film:.4g}",
+        f"{relaxation:.3g}".replace("-", "−"),
+        f"{max(falls):.0e}" if max(falls) > 0 else "0",
+    ]
+
+
+def film_books_table(*cases):
+    """The oiled skirt's books over the last completed cycle, each case ENGINE:RPM:VISCOSITY_MPAS:PIN_OFFSET_MM: the
+    skirt friction work `cycle_skirt_fmep` books against the integral of `skirt_friction_power` at the samples, the
+    film's dissipation and its relaxation term's work, and the largest fall of the film's and the dissipated total."""
+    header = [
+        "case",
+        "thrust corners held",
+        "friction work booked, J",
+        "∫ skirt_friction_power, J",
+        "booked / integral",
+        "film_energy_total, J",
+        "film_relaxation_work, J",
+        "largest fall, J",
+    ]
+    rows = []
+    for case in cases:
+        engine, rpm, viscosity, offset = case.split(":")
+        rows.append(film_books_row(engine, float(rpm), float(viscosity), float(offset)))
+    return _table(header, rows)
+
+
 TABLES = {
     "pin-offset": lambda engine, *speeds: pin_offset_table(engine, [float(s) for s in speeds]),
     "input-derivatives": input_derivatives_table,
@@ -546,6 +613,7 @@ TABLES = {
     "landing-motion": landing_motion_table,
     "hot-film": lambda engine, *speeds: hot_film_table(engine, [float(s) for s in speeds]),
     "cavitation": lambda engine, *speeds: cavitation_table(engine, [float(s) for s in speeds]),
+    "film-books": film_books_table,
 }
 
 
