@@ -13,6 +13,7 @@ The same system runs in Open Simulation Platform's libcosim from the OSP system 
 
 import csv
 import shutil
+from functools import partial
 from pathlib import Path
 
 import fmpy
@@ -24,7 +25,7 @@ from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, from_firing_tdc, rea
 from .presets import PRESETS as PISTON_PRESETS
 from .progress import Progress
 from .refusal import Parser, Refusal, check_start_values, number
-from .settings import add_parameter_options, parse_set, read_params, to_fmu
+from .settings import add_parameter_options, in_display_units, parse_set, read_params, to_fmu
 
 #: The partner FMU the package carries next to PistonSlap.fmu (`make fmu` copies both).
 ENGINE_FMU = Path(__file__).resolve().parent / "fmu" / "EngineCycle.fmu"
@@ -343,7 +344,8 @@ def main(argv=None):
         )
     md = fmpy.read_model_description(str(fmu_path()))
     slap = slap_start_values(args, engine, md)
-    check_start_values({**slap, "pressure_source": 1, "crank_speed": speed}, fmu_path(), md)
+    shown = partial(in_display_units, model_description=md)
+    check_start_values({**slap, "pressure_source": 1, "crank_speed": speed}, fmu_path(), md, shown=shown)
     period = CYCLE / speed
     stop = round(args.cycles * period / step) * step
     origin = FROM_FIRING_TDC if args.crank_0_720 else CENTRED

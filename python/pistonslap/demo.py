@@ -16,6 +16,7 @@ import shutil
 import tempfile
 import time
 from concurrent.futures import ProcessPoolExecutor
+from functools import partial
 from pathlib import Path
 
 import fmpy
@@ -27,7 +28,7 @@ from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, last_cycle, simulate
 from .presets import PRESETS, help_text
 from .progress import Progress
 from .refusal import Parser, Refusal, check_start_values, number
-from .settings import add_parameter_options, parse_set, read_params, to_fmu, within_range
+from .settings import add_parameter_options, in_display_units, parse_set, read_params, to_fmu, within_range
 from .tables import LANDING_RUN_ON, SAMPLE_DEG, WALLS, cycle_metrics, energy_unit, slap_rows, write_table
 from .trace_tdc import PlacedTrace
 
@@ -321,7 +322,7 @@ def main(argv=None):
         checked = dict(values, skirt_map=os.devnull) if "skirt_map" in values else dict(values)
         if trace:
             checked["pressure_trace"] = trace.write(scratch)
-        check_start_values(checked, fmu_path(), md)
+        check_start_values(checked, fmu_path(), md, shown=partial(in_display_units, model_description=md))
     args.out.mkdir(parents=True, exist_ok=True)
     if trace:
         values["pressure_trace"] = trace.write(args.out)

@@ -57,9 +57,9 @@ def whole(text, name, low):
     return value
 
 
-def check_start_values(start_values, fmu, model_description=None):
+def check_start_values(start_values, fmu, model_description=None, shown=str):
     """Initializes the FMU `fmu` (file or extracted folder) with `start_values` without stepping it; a `Refusal`
-    carrying the FMU's error message when it refuses them."""
+    carrying the FMU's error message, as `shown` words it (`settings.in_display_units`), when it refuses them."""
     global _logger
     errors = []
 
@@ -78,6 +78,6 @@ def check_start_values(start_values, fmu, model_description=None):
             str(fmu), model_description=md, start_values=dict(start_values), stop_time=0.0, output=[], logger=logger
         )
     except Exception as e:  # fmpy raises its own exception types; the FMU's log says why
-        raise Refusal(f"the FMU refuses: {errors[-1] if errors else e}") from None
+        raise Refusal(f"the FMU refuses: {shown(errors[-1]) if errors else e}") from None
     if errors:
-        raise Refusal(f"the FMU refuses: {errors[-1]}")
+        raise Refusal(f"the FMU refuses: {shown(errors[-1])}")

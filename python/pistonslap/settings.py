@@ -200,6 +200,25 @@ def read_params(path, model_description):
     return {name: value_of(name, value, model_description, f"{path}: {name}") for name, value in raw.items()}
 
 
+#: A value the FMU's messages give in SI: `name = value unit`.
+_SI_VALUE = re.compile(r"\b([a-z][a-z0-9_]*) = (-?\d[\d.]*(?:e[-+]?\d+)?) ([^\s,;:()]+)")
+
+
+def in_display_units(message, model_description):
+    """`message` with each `name = value unit` of a parameter or input given in its SI unit shown in its display unit
+    (`bore = 70 mm`, not `bore = 0.07 m`), as the commands take and print values."""
+
+    def shown(match):
+        name, value, unit = match.groups()
+        variable = settable(model_description).get(name)
+        display, factor = display_unit(name, model_description)
+        if variable is None or _unit_of(variable) != unit or display == unit:
+            return match.group(0)
+        return f"{name} = {float(value) * factor:g} {display}"
+
+    return _SI_VALUE.sub(shown, message)
+
+
 def display_unit(name, model_description):
     """(unit, factor) to show the SI values of `name` in: its display unit where it declares one, else its unit."""
     variable = settable(model_description).get(name)

@@ -132,16 +132,35 @@ def summary(path, ran):
 
 
 def with_trace(spec, out):
-    """`spec` with its [start] pressure trace (pressure_source = 3) read as exported, refused with the file's line
-    before anything runs, and written in the FMU's own form into the results' folder, where the workers read it."""
+    """`spec` with its pressure traces where they run (pressure_source = 3), the [start] one and a [grid]'s, read as
+    exported, all refused with the file's line before anything runs, and written in the FMU's own form into the
+    results' folder, where the workers read them: the [start] one as `pressure_trace_as_run.csv`, a [grid]'s each
+    numbered and named after its file."""
     fixed = spec.fixed
-    if fixed.get("pressure_source") != 3 or not fixed.get("pressure_trace"):
+
+    def runs(values):
+        merged = dict(fixed, **values)
+        return merged.get("pressure_source") == 3 and bool(merged.get("pressure_trace"))
+
+    start = [fixed["pressure_trace"]] if "pressure_trace" in fixed and runs({}) else []
+    swept = [p["pressure_trace"] for p in spec.points if "pressure_trace" in p and runs(p)]
+    paths = list(dict.fromkeys(start + swept))
+    if not paths:
         return spec
-    placed = PlacedTrace(fixed["pressure_trace"], None, fmu_path())
-    print(placed.said)
+    placed = [PlacedTrace(path, None, fmu_path()) for path in paths]
     folder = Path(out) / spec.name
     folder.mkdir(parents=True, exist_ok=True)
-    return dataclasses.replace(spec, fixed=dict(fixed, pressure_trace=placed.write(folder)))
+    written = {}
+    for k, (path, trace) in enumerate(zip(paths, placed, strict=True)):
+        print(trace.said)
+        name = "pressure_trace_as_run.csv" if start and k == 0 else f"{k}_{Path(path).stem}_as_run.csv"
+        written[path] = trace.write(folder, name)
+
+    def as_run(values):
+        trace = values.get("pressure_trace")
+        return dict(values, pressure_trace=written[trace]) if trace in written else values
+
+    return dataclasses.replace(spec, fixed=as_run(fixed), points=[as_run(p) for p in spec.points])
 
 
 def main(argv=None):

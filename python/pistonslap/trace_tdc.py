@@ -62,8 +62,8 @@ class PlacedTrace:
         self.trace = trace_file.load(path, fmu)
         self.shift, self.said = place_firing_tdc(self.trace, firing_tdc)
 
-    def write(self, folder):
-        """The trace as the FMU runs it, written into `folder`; its path."""
-        path = Path(folder) / "pressure_trace_as_run.csv"
+    def write(self, folder, name="pressure_trace_as_run.csv"):
+        """The trace as the FMU runs it, written into `folder` as `name`; its path."""
+        path = Path(folder) / name
         path.write_text(self.trace.for_fmu(self.shift))
         return str(path.resolve())

@@ -44,6 +44,11 @@ CASES = {
     "--clearance and --set bore": (["demo", "--clearance", "40", "--set", "bore=80.1mm"], ["--clearance", "bore"]),
     "a skirt map past the cycle": (["demo", "--skirt-map", "800"], ["--skirt-map", "800", "720"]),
     "an unknown plot": (["demo", "--plots", "slap,gifs"], ["--plots", "gifs"]),
+    "an FMU relation in the units typed": (
+        ["demo", "--set", "bore=70mm"],
+        ["bore = 70 mm must exceed piston_diameter = 80 mm"],
+    ),
+    "the same in coupled": (["coupled", "--set", "rod_length=1mm"], ["crank_radius = 40 mm", "rod_length = 1 mm"]),
 }
 
 

@@ -111,9 +111,9 @@ def demo(*args, cwd):
     return pistonslap("demo", "--cycles", "1", "--plots", "none", *args, cwd=cwd)
 
 
-def as_run(out):
+def as_run(out, name="pressure_trace_as_run.csv"):
     """(angles [deg], pressures [Pa], header) of the trace the FMU ran."""
-    path = out / "pressure_trace_as_run.csv"
+    path = out / name
     header = path.read_text().splitlines()[0]
     angles, pressures = np.loadtxt(path, delimiter=",", skiprows=1, unpack=True)
     return angles, pressures, header
@@ -199,5 +199,25 @@ def test_a_sweep_runs_an_exported_trace_and_refuses_a_bad_one_before_starting(tm
     np.testing.assert_allclose(as_run(tmp_path / "sweeps" / "traced")[1], BAR * 1e5, rtol=1e-15)
     (tmp_path / "plot.png").write_bytes(REFUSED["a PNG image"][1])
     done = sweep(spec.format("plot.png").replace("traced", "png"), tmp_path)
+    assert done.returncode == 2 and len(done.stderr.splitlines()) == 1 and "not a text file" in done.stderr
+    assert not (tmp_path / "sweeps" / "png").exists()
+
+
+def test_a_sweep_over_exported_traces_reads_each_and_refuses_a_bad_one_before_starting(tmp_path):
+    """Traces swept in a [grid] go through the same reader, each written in its FMU form into the results' folder; one
+    PNG among them is refused in one line before any worker starts, leaving no folder."""
+    styles = ["units in parentheses", "semicolons and decimal commas"]
+    for style in styles:
+        (tmp_path / READ[style][0]).write_text(READ[style][1])
+    names = [f'"{READ[style][0]}"' for style in styles]
+    spec = 'name = "{}"\ncycles = 2\n[start]\npressure_source = 3\n[grid]\npressure_trace = [{}]\n'
+    done = sweep(spec.format("traces", ", ".join(names)), tmp_path)
+    assert done.returncode == 0 and "(2 points, 2 run now, 0 failed)" in done.stdout, (done.stdout, done.stderr)
+    for k, style in enumerate(styles):
+        assert READ[style][2] in done.stdout
+        written = as_run(tmp_path / "sweeps" / "traces", f"{k}_{Path(READ[style][0]).stem}_as_run.csv")
+        np.testing.assert_allclose(written[1], BAR * 1e5, rtol=1e-15)
+    (tmp_path / "plot.png").write_bytes(REFUSED["a PNG image"][1])
+    done = sweep(spec.format("png", ", ".join([*names, '"plot.png"'])), tmp_path)
     assert done.returncode == 2 and len(done.stderr.splitlines()) == 1 and "not a text file" in done.stderr
     assert not (tmp_path / "sweeps" / "png").exists()
