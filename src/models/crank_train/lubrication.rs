@@ -295,6 +295,12 @@ impl Lubrication {
         }
     }
 
+    /// The wetted share of the skirt's film area at time `t` (`Fill::wetted`): the latest solve's
+    /// fill moved on to `t`; 1 before the first solve.
+    pub fn wetted_fraction(&self, t: f64) -> f64 {
+        self.frozen.borrow().as_ref().map_or(1.0, |f| f.latest.linear.fill_after(t - f.latest.time).wetted())
+    }
+
     /// The loads at (φ, φ̇), for the outputs.
     pub fn loads_at(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>) -> SkirtLoads {
         self.loads(&self.kinematics(at, phid).motion)

@@ -73,6 +73,7 @@ impl CrankTrain {
         out.film_energy_total = work[FILM] - (loads.asperity_energy - self.asperity_energy_start);
         out.potential_energy += loads.asperity_energy;
         out.film_relaxation_work = work[IMPLICIT];
+        out.skirt_wetted_fraction = lubrication.wetted_fraction(self.time());
         // A side's moment about the pin is its push times the height above the pin (thrust), or
         // minus that (anti-thrust): about the skirt top, the push times the pin's depth less it.
         let pin = linkage.pin_depth();

@@ -47,9 +47,13 @@ impl Fill {
         Fill { sides: [0, 1].map(|k| advanced(&self.sides[k], (&rate.sides[k], &decay.sides[k]), dt)) }
     }
 
-    /// The share of the nodes' film area that is wetted, Σ θ over the nodes of both sides / their number.
+    /// The share of the nodes' film area that is wetted, Σ θ over the nodes of both sides / their
+    /// number; 1 where the fill is not carried (the Reynolds condition's film is full).
     pub fn wetted(&self) -> f64 {
         let n = self.sides[0].len() + self.sides[1].len();
+        if n == 0 {
+            return 1.0;
+        }
         self.sides.iter().flatten().sum::<f64>() / n as f64
     }
 }
