@@ -32,7 +32,7 @@ pub(crate) fn select<const M: usize>(pred: impl Fn(usize) -> bool) -> Set {
 /// The held constraints and how each carries tangential force: `stick` at tangential rest, the
 /// others slipping forward (`γ > 0`) or, in `back`, backward. Without friction only `held` is used.
 /// `projected`: the held motion keeps a system's implicit inertia out of the held normals
-/// (`projected.rs`), where through it the contact problem had no solution.
+/// (`implicit.rs`), where through it the contact problem had no solution.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub(crate) struct Contacts {
     pub held: Set,
@@ -91,7 +91,7 @@ pub(crate) struct Frame<const N: usize, const M: usize> {
 impl<const N: usize, const M: usize> Frame<N, M> {
     /// `None` when the inertia matrix is not positive definite.
     pub fn new(ev: &Evaluation<N, M>) -> Option<Self> {
-        let inertia = Inertia::new(&ev.mass)?;
+        let inertia = Inertia::new(&ev.inertia())?;
         let minv_jt = inertia.solve(&ev.gap_jacobian.transpose());
         Some(Self { w: ev.gap_jacobian * minv_jt, minv_jt, free_acc: inertia.solve(&ev.force) })
     }
@@ -145,7 +145,7 @@ pub(crate) fn tie_margin<const M: usize>(w: &SMatrix<f64, M, M>, candidates: Set
 
 /// Margin of an undecided contact, relative to the scale of the sliding law's terms: a contact
 /// whose force and gap acceleration both lie within it at an instant (a contact about to open,
-/// or two trading places as the piston pivots) is decided by the law a moment later.
+/// or two trading places as a body starts to pivot) is decided by the law a moment later.
 const TIE_FRACTION: f64 = 1e-6;
 
 /// The same margin on the force, in units of ε_λ: a release is located to within ε_λ of zero force.
@@ -164,7 +164,7 @@ pub(crate) struct Sliding<const M: usize> {
 
 /// Acceleration and multipliers with the set `active` held closed (eqs 15–20): `ḧ_A = 0` gives
 /// `W_AA λ_A = −(J_A M⁻¹ f + d_A)`, then `q̈ = M⁻¹ (f + J_Aᵀ λ_A)`; `inertia` is `M` factored and
-/// `free_acc = M⁻¹ f`. This is most of the integrator's work while the piston slides: with one or
+/// `free_acc = M⁻¹ f`. This is most of the integrator's work while a body slides: with one or
 /// two constraints held only their rows of `W` are formed and solved in closed form, in the
 /// operations (and so to the bit) of the general path, which the frame takes for more. `None`
 /// when the active constraints are dependent.
@@ -297,6 +297,7 @@ mod tests {
         for _ in 0..200 {
             let ev = Evaluation::<3, 4> {
                 mass: positive_definite(&mut random),
+                implicit: None,
                 force: SVector::from_fn(|_, _| random()),
                 gap: SVector::zeros(),
                 gap_jacobian: SMatrix::from_fn(|_, _| random()),
@@ -314,6 +315,7 @@ mod tests {
         }
         let dependent = Evaluation::<2, 2> {
             mass: Matrix2::identity(),
+            implicit: None,
             force: Vector2::zeros(),
             gap: Vector2::zeros(),
             gap_jacobian: Matrix2::new(1.0, 2.0, 2.0, 4.0),

@@ -69,7 +69,7 @@ fn newton_impulses<const N: usize, const M: usize>(
 /// The energy each impulse dissipates, `−Λᵢ (ḣ⁻ᵢ + ḣ⁺ᵢ) / 2` with `ḣ = J q̇ + ∂h/∂t`: the work
 /// of the contact force on the relative normal motion (eqs 8–9). For one constraint it is
 /// `(1 − e²) (ḣ⁻)² / (2W) ≥ 0`. With fixed constraints the parts sum to `T⁻ − T⁺`; with moving
-/// ones (a prescribed crank, the roller's walls) `T⁺ − T⁻` also holds the work `−Λᵢ ∂hᵢ/∂t` the
+/// ones (a prescribed motion of a surface) `T⁺ − T⁻` also holds the work `−Λᵢ ∂hᵢ/∂t` the
 /// constraint's drive does through the impulse, which is not dissipated (and can exceed it).
 pub(super) fn energy_lost<const M: usize>(
     impulse: &SVector<f64, M>,
@@ -135,7 +135,7 @@ pub(super) fn impact<S: System<N, M>, const N: usize, const M: usize>(
 
 /// The sliding law over `candidates` at `(t, q, q̇)`, with the tie rule: a candidate this
 /// instant leaves undecided (zero force and zero gap acceleration together, as where a
-/// contact opens, or where two corners trade places as the piston starts to pivot) takes the
+/// contact opens, or where two contacts trade places as a body starts to pivot) takes the
 /// law's answer `TIE_PROBE` nominal steps later along the motion (`probe`) with this instant's
 /// support held. Every support consistent with the ties gives the same acceleration now, so the
 /// motions differ at second order and any of them shows the first-order trend that decides.
@@ -174,8 +174,8 @@ pub(super) fn sliding_law<S: System<N, M>, const N: usize, const M: usize>(
 /// The velocity jump that puts `(t, q, q̇)` on the manifold of `contacts` where one sticks: `ḣ = 0`
 /// on every held constraint and `γ = 0` on every sticking one, by impulses the modes allow (a
 /// slipping constraint's normal impulse brings its friction along). A stick the law finds within
-/// ε_ḣ of rest may still move the system: near a dead centre of the crank the slip is the crank's
-/// speed times a lever that vanishes there, and a creeping crank held at γ̇ = 0 would have to
+/// ε_ḣ of rest may still move the system: where the slip is a coordinate's speed times a lever
+/// that vanishes (a dead centre of a linkage), a creeping coordinate held at γ̇ = 0 would have to
 /// speed up as the lever shrinks. The tangential impulse stops that motion (an impact without
 /// collision); what it dissipates is friction's. `None` without friction, without a stick, or
 /// where the rows disagree (dependent): the normal projection alone is then left to the caller.

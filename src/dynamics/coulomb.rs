@@ -48,8 +48,8 @@ pub(crate) struct Tangential<const N: usize, const M: usize> {
     w: [[SMatrix<f64, M, M>; 2]; 2],
     mu: SVector<f64, M>,
     /// Whether a stick with more rows than degrees of freedom is solved (`wedge.rs`): only with the
-    /// whole system at rest, where a wedge can hold; moving (the crank turning through a dead
-    /// centre, where the piston is at axial rest) it would have to stop the motion at once.
+    /// whole system at rest, where a wedge can hold; moving (a linkage turning through a dead
+    /// centre, where the wedged body is at rest along its surface) it would have to stop the motion at once.
     wedge: bool,
 }
 
@@ -80,7 +80,7 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
     /// `new` with `M` factored here, and the acceleration without contact forces `M⁻¹ f`; `None`
     /// when `M` is not positive definite.
     pub fn at(ev: &Evaluation<N, M>, tangents: &Tangents<N, M>, mu: SVector<f64, M>) -> Option<(Self, SVector<f64, N>)> {
-        let inertia = Inertia::new(&ev.mass)?;
+        let inertia = Inertia::new(&ev.inertia())?;
         Some((Self::new(ev, tangents, &inertia, mu), inertia.solve(&ev.force)))
     }
 
@@ -185,7 +185,7 @@ impl<const N: usize, const M: usize> Tangential<N, M> {
     /// slip from rest whose tangential acceleration has its direction, a stick strictly inside its
     /// cone): a body at rest on several points sticks rather than slips nowhere. Where none
     /// decides so, modes that hold exactly (a slip's acceleration in its direction however small,
-    /// a stick within its cone): at a dead centre, where the slip reverses with the crank's
+    /// a stick within its cone): at a dead centre, where the slip reverses with a linkage's
     /// geometry and friction hardly changes its acceleration (a stick there is dependent), the
     /// slip the motion takes, not the one it leaves, which would be watched crossing at once.
     /// Only then modes at the edge, slipping before sticking (at the edge of the friction cone
@@ -288,6 +288,7 @@ mod tests {
             let mass: SMatrix<f64, 3, 3> = positive_definite(&mut random);
             let ev = Evaluation::<3, 2> {
                 mass,
+                implicit: None,
                 force: SVector::zeros(),
                 gap: SVector::zeros(),
                 gap_jacobian: SMatrix::from_fn(|_, _| random()),
@@ -328,6 +329,7 @@ mod tests {
     fn one_slipping_contact_in_closed_form() {
         let ev = Evaluation::<2, 1> {
             mass: SMatrix::from_row_slice(&[2.0, 0.3, 0.3, 1.0]),
+            implicit: None,
             force: SVector::zeros(),
             gap: SVector::zeros(),
             gap_jacobian: SMatrix::from_row_slice(&[0.2, 1.0]),

@@ -118,7 +118,7 @@ impl std::error::Error for DynamicsError {}
 
 impl DynamicsError {
     /// The same error with its time mapped by `clock` (for a model whose core runs on another
-    /// independent variable, such as a crank angle).
+    /// independent variable, such as an angle).
     pub fn map_time(mut self, clock: impl FnOnce(f64) -> f64) -> Self {
         use DynamicsError::*;
         let (NonFinite { time }

@@ -6,9 +6,8 @@ use nalgebra::{Cholesky, Const, SMatrix};
 /// A factored inertia matrix `M` (symmetric, positive definite).
 ///
 /// For two and three degrees of freedom `M⁻¹` is formed by cofactors: one division, against the
-/// Cholesky factor's chain of square roots and divisions that each solve repeats (a fifth of the
-/// crank train's run time). Other sizes keep the Cholesky factor, which for one degree of freedom
-/// is exact to the last bit the roller's round-off-sensitive results were computed with.
+/// Cholesky factor's chain of square roots and divisions that each solve repeats. Other sizes keep
+/// the Cholesky factor, which for one degree of freedom is exact to the bit of a single division.
 pub(crate) enum Inertia<const N: usize> {
     Inverse(SMatrix<f64, N, N>),
     Factor(Cholesky<f64, Const<N>>),
@@ -64,7 +63,8 @@ mod tests {
         (m * inertia.solve(&SMatrix::<f64, N, N>::identity()) - SMatrix::<f64, N, N>::identity()).amax()
     }
 
-    /// The crank train's and random well-conditioned inertia matrices are inverted to round-off.
+    /// Random well-conditioned inertia matrices, and one whose masses differ by three decades, are
+    /// inverted to round-off.
     #[test]
     fn inverts_positive_definite_matrices() {
         let mut random = uniform(7);
@@ -72,7 +72,7 @@ mod tests {
             assert!(inverse_error(positive_definite::<3>(&mut random)) < 1e-14);
             assert!(inverse_error(positive_definite::<2>(&mut random)) < 1e-14);
         }
-        // Rod and piston of the default crank train (their masses differ by three decades).
+        // Two bodies whose inertias differ by three decades.
         assert!(inverse_error(Matrix2::new(0.0291, 0.0006, 0.0006, 0.00104)) < 1e-14);
     }
 

@@ -28,9 +28,9 @@
 //! `settle.rs` (an event resolved, drift removed) over `contact_laws.rs` (the impact law and the
 //! laws of persistent contact), which reduce to `complementarity.rs` (constraint sets, the held
 //! set, `W`, the held acceleration, the LCP) and `coulomb.rs` (the friction problems by
-//! enumeration, `wedge.rs` where a stick's rows are dependent), and `projected.rs` (the law and the
-//! held motion with a system's implicit inertia kept off the held normals, where through it the
-//! law has no solution); `rk4.rs` (the RK4 step of a sample, its error estimate, its quintic extension)
+//! enumeration, `wedge.rs` where a stick's rows are dependent), and `implicit.rs` (the implicit part
+//! of a stiff force: impacts through `M` alone, the held motion with the implicit inertia kept off the
+//! held normals where through it the law has no solution); `rk4.rs` (the RK4 step of a sample, its error estimate, its quintic extension)
 //! over `sample.rs` (the state the loop carries); `inertia.rs` (`M⁻¹`); `system.rs`,
 //! `options.rs`, `event.rs`, `error.rs` (what the core takes, is told, records and refuses). The
 //! closed-form systems the tests and benches run it on are `tests/common/testbeds.rs`.
@@ -40,9 +40,9 @@ mod contact_laws;
 mod coulomb;
 mod error;
 mod event;
+mod implicit;
 mod inertia;
 mod options;
-mod projected;
 mod rk4;
 mod root_finding;
 mod sample;
@@ -59,4 +59,4 @@ pub use event::{Event, EventKind, StepCounts};
 pub use options::{StepperOptions, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
 pub use settle::ZENO_APEX_FACTOR;
 pub use stepper::Stepper;
-pub use system::{Evaluation, Powers, System, Tangents};
+pub use system::{Change, Evaluation, Powers, StepBounds, System, Tangents};

@@ -50,7 +50,7 @@ impl StepperOptions {
     }
 }
 
-/// The most RK4 steps one `advance` may take: 100 s of engine time at the default step, far beyond a
+/// The most RK4 steps one `advance` may take: 100 s at the default step, far beyond a
 /// communication step, yet bounded.
 pub(super) const MAX_STEPS_PER_ADVANCE: f64 = 1e7;
 pub(super) const TOO_MANY_STEPS: &str = "the span needs more than 10⁷ RK4 steps";

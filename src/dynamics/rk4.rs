@@ -124,31 +124,39 @@ pub(super) fn rk4_to<S: System<N, M>, const N: usize, const M: usize>(
     t: f64,
     contacts: Contacts,
 ) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
-    let (s, ev, ..) = rk4_step(sys, s0, t, contacts, true)?;
-    Ok((s, ev))
+    let stepped = rk4_step(sys, s0, t, contacts, true)?;
+    Ok((stepped.end, stepped.ev))
 }
 
 /// `rk4_to` for the step last taken from `s0`, cut at `t`: its stages take the terms that step
 /// prepared (`System::begin_step` is not called), so that it integrates the same equations the
-/// step's dense output came from, which the event search checked. A lubricated skirt's film prepared
-/// for the shorter step can put a corner inside the liner (by tens of nanometres) where the dense
-/// output has it clear.
+/// step's dense output came from, which the event search checked (terms prepared for the shorter
+/// step can put a constraint through its surface where the dense output has it clear).
 pub(super) fn rk4_cut<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     s0: &Sample<N, M>,
     t: f64,
     contacts: Contacts,
 ) -> Result<(Sample<N, M>, Evaluation<N, M>), DynamicsError> {
-    let (s, ev, ..) = rk4_step(sys, s0, t, contacts, false)?;
-    Ok((s, ev))
+    let stepped = rk4_step(sys, s0, t, contacts, false)?;
+    Ok((stepped.end, stepped.ev))
 }
 
-/// What `rk4_step` gives: the end, its evaluation, the step's last slopes (for `local_error`), the
-/// held contacts' forces at its third stage, the step's middle (zero in flight), and the start as
-/// the step's stages see it where the system prepared terms for them with constraints held
-/// (`System::begin_step`; none otherwise, the start being the caller's).
-pub(super) type Stepped<const N: usize, const M: usize> =
-    (Sample<N, M>, Evaluation<N, M>, (SVector<f64, N>, SVector<f64, N>), Forces<M>, Option<Sample<N, M>>);
+/// What `rk4_step` gives.
+pub(super) struct Stepped<const N: usize, const M: usize> {
+    /// The end and its evaluation.
+    pub end: Sample<N, M>,
+    pub ev: Evaluation<N, M>,
+    /// The step's last slopes (for `local_error`).
+    pub slopes: (SVector<f64, N>, SVector<f64, N>),
+    /// The held contacts' forces at the third stage (zero in flight).
+    pub middle: Forces<M>,
+    /// The start as the stages see it where the system prepared terms for them with constraints
+    /// held (none otherwise: the start is the caller's).
+    pub start: Option<Sample<N, M>>,
+    /// Whether the system prepared terms for this step (`System::begin_step`).
+    pub prepared: bool,
+}
 
 /// `rk4_to`, with what `Stepped` adds; `prepare`: whether the step prepares its own terms
 /// (`System::begin_step`), false for a step cut short (`rk4_cut`).
@@ -160,35 +168,14 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     contacts: Contacts,
     prepare: bool,
 ) -> Result<Stepped<N, M>, DynamicsError> {
-    // A system that absorbs nothing gets a step without a trace of the refreshed start.
-    if sys.absorbs() {
-        rk4_step_of::<S, N, M, true>(sys, s0, t, contacts, prepare)
-    } else {
-        rk4_step_of::<S, N, M, false>(sys, s0, t, contacts, prepare)
-    }
-}
-
-#[inline(always)]
-fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: bool>(
-    sys: &S,
-    s0: &Sample<N, M>,
-    t: f64,
-    contacts: Contacts,
-    prepare: bool,
-) -> Result<Stepped<N, M>, DynamicsError> {
     let dt = t - s0.t;
-    if prepare {
-        sys.begin_step(s0.t, (&s0.q, &s0.v, &s0.acc), dt);
-    }
-    // A system that absorbs (the lubricated skirt) prepares its film for this step. With a
-    // constraint held, the start is evaluated again with it, so that the first stage, the event
-    // search's start and the dense output take the film the other stages take: a held corner's
-    // force is the small difference of the film's and the linkage's (a few newtons beside kilonewtons),
-    // and the step before's film can put it on the other side of zero from this step's.
-    // In flight the first stage keeps the step before's film, an O(dt) difference like the other
-    // stages' linearisation: there the film carries the motion whole, and the default engine's peak
-    // film force depends less on the step so (`documentation/design/lubricated_skirt.md`).
-    let refreshed = if ABSORBS && prepare && contacts.held != 0 { Some(sample(sys, s0.t, s0.q, s0.v, contacts)?.after(s0)) } else { None };
+    let prepared = prepare && sys.begin_step(s0.t, (&s0.q, &s0.v, &s0.acc), dt);
+    // Terms prepared for this step: with a constraint held, the start is evaluated again with them,
+    // so that the first stage, the event search's start and the dense output take the terms the
+    // other stages take (a held force can be the small difference of two large ones, which the
+    // terms of the step before can put on the other side of zero). In flight the first stage keeps
+    // the step before's, an O(dt) difference like the other stages' linearisation.
+    let refreshed = if prepared && contacts.held != 0 { Some(sample(sys, s0.t, s0.q, s0.v, contacts)?.after(s0)) } else { None };
     let s0 = refreshed.as_ref().unwrap_or(s0);
     // Three monomorphizations of the step: a flight's stages need `M` and `f` alone, and
     // frictionless held stages the normal forces alone, neither adding friction work; rubbing
@@ -255,19 +242,19 @@ fn rk4_step_of<S: System<N, M>, const N: usize, const M: usize, const ABSORBS: b
     if S::POWERS {
         s.energies += (s0.powers + (rates[1] + rates[2]) * 2.0 + rates[3]) * (dt / 6.0);
     }
-    if ABSORBS && contacts.held != 0 {
+    if ev.implicit.is_some() && contacts.held != 0 {
         on_path_totals(sys, s0, &mut s, contacts);
     }
-    Ok((s, ev, end.last_slopes, middle, refreshed))
+    Ok(Stepped { end: s, ev, slopes: end.last_slopes, middle, start: refreshed, prepared })
 }
 
-/// The totals of a held step `s0 → s` of a system with an implicit force, by Simpson's rule on the
-/// step's path (its quintic dense output, whose middle lies on the held constraints to the step's
-/// order): the system's rates, the contact impulse and the friction work. The stages leave the held
-/// constraints by ≈ q̈ dt²/8 (µm at a high crank speed), where a film's asperity load, steep in its
-/// gap, reads many times what the path has: the motion, held, does not feel it (the contact force
-/// takes it), but rates and forces taken at the stages book it. Where the middle's inertia is
-/// singular to round-off (the film there on its floor), the stages' totals stand.
+/// The totals of a held step `s0 → s` of a system with an implicit part (`Evaluation::implicit`), by
+/// Simpson's rule on the step's path (its quintic dense output, whose middle lies on the held
+/// constraints to the step's order): the system's rates, the contact impulse and the friction work.
+/// The stages leave the held constraints by ≈ q̈ dt²/8, where a stiff force, steep in the gap, reads
+/// many times what the path has: the motion, held, does not feel it (the contact force takes it),
+/// but rates and forces taken at the stages book it. Where the middle's inertia is singular to
+/// round-off, the stages' totals stand.
 fn on_path_totals<S: System<N, M>, const N: usize, const M: usize>(sys: &S, s0: &Sample<N, M>, s: &mut Sample<N, M>, contacts: Contacts) {
     let dt = s.t - s0.t;
     let path = Hermite5 { t0: s0.t, dt, q0: s0.q, v0: s0.v, a0: s0.acc, q1: s.q, v1: s.v, a1: s.acc };

@@ -103,7 +103,7 @@ pub(crate) fn first_crossing<E>(
 }
 
 /// A dip between the scan's samples that `first_crossing` steps over (every sample above `−tol`,
-/// the part below narrower than a sample interval: a corner whose fall turns within a fraction
+/// the part below narrower than a sample interval: a gap whose fall turns within a fraction
 /// of a step, e.g. in a rattle at e = 1): the dip's bottom, where the rate `dg` turns from
 /// negative to positive between two samples, located on `dg`; if `g` is below `−tol` there, the
 /// crossing before it, from the last point above `tol` (a sample, or the top of a rise between
@@ -222,8 +222,8 @@ mod tests {
     }
 
     /// A root within an ulp of the bracket's end, where `g` is far smaller than at the other
-    /// end, so that the secant rounds onto the end (a release on the RK4 map, found by the
-    /// crank train): the float next to it at once, not some fifty bisections.
+    /// end, so that the secant rounds onto the end (a release on the RK4 map): the float next to
+    /// it at once, not some fifty bisections.
     #[test]
     fn a_secant_rounding_onto_an_end_tries_the_next_float() {
         let f = |t: f64| if t < 1.0 { 1.0 - t } else { -1e-17 };
@@ -281,9 +281,8 @@ mod tests {
     }
 
     /// The same flight from a start just above zero but within the tolerance (where an impact
-    /// leaves a corner): the start is no end of the bracket, or Illinois would accept a "root"
-    /// next to it (|g| ≤ tol there) and the stepper would inch on by such non-events
-    /// (found by `make soak`: a free crank at cycle 420).
+    /// leaves a contact): the start is no end of the bracket, or Illinois would accept a "root"
+    /// next to it (|g| ≤ tol there) and the stepper would inch on by such non-events.
     #[test]
     fn a_start_within_the_tolerance_is_not_a_bracket_end() {
         let f = |t: f64| 3e-14 + t * (0.01 - t);

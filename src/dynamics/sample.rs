@@ -3,10 +3,10 @@
 
 use super::complementarity::{contains, held_acceleration, Contacts, Frame, Mode, Set};
 use super::coulomb::Tangential;
+use super::implicit::Projected;
 use super::inertia::Inertia;
-use super::projected::Projected;
-use super::system::{absorbed, friction_of};
-use super::{DynamicsError, Evaluation, Powers, System};
+use super::system::{friction_of, implicit_share};
+use super::{Change, DynamicsError, Evaluation, Powers, System};
 use nalgebra::{SMatrix, SVector};
 use serde::{Deserialize, Serialize};
 
@@ -36,7 +36,7 @@ pub(super) struct Sample<const N: usize, const M: usize> {
     pub(super) contact_impulse: SVector<f64, M>,
     /// The rates the system reports here (`System::powers`), and their integrals since the start,
     /// integrated like `friction_work` and carried alike, with the jumps' shares
-    /// (`System::absorbed_by_jump`) added where they happen. Zero where the system reports none.
+    /// (`Change::Jump`) added where they happen. Zero where the system reports none.
     pub(super) powers: Powers,
     pub(super) energies: Powers,
 }
@@ -148,14 +148,14 @@ impl<const N: usize, const M: usize> Motion<N, M> {
 }
 
 /// The system's rates at `(t, q, q̇)` with the motion `m` the held contacts give there, the power
-/// `m.taken` from its implicit force by projected held contacts added to the absorbed channel.
+/// `m.taken` from its implicit part by projected held contacts added to that part's channel.
 #[inline(always)]
 pub(super) fn powers<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
     (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
     m: &Motion<N, M>,
 ) -> Powers {
-    sys.powers(t, (q, v, &m.acc), (&m.lambda, &m.friction)) + absorbed(m.taken)
+    sys.powers(t, q, Change::Rates { v, acc: &m.acc, forces: (&m.lambda, &m.friction) }) + implicit_share(m.taken)
 }
 
 /// `Motion` at `(t, q, q̇)` with `contacts` held, from the evaluation there.
@@ -167,7 +167,7 @@ pub(super) fn motion<S: System<N, M>, const N: usize, const M: usize>(
     contacts: Contacts,
 ) -> Result<Motion<N, M>, DynamicsError> {
     if contacts.projected && contacts.held != 0 {
-        let projected = Projected::new(sys, ev, (t, q, v), contacts.held)?;
+        let projected = Projected::new(ev, t, contacts.held)?;
         let m = motion_through(sys, &projected.ev, (t, q, v), contacts)?;
         return Ok(Motion { taken: projected.taken(v, &m.acc), ..m });
     }
@@ -188,7 +188,7 @@ fn motion_through<S: System<N, M>, const N: usize, const M: usize>(
     };
     let tangents = sys.tangents(t, q, v);
     let slip = tangents.slip(v);
-    let (inertia, free_acc) = free_motion(&ev.mass, &ev.force, t)?;
+    let (inertia, free_acc) = free_motion(&ev.inertia(), &ev.force, t)?;
     if contacts.held == 0 {
         return Ok(Motion { acc: free_acc, lambda: SVector::zeros(), friction: SVector::zeros(), slip, taken: 0.0 });
     }
@@ -219,7 +219,7 @@ pub(super) fn acceleration<const N: usize, const M: usize>(
     t: f64,
     active: Set,
 ) -> Result<(SVector<f64, N>, SVector<f64, M>), DynamicsError> {
-    let (inertia, free_acc) = free_motion(&ev.mass, &ev.force, t)?;
+    let (inertia, free_acc) = free_motion(&ev.inertia(), &ev.force, t)?;
     if active == 0 {
         return Ok((free_acc, SVector::zeros()));
     }

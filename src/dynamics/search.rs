@@ -36,7 +36,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         // problem's scale and wider than the search's: one already below −tol is watched for falling
         // as far again, to where the laws decide otherwise, rather than found crossed at once, again
         // and again (a stick 9e-7 N outside its cone, a slip reversed by 9e-9 m/s at a dead centre;
-        // a corner released and closed again as sliding at round-off forces: 10⁴ times at one instant).
+        // a contact released and closed again as sliding at round-off forces: 10⁴ times at one instant).
         let shift = |i: usize, w: Watch| {
             let (g0, tol) = (s0.watched(i, w), self.tolerance(w));
             if unmoved && w != Watch::Gap && g0 < -tol {
@@ -47,6 +47,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         };
         let watched = |s: &Sample<N, M>, i: usize, w: Watch| s.watched(i, w) - shift(i, w);
         let step_end = &s1.0;
+        let implicit = s1.1.as_ref().is_some_and(|ev| ev.implicit.is_some());
         // The step's quintic extensions, of the gaps and of the configuration, built once a scan
         // needs them (most steps scan nothing).
         let (gaps, configuration) = (OnceCell::new(), OnceCell::new());
@@ -107,13 +108,13 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 // values at the ends and the middle comes within the step's own variation of zero
                 // (the middle is an RK4 stage, off the motion by that much: a dip of 7 mN the
                 // quintic extension shows, and the outputs with it, had a stage value of +16 mN).
-                // A system that absorbs (a film's damping, thousands of times the inertia in the
+                // An implicit part (`Evaluation::implicit`, thousands of times the inertia in the
                 // fast modes) magnifies the stage's offset: there the quintic extension's middle is
                 // read as well (a held force can be newtons above zero at the stage and below it on
                 // the extension).
                 let held_dip = w != Watch::Gap && located.is_none() && {
                     let dipping = |gm: f64| lowest(g0, gm, g1) < (g0 - gm).abs() + (gm - g1).abs();
-                    dipping(middle.watched(i, w) - lift) || (sys.absorbs() && dipping(on_dense(0.5 * (s0.t + step_end.t), i, w)? - lift))
+                    dipping(middle.watched(i, w) - lift) || (implicit && dipping(on_dense(0.5 * (s0.t + step_end.t), i, w)? - lift))
                 };
                 if g1 >= -tol && !dips && !held_dip {
                     continue;

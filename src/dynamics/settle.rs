@@ -3,11 +3,11 @@
 //! of held contacts removed between events.
 
 use super::complementarity::{members, select, Contacts, Frame, Set};
-use super::contact_laws::{energy_lost, impact, stick_jump, Jump, Tolerances};
-use super::projected::Projected;
-use super::sample::{frame_at, sample, sample_of, Sample};
+use super::contact_laws::{energy_lost, impact, sliding_law, stick_jump, Jump, Tolerances};
+use super::implicit::{for_impact, Projected};
+use super::sample::{frame_at, motion, sample, sample_of, Sample};
 use super::system::friction_of;
-use super::{DynamicsError, Evaluation, Event, EventKind, Powers, Stepper, System};
+use super::{Change, DynamicsError, Evaluation, Event, EventKind, Powers, Stepper, System};
 use nalgebra::SVector;
 
 /// Zeno guard: after an impact a closed constraint whose free flight would rise no higher than
@@ -26,8 +26,8 @@ const DRIFT_FRACTION: f64 = 0.1;
 /// Newton steps `onto_contacts` takes at most (quadratic convergence: two or three reach round-off).
 const MAX_PROJECTIONS: usize = 4;
 
-/// Impacts at one instant, each turning back a constraint the last one's impulses pushed onto the
-/// liner, beyond which the accumulation counts as unresolved (`DynamicsError::EventBudget`).
+/// Impacts at one instant, each turning back a constraint the last one's impulses pushed onto its
+/// surface, beyond which the accumulation counts as unresolved (`DynamicsError::EventBudget`).
 const IMPACT_ROUNDS: usize = 1000;
 
 impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
@@ -43,9 +43,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let (q, v) = self.onto_held(&self.state, ev)?;
         let t = self.state.t;
         let ev = self.system.evaluate(t, &q, &v);
-        let absorbed = self.absorbed_by_jump(t, &q, &self.state.v, &v);
+        let booked = self.booked_jump(&ev, (t, &q), &self.state.v, &v);
         self.state = sample_of(&self.system, &ev, t, q, v, self.contacts)?.after(&self.state);
-        self.state.energies += absorbed;
+        self.state.energies += booked;
         Ok(Some(ev))
     }
 
@@ -83,21 +83,28 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.onto_contacts(t, &mut q, &v, active, (&mut ev, &mut frame))?;
         let hd = ev.gap_jacobian * v + ev.gap_time_rate;
         let dependent = DynamicsError::DependentContacts { time: t, constraints: active };
-        // Projected held contacts move the velocity through the linkage's inertia alone (the
-        // implicit term's `M⁻¹ J_Hᵀ`), which the implicit force takes no impulse in.
+        // Projected held contacts move the velocity through `M` alone (the projected
+        // inertia's `M⁻¹ J_Hᵀ`), which the implicit part takes no impulse in.
         let jump = if self.contacts.projected {
-            Projected::new(&self.system, &ev, (t, &q, &v), active)?.frame(t)?.projection(&hd, active)
+            Projected::new(&ev, t, active)?.frame(t)?.projection(&hd, active)
         } else {
             frame.projection(&hd, active)
         };
         Ok((q, v + jump.ok_or(dependent)?.0))
     }
 
-    /// The work the system's own forces take from the jump `before → after` at `(t, q)` onto the
-    /// held contacts, J (none where they are projected: see `onto_held`).
-    fn absorbed_by_jump(&self, t: f64, q: &SVector<f64, N>, before: &SVector<f64, N>, after: &SVector<f64, N>) -> Powers {
-        if self.system.absorbs() && !self.contacts.projected {
-            self.system.absorbed_by_jump(t, q, before, after)
+    /// What the system books of the jump `before → after` at `(t, q)` onto the held contacts
+    /// (`Change::Jump`), where its evaluation there `ev` has an implicit part: only that part takes an
+    /// impulse at a jump. None where the contacts are projected: see `onto_held`.
+    fn booked_jump(
+        &self,
+        ev: &Evaluation<N, M>,
+        (t, q): (f64, &SVector<f64, N>),
+        before: &SVector<f64, N>,
+        after: &SVector<f64, N>,
+    ) -> Powers {
+        if S::POWERS && ev.implicit.is_some() && !self.contacts.projected {
+            self.system.powers(t, q, Change::Jump { before, after })
         } else {
             Powers::zeros()
         }
@@ -129,6 +136,37 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             *frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
         }
         Ok(())
+    }
+
+    /// The law of persistent contact over `candidates` at `(t, q, q̇)` (`sliding_law`); where the
+    /// system's implicit inertia leaves it without a solution, the law with that inertia projected
+    /// off every candidate's normal (`implicit.rs`): the normal rows are then those of `M` alone, and
+    /// its answer is the contact problem of the motion with the stiff force at the instant's rates. The set it
+    /// holds is held with the projection off its own normals. A candidate it opens that the
+    /// implicit term pushes back (leaving its surface under `M` while the force's relaxation returns it)
+    /// closes again along the motion, and the laws decide anew at that event.
+    /// Returns the contacts and `q̈` of their motion.
+    pub(super) fn persistent_law(
+        &self,
+        tol: Tolerances,
+        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
+        (ev, frame): (&Evaluation<N, M>, &Frame<N, M>),
+        candidates: Set,
+    ) -> Result<(Contacts, SVector<f64, N>), DynamicsError> {
+        let probe = |contacts, steps| self.probe((t, q, v), ev, contacts, steps);
+        let through_implicit = sliding_law(&self.system, tol, (t, q, v), (ev, frame), candidates, &probe);
+        if ev.implicit.is_none() || !matches!(through_implicit, Err(DynamicsError::ContactUnresolved { .. })) {
+            return through_implicit;
+        }
+        let projected = Projected::new(ev, t, candidates)?;
+        let probe = |contacts: Contacts, steps| {
+            let contacts = Contacts { projected: true, ..contacts };
+            let (t, q, v, ev) = self.probe((t, q, v), ev, contacts, steps)?;
+            Ok((t, q, v, Projected::new(&ev, t, candidates)?.ev))
+        };
+        let (contacts, _) = sliding_law(&self.system, tol, (t, q, v), (&projected.ev, &projected.frame(t)?), candidates, &probe)?;
+        let contacts = Contacts { projected: contacts.held != 0, ..contacts };
+        Ok((contacts, motion(&self.system, ev, (t, q, v), contacts)?.acc))
     }
 
     /// Records one event per constraint of `set` at the current configuration; the first carries
@@ -189,23 +227,18 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let mut hd = ev.gap_jacobian * v + ev.gap_time_rate;
 
         let mut approaching = closed & select::<M>(|i| hd[i] < -opts.velocity_tolerance);
-        let mut absorbed = Powers::zeros();
+        let mut booked = Powers::zeros();
         let mut impacted: Set = 0;
         let zeno_apex = ZENO_APEX_FACTOR * opts.gap_tolerance;
         let contacts = loop {
             let mut rounds = 0;
             while approaching != 0 {
                 // The impact law over every closed constraint, with one `e`, so that it dissipates
-                // (`newton_impulses`): one leaving the liner may return at up to e times its
+                // (`newton_impulses`): one leaving its surface may return at up to e times its
                 // speed, and strikes it in the next round.
-                let jump = if self.system.absorbs() {
-                    // Through the inertia without the implicit forces', which take no impulse.
-                    let ev = Evaluation { mass: self.system.impact_mass(t, &q, &v, &ev), ..ev.clone() };
-                    let frame = Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: t })?;
-                    impact(&self.system, (t, &q, &v), &ev, &frame, closed)?
-                } else {
-                    impact(&self.system, (t, &q, &v), &ev, &frame, closed)?
-                };
+                let bare = for_impact(&ev, t)?;
+                let (impact_ev, impact_frame) = bare.as_ref().map_or((&ev, &frame), |(ev, frame)| (ev, frame));
+                let jump = impact(&self.system, (t, &q, &v), impact_ev, impact_frame, closed)?;
                 // Recorded: the approaching constraints. Another closed one that takes an impulse
                 // (held, at rest, or leaving) is pushed, not struck: its share of the losses goes with its
                 // friction share to the first recorded event, so that the record's losses add up.
@@ -275,7 +308,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             self.onto_contacts(t, &mut q, &v, onto, (&mut ev, &mut frame))?;
             let hd = ev.gap_jacobian * v + ev.gap_time_rate;
             // Projected contacts jump through the inertia their motion takes.
-            let projected = if contacts.projected { Some(Projected::new(&self.system, &ev, (t, &q, &v), support)?) } else { None };
+            let projected = if contacts.projected { Some(Projected::new(&ev, t, support)?) } else { None };
             let (ev, frame) = match &projected {
                 Some(p) => (p.ev.clone(), p.frame(t)?),
                 None => (ev, frame),
@@ -293,9 +326,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             let losses = (&jump.lost, &jump.friction_lost);
             self.record((EventKind::Slide, &v), support & !was_active, (&hd, &jump.hd), losses, (jump.normal, jump.tangent));
             stick_losses = (jump.lost, jump.friction_lost);
-            absorbed += match &projected {
+            booked += match &projected {
                 Some(p) => p.by_jump(&v, &jump.v),
-                None => self.absorbed_by_jump(t, &q, &v, &jump.v),
+                None => self.booked_jump(&ev, (t, &q), &v, &jump.v),
             };
             sample(&self.system, t, q, jump.v, contacts)?
         };
@@ -310,7 +343,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.record((EventKind::Slip, &v), slipping, (&hd, &hd), (&none, &none), (none, none));
         self.contacts = contacts;
         self.state = state.after(&self.state);
-        self.state.energies += absorbed;
+        self.state.energies += booked;
         Ok(())
     }
 }

@@ -4,19 +4,24 @@ use nalgebra::{SMatrix, SVector};
 
 /// Rates a system reports along the motion (`System::powers`) and their integrals, which the core
 /// keeps with every step's own weights and carries across events alike, in up to eight channels the
-/// system names (W and J, or N and N·s for a force it reports). One is the core's own: `[0]` holds
-/// the power the system's force made linearly implicit through `M` takes from the motion
-/// (`System::absorbs`), and the core adds to it the share projected contacts take over from that force.
+/// system names (W and J, or N and N·s for a force it reports). `[0]` holds the power the implicit
+/// part of its force (`Evaluation::implicit`) takes from the motion, to which the core adds the share
+/// contacts held with that part projected take over (`implicit.rs`).
 pub type Powers = SVector<f64, 8>;
 
 /// Everything one RK4 stage, one impact or one sliding solve needs, evaluated at `(t, q, q̇)`.
 ///
 /// Conventions (A&K eqs 1, 2, 16, 18): `ḣ = J q̇ + ∂h/∂t` and `ḧ = J q̈ + d`, with `J = ∂h/∂q`.
-/// With `h` a distance in metres and `M q̈ = f + Jᵀ λ`, the multiplier `λ` is the normal contact force.
+/// With `h` a distance in metres and `(M + K) q̈ = f + Jᵀ λ`, the multiplier `λ` is the normal contact force.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Evaluation<const N: usize, const M: usize> {
     /// `M(q,t)`: symmetric, positive definite inertia matrix.
     pub mass: SMatrix<f64, N, N>,
+    /// `K`: the implicit part of a stiff force. A damper `−D q̇` applied as `−D (q̇ + τ q̈)`, its
+    /// rates a time τ ahead, has `K = τ D` here and the rest in `f`: the motion between events
+    /// takes `M + K` ([`Self::inertia`]), stable at steps up to τ however large D; an impact, in
+    /// which the finite force takes no impulse, takes `M` (`implicit.rs`). None: no such force.
+    pub implicit: Option<SMatrix<f64, N, N>>,
     /// `f(q,q̇,t)`: gyroscopic, damping, potential and exciting forces.
     pub force: SVector<f64, N>,
     /// `h(q,t)`: normal distance to each obstacle, ≥ 0 where admissible.
@@ -42,11 +47,61 @@ pub struct Tangents<const N: usize, const M: usize> {
     pub bias: SVector<f64, M>,
 }
 
+impl<const N: usize, const M: usize> Evaluation<N, M> {
+    /// The inertia of the motion between events, `M + K`.
+    #[inline(always)]
+    pub fn inertia(&self) -> SMatrix<f64, N, N> {
+        self.implicit.map_or(self.mass, |k| self.mass + k)
+    }
+}
+
 impl<const N: usize, const M: usize> Tangents<N, M> {
     /// `γ = J_T q̇ + ∂γ/∂t`.
     pub fn slip(&self, qd: &SVector<f64, N>) -> SVector<f64, M> {
         self.jacobian * qd + self.time_rate
     }
+}
+
+/// What bounds an RK4 step from one state (`System::step_bounds`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StepBounds {
+    /// The largest step the motion allows, s (the stepper takes the smaller of this and
+    /// `StepperOptions::step`). A system whose motion the error control cannot see (a prescribed
+    /// motion, being no coordinate; a coordinate the held constraints leave alone moving at a speed
+    /// RK4 follows exactly while the held ones drift) bounds it here so that the steps and their dense
+    /// output follow that motion.
+    pub largest: f64,
+    /// The factor on the options' local-error bound (`StepperOptions::local_error`): a system whose
+    /// gaps are far from closing, its motion carried by forces the gaps do not measure, may loosen it.
+    pub error_scale: f64,
+}
+
+impl Default for StepBounds {
+    /// No bound of the system's own: infinite, the options' error bound.
+    fn default() -> Self {
+        Self { largest: f64::INFINITY, error_scale: 1.0 }
+    }
+}
+
+/// Where [`System::powers`] is asked.
+#[derive(Clone, Copy, Debug)]
+pub enum Change<'a, const N: usize, const M: usize> {
+    /// Along the motion.
+    Rates {
+        /// `q̇`.
+        v: &'a SVector<f64, N>,
+        /// `q̈`.
+        acc: &'a SVector<f64, N>,
+        /// The held constraints' normal and tangential forces `(λ, λ_T)`.
+        forces: (&'a SVector<f64, M>, &'a SVector<f64, M>),
+    },
+    /// A velocity jump.
+    Jump {
+        /// `q̇⁻`.
+        before: &'a SVector<f64, N>,
+        /// `q̇⁺`.
+        after: &'a SVector<f64, N>,
+    },
 }
 
 /// An `N`-degree-of-freedom Lagrangian system with `M` unilateral constraints, frictionless unless
@@ -65,87 +120,53 @@ pub trait System<const N: usize, const M: usize> {
         self.evaluate(t, q, qd)
     }
 
-    /// `M` and `f` alone: all an RK4 stage needs while no constraint is held. A system whose
-    /// constraint terms cost work of their own overrides it; the result must equal `evaluate`'s.
+    /// The inertia of the motion `M + K` (`Evaluation::inertia`) and `f` alone: all an RK4 stage
+    /// needs while no constraint is held. A system whose constraint terms cost work of their own
+    /// overrides it; the result must equal `evaluate`'s.
     fn inertia_and_force(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> (SMatrix<f64, N, N>, SVector<f64, N>) {
         let ev = self.evaluate(t, q, qd);
-        (ev.mass, ev.force)
+        (ev.inertia(), ev.force)
     }
 
     /// Called at the start `(t, q, q̇)` of every RK4 step of length `dt`, before its stages, with
-    /// the start's acceleration `q̈`: a system may prepare terms its stages share (the lubricated
-    /// skirt solves its film here, once per step). What it prepares must be a function of these
-    /// arguments (a step taken again from the same start is the same step). Nothing, the default.
-    fn begin_step(&self, _t: f64, _state: (&SVector<f64, N>, &SVector<f64, N>, &SVector<f64, N>), _dt: f64) {}
+    /// the start's acceleration `q̈`: a system may prepare terms its stages share (solve a costly
+    /// force law once per step), and returns whether it did: the start is then read again with
+    /// them where constraints are held, so that the held forces there are the step's. What it
+    /// prepares must be a function of these arguments (a step taken again from the same start is
+    /// the same step). Nothing, the default.
+    fn begin_step(&self, _t: f64, _state: (&SVector<f64, N>, &SVector<f64, N>, &SVector<f64, N>), _dt: f64) -> bool {
+        false
+    }
 
-    /// Lengths `L_k` (m per unit of coordinate `k`) that turn an error of coordinate `k` into a
-    /// displacement of the mechanism. With constraints held, the adaptive step bounds `|L_k δq_k|`
-    /// on the motion left along them, which the gaps do not see (a crank turning while the piston
-    /// slides flat on the liner). Zero, the default: not measured.
+    /// Lengths `L_k` (m per unit of coordinate `k`) that turn a coordinate's error or speed into a
+    /// displacement. With constraints held, the adaptive step bounds `|L_k δq_k|` on the motion left
+    /// along them, which the gaps do not see (a coordinate turning while the held constraints leave
+    /// the gaps at rest); the sliding law takes the system at rest where every `|L_k q̇_k|` is within
+    /// the velocity tolerance. Zero, the default: not measured.
     fn coordinate_lengths(&self) -> SVector<f64, N> {
         SVector::zeros()
     }
 
-    /// The largest RK4 step the motion allows at `t` with velocities `q̇`, s (the stepper takes the
-    /// smaller of this and `StepperOptions::step`). A system whose motion the error control cannot
-    /// see (a prescribed motion, being no coordinate; a coordinate the held constraints leave alone
-    /// moving at a speed RK4 follows exactly while the held ones drift) bounds it here so that the
-    /// steps and their dense output follow that motion. Infinite, the default: no bound of its own.
-    fn largest_step(&self, _t: f64, _qd: &SVector<f64, N>) -> f64 {
-        f64::INFINITY
+    /// What bounds an RK4 step from `t` with velocities `q̇` and gaps `gaps`
+    /// ([`StepBounds::default`] where nothing does beyond the options).
+    fn step_bounds(&self, _t: f64, _qd: &SVector<f64, N>, _gaps: &SVector<f64, M>) -> StepBounds {
+        StepBounds::default()
     }
 
-    /// The bound on the local error of a step starting where the gaps are `gaps`, m, given the
-    /// options' bound `nominal` (`StepperOptions::local_error`): a system whose gaps are far from
-    /// closing, its motion carried by forces the gaps do not measure, may loosen it. `nominal`, the
-    /// default.
-    fn local_error(&self, nominal: f64, _gaps: &SVector<f64, M>) -> f64 {
-        nominal
-    }
-
-    /// Whether the system has a force made linearly implicit through `M` (a lubricating film's,
-    /// see [`Self::powers`]), whose power [`Powers`]`[0]` holds. False, the default: the core takes
-    /// its paths as without one.
-    fn absorbs(&self) -> bool {
-        false
-    }
-
-    /// Whether the system reports [`Self::powers`] for the core to integrate; an absorbing system
-    /// must. False, the default: no step evaluates them, and every total reads zero.
+    /// Whether the system reports [`Self::powers`] for the core to integrate. False, the default:
+    /// no step evaluates them, and every total reads zero.
     const POWERS: bool = false;
 
-    /// The rates the system reports at `(t, q, q̇)` with the acceleration `q̈` and the held
-    /// constraints' normal and tangential forces `(λ, λ_T)` (zero in flight): the power of its own
-    /// forces (a drive's, say, which acts through the contact forces too), and, where it absorbs,
-    /// `[0]`. `q̈` is given because a force made linearly implicit through `M` (a stiff damper `−D q̇`
-    /// applied as `−D (q̇ + τ q̈)`, its `τ D` added to the inertia) does work, and acts, through it.
-    /// The stepper integrates them along each step with the step's own weights; asked for only
-    /// where [`Self::POWERS`].
-    fn powers(
-        &self,
-        _t: f64,
-        _state: (&SVector<f64, N>, &SVector<f64, N>, &SVector<f64, N>),
-        _forces: (&SVector<f64, M>, &SVector<f64, M>),
-    ) -> Powers {
-        Powers::zeros()
-    }
-
-    /// The inertia an impact acts through at `(t, q, q̇)`, the evaluation there `ev`: `ev.mass`, the
-    /// default. A system that adds to its inertia a force made linearly implicit (a stiff damper's
-    /// `τ D`, see [`Self::powers`]) returns its inertia without it: that force is finite, so
-    /// it takes no impulse in an instantaneous impact. (Through `M + τ D`, Newton's law dissipates
-    /// in that metric, not in the kinetic energy's: where D turns between impacts, as on a piston
-    /// rocking between two corners on a thin film, each impact can feed the motion.)
-    fn impact_mass(&self, _t: f64, _q: &SVector<f64, N>, _qd: &SVector<f64, N>, ev: &Evaluation<N, M>) -> SMatrix<f64, N, N> {
-        ev.mass
-    }
-
-    /// The work those forces take from a velocity jump `q̇⁻ → q̇⁺` at `(t, q)` through the
-    /// evaluation's inertia (a projection onto held contacts; an impact acts through
-    /// [`Self::impact_mass`] and is not asked), J, and the impulses of the reported forces, N·s: a
-    /// force implicit in `q̈` takes an impulse at such a jump.
-    /// Asked for only where [`Self::absorbs`].
-    fn absorbed_by_jump(&self, _t: f64, _q: &SVector<f64, N>, _before: &SVector<f64, N>, _after: &SVector<f64, N>) -> Powers {
+    /// What the system books at `(t, q)` (asked only where [`Self::POWERS`]):
+    /// - along the motion ([`Change::Rates`]), the rates of its own forces at `q̇` with the
+    ///   acceleration `q̈` and the held constraints' normal and tangential forces `(λ, λ_T)` (zero in
+    ///   flight), W or N, which the stepper integrates along each step with the step's own weights.
+    ///   `q̈` is given because a force with an implicit part (`Evaluation::implicit`) acts, and does
+    ///   work, through it; `(λ, λ_T)` because a drive acts through the contact forces too;
+    /// - at a velocity jump `q̇⁻ → q̇⁺` onto held contacts ([`Change::Jump`]), what its forces take
+    ///   there, J or N·s: a force with an implicit part takes an impulse at such a jump (the core
+    ///   asks only where the evaluation has one; an impact acts through `M` alone and is not asked).
+    fn powers(&self, _t: f64, _q: &SVector<f64, N>, _change: Change<'_, N, M>) -> Powers {
         Powers::zeros()
     }
 
@@ -174,9 +195,9 @@ pub(super) fn friction_of<S: System<N, M>, const N: usize, const M: usize>(sys: 
     mu.iter().any(|&m| m != 0.0).then_some(mu)
 }
 
-/// `w` in the absorbed channel `[0]` alone (the core's share of [`Powers`]).
+/// `w` in the implicit part's channel `[0]` alone (the core's share of [`Powers`]).
 #[inline(always)]
-pub(super) fn absorbed(w: f64) -> Powers {
+pub(super) fn implicit_share(w: f64) -> Powers {
     let mut p = Powers::zeros();
     p[0] = w;
     p

@@ -1,6 +1,6 @@
-//! The forces of a contact problem whose rows are dependent but agree: a piston wedged across the
-//! bore at rest, sticking at two diagonal corners, has four rows (two normal, two tangential) on
-//! the crank train's three degrees of freedom. The motion then fixes the forces only up to a set
+//! The forces of a contact problem whose rows are dependent but agree: a body wedged across a
+//! channel at rest, sticking at two diagonal points, has four rows (two normal, two tangential) on
+//! a three-degree-of-freedom linkage. The motion then fixes the forces only up to a set
 //! that balances itself: the wedge's squeeze, both normal forces with the friction couple that
 //! holds them. Without a solution for the stick, only the pair slipping opposite ways at the edges
 //! of their cones would be consistent, a slip the motion reverses at once.
@@ -8,8 +8,8 @@
 //! The forces taken: the least-norm solution, moved along the one-dimensional null space to the
 //! set whose smallest margin (each closed constraint's normal force, each stick's distance to the
 //! edges of its cone) is largest, which keeps every stick as far inside its cone as the others.
-//! Where the margins grow without bound along it (a wedge that locks: μ above the skirt length
-//! over the diameter), the admissible set nearest the least-norm one, the least squeeze. Solved by
+//! Where the margins grow without bound along it (a wedge that locks: μ above the body's length
+//! over the channel's width), the admissible set nearest the least-norm one, the least squeeze. Solved by
 //! Gaussian elimination with full pivoting: arithmetic only, so that every platform gets the same
 //! bits (a decomposition through `hypot` would call the system's libm). Heap matrices: the rows may
 //! outnumber the degrees of freedom, and this runs only while a wedge holds.
@@ -18,7 +18,7 @@ use super::complementarity::{COMPLEMENTARITY_TOL, DEPENDENT_PIVOT};
 use nalgebra::{DMatrix, DVector};
 
 /// The last but one pivot, relative to the first, below which a wedge is not held: a second
-/// dependence (a wedge at a dead centre of the crank, where the rank changes along the motion),
+/// dependence (a wedge at a dead centre of a linkage, where the rank changes along the motion),
 /// left to the other modes, for held the stick would lose its solution within a step.
 const WELL_POSED: f64 = 1e-6;
 

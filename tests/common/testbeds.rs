@@ -4,7 +4,7 @@
 #![allow(dead_code)]
 
 use nalgebra::{Matrix1, Matrix2, Matrix3, RowVector2, SMatrix, SVector, Vector1, Vector2, Vector3};
-use pistonslap::dynamics::{Evaluation, Powers, System, Tangents};
+use pistonslap::dynamics::{Change, Evaluation, Powers, StepBounds, System, Tangents};
 use serde::{Deserialize, Serialize};
 use std::cell::Cell;
 
@@ -92,6 +92,7 @@ impl System<1, 1> for Ball {
         let (yf, vf, af) = self.floor.motion(t);
         Evaluation {
             mass: Matrix1::new(self.mass),
+            implicit: None,
             force: Vector1::new(-self.mass * self.gravity),
             gap: Vector1::new(q[0] - yf),
             gap_jacobian: Matrix1::new(1.0),
@@ -110,10 +111,10 @@ fn channels(first: [f64; 3]) -> Powers {
 }
 
 /// A [`Ball`] with a viscous damper to the ground, `−c ẏ`, made linearly implicit over the time
-/// `relaxation` τ as a stiff film is: `M = m + τ c` and `f = −m g − c ẏ`, so that the damper acts
+/// `relaxation` τ as a stiff film is: `K = τ c` and `f = −m g − c ẏ`, so that the damper acts
 /// as `−c (ẏ + τ ÿ)` and its mode relaxes over ≈ τ whatever c. The damper's work, through `ÿ` and
 /// at the projections onto a resting contact, is absorbed (`System::powers`); an impact acts
-/// through m alone (`System::impact_mass`: the damper is a finite force). Steps are bounded by τ.
+/// through m alone (`Evaluation::mass`: the damper is a finite force). Steps are bounded by τ.
 /// With c = 0 it is the `Ball`, bit for bit.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct DampedBall {
@@ -128,29 +129,28 @@ pub struct DampedBall {
 impl System<1, 1> for DampedBall {
     fn evaluate(&self, t: f64, q: &Vector1<f64>, qd: &Vector1<f64>) -> Evaluation<1, 1> {
         let mut ev = self.ball.evaluate(t, q, qd);
-        ev.mass[0] += self.relaxation * self.damping;
+        ev.implicit = Some(Matrix1::new(self.relaxation * self.damping));
         ev.force[0] -= self.damping * qd[0];
         ev
     }
-    fn largest_step(&self, _t: f64, _qd: &Vector1<f64>) -> f64 {
-        self.relaxation
-    }
-    fn absorbs(&self) -> bool {
-        true
+    fn step_bounds(&self, _t: f64, _qd: &Vector1<f64>, _gaps: &Vector1<f64>) -> StepBounds {
+        StepBounds { largest: self.relaxation, ..StepBounds::default() }
     }
     const POWERS: bool = true;
-    /// All of it in both power channels; the damper's force on the ball, `−c (ẏ + τ ÿ)`, in the third.
-    fn powers(&self, _t: f64, (_, qd, qdd): (&Vector1<f64>, &Vector1<f64>, &Vector1<f64>), _: (&Vector1<f64>, &Vector1<f64>)) -> Powers {
-        let force = -self.damping * (qd[0] + self.relaxation * qdd[0]);
-        channels([-force * qd[0], -force * qd[0], force])
-    }
-    fn impact_mass(&self, _t: f64, _q: &Vector1<f64>, _qd: &Vector1<f64>, _ev: &Evaluation<1, 1>) -> Matrix1<f64> {
-        Matrix1::new(self.ball.mass)
-    }
-    fn absorbed_by_jump(&self, _t: f64, _q: &Vector1<f64>, before: &Vector1<f64>, after: &Vector1<f64>) -> Powers {
-        let impulse = -self.relaxation * self.damping * (after[0] - before[0]);
-        let work = -impulse * 0.5 * (after[0] + before[0]);
-        channels([work, work, impulse])
+    /// Along the motion, all of it in both power channels and the damper's force on the ball,
+    /// `−c (ẏ + τ ÿ)`, in the third; at a jump, the implicit impulse's work and the impulse.
+    fn powers(&self, _t: f64, _q: &Vector1<f64>, change: Change<'_, 1, 1>) -> Powers {
+        match change {
+            Change::Rates { v, acc, .. } => {
+                let force = -self.damping * (v[0] + self.relaxation * acc[0]);
+                channels([-force * v[0], -force * v[0], force])
+            }
+            Change::Jump { before, after } => {
+                let impulse = -self.relaxation * self.damping * (after[0] - before[0]);
+                let work = -impulse * 0.5 * (after[0] + before[0]);
+                channels([work, work, impulse])
+            }
+        }
     }
     fn restitution(&self) -> f64 {
         self.ball.restitution
@@ -193,6 +193,7 @@ impl System<3, 2> for Rod {
         let (centre, rise) = (q[1] - yf, half * s);
         Evaluation {
             mass: Matrix3::from_diagonal(&Vector3::new(self.mass, self.mass, self.inertia())),
+            implicit: None,
             force: Vector3::new(0.0, -self.mass * self.gravity, 0.0),
             gap: Vector2::new(centre - rise, centre + rise),
             gap_jacobian: SMatrix::<f64, 2, 3>::new(0.0, 1.0, -half * c, 0.0, 1.0, half * c),
@@ -242,6 +243,7 @@ impl System<2, 2> for Wedge {
     fn evaluate(&self, _t: f64, q: &Vector2<f64>, _qd: &Vector2<f64>) -> Evaluation<2, 2> {
         Evaluation {
             mass: Matrix2::identity() * self.mass,
+            implicit: None,
             force: self.gravity * self.mass,
             gap: self.jacobian() * q,
             gap_jacobian: self.jacobian(),
@@ -295,6 +297,7 @@ impl System<2, 1> for DoublePendulum {
         let cross = m2 * l1 * l2 * libm::sin(q[0] - q[1]);
         Evaluation {
             mass: self.mass_matrix(q),
+            implicit: None,
             force: Vector2::new(-cross * qd[1] * qd[1] - (m1 + m2) * g * l1 * s1, cross * qd[0] * qd[0] - m2 * g * l2 * s2),
             gap: Vector1::new(l1 * s1 + l2 * s2 + self.wall),
             gap_jacobian: RowVector2::new(l1 * c1, l2 * c2),
@@ -334,6 +337,7 @@ impl System<2, 2> for Plank {
         let a = self.half_length;
         Evaluation {
             mass: Matrix2::new(self.mass, 0.0, 0.0, self.inertia),
+            implicit: None,
             force: Vector2::new(self.lift_rate * t, self.torque_rate * t.max(0.0)),
             gap: Vector2::new(q[0] - a * s, q[0] + a * s),
             gap_jacobian: Matrix2::new(1.0, -a * c, 1.0, a * c),
@@ -369,6 +373,7 @@ impl System<2, 1> for Block {
     fn evaluate(&self, t: f64, q: &Vector2<f64>, _qd: &Vector2<f64>) -> Evaluation<2, 1> {
         Evaluation {
             mass: Matrix2::identity() * self.mass,
+            implicit: None,
             force: Vector2::new(self.push_rate * t, -self.mass * self.gravity),
             gap: Vector1::new(q[1]),
             gap_jacobian: RowVector2::new(0.0, 1.0),
@@ -418,6 +423,7 @@ impl System<2, 1> for Toggle {
         let (m, l) = (self.mass, self.lever);
         Evaluation {
             mass: Matrix2::new(self.inertia_at(q[0]), 0.0, 0.0, m),
+            implicit: None,
             force: Vector2::new(-m * l * l * s * c * qd[0] * qd[0], -m * self.gravity),
             gap: Vector1::new(q[1]),
             gap_jacobian: RowVector2::new(0.0, 1.0),

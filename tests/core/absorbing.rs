@@ -67,7 +67,7 @@ fn a_stiff_damper_relaxes_over_the_step_bound_to_the_terminal_velocity() {
 /// rest on it, at every τ:
 /// - the mechanical energy lost equals the impacts' losses plus the absorbed work, through the smooth
 ///   flight (stage quadrature), the impacts (jumps) and the resting contact at the end;
-/// - the impacts act through m alone (`System::impact_mass`): the damper, a finite force, takes no
+/// - the impacts act through m alone (`Evaluation::mass`): the damper, a finite force, takes no
 ///   impulse in them, and each loses `(1 − e²)/2 m ẏ⁻²` exactly (to 1e-12);
 /// - the force channel (`Powers`' third: the damper's force `−c (ẏ + τ ÿ)`, by the steps' weights in
 ///   flight and its implicit share at the projections onto the resting contact) integrates to

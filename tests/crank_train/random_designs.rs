@@ -60,7 +60,7 @@ fn random_engines_all_run() {
 /// the acceleration, jumps there) sent below the liner at once; held, it pulled, and was released
 /// again at the same instant, 10⁴ times. 541, 1410 and 1762 (of 2000): a piston rocking between its
 /// two thrust corners on a film under 1 µm, whose impacts, through the inertia with the film's
-/// implicit `τ D`, fed the motion until it blew up (`System::impact_mass`). Of 40 000: 3148 and 5969,
+/// implicit `τ D`, fed the motion until it blew up (`Evaluation::mass`). Of 40 000: 3148 and 5969,
 /// a corner lifting off with the film carrying the piston, whose release was found again at the same
 /// instant 10⁴ times, and 11469, 12913, 31886, 31894 and 37442, a corner in contact showing a negative
 /// force between two steps: a held corner's force differed by more than itself between the film of
@@ -92,7 +92,7 @@ fn random_mass_conserving_engines_all_run() {
 /// slip it started found undone at the very start of each step, 10⁴ times, where the laws and the step
 /// read the corner with films half a step apart (`Stepper::step` now takes such a step again shorter);
 /// 18 of seeds 0–8999 on Painlevé's paradox through the film's implicit inertia (no non-negative
-/// contact force; the law on the linkage's inertia, `dynamics/projected.rs`, has one); 5932, 8561 and
+/// contact force; the law on the linkage's inertia, `dynamics/implicit.rs`, has one); 5932, 8561 and
 /// 14312, the film solved at a state predicted through the liner, on its floor (5932: an inertia matrix
 /// 1e16 times the linkage's, not positive definite to round-off; 8561: a corner 2.2e-9 m outside the
 /// bore; the film is now solved at the step's start there).

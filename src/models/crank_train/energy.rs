@@ -16,10 +16,10 @@ impl PrescribedCrank {
     /// Work the drive does through the corner impulses of one jump at `(t, q)` with the velocity
     /// `v` before it, normal and tangential (friction), J; `None` if the rod and piston inertia is
     /// not positive definite there. The jump acts through the inertia the core gave it: an impact
-    /// (`impact`) through the linkage's alone (`System::impact_mass`), a projection
+    /// (`impact`) through the linkage's alone (`Evaluation::mass`), a projection
     /// through the lubricated skirt's, which depends on `v` and on the film prepared when this is
     /// asked (after the communication step: not always the one the jump acted through). A
-    /// projection onto projected contacts (`dynamics/projected.rs`) acts through `M⁻¹ Jᵀ`, the
+    /// projection onto projected contacts (`dynamics/implicit.rs`) acts through `M⁻¹ Jᵀ`, the
     /// linkage's, and is reckoned here through the skirt's all the same: the event does not say.
     pub fn impulse_work(
         &self,
@@ -28,7 +28,7 @@ impl PrescribedCrank {
         impact: bool,
     ) -> Option<f64> {
         let full = self.evaluate_full(t, q, v);
-        let mass = if impact { self.impact_mass_full(t, q, v) } else { full.mass };
+        let mass = if impact { full.mass } else { full.inertia() };
         let rows = mass.fixed_view::<2, 2>(1, 1).into_owned();
         let mut generalized = full.gap_jacobian.transpose() * normal;
         if *friction != Vector4::zeros() {

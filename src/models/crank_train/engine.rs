@@ -12,7 +12,7 @@ use super::books::{self, SkirtRates};
 use super::linkage::{Bodies, LinkAngles, Linkage, Loads};
 use super::lubrication::{self, predicted, Lubrication};
 use super::step_bounds::MAX_STEP_ANGLE;
-use crate::dynamics::{Evaluation, Powers, System, Tangents};
+use crate::dynamics::{Change, Evaluation, Powers, StepBounds, System, Tangents};
 use crate::models::gas::GasPressure;
 use crate::models::numerics::{trig, LastValue};
 use crate::models::{InputPolynomial, ModelError};
@@ -125,13 +125,11 @@ impl Engine {
     fn evaluate(&self, t: f64, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> (Evaluation<3, 4>, Applied) {
         let (trig, loads) = self.trig_and_loads(t, phi, load_torque, &crank);
         let mut ev = self.linkage.evaluate_with(&trig, phid, loads);
-        if let Some(lubrication) = &self.lubrication {
-            lubrication.apply((phi, &trig), phid, (&mut ev.mass, &mut ev.force));
-        }
+        ev.implicit = self.lubrication.as_ref().map(|l| l.apply((phi, &trig), phid, &mut ev.force));
         (ev, self.linkage.gas_and_damping_power(&trig, phid, loads.gas_force))
     }
 
-    /// M and f of [`Self::evaluate`] alone, and the gas's and the damping's power.
+    /// The inertia `M + K` and f of [`Self::evaluate`] alone, and the gas's and the damping's power.
     #[inline(always)]
     fn inertia_and_force(
         &self,
@@ -144,15 +142,9 @@ impl Engine {
         let (trig, loads) = self.trig_and_loads(t, phi, load_torque, &crank);
         let (mut mass, mut force) = self.linkage.inertia_and_force_with(&trig, phid, loads);
         if let Some(lubrication) = &self.lubrication {
-            lubrication.apply((phi, &trig), phid, (&mut mass, &mut force));
+            mass += lubrication.apply((phi, &trig), phid, &mut force);
         }
         (mass, force, self.linkage.gas_and_damping_power(&trig, phid, loads.gas_force))
-    }
-
-    /// The linkage's inertia at φ, without the film's implicit `τ Gᵀ D G` (`System::impact_mass`).
-    fn impact_mass(&self, t: f64, phi: &Vector3<f64>, phid: &Vector3<f64>, crank: Crank) -> Matrix3<f64> {
-        let (trig, loads) = self.trig_and_loads(t, phi, 0.0, &crank);
-        self.linkage.inertia_and_force_with(&trig, phid, loads).0
     }
 
     /// An RK4 step begins: the lubricated skirt prepares its film at the time and state (t, φ, φ̇)
@@ -168,14 +160,15 @@ impl Engine {
         }
     }
 
-    /// The largest step the lubricated skirt allows (infinite without one), s.
-    fn largest_step(&self) -> f64 {
-        self.lubrication.as_ref().map_or(f64::INFINITY, Lubrication::largest_step)
-    }
-
-    /// The local-error bound of a step from corner gaps `gaps` (`Lubrication::local_error`; `nominal` dry).
-    fn local_error(&self, nominal: f64, gaps: &Vector4<f64>) -> f64 {
-        self.lubrication.as_ref().map_or(nominal, |l| l.local_error(nominal, gaps))
+    /// The bounds of a step from corner gaps `gaps` turning the crank at `speed`, rad/s: at most
+    /// [`MAX_STEP_ANGLE`] of the crank, and the lubricated skirt's (`Lubrication::largest_step`,
+    /// `Lubrication::error_scale`).
+    fn step_bounds(&self, speed: f64, gaps: &Vector4<f64>) -> StepBounds {
+        let crank = MAX_STEP_ANGLE / speed.abs();
+        match &self.lubrication {
+            Some(l) => StepBounds { largest: crank.min(l.largest_step()), error_scale: l.error_scale(gaps) },
+            None => StepBounds { largest: crank, error_scale: 1.0 },
+        }
     }
 
     /// The rates the crank train reports at (φ, φ̇, φ̈) (`books`), the drive's power `drive` and the
@@ -197,9 +190,9 @@ impl Engine {
         books::powers(&film, drive, gas, damping)
     }
 
-    /// What the lubricated skirt takes from a velocity jump at φ, J (`Lubrication::absorbed_by_jump`).
-    fn absorbed_by_jump(&self, phi: &Vector3<f64>, trig: &LinkAngles, before: &Vector3<f64>, after: &Vector3<f64>) -> Powers {
-        let film = self.lubrication.as_ref().map_or(SkirtRates::zeros(), |l| l.absorbed_by_jump((phi, trig), before, after));
+    /// What the lubricated skirt takes from a velocity jump at φ, J (`Lubrication::jump_books`).
+    fn jump(&self, phi: &Vector3<f64>, trig: &LinkAngles, before: &Vector3<f64>, after: &Vector3<f64>) -> Powers {
+        let film = self.lubrication.as_ref().map_or(SkirtRates::zeros(), |l| l.jump_books((phi, trig), before, after));
         books::powers(&film, 0.0, 0.0, 0.0)
     }
 
@@ -239,7 +232,7 @@ struct CrankRow {
 impl CrankRow {
     #[inline(always)]
     fn of((full, applied): &(Evaluation<3, 4>, Applied)) -> Self {
-        Self { gaps: Some(full.gap_jacobian.column(0).into_owned()), ..Self::of_inertia(&(full.mass, full.force, *applied)) }
+        Self { gaps: Some(full.gap_jacobian.column(0).into_owned()), ..Self::of_inertia(&(full.inertia(), full.force, *applied)) }
     }
 
     #[inline(always)]
@@ -319,12 +312,6 @@ impl PrescribedCrank {
         full.0
     }
 
-    /// The linkage's inertia in full coordinates, without the film's implicit term (`System::impact_mass`).
-    pub fn impact_mass_full(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Matrix3<f64> {
-        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
-        self.engine.impact_mass(t, &phi, &phid, crank)
-    }
-
     /// φ, φ̇ and the crank's terms at `(t, q, q̇)`.
     #[inline(always)]
     fn full_state_and_crank(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> (Vector3<f64>, Vector3<f64>, Crank) {
@@ -393,11 +380,12 @@ impl PrescribedCrank {
     /// The reduced evaluation (coordinates φ2, φ3) of the full one at t.
     #[inline(always)]
     fn reduce(&self, t: f64, full: Evaluation<3, 4>) -> Evaluation<2, 4> {
-        let (mass, force) = self.reduced(t, &full.mass, &full.force);
+        let force = self.reduced(t, &full.inertia(), &full.force).1;
         let crank_column = full.gap_jacobian.column(0);
         let gap_bias = if self.speed.is_held() { full.gap_bias } else { full.gap_bias + crank_column * self.acceleration(t) };
         Evaluation {
-            mass,
+            mass: rod_and_piston(&full.mass),
+            implicit: full.implicit.as_ref().map(rod_and_piston),
             force,
             gap: full.gap,
             gap_jacobian: Matrix4x2::from_columns(&[full.gap_jacobian.column(1), full.gap_jacobian.column(2)]),
@@ -406,15 +394,15 @@ impl PrescribedCrank {
         }
     }
 
-    /// The rod and piston rows of the full M and f at t, the crank's angular acceleration ω̇ moved
-    /// into the force: `f_r − M_r1 ω̇` (nothing to move while the speed is held).
+    /// The rod and piston rows of the full inertia `M + K` and f at t, the crank's angular acceleration
+    /// ω̇ moved into the force: `f_r − (M + K)_r1 ω̇` (nothing to move while the speed is held).
     #[inline(always)]
-    fn reduced(&self, t: f64, mass: &Matrix3<f64>, force: &Vector3<f64>) -> (Matrix2<f64>, Vector2<f64>) {
-        let (m, mut f) = rod_and_piston_rows(mass, force);
+    fn reduced(&self, t: f64, inertia: &Matrix3<f64>, force: &Vector3<f64>) -> (Matrix2<f64>, Vector2<f64>) {
+        let mut f = force.fixed_rows::<2>(1).into_owned();
         if !self.speed.is_held() {
-            f -= mass.fixed_view::<2, 1>(1, 0) * self.acceleration(t);
+            f -= inertia.fixed_view::<2, 1>(1, 0) * self.acceleration(t);
         }
-        (m, f)
+        (rod_and_piston(inertia), f)
     }
 }
 
@@ -431,12 +419,21 @@ impl System<2, 4> for PrescribedCrank {
         self.reduced(t, &terms.0, &terms.1)
     }
 
-    fn begin_step(&self, t: f64, (q, qd, qdd): (&Vector2<f64>, &Vector2<f64>, &Vector2<f64>), dt: f64) {
+    fn begin_step(&self, t: f64, (q, qd, qdd): (&Vector2<f64>, &Vector2<f64>, &Vector2<f64>), dt: f64) -> bool {
         if self.engine.lubrication.is_some() {
             let (s, ahead, ahead_rates) = predicted(q, qd, qdd, dt);
             let ((phi, phid), (phi0, phid0)) = (self.full_state(t + s, &ahead, &ahead_rates), self.full_state(t, q, qd));
             self.engine.begin_step((t + s, phi, phid), (t, phi0, phid0));
         }
+        self.engine.lubrication.is_some()
+    }
+
+    /// A step turns the crank by at most `MAX_STEP_ANGLE`. With two corners held the piston has no
+    /// freedom left, the error control nothing to measure, and the step would grow to `MAX_STEP`
+    /// whatever the speed: the quintic dense output of φ2 between such steps errs by ≈ (ω h)⁶, which
+    /// put the corners of `piston_lateral` 3.6e-7 m outside the bore at 8000 rpm.
+    fn step_bounds(&self, t: f64, _qd: &Vector2<f64>, gaps: &Vector4<f64>) -> StepBounds {
+        self.engine.step_bounds(self.speed.at(t), gaps)
     }
 
     fn coordinate_lengths(&self) -> Vector2<f64> {
@@ -444,47 +441,24 @@ impl System<2, 4> for PrescribedCrank {
         Vector2::new(lengths[1], lengths[2])
     }
 
-    /// A step turns the crank by at most `MAX_STEP_ANGLE`. With two corners held the piston has no
-    /// freedom left, the error control nothing to measure, and the step would grow to `MAX_STEP`
-    /// whatever the speed: the quintic dense output of φ2 between such steps errs by ≈ (ω h)⁶, which
-    /// put the corners of `piston_lateral` 3.6e-7 m outside the bore at 8000 rpm.
-    fn largest_step(&self, t: f64, _qd: &Vector2<f64>) -> f64 {
-        (MAX_STEP_ANGLE / self.speed.at(t).abs()).min(self.engine.largest_step())
-    }
-
-    fn local_error(&self, nominal: f64, gaps: &Vector4<f64>) -> f64 {
-        self.engine.local_error(nominal, gaps)
-    }
-
-    fn absorbs(&self) -> bool {
-        self.engine.lubrication.is_some()
-    }
-
     const POWERS: bool = true;
 
     /// The drive's power is its torque (`drive_torque`) times ω; the row kept at this state gives
-    /// the gas's and the damping's.
-    fn powers(
-        &self,
-        t: f64,
-        (q, qd, qdd): (&Vector2<f64>, &Vector2<f64>, &Vector2<f64>),
-        forces: (&Vector4<f64>, &Vector4<f64>),
-    ) -> Powers {
-        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
-        let (torque, row) = self.torque_and_row(t, (&phi, &phid, &crank), qdd, forces);
-        let phidd = Vector3::new(self.acceleration(t), qdd[0], qdd[1]);
-        self.engine.powers((&phi, &crank), &phid, &phidd, torque * phid[0], row.applied)
-    }
-
-    fn impact_mass(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>, _ev: &Evaluation<2, 4>) -> Matrix2<f64> {
-        self.impact_mass_full(t, q, qd).fixed_view::<2, 2>(1, 1).into_owned()
-    }
-
-    /// The crank keeps its speed through a jump.
-    fn absorbed_by_jump(&self, t: f64, q: &Vector2<f64>, before: &Vector2<f64>, after: &Vector2<f64>) -> Powers {
-        let (phi, before, crank) = self.full_state_and_crank(t, q, before);
-        let after = Vector3::new(before[0], after[0], after[1]);
-        self.engine.absorbed_by_jump(&phi, &LinkAngles::with_crank((crank.sin, crank.cos), &phi), &before, &after)
+    /// the gas's and the damping's. The crank keeps its speed through a jump.
+    fn powers(&self, t: f64, q: &Vector2<f64>, change: Change<'_, 2, 4>) -> Powers {
+        match change {
+            Change::Rates { v: qd, acc: qdd, forces } => {
+                let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
+                let (torque, row) = self.torque_and_row(t, (&phi, &phid, &crank), qdd, forces);
+                let phidd = Vector3::new(self.acceleration(t), qdd[0], qdd[1]);
+                self.engine.powers((&phi, &crank), &phid, &phidd, torque * phid[0], row.applied)
+            }
+            Change::Jump { before, after } => {
+                let (phi, before, crank) = self.full_state_and_crank(t, q, before);
+                let after = Vector3::new(before[0], after[0], after[1]);
+                self.engine.jump(&phi, &LinkAngles::with_crank((crank.sin, crank.cos), &phi), &before, &after)
+            }
+        }
     }
 
     fn restitution(&self) -> f64 {
@@ -509,10 +483,10 @@ impl System<2, 4> for PrescribedCrank {
     }
 }
 
-/// The rod and piston rows of the full M and f: the crank's angle is given, not a coordinate.
+/// The rod and piston block of a full inertia: the crank's angle is given, not a coordinate.
 #[inline(always)]
-fn rod_and_piston_rows(mass: &Matrix3<f64>, force: &Vector3<f64>) -> (Matrix2<f64>, Vector2<f64>) {
-    (mass.fixed_view::<2, 2>(1, 1).into_owned(), force.fixed_rows::<2>(1).into_owned())
+fn rod_and_piston(inertia: &Matrix3<f64>) -> Matrix2<f64> {
+    inertia.fixed_view::<2, 2>(1, 1).into_owned()
 }
 
 /// Crank, rod and piston, the crank loaded by the `load_torque` input.
@@ -534,48 +508,38 @@ impl System<3, 4> for FreeCrank {
         (mass, force)
     }
 
-    fn begin_step(&self, t: f64, (q, qd, qdd): (&Vector3<f64>, &Vector3<f64>, &Vector3<f64>), dt: f64) {
+    fn begin_step(&self, t: f64, (q, qd, qdd): (&Vector3<f64>, &Vector3<f64>, &Vector3<f64>), dt: f64) -> bool {
         if self.engine.lubrication.is_some() {
             let (s, phi, phid) = predicted(q, qd, qdd, dt);
             self.engine.begin_step((t + s, phi, phid), (t, *q, *qd));
         }
+        self.engine.lubrication.is_some()
+    }
+
+    /// A step turns the crank by at most `MAX_STEP_ANGLE`, as the prescribed crank's does: with two
+    /// corners held only the crank moves, at a speed RK4 follows whatever the step, so the error
+    /// control sees nothing while the held gaps drift as (ω h)⁵ (micrometres at 0.36 rad steps).
+    fn step_bounds(&self, _t: f64, qd: &Vector3<f64>, gaps: &Vector4<f64>) -> StepBounds {
+        self.engine.step_bounds(qd[0], gaps)
     }
 
     fn coordinate_lengths(&self) -> Vector3<f64> {
         self.engine.linkage.lengths()
     }
 
-    /// A step turns the crank by at most `MAX_STEP_ANGLE`, as the prescribed crank's does: with two
-    /// corners held only the crank moves, at a speed RK4 follows whatever the step, so the error
-    /// control sees nothing while the held gaps drift as (ω h)⁵ (micrometres at 0.36 rad steps).
-    fn largest_step(&self, _t: f64, qd: &Vector3<f64>) -> f64 {
-        (MAX_STEP_ANGLE / qd[0].abs()).min(self.engine.largest_step())
-    }
-
-    fn local_error(&self, nominal: f64, gaps: &Vector4<f64>) -> f64 {
-        self.engine.local_error(nominal, gaps)
-    }
-
-    fn absorbs(&self) -> bool {
-        self.engine.lubrication.is_some()
-    }
-
     const POWERS: bool = true;
 
     /// The load torque's power stands in the drive's channel.
-    fn powers(&self, t: f64, (q, qd, qdd): (&Vector3<f64>, &Vector3<f64>, &Vector3<f64>), _: (&Vector4<f64>, &Vector4<f64>)) -> Powers {
-        let crank = self.engine.crank(q[0]);
-        let trig = LinkAngles::with_crank((crank.sin, crank.cos), q);
-        let applied = self.engine.linkage.gas_and_damping_power(&trig, qd, self.engine.gas_force_at(t, &crank));
-        self.engine.powers((q, &crank), qd, qdd, -self.load_torque.at(t) * qd[0], applied)
-    }
-
-    fn impact_mass(&self, t: f64, q: &Vector3<f64>, qd: &Vector3<f64>, _ev: &Evaluation<3, 4>) -> Matrix3<f64> {
-        self.engine.impact_mass(t, q, qd, self.engine.crank(q[0]))
-    }
-
-    fn absorbed_by_jump(&self, _t: f64, q: &Vector3<f64>, before: &Vector3<f64>, after: &Vector3<f64>) -> Powers {
-        self.engine.absorbed_by_jump(q, &LinkAngles::new(q), before, after)
+    fn powers(&self, t: f64, q: &Vector3<f64>, change: Change<'_, 3, 4>) -> Powers {
+        match change {
+            Change::Rates { v: qd, acc: qdd, .. } => {
+                let crank = self.engine.crank(q[0]);
+                let trig = LinkAngles::with_crank((crank.sin, crank.cos), q);
+                let applied = self.engine.linkage.gas_and_damping_power(&trig, qd, self.engine.gas_force_at(t, &crank));
+                self.engine.powers((q, &crank), qd, qdd, -self.load_torque.at(t) * qd[0], applied)
+            }
+            Change::Jump { before, after } => self.engine.jump(q, &LinkAngles::new(q), before, after),
+        }
     }
 
     fn restitution(&self) -> f64 {

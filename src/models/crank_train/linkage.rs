@@ -246,6 +246,7 @@ impl Linkage {
         let (jacobian_1, jacobian_2) = (-l1 * c1, -l2 * c2);
         Evaluation {
             mass,
+            implicit: None,
             force,
             gap: self.corner_gaps(x_pin, s3, c3),
             gap_jacobian: nalgebra::Matrix4x3::from_fn(|i, j| {

@@ -27,7 +27,7 @@
 //! the relaxation's own work (D renewed at each film solve, so no function of the state either);
 //! each wall's push, its side's share of the lateral force with its share of the implicit term (and
 //! of the impulse at a projection), as two further channels: the film's and asperities' impulse on
-//! the liner. An impact acts through the linkage's inertia alone (`System::impact_mass`): the film,
+//! the liner. An impact acts through the linkage's inertia alone (`Evaluation::mass`): the film,
 //! a finite force, takes no impulse in it.
 //!
 //! Cost: the film is solved at most once per RK4 step (`Lubrication::begin_step`, from
@@ -210,14 +210,14 @@ impl Lubrication {
         self.design.relaxation / STEPS_PER_RELAXATION
     }
 
-    /// The local-error bound of a step starting at corner gaps `gaps`, m: `nominal` (the corners'
-    /// bound, `LOCAL_ERROR`) times [`CLEAR_ERROR_FACTOR`] while every corner is more than
-    /// [`CLEAR_GAP`] off the liner, `nominal` otherwise.
-    pub fn local_error(&self, nominal: f64, gaps: &Vector4<f64>) -> f64 {
+    /// The factor on the corners' local-error bound (`LOCAL_ERROR`) of a step starting at corner gaps
+    /// `gaps`: [`CLEAR_ERROR_FACTOR`] while every corner is more than [`CLEAR_GAP`] off the liner, 1
+    /// otherwise.
+    pub fn error_scale(&self, gaps: &Vector4<f64>) -> f64 {
         if gaps.min() > CLEAR_GAP {
-            nominal * CLEAR_ERROR_FACTOR
+            CLEAR_ERROR_FACTOR
         } else {
-            nominal
+            1.0
         }
     }
 
@@ -273,17 +273,17 @@ impl Lubrication {
         })
     }
 
-    /// The film's generalized force `Q − τ Gᵀ D Ġ φ̇ − τ c g ġ·φ̇` and its implicit inertia
-    /// `τ Gᵀ D G + τ c g gᵀ` at (φ, φ̇), added to the linkage's `M` and `f`; c the boundary
+    /// The film's generalized force `Q − τ Gᵀ D Ġ φ̇ − τ c g ġ·φ̇` at (φ, φ̇), added to the linkage's
+    /// `f`, and its implicit inertia `K = τ Gᵀ D G + τ c g gᵀ` (`Evaluation::implicit`); c the boundary
     /// friction's slope in the sliding speed (`SkirtLoads::boundary_damping`), made implicit as D is.
     #[inline(always)]
-    pub fn apply(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, (mass, force): (&mut Matrix3<f64>, &mut Vector3<f64>)) {
+    pub fn apply(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>, force: &mut Vector3<f64>) -> Matrix3<f64> {
         let k = self.kinematics(at, phid);
         let loads = self.loads(&k.motion);
         let tau = self.design.relaxation;
         let (damping, boundary) = (loads.damping * tau, loads.boundary_damping * tau);
         *force += generalized(&k, &loads) - k.lateral.transpose() * (damping * k.bias) - k.axial * (boundary * k.axial_bias);
-        *mass += k.lateral.transpose() * damping * k.lateral + k.axial * k.axial.transpose() * boundary;
+        k.lateral.transpose() * damping * k.lateral + k.axial * k.axial.transpose() * boundary
     }
 
     /// Both sides' film and asperity pressure and film thickness at (φ, φ̇), for plots.
@@ -328,7 +328,7 @@ impl Lubrication {
     /// φ takes, J: the negative of its work on the mean velocity (D and c at the velocity before), in
     /// the relaxation's channel; and each wall's share of its lateral impulse,
     /// `τ ∂P/∂(ẋ, φ̇3) G Δφ̇`, N·s (anti-thrust, thrust). The loads at the instant's rates take no impulse.
-    pub fn absorbed_by_jump(&self, at: (&Vector3<f64>, &LinkAngles), before: &Vector3<f64>, after: &Vector3<f64>) -> SkirtRates {
+    pub fn jump_books(&self, at: (&Vector3<f64>, &LinkAngles), before: &Vector3<f64>, after: &Vector3<f64>) -> SkirtRates {
         let k = self.kinematics(at, before);
         let loads = self.loads(&k.motion);
         let (jump, tau) = (k.lateral * (after - before), self.design.relaxation);

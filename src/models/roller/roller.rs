@@ -78,6 +78,7 @@ impl System<1, 2> for RollerSystem {
         let force = at.forcing(self.lambda) - self.lambda * qd[0] - at.stiffness() * q[0];
         Evaluation {
             mass: SMatrix::<f64, 1, 1>::new(self.mechanism.inertia()),
+            implicit: None,
             force: Vector1::new(force),
             gap: Vector2::new(limit.value + q[0], limit.value - q[0]),
             gap_jacobian: SMatrix::<f64, 2, 1>::new(1.0, -1.0),

@@ -1,11 +1,20 @@
-//! The held motion of a system whose inertia carries a force made linearly implicit (a stiff
-//! damper `−D q̇` applied as `−D (q̇ + τ q̈)`, its `K = τ D` added to `M`; see
-//! `System::powers`), with that implicit term kept out of the held constraints' normals.
+//! The implicit part of a stiff force (`Evaluation::implicit`), in one place: a damper `−D q̇`
+//! applied as `−D (q̇ + τ q̈)`, its `K = τ D` beside the inertia `M`.
 //!
-//! Through `M + K` the contact problem is the implicit term's, not the linkage's: where `K` ≫ `M`
-//! along the held normals, `W_NN = J (M + K)⁻¹ Jᵀ` shrinks with `K` while friction's coupling
+//! - Between events the motion takes `M + K` (`Evaluation::inertia`): a mode `m v̇ = −c v` relaxes at
+//!   `−c/(m + τ c) ≥ −1/τ`, inside RK4's stability region at steps up to τ however large c.
+//! - An impact takes `M` alone ([`for_impact`]): the force is finite and takes no impulse in an
+//!   instant. (Through `M + K`, Newton's law would dissipate in that metric, not in the kinetic
+//!   energy's: where D turns between impacts each impact could feed the motion.)
+//! - A held motion whose contact problem has no solution through `M + K` is held with `K` projected
+//!   off the held normals ([`Projected`], below).
+//! - The system books the work of `−K q̈` with its other rates (`System::powers`); the core adds the
+//!   share projected contacts take over from it ([`Projected::taken`], [`Projected::by_jump`]).
+//!
+//! The projection. Through `M + K` the contact problem is the implicit term's, not the motion's: where
+//! `K` ≫ `M` along the held normals, `W_NN = J (M + K)⁻¹ Jᵀ` shrinks with `K` while friction's coupling
 //! `W_NT` keeps its share, and the slipping contact problem can have no non-negative solution at
-//! a friction far below the linkage's critical one (Painlevé's paradox made by a numerical
+//! a friction far below the critical one (Painlevé's paradox made by a numerical
 //! device). Along a held normal the rate is the constraint's, so the damper is not stiff there:
 //! the implicit term is needed only in the motions the held contacts leave free. With `P` the
 //! `M`-orthogonal projector onto `ker J_H` and `a_p = −M⁻¹ J_Hᵀ W⁻¹ d_H` the acceleration the held
@@ -15,16 +24,29 @@
 //!
 //! the implicit force `−Pᵀ K q̈` instead of `−K q̈`, the difference `(I − Pᵀ) K q̈` (along `J_Hᵀ`)
 //! taken by the contact force. Since `P M⁻¹ J_Hᵀ = 0`, `(M + Pᵀ K P)⁻¹ J_Hᵀ = M⁻¹ J_Hᵀ`: the held
-//! rows' `W_NN` and `W_NT` are the linkage's own, whose friction the design space keeps below its
+//! rows' `W_NN` and `W_NT` are those of `M` alone, whose friction a well-posed system keeps below its
 //! critical coefficient. Without friction the motion is the one through `M + K`; only the normal
 //! force leaves out the implicit term's normal share.
 
-use super::complementarity::{Contacts, Frame, Set};
-use super::contact_laws::{sliding_law, Tolerances};
-use super::sample::motion;
-use super::system::absorbed;
-use super::{DynamicsError, Evaluation, Powers, Stepper, System};
+use super::complementarity::{Frame, Set};
+use super::system::implicit_share;
+use super::{DynamicsError, Evaluation, Powers};
 use nalgebra::{SMatrix, SVector};
+
+/// The evaluation and frame an impact at `t` acts through where `ev` has an implicit part: `ev`
+/// without it. None where it has none: `ev` and its frame are the impact's.
+#[allow(clippy::type_complexity)]
+pub(super) fn for_impact<const N: usize, const M: usize>(
+    ev: &Evaluation<N, M>,
+    t: f64,
+) -> Result<Option<(Evaluation<N, M>, Frame<N, M>)>, DynamicsError> {
+    if ev.implicit.is_none() {
+        return Ok(None);
+    }
+    let bare = Evaluation { implicit: None, ..ev.clone() };
+    let frame = Frame::new(&bare).ok_or(DynamicsError::SingularMass { time: t })?;
+    Ok(Some((bare, frame)))
+}
 
 /// A held motion's evaluation with the implicit term projected (see the module).
 pub(super) struct Projected<const N: usize, const M: usize> {
@@ -36,15 +58,10 @@ pub(super) struct Projected<const N: usize, const M: usize> {
 }
 
 impl<const N: usize, const M: usize> Projected<N, M> {
-    /// At `(t, q, q̇)`, the system's evaluation there `ev`, with `held` held.
-    pub fn new<S: System<N, M>>(
-        sys: &S,
-        ev: &Evaluation<N, M>,
-        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
-        held: Set,
-    ) -> Result<Self, DynamicsError> {
-        let bare = Evaluation { mass: sys.impact_mass(t, q, v, ev), ..ev.clone() };
-        let implicit = ev.mass - bare.mass;
+    /// At `t`, the system's evaluation there `ev`, with `held` held.
+    pub fn new(ev: &Evaluation<N, M>, t: f64, held: Set) -> Result<Self, DynamicsError> {
+        let bare = Evaluation { implicit: None, ..ev.clone() };
+        let implicit = ev.implicit.unwrap_or_else(SMatrix::zeros);
         let frame = Frame::new(&bare).ok_or(DynamicsError::SingularMass { time: t })?;
         let dependent = || DynamicsError::DependentContacts { time: t, constraints: held };
         let mut projector = SMatrix::<f64, N, N>::identity();
@@ -55,12 +72,12 @@ impl<const N: usize, const M: usize> Projected<N, M> {
         }
         let imposed = frame.projection(&ev.gap_bias, held).ok_or_else(dependent)?.0;
         let taken = projector.transpose() * implicit;
-        let (mass, force) = (bare.mass + taken * projector, ev.force - taken * imposed);
-        Ok(Self { ev: Evaluation { mass, force, ..bare }, projector, implicit })
+        let force = ev.force - taken * imposed;
+        Ok(Self { ev: Evaluation { implicit: Some(taken * projector), force, ..bare }, projector, implicit })
     }
 
     /// The power the held contacts take over from the implicit force at `(q̇, q̈)`,
-    /// `((Pᵀ K − K) q̈)·q̇`, W: the system's absorbed power, reckoned with `−K q̈`, plus this is
+    /// `((Pᵀ K − K) q̈)·q̇`, W: the system's power of the implicit part, reckoned with `−K q̈`, plus this is
     /// what the force applied here takes.
     pub fn taken(&self, v: &SVector<f64, N>, acc: &SVector<f64, N>) -> f64 {
         ((self.projector.transpose() * self.implicit - self.implicit) * acc).dot(v)
@@ -71,45 +88,12 @@ impl<const N: usize, const M: usize> Projected<N, M> {
     pub fn by_jump(&self, before: &SVector<f64, N>, after: &SVector<f64, N>) -> Powers {
         let mean = (before + after) * 0.5;
         let impulse = self.projector.transpose() * self.implicit * self.projector * (after - before);
-        absorbed(mean.dot(&impulse))
+        implicit_share(mean.dot(&impulse))
     }
 
     /// The contact frame of the projected evaluation.
     pub fn frame(&self, t: f64) -> Result<Frame<N, M>, DynamicsError> {
         Frame::new(&self.ev).ok_or(DynamicsError::SingularMass { time: t })
-    }
-}
-
-impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
-    /// The law of persistent contact over `candidates` at `(t, q, q̇)` (`sliding_law`); where the
-    /// system's implicit inertia leaves it without a solution, the law with that inertia projected
-    /// off every candidate's normal: the normal rows are then the linkage's own, and its answer is
-    /// the contact problem of the linkage with the film's forces at the instant's rates. The set it
-    /// holds is held with the projection off its own normals. A candidate it opens that the film's
-    /// implicit term pushes back (where the linkage leaves the liner while the film's relaxation
-    /// returns it) closes again along the motion, and the laws decide anew at that event.
-    /// Returns the contacts and `q̈` of their motion.
-    pub(super) fn persistent_law(
-        &self,
-        tol: Tolerances,
-        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
-        (ev, frame): (&Evaluation<N, M>, &Frame<N, M>),
-        candidates: Set,
-    ) -> Result<(Contacts, SVector<f64, N>), DynamicsError> {
-        let probe = |contacts, steps| self.probe((t, q, v), ev, contacts, steps);
-        let through_implicit = sliding_law(&self.system, tol, (t, q, v), (ev, frame), candidates, &probe);
-        if !self.system.absorbs() || !matches!(through_implicit, Err(DynamicsError::ContactUnresolved { .. })) {
-            return through_implicit;
-        }
-        let projected = Projected::new(&self.system, ev, (t, q, v), candidates)?;
-        let probe = |contacts: Contacts, steps| {
-            let contacts = Contacts { projected: true, ..contacts };
-            let (t, q, v, ev) = self.probe((t, q, v), ev, contacts, steps)?;
-            Ok((t, q, v, Projected::new(&self.system, &ev, (t, &q, &v), candidates)?.ev))
-        };
-        let (contacts, _) = sliding_law(&self.system, tol, (t, q, v), (&projected.ev, &projected.frame(t)?), candidates, &probe)?;
-        let contacts = Contacts { projected: contacts.held != 0, ..contacts };
-        Ok((contacts, motion(&self.system, ev, (t, q, v), contacts)?.acc))
     }
 }
 
@@ -120,26 +104,8 @@ mod tests {
     use super::*;
     use nalgebra::{SMatrix, SVector};
 
-    /// A linkage of inertia `M` whose evaluation adds an implicit `K` (`M + K`, `impact_mass` `M`).
-    struct Implicit {
-        ev: Evaluation<3, 2>,
-        bare: SMatrix<f64, 3, 3>,
-    }
-
-    impl System<3, 2> for Implicit {
-        fn evaluate(&self, _: f64, _: &SVector<f64, 3>, _: &SVector<f64, 3>) -> Evaluation<3, 2> {
-            self.ev.clone()
-        }
-        fn impact_mass(&self, _: f64, _: &SVector<f64, 3>, _: &SVector<f64, 3>, _: &Evaluation<3, 2>) -> SMatrix<f64, 3, 3> {
-            self.bare
-        }
-        fn restitution(&self) -> f64 {
-            0.0
-        }
-    }
-
     /// Random linkages with an implicit term up to 1e4 times their inertia, one or two constraints
-    /// held: the held rows of `W_NN` and `W_NT` through the projection are the linkage's own (to
+    /// held: the held rows of `W_NN` and `W_NT` through the projection are those of `M` alone (to
     /// round-off of `K`), and without friction the held motion is the one through `M + K`, its
     /// normal force less the implicit term's normal share `(J M⁻¹ Jᵀ)⁻¹ J M⁻¹ K q̈`.
     #[test]
@@ -149,8 +115,9 @@ mod tests {
             let bare = positive_definite::<3>(&mut random);
             let root = SMatrix::<f64, 3, 3>::from_fn(|_, _| random());
             let implicit = root * root.transpose() * libm::pow(10.0, 4.0 * (random() + 0.5));
-            let ev = Evaluation {
-                mass: bare + implicit,
+            let ev = Evaluation::<3, 2> {
+                mass: bare,
+                implicit: Some(implicit),
                 force: SVector::from_fn(|_, _| random()),
                 gap: SVector::zeros(),
                 gap_jacobian: SMatrix::from_fn(|_, _| random()),
@@ -159,11 +126,9 @@ mod tests {
             };
             let tangents = SMatrix::<f64, 2, 3>::from_fn(|_, _| random());
             let held = if case % 2 == 0 { 0b01 } else { 0b11 };
-            let sys = Implicit { ev: ev.clone(), bare };
-            let zero = SVector::<f64, 3>::zeros();
-            let projected = Projected::new(&sys, &ev, (0.0, &zero, &zero), held).unwrap();
+            let projected = Projected::new(&ev, 0.0, held).unwrap();
             let inverse = |m: SMatrix<f64, 3, 3>| m.try_inverse().unwrap();
-            let (through, linkage) = (inverse(projected.ev.mass), inverse(bare));
+            let (through, linkage) = (inverse(projected.ev.inertia()), inverse(bare));
             let scale = implicit.amax() / bare.amax();
             for i in (0..2).filter(|&i| held >> i & 1 == 1) {
                 let row = ev.gap_jacobian.row(i);
