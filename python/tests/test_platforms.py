@@ -1,8 +1,9 @@
 """Every platform the FMUs carry, run for real: the win64 DLL under Wine and the linux64 binary natively, driven by
 the same C host (tests/c_host/trace.c, which prints every output's bits after every step), give bit-identical
 outputs in every scenario, and an FMU state saved on one platform continues on the other. The binaries' symbol
-tables: exactly the fmi2 functions exported, no glibc symbol newer than the 2.28 baseline, only system DLLs
-imported. `make test` installs the cross toolchain (`make toolchain`); a missing piece fails these tests."""
+tables: exactly the fmi2 Co-Simulation functions and the fmi3 functions exported, no glibc symbol newer than the 2.28
+baseline, only system DLLs imported. `make test` installs the cross toolchain (`make toolchain`); a missing piece
+fails these tests."""
 
 import re
 import shutil
@@ -132,20 +133,26 @@ def fmi2_functions():
 
 FMI2_FUNCTIONS = fmi2_functions()
 
+#: Every FMI 3.0 function (fmi_headers/fmi3Functions.h): hosts bind them all, the FMUs refuse the absent ones.
+FMI3_FUNCTIONS = set(re.findall(r"(fmi3\w+);", (ROOT / "fmi_headers" / "fmi3Functions.h").read_text()))
 
-def test_the_header_lists_the_34_co_simulation_functions():
+EXPORTED = FMI2_FUNCTIONS | FMI3_FUNCTIONS
+
+
+def test_the_headers_list_the_34_co_simulation_functions_and_fmi3s_75():
     assert len(FMI2_FUNCTIONS) == 34 and {"fmi2DoStep", "fmi2Instantiate"} <= FMI2_FUNCTIONS
+    assert len(FMI3_FUNCTIONS) == 75 and {"fmi3DoStep", "fmi3InstantiateCoSimulation"} <= FMI3_FUNCTIONS
 
 
 @pytest.mark.parametrize("name", ["PistonSlap", "EngineCycle"])
-def test_linux64_exports_only_fmi2_and_needs_glibc_2_28(build, name):
+def test_linux64_exports_only_fmi_functions_and_needs_glibc_2_28(build, name):
     _, fmus = build
     so = fmus[name][0] / "binaries" / "linux64" / f"{name}.so"
     table = objdump(so, "-T")
     defined = {
         line.split()[-1] for line in table.splitlines() if re.match(r"[0-9a-f]+ g ", line) and "*UND*" not in line
     }
-    assert defined == FMI2_FUNCTIONS, defined ^ FMI2_FUNCTIONS
+    assert defined == EXPORTED, defined ^ EXPORTED
     versions = {tuple(int(p) for p in v.split(".")) for v in re.findall(r"GLIBC_([0-9.]+)", table)}
     assert versions and max(versions) <= GLIBC_BASELINE, sorted(versions)[-3:]
     needed = set(re.findall(r"NEEDED\s+(\S+)", objdump(so, "-p")))
@@ -153,12 +160,12 @@ def test_linux64_exports_only_fmi2_and_needs_glibc_2_28(build, name):
 
 
 @pytest.mark.parametrize("name", ["PistonSlap", "EngineCycle"])
-def test_win64_exports_only_fmi2_and_imports_only_system_dlls(build, name):
+def test_win64_exports_only_fmi_functions_and_imports_only_system_dlls(build, name):
     _, fmus = build
     headers = objdump(fmus[name][0] / "binaries" / "win64" / f"{name}.dll", "-p")
     exports = headers.split("[Ordinal/Name Pointer] Table")[-1]
-    assert set(re.findall(r"\]\s+(fmi2\w+)", exports)) == FMI2_FUNCTIONS
-    assert len(re.findall(r"^\s+\[\s*\d+\]\s+\w+$", exports, re.M)) == len(FMI2_FUNCTIONS)
+    assert set(re.findall(r"\]\s+(fmi[23]\w+)", exports)) == EXPORTED
+    assert len(re.findall(r"^\s+\[\s*\d+\]\s+\w+$", exports, re.M)) == len(EXPORTED)
     imported = {d.lower() for d in re.findall(r"DLL Name: (\S+)", headers)}
     assert imported <= SYSTEM_DLLS, imported - SYSTEM_DLLS
 
