@@ -105,7 +105,11 @@ fn run() -> Result<(), String> {
             ];
             entries.extend(package.files.iter().map(|&(path, bytes)| (path.to_string(), bytes.to_vec(), false)));
             for (platform, copy) in &stamped {
-                entries.push((format!("binaries/{}/{}.{}", (version.folder)(platform), package.name, platform.extension), copy.clone(), true));
+                entries.push((
+                    format!("binaries/{}/{}.{}", (version.folder)(platform), package.name, platform.extension),
+                    copy.clone(),
+                    true,
+                ));
             }
             let out = out_dir.join(format!("{}{}.fmu", package.name, version.suffix));
             write_fmu(&out, &entries).map_err(|e| format!("cannot write {}: {e}", out.display()))?;
