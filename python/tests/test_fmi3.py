@@ -60,6 +60,18 @@ def test_the_default_experiment_gives_fmi2s_results_bit_for_bit(name):
         assert exact(fmi3[column]) == exact(fmi2[column]), column
 
 
+def test_early_return_allowed_changes_nothing_and_event_mode_is_refused():
+    """The FMUs never return early (canReturnEarlyAfterIntermediateUpdate = false): allowed, the run is FMI 2.0's; they
+    have no Event Mode (hasEventMode = false), so an instantiation that asks for it is refused, as the standard says."""
+    fmi2 = fmpy.simulate_fmu(fmu("PistonSlap", 2), stop_time=0.02)
+    allowed = fmpy.simulate_fmu(fmu("PistonSlap", 3), stop_time=0.02, early_return_allowed=True)
+    assert all(exact(allowed[c]) == exact(fmi2[c]) for c in fmi2.dtype.names)
+    messages = []
+    with pytest.raises(Exception, match="Failed to instantiate"):
+        fmpy.simulate_fmu(fmu("PistonSlap", 3), use_event_mode=True, logger=lambda *args: messages.append(args[-1]))
+    assert any(b"eventModeUsed = true refused" in m for m in messages), messages
+
+
 class Slave:
     """One instance of either version's FMU through fmpy, with the calls a master makes by variable name."""
 
