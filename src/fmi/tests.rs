@@ -484,6 +484,7 @@ fn strings_status_queries_and_debug_logging() {
     std::fs::remove_file(&path).unwrap();
 }
 
+mod fmi3;
 mod fmu_state;
 mod fuzz;
 mod reentry;
