@@ -37,7 +37,7 @@ pub struct Component<E: Model> {
 ///
 /// # Safety
 /// `c` is NULL, an instance of this model made by [`instantiate`], or memory readable as one.
-pub(super) unsafe fn call<E: Model>(c: fmi2Component, function: Function, f: impl FnOnce(&mut Component<E>) -> Outcome<Status>) -> Status {
+unsafe fn call<E: Model>(c: fmi2Component, function: Function, f: impl FnOnce(&mut Component<E>) -> Outcome<Status>) -> Status {
     // Not logged: the logger is what called back in.
     let Some(_call) = Entered::new(c as usize) else {
         return Status::Error;
@@ -273,7 +273,7 @@ type Reader<E, T> = for<'a> fn(u32, &'a <E as Model>::Parameters, &'a <E as Mode
 ///
 /// # Safety
 /// As [`call`]; `vr` and `value` are NULL or point to `n` elements.
-pub(super) unsafe fn get<E: Model, T: Copy>(
+unsafe fn get<E: Model, T: Copy>(
     c: fmi2Component,
     function: Function,
     kind: Kind,
