@@ -6,6 +6,8 @@ VENV_PYTHON := $(VENV)/bin/python
 VENV_STAMP := $(VENV)/.installed
 FMU := target/fmu/PistonSlap.fmu
 ENGINE_FMU := target/fmu/EngineCycle.fmu
+FMU3 := target/fmu/PistonSlap3.fmu
+ENGINE_FMU3 := target/fmu/EngineCycle3.fmu
 
 PISTONSLAP := $(VENV)/bin/pistonslap
 # The cross toolchain (build/toolchain.sh): pinned, unpacked once per machine.
@@ -22,13 +24,12 @@ toolchain:
 	build/toolchain.sh $(CROSS_CACHE)
 
 # cargo decides what to rebuild, so this always asks it. One binary per platform (linux64, and win64 where
-# `make toolchain` ran), packed as PistonSlap.fmu and as its partner EngineCycle.fmu; the Python package carries
-# a copy of both.
+# `make toolchain` ran), packed as PistonSlap.fmu and as its partner EngineCycle.fmu, and as their FMI 3.0 twins
+# PistonSlap3.fmu and EngineCycle3.fmu (the same binary); the Python package carries a copy of all four.
 fmu:
 	build/fmu.sh $(CROSS_CACHE)
 	mkdir -p python/pistonslap/fmu
-	cp $(FMU) python/pistonslap/fmu/PistonSlap.fmu
-	cp $(ENGINE_FMU) python/pistonslap/fmu/EngineCycle.fmu
+	cp $(FMU) $(ENGINE_FMU) $(FMU3) $(ENGINE_FMU3) python/pistonslap/fmu/
 
 # Created once from PyPI with the pinned versions, again only when they or the package's metadata change;
 # the package is installed editable (its code and FMU copy stay in python/), with the `pistonslap` command.

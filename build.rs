@@ -1,6 +1,7 @@
 //! Turns each variable table `modelDescription/<fmu>.xml` (the one source of truth of its FMU) into, in OUT_DIR,
 //! with the prefix `<fmu>_`:
-//! - `modelDescription.xml`: the FMI 2.0 model description shipped in the FMU;
+//! - `modelDescription.xml` and `fmi3ModelDescription.xml`: the FMI 2.0 and FMI 3.0 model descriptions shipped
+//!   in the FMUs (`<fmu>.fmu`, `<fmu>3.fmu`);
 //! - `variables.rs`: the GUID, the variable table and the value-reference dispatch onto the fields of
 //!   `Parameters`, `Inputs` and `Outputs` (included by the FMU's room, `src/fmus/<fmu>/variables.rs`);
 //! - `contract.rs`: the macros `parameters_struct!`, `inputs_struct!` and `outputs_struct!` that declare the
@@ -12,9 +13,12 @@
 //!
 //! Value references are the positions in the table (0, 1, …); ModelStructure indices are those plus one.
 
+#[path = "build/fmi3_model_description.rs"]
+mod fmi3_model_description;
 #[path = "build/model_description.rs"]
 mod model_description;
 
+use fmi3_model_description::fmi3_model_description;
 use model_description::{guid_of, model_description, LOG_CATEGORIES};
 use quick_xml::events::{BytesDecl, BytesText, Event};
 use quick_xml::Writer;
@@ -198,6 +202,10 @@ fn main() {
         let out = Path::new(&out_dir);
         let write = |name: &str, text: &[u8]| std::fs::write(out.join(format!("{prefix}{name}")), text).expect("write OUT_DIR");
         write("modelDescription.xml", &model_description(&table, &variables, &guid, path).expect("write modelDescription.xml"));
+        write(
+            "fmi3ModelDescription.xml",
+            &fmi3_model_description(&table, &variables, &guid, path).expect("write fmi3ModelDescription.xml"),
+        );
         write("variables.rs", variables_rs(&variables, &guid, &table.model_name, &prefix).as_bytes());
         write("contract.rs", contract_rs(&variables, &table).as_bytes());
     }
@@ -278,6 +286,7 @@ fn variables_rs(variables: &[Resolved], guid: &str, model_name: &str, prefix: &s
         "/// The table with its dispatch.\npub const DESCRIPTION: Description<Parameters, Inputs, Outputs> = Description {{\n    \
          model_name: {model_name:?},\n    guid: GUID,\n    \
          model_description_xml: include_str!(concat!(env!(\"OUT_DIR\"), \"/{prefix}modelDescription.xml\")),\n    \
+         fmi3_model_description_xml: include_str!(concat!(env!(\"OUT_DIR\"), \"/{prefix}fmi3ModelDescription.xml\")),\n    \
          variables: &VARIABLES,\n    get_real,\n    get_integer,\n    get_string,\n    real_mut,\n    integer_mut,\n    string_mut,\n}};\n"
     );
     s

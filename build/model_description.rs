@@ -1,11 +1,11 @@
 //! The FMI 2.0 model description written from a variable table (`modelDescription.xml` of the FMU), its
-//! GUID and its generation date.
+//! GUID and its generation date, and the XML writing both versions' descriptions share.
 
 use super::*;
 
 /// When the XML is generated, as FMI's xs:dateTime in UTC: `SOURCE_DATE_EPOCH` (seconds) when set,
 /// for reproducible builds, else now.
-fn generation_date_and_time() -> String {
+pub(super) fn generation_date_and_time() -> String {
     let seconds = std::env::var("SOURCE_DATE_EPOCH").ok().and_then(|s| s.parse::<u64>().ok()).unwrap_or_else(|| {
         let now = std::time::SystemTime::now().duration_since(std::time::UNIX_EPOCH);
         now.expect("clock after 1970").as_secs()
@@ -31,16 +31,16 @@ pub(super) fn guid_of(source: &str) -> String {
     format!("{{{:08x}-{:04x}-{:04x}-{:04x}-{:012x}}}", a >> 32, (a >> 16) & 0xffff, a & 0xffff, b >> 48, b & 0xffff_ffff_ffff)
 }
 
-type Xml = Writer<Vec<u8>>;
+pub(super) type Xml = Writer<Vec<u8>>;
 
 /// `<name attributes/>`.
-fn empty<'a>(w: &mut Xml, name: &str, attributes: impl IntoIterator<Item = (&'a str, &'a str)>) -> io::Result<()> {
+pub(super) fn empty<'a>(w: &mut Xml, name: &str, attributes: impl IntoIterator<Item = (&'a str, &'a str)>) -> io::Result<()> {
     w.create_element(name).with_attributes(attributes).write_empty()?;
     Ok(())
 }
 
 /// `<name attributes>inner</name>`.
-fn parent<'a>(
+pub(super) fn parent<'a>(
     w: &mut Xml,
     name: &str,
     attributes: impl IntoIterator<Item = (&'a str, &'a str)>,
@@ -50,25 +50,45 @@ fn parent<'a>(
     Ok(())
 }
 
-pub(super) fn model_description(table: &Table, variables: &[Resolved], guid: &str, path: &str) -> io::Result<Vec<u8>> {
+/// The document both FMI versions write: the XML declaration and the root `fmiModelDescription` with
+/// `root`'s attributes, opened by a comment naming the table; `inner` writes the elements.
+pub(super) fn document(
+    root: &[(&str, &str)],
+    path: &str,
+    variables: &[Resolved],
+    inner: impl FnOnce(&mut Xml) -> io::Result<()>,
+) -> io::Result<Vec<u8>> {
     let mut w = Writer::new_with_indent(Vec::new(), b' ', 2);
     w.write_event(Event::Decl(BytesDecl::new("1.0", Some("UTF-8"), None)))?;
-    let generated = generation_date_and_time();
-    let root = [
-        ("fmiVersion", "2.0"),
-        ("modelName", table.model_name.as_str()),
-        ("guid", guid),
+    parent(&mut w, "fmiModelDescription", root.iter().copied(), |w| {
+        let comment = format!(" generated from {path}: {} variables ", variables.len());
+        w.write_event(Event::Comment(BytesText::new(&comment)))?;
+        inner(w)
+    })?;
+    let mut xml = w.into_inner();
+    xml.push(b'\n');
+    Ok(xml)
+}
+
+/// The root attributes both versions share after `fmiVersion`, `modelName` and the table's fingerprint:
+/// (name, value).
+pub(super) fn common_root<'a>(table: &'a Table, generated: &'a str) -> [(&'a str, &'a str); 6] {
+    [
         ("description", table.description.as_str()),
         ("version", env!("CARGO_PKG_VERSION")),
         ("license", "MIT"),
         ("generationTool", "PistonSlap build.rs"),
-        ("generationDateAndTime", &generated),
+        ("generationDateAndTime", generated),
         ("variableNamingConvention", "flat"),
-        ("numberOfEventIndicators", "0"),
-    ];
-    parent(&mut w, "fmiModelDescription", root, |w| {
-        let comment = format!(" generated from {path}: {} variables ", variables.len());
-        w.write_event(Event::Comment(BytesText::new(&comment)))?;
+    ]
+}
+
+pub(super) fn model_description(table: &Table, variables: &[Resolved], guid: &str, path: &str) -> io::Result<Vec<u8>> {
+    let generated = generation_date_and_time();
+    let mut root = vec![("fmiVersion", "2.0"), ("modelName", table.model_name.as_str()), ("guid", guid)];
+    root.extend(common_root(table, &generated));
+    root.push(("numberOfEventIndicators", "0"));
+    document(&root, path, variables, |w| {
         let capabilities = [
             ("modelIdentifier", table.model_name.as_str()),
             ("needsExecutionTool", "false"),
@@ -83,18 +103,33 @@ pub(super) fn model_description(table: &Table, variables: &[Resolved], guid: &st
             ("providesDirectionalDerivative", "false"),
         ];
         empty(w, "CoSimulation", capabilities)?;
-        write_units_and_types(w, table)?;
-        parent(w, "LogCategories", [], |w| {
-            LOG_CATEGORIES.iter().try_for_each(|&(name, description)| empty(w, "Category", [("name", name), ("description", description)]))
+        write_units(w, table)?;
+        parent(w, "TypeDefinitions", [], |w| {
+            table
+                .types
+                .items
+                .iter()
+                .try_for_each(|t| parent(w, "SimpleType", [("name", t.name.as_str())], |w| empty(w, "Real", type_attributes(t))))
         })?;
-        let e = &table.experiment;
-        empty(w, "DefaultExperiment", [("startTime", e.start.as_str()), ("stopTime", e.stop.as_str()), ("stepSize", e.step.as_str())])?;
+        write_log_categories_and_experiment(w, table)?;
         write_variables(w, variables)?;
         write_structure(w, variables)
+    })
+}
+
+/// A declared type's quantity, unit and display unit, as both versions' type definitions give them.
+pub(super) fn type_attributes(t: &TypeDef) -> impl Iterator<Item = (&str, &str)> {
+    let display_unit = t.display_unit.as_deref().map(|d| ("displayUnit", d));
+    [("quantity", t.quantity.as_str()), ("unit", t.unit.as_str())].into_iter().chain(display_unit)
+}
+
+/// `LogCategories` and `DefaultExperiment`, alike in both versions.
+pub(super) fn write_log_categories_and_experiment(w: &mut Xml, table: &Table) -> io::Result<()> {
+    parent(w, "LogCategories", [], |w| {
+        LOG_CATEGORIES.iter().try_for_each(|&(name, description)| empty(w, "Category", [("name", name), ("description", description)]))
     })?;
-    let mut xml = w.into_inner();
-    xml.push(b'\n');
-    Ok(xml)
+    let e = &table.experiment;
+    empty(w, "DefaultExperiment", [("startTime", e.start.as_str()), ("stopTime", e.stop.as_str()), ("stepSize", e.step.as_str())])
 }
 
 /// Log categories: (name, description). The FMI layer accepts exactly these in fmi2SetDebugLogging.
@@ -104,7 +139,8 @@ pub(super) const LOG_CATEGORIES: [(&str, &str); 3] = [
     ("logEvents", "Debug: events during doStep (PistonSlap: impacts and sliding starts/releases)"),
 ];
 
-fn write_units_and_types(w: &mut Xml, table: &Table) -> io::Result<()> {
+/// `UnitDefinitions`, alike in both versions.
+pub(super) fn write_units(w: &mut Xml, table: &Table) -> io::Result<()> {
     parent(w, "UnitDefinitions", [], |w| {
         table.units.items.iter().try_for_each(|u| {
             parent(w, "Unit", [("name", u.name.as_str())], |w| {
@@ -112,64 +148,80 @@ fn write_units_and_types(w: &mut Xml, table: &Table) -> io::Result<()> {
                 u.display.iter().try_for_each(|d| empty(w, "DisplayUnit", [("name", d.name.as_str()), ("factor", d.factor.as_str())]))
             })
         })
-    })?;
-    parent(w, "TypeDefinitions", [], |w| {
-        table.types.items.iter().try_for_each(|t| {
-            parent(w, "SimpleType", [("name", t.name.as_str())], |w| {
-                let display_unit = t.display_unit.as_deref().map(|d| ("displayUnit", d));
-                empty(w, "Real", [("quantity", t.quantity.as_str()), ("unit", t.unit.as_str())].into_iter().chain(display_unit))
-            })
-        })
     })
+}
+
+/// A variable's own attributes: name, value reference, description, causality, variability and, for
+/// parameters, initial (FMI 2.0 writes them on `ScalarVariable`, FMI 3.0 on the type element).
+pub(super) fn variable_attributes(v: &Resolved) -> Vec<(&'static str, String)> {
+    let a = v.a;
+    let mut attributes = vec![
+        ("name", a.name.clone()),
+        ("valueReference", v.vr.to_string()),
+        ("description", a.description.clone()),
+        ("causality", a.causality.clone()),
+        ("variability", v.variability().to_string()),
+    ];
+    if a.causality == "parameter" {
+        attributes.push(("initial", "exact".to_string()));
+    }
+    attributes
+}
+
+/// A variable's value attributes that the table gives: declared type, unit, display unit, start, min, max.
+/// unit and displayUnit repeat the declared type's: hosts that do not resolve declaredType (fmpy's
+/// ModelVariable.unit) still see them.
+pub(super) fn value_attributes(v: &Resolved) -> Vec<(&'static str, String)> {
+    let a = v.a;
+    let (unit, display_unit) = (v.unit.map(str::to_string), v.display_unit.map(str::to_string));
+    let optional = [
+        ("declaredType", &a.declared_type),
+        ("unit", &unit),
+        ("displayUnit", &display_unit),
+        ("start", &a.start),
+        ("min", &a.min),
+        ("max", &a.max),
+    ];
+    optional.into_iter().filter_map(|(k, v)| v.clone().map(|v| (k, v))).collect()
+}
+
+/// `(name, value)` pairs as the writer takes them.
+pub(super) fn borrowed<'a>(attributes: &'a [(&'a str, String)]) -> impl Iterator<Item = (&'a str, &'a str)> {
+    attributes.iter().map(|(k, v)| (*k, v.as_str()))
 }
 
 fn write_variables(w: &mut Xml, variables: &[Resolved]) -> io::Result<()> {
     parent(w, "ModelVariables", [], |w| {
         variables.iter().try_for_each(|v| {
-            let (a, vr) = (v.a, v.vr.to_string());
-            let initial = (a.causality == "parameter").then_some(("initial", "exact"));
-            let attributes = [
-                ("name", a.name.as_str()),
-                ("valueReference", vr.as_str()),
-                ("description", a.description.as_str()),
-                ("causality", a.causality.as_str()),
-                ("variability", v.variability()),
-            ];
-            parent(w, "ScalarVariable", attributes.into_iter().chain(initial), |w| {
-                // unit and displayUnit repeat the declared type's: hosts that do not resolve
-                // declaredType (fmpy's ModelVariable.unit) still see them.
-                let (unit, display_unit) = (v.unit.map(str::to_string), v.display_unit.map(str::to_string));
-                let optional = [
-                    ("declaredType", &a.declared_type),
-                    ("unit", &unit),
-                    ("displayUnit", &display_unit),
-                    ("start", &a.start),
-                    ("min", &a.min),
-                    ("max", &a.max),
-                ];
-                empty(w, v.kind, present(&optional))
-            })
+            let (own, value) = (variable_attributes(v), value_attributes(v));
+            parent(w, "ScalarVariable", borrowed(&own), |w| empty(w, v.kind, borrowed(&value)))
         })
     })
 }
 
-/// Outputs are computed at the end of each doStep from the state: no direct feedthrough from the inputs
-/// (dependencies=""). Initially the impact statistics are constants, the kinematics and forces depend on
-/// the inputs and the parameters (except the log file name).
-fn write_structure(w: &mut Xml, variables: &[Resolved]) -> io::Result<()> {
-    let outputs: Vec<&Resolved> = variables.iter().filter(|v| v.a.causality == "output").collect();
+/// Per output, its reference (`reference` of it) and its initial dependencies: with initialDeps="knowns" the
+/// references of every input and parameter but the strings, none otherwise. Outputs are computed at the end
+/// of each doStep from the state, so during the run they depend on no input (no direct feedthrough).
+/// Initially the impact statistics are constants, the kinematics and forces depend on the inputs and the
+/// parameters (except the file names).
+pub(super) fn output_dependencies(variables: &[Resolved], reference: impl Fn(&Resolved) -> String) -> Vec<(String, String)> {
     let knowns: Vec<String> = variables
         .iter()
         .filter(|v| matches!(v.a.causality.as_str(), "input" | "parameter") && v.kind != "String")
-        .map(|v| (v.vr + 1).to_string())
+        .map(&reference)
         .collect();
     let knowns = knowns.join(" ");
-    // Initially, outputs marked initialDeps="knowns" depend on every input and parameter.
+    let outputs = variables.iter().filter(|v| v.a.causality == "output");
+    outputs.map(|v| (reference(v), if v.a.initial_deps.as_deref() == Some("knowns") { knowns.clone() } else { String::new() })).collect()
+}
+
+/// FMI 2.0's structure: the outputs and initial unknowns by index (value reference + 1).
+fn write_structure(w: &mut Xml, variables: &[Resolved]) -> io::Result<()> {
+    let outputs = output_dependencies(variables, |v| (v.vr + 1).to_string());
     let unknowns = |w: &mut Xml, name: &str, initial: bool| {
         parent(w, name, [], |w| {
-            outputs.iter().try_for_each(|v| {
-                let deps = if initial && v.a.initial_deps.as_deref() == Some("knowns") { knowns.as_str() } else { "" };
-                empty(w, "Unknown", [("index", (v.vr + 1).to_string().as_str()), ("dependencies", deps)])
+            outputs.iter().try_for_each(|(index, deps)| {
+                empty(w, "Unknown", [("index", index.as_str()), ("dependencies", if initial { deps.as_str() } else { "" })])
             })
         })
     };

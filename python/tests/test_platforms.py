@@ -1,8 +1,10 @@
 """Every platform the FMUs carry, run for real: the win64 DLL under Wine and the linux64 binary natively, driven by
 the same C host (tests/c_host/trace.c, which prints every output's bits after every step), give bit-identical
-outputs in every scenario, and an FMU state saved on one platform continues on the other. The binaries' symbol
-tables: exactly the fmi2 functions exported, no glibc symbol newer than the 2.28 baseline, only system DLLs
-imported. `make test` installs the cross toolchain (`make toolchain`); a missing piece fails these tests."""
+outputs in every scenario, so do the FMI 3.0 FMUs' x86_64-windows and x86_64-linux binaries driven by the host's
+FMI 3.0 build, and an FMU state saved on one platform continues on the other. The binaries' symbol
+tables: exactly the fmi2 Co-Simulation functions and the fmi3 functions exported, no glibc symbol newer than the 2.28
+baseline, only system DLLs imported. `make test` installs the cross toolchain (`make toolchain`); a missing piece
+fails these tests."""
 
 import re
 import shutil
@@ -42,57 +44,72 @@ SCENARIOS = {
 }
 
 
+#: platform folder: (FMI version, run under Wine). The FMI 3.0 FMUs carry the FMI 2.0 FMUs' binaries under FMI 3.0's
+#: folder names; the host (trace.c) is compiled for each version.
+PLATFORMS = {"linux64": (2, False), "win64": (2, True), "x86_64-linux": (3, False), "x86_64-windows": (3, True)}
+
+
 @pytest.fixture(scope="module")
 def build(tmp_path_factory, fmu_file):
-    """The unpacked FMUs and the host, native and win64 (with the Wine-only stand-in DLL beside it)."""
+    """The unpacked FMUs of both versions and the hosts, native and win64 (a folder per Windows platform, with the
+    Wine-only stand-in DLL beside the host and the FMUs' DLLs)."""
     out = tmp_path_factory.mktemp("platforms")
     fmus = {}
-    for name, path in [("PistonSlap", fmu_file), ("EngineCycle", str(ENGINE_FMU))]:
-        fmus[name] = (Path(fmpy.extract(path, unzipdir=out / name)), fmpy.read_model_description(path))
-        for binary in (f"binaries/linux64/{name}.so", f"binaries/win64/{name}.dll"):
-            assert (fmus[name][0] / binary).is_file(), f"{name}.fmu carries no {binary} (`make toolchain fmu`)"
-    source, headers = ROOT / "tests" / "c_host" / "trace.c", ROOT / "fmi_headers"
-    flags = ["-std=c99", "-O1", "-Wall", "-Wextra", "-Werror", "-I", str(headers)]
-    subprocess.run([tool("gcc"), *flags, "-o", out / "trace", source, "-ldl"], check=True)
-    win = out / "win64"
-    win.mkdir()
+    for name, path in [("PistonSlap", Path(fmu_file)), ("EngineCycle", ENGINE_FMU)]:
+        for version, suffix in ((2, ""), (3, "3")):
+            archive = str(path.with_name(f"{name}{suffix}.fmu"))
+            unzipdir = Path(fmpy.extract(archive, unzipdir=out / f"{name}{suffix}"))
+            fmus[name, version] = (unzipdir, fmpy.read_model_description(archive))
+    headers = ROOT / "fmi_headers"
+    source = ROOT / "tests" / "c_host" / "trace.c"
     mingw = tool("x86_64-w64-mingw32-gcc")
-    subprocess.run([mingw, *flags, "-o", win / "trace.exe", source], check=True)
-    bcrypt_shim(win)
-    for name, (unzipdir, _) in fmus.items():
-        shutil.copy(unzipdir / "binaries" / "win64" / f"{name}.dll", win)
+    for platform, (version, wine) in PLATFORMS.items():
+        flags = ["-std=c99", "-O1", "-Wall", "-Wextra", "-Werror", "-I", str(headers)] + ["-DFMI3"] * (version == 3)
+        extension = "dll" if wine else "so"
+        for name in ("PistonSlap", "EngineCycle"):
+            binary = fmus[name, version][0] / "binaries" / platform / f"{name}.{extension}"
+            assert binary.is_file(), f"{name}'s FMI {version}.0 FMU carries no {platform} binary (`make toolchain fmu`)"
+        if wine:
+            folder = out / platform
+            folder.mkdir()
+            subprocess.run([mingw, *flags, "-o", folder / "trace.exe", source], check=True)
+            bcrypt_shim(folder)
+            for name in ("PistonSlap", "EngineCycle"):
+                shutil.copy(fmus[name, version][0] / "binaries" / platform / f"{name}.dll", folder)
+        else:
+            subprocess.run([tool("gcc"), *flags, "-o", out / f"trace{version}", source, "-ldl"], check=True)
     return out, fmus
 
 
 def run(build, scenario, platform, *extra):
-    """The host's lines (step, output bits) for a scenario on linux64 or win64."""
+    """The host's lines (step, output bits) for a scenario on one of `PLATFORMS`."""
     out, fmus = build
+    version, wine = PLATFORMS[platform]
     name, parameters = SCENARIOS[scenario]
-    unzipdir, md = fmus[name]
+    unzipdir, md = fmus[name, version]
     by_name = {v.name: v for v in md.modelVariables}
     outputs = [v for v in md.modelVariables if v.causality == "output"]
-    reals = ",".join(str(v.valueReference) for v in outputs if v.type == "Real")
-    integers = ",".join(str(v.valueReference) for v in outputs if v.type != "Real")
+    reals = ",".join(str(v.valueReference) for v in outputs if v.type in ("Real", "Float64"))
+    integers = ",".join(str(v.valueReference) for v in outputs if v.type not in ("Real", "Float64"))
     options = [f"{kind}:{by_name[var].valueReference}={value}" for kind, var, value in parameters]
     resources = (unzipdir / "resources").as_posix()
-    if platform == "linux64":
-        command = [
-            str(out / "trace"),
-            str(unzipdir / "binaries" / "linux64" / f"{name}.so"),
-            md.guid,
-            "file://" + resources,
-        ]
-        env = None
-    else:
-        command = [tool("wine"), str(out / "win64" / "trace.exe"), f"{name}.dll", md.guid, "file:///Z:" + resources]
-        env = wine_env(out)
+    # FMI 2.0 takes the resources as a file URI, FMI 3.0 as a path ending in a separator.
+    if wine:
+        location = "file:///Z:" + resources if version == 2 else windows_path(resources) + "\\"
+        command = [tool("wine"), str(out / platform / "trace.exe"), f"{name}.dll", md.guid, location]
+        env, cwd = wine_env(out), out / platform
         extra = [re.sub(r"(save|load):(\d+):(.*)", lambda m: f"{m[1]}:{m[2]}:{windows_path(m[3])}", e) for e in extra]
+    else:
+        location = "file://" + resources if version == 2 else resources + "/"
+        library = unzipdir / "binaries" / platform / f"{name}.so"
+        command = [str(out / f"trace{version}"), str(library), md.guid, location]
+        env, cwd = None, out
     done = subprocess.run(
         [*command, str(STEPS), repr(STEP), reals, integers, *options, *extra],
         capture_output=True,
         text=True,
         env=env,
-        cwd=out / "win64",
+        cwd=cwd,
         timeout=600,
     )
     assert done.returncode == 0, f"{platform} {scenario}: exit {done.returncode}\n{done.stderr[-2000:]}"
@@ -101,15 +118,34 @@ def run(build, scenario, platform, *extra):
     return [line.rstrip("\r") for line in lines]
 
 
-@pytest.mark.parametrize("scenario", SCENARIOS)
-def test_win64_outputs_equal_linux64_bit_for_bit(build, scenario):
-    linux, windows = run(build, scenario, "linux64"), run(build, scenario, "win64")
-    assert len(linux) == STEPS == len(windows)
-    different = [(a, b) for a, b in zip(linux, windows, strict=True) if a != b]
+def assert_same(reference, other):
+    assert len(reference) == STEPS == len(other)
+    different = [(a, b) for a, b in zip(reference, other, strict=True) if a != b]
     assert not different, f"{len(different)} of {STEPS} steps differ, first:\n{different[0][0]}\n{different[0][1]}"
 
 
-@pytest.mark.parametrize("saved_on, restored_on", [("linux64", "win64"), ("win64", "linux64")])
+@pytest.fixture(scope="module")
+def linux64(build):
+    """The FMI 2.0 linux64 run of every scenario, the reference of the others."""
+    return {scenario: run(build, scenario, "linux64") for scenario in SCENARIOS}
+
+
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_win64_outputs_equal_linux64_bit_for_bit(build, linux64, scenario):
+    assert_same(linux64[scenario], run(build, scenario, "win64"))
+
+
+@pytest.mark.parametrize("platform", ["x86_64-linux", "x86_64-windows"])
+@pytest.mark.parametrize("scenario", SCENARIOS)
+def test_the_fmi3_fmus_give_the_fmi2_outputs_bit_for_bit_on_both_platforms(build, linux64, scenario, platform):
+    assert_same(linux64[scenario], run(build, scenario, platform))
+
+
+# FMI 2.0's and FMI 3.0's FMU states are the same bytes: a state crosses versions as it crosses platforms.
+@pytest.mark.parametrize(
+    "saved_on, restored_on",
+    [("linux64", "win64"), ("win64", "linux64"), ("x86_64-windows", "linux64"), ("linux64", "x86_64-linux")],
+)
 def test_a_state_saved_on_one_platform_continues_on_the_other(build, tmp_path, saved_on, restored_on):
     state = tmp_path / "state.bin"
     straight = run(build, "friction_free_crank", saved_on, f"save:{STEPS // 2}:{state}")
@@ -132,20 +168,26 @@ def fmi2_functions():
 
 FMI2_FUNCTIONS = fmi2_functions()
 
+#: Every FMI 3.0 function (fmi_headers/fmi3Functions.h): hosts bind them all, the FMUs refuse the absent ones.
+FMI3_FUNCTIONS = set(re.findall(r"(fmi3\w+);", (ROOT / "fmi_headers" / "fmi3Functions.h").read_text()))
 
-def test_the_header_lists_the_34_co_simulation_functions():
+EXPORTED = FMI2_FUNCTIONS | FMI3_FUNCTIONS
+
+
+def test_the_headers_list_the_34_co_simulation_functions_and_fmi3s_75():
     assert len(FMI2_FUNCTIONS) == 34 and {"fmi2DoStep", "fmi2Instantiate"} <= FMI2_FUNCTIONS
+    assert len(FMI3_FUNCTIONS) == 75 and {"fmi3DoStep", "fmi3InstantiateCoSimulation"} <= FMI3_FUNCTIONS
 
 
 @pytest.mark.parametrize("name", ["PistonSlap", "EngineCycle"])
-def test_linux64_exports_only_fmi2_and_needs_glibc_2_28(build, name):
+def test_linux64_exports_only_fmi_functions_and_needs_glibc_2_28(build, name):
     _, fmus = build
-    so = fmus[name][0] / "binaries" / "linux64" / f"{name}.so"
+    so = fmus[name, 2][0] / "binaries" / "linux64" / f"{name}.so"
     table = objdump(so, "-T")
     defined = {
         line.split()[-1] for line in table.splitlines() if re.match(r"[0-9a-f]+ g ", line) and "*UND*" not in line
     }
-    assert defined == FMI2_FUNCTIONS, defined ^ FMI2_FUNCTIONS
+    assert defined == EXPORTED, defined ^ EXPORTED
     versions = {tuple(int(p) for p in v.split(".")) for v in re.findall(r"GLIBC_([0-9.]+)", table)}
     assert versions and max(versions) <= GLIBC_BASELINE, sorted(versions)[-3:]
     needed = set(re.findall(r"NEEDED\s+(\S+)", objdump(so, "-p")))
@@ -153,17 +195,17 @@ def test_linux64_exports_only_fmi2_and_needs_glibc_2_28(build, name):
 
 
 @pytest.mark.parametrize("name", ["PistonSlap", "EngineCycle"])
-def test_win64_exports_only_fmi2_and_imports_only_system_dlls(build, name):
+def test_win64_exports_only_fmi_functions_and_imports_only_system_dlls(build, name):
     _, fmus = build
-    headers = objdump(fmus[name][0] / "binaries" / "win64" / f"{name}.dll", "-p")
+    headers = objdump(fmus[name, 2][0] / "binaries" / "win64" / f"{name}.dll", "-p")
     exports = headers.split("[Ordinal/Name Pointer] Table")[-1]
-    assert set(re.findall(r"\]\s+(fmi2\w+)", exports)) == FMI2_FUNCTIONS
-    assert len(re.findall(r"^\s+\[\s*\d+\]\s+\w+$", exports, re.M)) == len(FMI2_FUNCTIONS)
+    assert set(re.findall(r"\]\s+(fmi[23]\w+)", exports)) == EXPORTED
+    assert len(re.findall(r"^\s+\[\s*\d+\]\s+\w+$", exports, re.M)) == len(EXPORTED)
     imported = {d.lower() for d in re.findall(r"DLL Name: (\S+)", headers)}
     assert imported <= SYSTEM_DLLS, imported - SYSTEM_DLLS
 
 
-def test_the_scenarios_differ(build):
+def test_the_scenarios_differ(linux64):
     """Each scenario runs what it names: the trace, friction and the free crank change the outputs."""
-    last = {s: run(build, s, "linux64")[-1] for s in ("default", "pressure_trace", "friction_free_crank")}
+    last = {s: linux64[s][-1] for s in ("default", "pressure_trace", "friction_free_crank")}
     assert len(set(last.values())) == 3

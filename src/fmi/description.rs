@@ -51,8 +51,10 @@ pub struct Description<P: 'static, I: 'static, O: 'static> {
     pub model_name: &'static str,
     /// The table's fingerprint, in the XML and checked by fmi2Instantiate.
     pub guid: &'static str,
-    /// The modelDescription.xml shipped in the FMU.
+    /// The FMI 2.0 modelDescription.xml shipped in the FMU.
     pub model_description_xml: &'static str,
+    /// The FMI 3.0 modelDescription.xml shipped in the FMI 3.0 FMU, from the same table.
+    pub fmi3_model_description_xml: &'static str,
     /// Every variable, indexed by value reference.
     pub variables: &'static [Variable],
     /// The Real variable `vr` of the parameters, inputs or outputs; `None` if `vr` is not a Real.
@@ -78,6 +80,11 @@ impl<P, I, O> Description<P, I, O> {
     /// The variable with value reference `vr`.
     pub fn variable(&self, vr: u32) -> Option<&'static Variable> {
         self.variables.get(usize::try_from(vr).ok()?)
+    }
+
+    /// The value reference of FMI 3.0's independent variable `time`: the first after the table's.
+    pub fn time_value_reference(&self) -> u32 {
+        u32::try_from(self.variables.len()).unwrap_or(u32::MAX)
     }
 }
 

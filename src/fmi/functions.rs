@@ -1,5 +1,7 @@
 //! The fmi2 functions, generic over the model so that one body serves PistonSlap, EngineCycle and the
-//! test models; `exports.rs` gives them their C names, choosing the model by the instance's tag.
+//! test models; `exports.rs` gives them their C names, choosing the model by the instance's tag. The fmi3
+//! functions whose arguments match an fmi2 function's share its body (each body is told which function the
+//! host called, for the state machine and the log); `fmi3_functions.rs` holds the others.
 //!
 //! Each function turns the host's pointers into Rust values (`pointers.rs`) and hands them to the
 //! instance inside [`call`], which consults the state machine's table, runs the instance's safe logic
@@ -12,11 +14,12 @@ use super::logger::Logger;
 use super::pointers::{out, slice, slice_mut, string};
 use super::reentry::Entered;
 use super::snapshot::{snapshot, store, Snapshot};
-use super::state_machine::Function::{self, *};
+use super::state_machine::Function;
 use super::types::*;
 use std::any::Any;
 use std::ffi::{c_int, CStr, CString};
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::PathBuf;
 
 /// What an `fmi2Component` points to. The tag ([`Model::INSTANCE_TAG`], first in a C layout, so
 /// [`instance_tag`] reads it whatever the model) marks a live instance of that model: a pointer that is
@@ -67,7 +70,7 @@ unsafe fn call<E: Model>(c: fmi2Component, function: Function, f: impl FnOnce(&m
 ///
 /// # Safety
 /// As [`call`].
-unsafe fn run<E: Model>(c: fmi2Component, function: Function, f: impl FnOnce(&mut Component<E>) -> Outcome) -> Status {
+pub(super) unsafe fn run<E: Model>(c: fmi2Component, function: Function, f: impl FnOnce(&mut Component<E>) -> Outcome) -> Status {
     // SAFETY: the caller's contract.
     unsafe { call::<E>(c, function, |component| f(component).map(|()| Status::Ok)) }
 }
@@ -109,6 +112,33 @@ fn boolean(b: fmi2Boolean) -> bool {
     b != FMI2_FALSE
 }
 
+/// Refuses a GUID (FMI 3.0: instantiation token, `what` names the argument) that is not `E`'s.
+pub(super) fn check_guid<E: Model>(guid: &str, what: &str) -> Outcome {
+    if guid == E::DESCRIPTION.guid {
+        return Ok(());
+    }
+    Err(Refusal::error(format!(
+        "{what} {guid} does not match this binary's {}: it instantiates {} only (each FMU of this crate carries its own copy)",
+        E::DESCRIPTION.guid,
+        E::NAME
+    )))
+}
+
+/// The new instance of `E` once the host's arguments passed their checks (`checked`: the FMU's resources
+/// directory), or NULL with the refusal logged as `function`'s.
+pub(super) fn make<E: Model>(function: &str, logger: Logger, checked: Outcome<Option<PathBuf>>) -> fmi2Component {
+    match checked {
+        Ok(resources) => {
+            let component = Component { tag: E::INSTANCE_TAG, instance: Instance::<E>::new(logger, resources), strings: Vec::new() };
+            Box::into_raw(Box::new(component)) as fmi2Component
+        }
+        Err(refusal) => {
+            logger.status(Status::Error, &format!("{function}: {}", refusal.message));
+            std::ptr::null_mut()
+        }
+    }
+}
+
 /// # Safety
 /// The pointers are NULL or valid as fmi2Instantiate's arguments (NUL-terminated strings, a callback
 /// table whose logger may be called with its environment).
@@ -131,7 +161,7 @@ pub unsafe fn instantiate<E: Model>(
         // SAFETY: NULL or a NUL-terminated string (the contract).
         let shown = if name.is_null() { "(null)".into() } else { unsafe { CStr::from_ptr(name) }.to_string_lossy() };
         let logger = Logger::new(callback, functions.component_environment, &shown, boolean(logging_on));
-        let check = || -> Outcome<Option<std::path::PathBuf>> {
+        let check = || -> Outcome<Option<PathBuf>> {
             // SAFETY: the strings are NULL or NUL-terminated (the contract).
             let (name, guid, resources) =
                 unsafe { (string(name, "instanceName")?, string(guid, "fmuGUID")?, string(resource_location, "fmuResourceLocation")?) };
@@ -144,30 +174,14 @@ pub unsafe fn instantiate<E: Model>(
                     E::NAME
                 )));
             }
-            if guid != E::DESCRIPTION.guid {
-                return Err(Refusal::error(format!(
-                    "fmuGUID {guid} does not match this binary's {}: it instantiates {} only (each FMU of this crate \
-                     carries its own copy)",
-                    E::DESCRIPTION.guid,
-                    E::NAME
-                )));
-            }
+            check_guid::<E>(guid, "fmuGUID")?;
             if !resources.starts_with("file:") {
                 return Err(Refusal::error(format!("fmuResourceLocation {resources:?} is not a file URI")));
             }
             // A host may unpack the FMU where no local path reaches it: bare file names then stay as given.
             Ok(super::resources::directory(resources))
         };
-        match check() {
-            Ok(resources) => {
-                let component = Component { tag: E::INSTANCE_TAG, instance: Instance::<E>::new(logger, resources), strings: Vec::new() };
-                Box::into_raw(Box::new(component)) as fmi2Component
-            }
-            Err(refusal) => {
-                logger.status(Status::Error, &format!("fmi2Instantiate: {}", refusal.message));
-                std::ptr::null_mut()
-            }
-        }
+        make::<E>("fmi2Instantiate", logger, check())
     }));
     made.unwrap_or(std::ptr::null_mut())
 }
@@ -191,10 +205,16 @@ pub unsafe fn free_instance<E: Model>(c: fmi2Component) {
 
 /// # Safety
 /// As [`call`]; `categories` is NULL or points to `n` NULL or NUL-terminated strings.
-pub unsafe fn set_debug_logging<E: Model>(c: fmi2Component, on: fmi2Boolean, n: usize, categories: *const fmi2String) -> Status {
+pub unsafe fn set_debug_logging<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    on: fmi2Boolean,
+    n: usize,
+    categories: *const fmi2String,
+) -> Status {
     // SAFETY: the caller's contract, for `c` and each pointer read.
     unsafe {
-        run::<E>(c, fmi2SetDebugLogging, |comp| {
+        run::<E>(c, function, |comp| {
             let names = slice(categories, n, "categories")?
                 .iter()
                 .map(|&s| string(s, "category").map(str::to_string))
@@ -206,44 +226,50 @@ pub unsafe fn set_debug_logging<E: Model>(c: fmi2Component, on: fmi2Boolean, n: 
 
 /// # Safety
 /// As [`call`].
-pub unsafe fn setup_experiment<E: Model>(c: fmi2Component, start: fmi2Real, stop_defined: fmi2Boolean, stop: fmi2Real) -> Status {
+pub unsafe fn setup_experiment<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    start: fmi2Real,
+    stop_defined: fmi2Boolean,
+    stop: fmi2Real,
+) -> Status {
     // The tolerance is not used: the integrator's accuracy is fixed by its step and event tolerances.
     // SAFETY: the caller's contract.
-    unsafe { run::<E>(c, fmi2SetupExperiment, |comp| comp.instance.setup_experiment(start, boolean(stop_defined).then_some(stop))) }
+    unsafe { run::<E>(c, function, |comp| comp.instance.setup_experiment(start, boolean(stop_defined).then_some(stop))) }
 }
 
 /// # Safety
 /// As [`call`].
-pub unsafe fn enter_initialization_mode<E: Model>(c: fmi2Component) -> Status {
+pub unsafe fn enter_initialization_mode<E: Model>(function: Function, c: fmi2Component) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { run::<E>(c, fmi2EnterInitializationMode, |comp| comp.instance.enter_initialization_mode()) }
+    unsafe { run::<E>(c, function, |comp| comp.instance.enter_initialization_mode()) }
 }
 
 /// # Safety
 /// As [`call`].
-pub unsafe fn exit_initialization_mode<E: Model>(c: fmi2Component) -> Status {
+pub unsafe fn exit_initialization_mode<E: Model>(function: Function, c: fmi2Component) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { run::<E>(c, fmi2ExitInitializationMode, |comp| comp.instance.exit_initialization_mode()) }
+    unsafe { run::<E>(c, function, |comp| comp.instance.exit_initialization_mode()) }
 }
 
 /// # Safety
 /// As [`call`].
-pub unsafe fn terminate<E: Model>(c: fmi2Component) -> Status {
+pub unsafe fn terminate<E: Model>(function: Function, c: fmi2Component) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { run::<E>(c, fmi2Terminate, |comp| comp.instance.terminate()) }
+    unsafe { run::<E>(c, function, |comp| comp.instance.terminate()) }
 }
 
 /// # Safety
 /// As [`call`].
-pub unsafe fn reset<E: Model>(c: fmi2Component) -> Status {
+pub unsafe fn reset<E: Model>(function: Function, c: fmi2Component) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { run::<E>(c, fmi2Reset, |comp| comp.instance.reset()) }
+    unsafe { run::<E>(c, function, |comp| comp.instance.reset()) }
 }
 
 /// The generated reader of one variable kind (`Description::get_real`, …).
 type Reader<E, T> = for<'a> fn(u32, &'a <E as Model>::Parameters, &'a <E as Model>::Inputs, &'a <E as Model>::Outputs) -> Option<T>;
 
-/// The shared body of fmi2GetReal and fmi2GetInteger.
+/// The shared body of fmi2GetReal, fmi2GetInteger and fmi3GetInt32.
 ///
 /// # Safety
 /// As [`call`]; `vr` and `value` are NULL or point to `n` elements.
@@ -257,32 +283,50 @@ unsafe fn get<E: Model, T: Copy>(
     value: *mut T,
 ) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { run::<E>(c, function, |comp| comp.instance.get(slice(vr, n, "vr")?, kind, read, slice_mut(value, n, "value")?)) }
+    unsafe { run::<E>(c, function, |comp| comp.instance.get(slice(vr, n, "vr")?, kind, read, slice_mut(value, n, "value")?, None)) }
 }
 
 /// # Safety
 /// As [`get`].
-pub unsafe fn get_real<E: Model>(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2Real) -> Status {
+pub unsafe fn get_real<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    value: *mut fmi2Real,
+) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { get::<E, _>(c, fmi2GetReal, Kind::Real, E::DESCRIPTION.get_real, vr, n, value) }
+    unsafe { get::<E, _>(c, function, Kind::Real, E::DESCRIPTION.get_real, vr, n, value) }
 }
 
 /// # Safety
 /// As [`get`].
-pub unsafe fn get_integer<E: Model>(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2Integer) -> Status {
+pub unsafe fn get_integer<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    value: *mut fmi2Integer,
+) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { get::<E, _>(c, fmi2GetInteger, Kind::Integer, E::DESCRIPTION.get_integer, vr, n, value) }
+    unsafe { get::<E, _>(c, function, Kind::Integer, E::DESCRIPTION.get_integer, vr, n, value) }
 }
 
 /// # Safety
 /// As [`get`].
-pub unsafe fn get_string<E: Model>(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2String) -> Status {
+pub unsafe fn get_string<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    value: *mut fmi2String,
+) -> Status {
     // SAFETY: the caller's contract.
     unsafe {
-        run::<E>(c, fmi2GetString, |comp| {
+        run::<E>(c, function, |comp| {
             let (vrs, out) = (slice(vr, n, "vr")?, slice_mut(value, n, "value")?);
             let mut strings = vec![CString::default(); n];
-            comp.instance.get(vrs, Kind::String, c_string_of::<E>, &mut strings)?;
+            comp.instance.get(vrs, Kind::String, c_string_of::<E>, &mut strings, None)?;
             comp.strings = strings;
             for (o, s) in out.iter_mut().zip(&comp.strings) {
                 *o = s.as_ptr();
@@ -299,12 +343,18 @@ fn c_string_of<E: Model>(vr: u32, p: &E::Parameters, i: &E::Inputs, o: &E::Outpu
 
 /// # Safety
 /// As [`get`].
-pub unsafe fn get_boolean<E: Model>(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *mut fmi2Boolean) -> Status {
+pub unsafe fn get_boolean<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    value: *mut fmi2Boolean,
+) -> Status {
     // SAFETY: the caller's contract.
     unsafe {
-        run::<E>(c, fmi2GetBoolean, |comp| {
+        run::<E>(c, function, |comp| {
             slice_mut(value, n, "value")?;
-            comp.instance.booleans(slice(vr, n, "vr")?)
+            comp.instance.none_of_kind(slice(vr, n, "vr")?, "Boolean")
         })
     }
 }
@@ -333,58 +383,82 @@ unsafe fn set<E: Model, T: Copy>(
 
 /// # Safety
 /// As [`set`].
-pub unsafe fn set_real<E: Model>(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2Real) -> Status {
+pub unsafe fn set_real<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    value: *const fmi2Real,
+) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { set::<E, _>(c, fmi2SetReal, vr, n, value, |v| Ok(Value::Real(v))) }
+    unsafe { set::<E, _>(c, function, vr, n, value, |v| Ok(Value::Real(v))) }
 }
 
 /// # Safety
 /// As [`set`].
-pub unsafe fn set_integer<E: Model>(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2Integer) -> Status {
+pub unsafe fn set_integer<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    value: *const fmi2Integer,
+) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { set::<E, _>(c, fmi2SetInteger, vr, n, value, |v| Ok(Value::Integer(v))) }
+    unsafe { set::<E, _>(c, function, vr, n, value, |v| Ok(Value::Integer(v))) }
 }
 
 /// # Safety
 /// As [`set`]; each string is NULL or NUL-terminated.
-pub unsafe fn set_string<E: Model>(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2String) -> Status {
+pub unsafe fn set_string<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    value: *const fmi2String,
+) -> Status {
     // The strings live until the host's next call; `set` copies them before returning.
     // SAFETY: the caller's contract.
-    unsafe { set::<E, _>(c, fmi2SetString, vr, n, value, |v| string(v, "value").map(Value::String)) }
+    unsafe { set::<E, _>(c, function, vr, n, value, |v| string(v, "value").map(Value::String)) }
 }
 
 /// # Safety
 /// As [`set`].
-pub unsafe fn set_boolean<E: Model>(c: fmi2Component, vr: *const fmi2ValueReference, n: usize, value: *const fmi2Boolean) -> Status {
+pub unsafe fn set_boolean<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    vr: *const fmi2ValueReference,
+    n: usize,
+    value: *const fmi2Boolean,
+) -> Status {
     // SAFETY: the caller's contract.
     unsafe {
-        run::<E>(c, fmi2SetBoolean, |comp| {
+        run::<E>(c, function, |comp| {
             slice(value, n, "value")?;
-            comp.instance.booleans(slice(vr, n, "vr")?)
+            comp.instance.none_of_kind(slice(vr, n, "vr")?, "Boolean")
         })
     }
 }
 
 /// # Safety
 /// As [`call`]; `state` as [`store`] takes it.
-pub unsafe fn get_fmu_state<E: Model>(c: fmi2Component, state: *mut fmi2FMUstate) -> Status {
+pub unsafe fn get_fmu_state<E: Model>(function: Function, c: fmi2Component, state: *mut fmi2FMUstate) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { run::<E>(c, fmi2GetFMUstate, |comp| store(state, comp.instance.state())) }
+    unsafe { run::<E>(c, function, |comp| store(state, comp.instance.state())) }
 }
 
 /// # Safety
 /// As [`call`]; `state` as [`snapshot`] takes it.
-pub unsafe fn set_fmu_state<E: Model>(c: fmi2Component, state: fmi2FMUstate) -> Status {
+pub unsafe fn set_fmu_state<E: Model>(function: Function, c: fmi2Component, state: fmi2FMUstate) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { run::<E>(c, fmi2SetFMUstate, |comp| comp.instance.set_state(&snapshot::<E>(state)?.core)) }
+    unsafe { run::<E>(c, function, |comp| comp.instance.set_state(&snapshot::<E>(state)?.core)) }
 }
 
 /// # Safety
 /// As [`call`]; `state` as [`store`] takes it; the FMU state is not used again.
-pub unsafe fn free_fmu_state<E: Model>(c: fmi2Component, state: *mut fmi2FMUstate) -> Status {
+pub unsafe fn free_fmu_state<E: Model>(function: Function, c: fmi2Component, state: *mut fmi2FMUstate) -> Status {
     // SAFETY: the caller's contract; a live FMU state was made by `Box::into_raw` in `store`.
     unsafe {
-        run::<E>(c, fmi2FreeFMUstate, |_| {
+        run::<E>(c, function, |_| {
             let state = out(state, "FMUstate pointer")?;
             if !state.is_null() {
                 let s = snapshot::<E>(*state)?;
@@ -399,10 +473,10 @@ pub unsafe fn free_fmu_state<E: Model>(c: fmi2Component, state: *mut fmi2FMUstat
 
 /// # Safety
 /// As [`call`]; `state` as [`snapshot`] takes it; `size` NULL or writable.
-pub unsafe fn serialized_fmu_state_size<E: Model>(c: fmi2Component, state: fmi2FMUstate, size: *mut usize) -> Status {
+pub unsafe fn serialized_fmu_state_size<E: Model>(function: Function, c: fmi2Component, state: fmi2FMUstate, size: *mut usize) -> Status {
     // SAFETY: the caller's contract.
     unsafe {
-        run::<E>(c, fmi2SerializedFMUstateSize, |_| {
+        run::<E>(c, function, |_| {
             *out(size, "size")? = snapshot::<E>(state)?.bytes()?.len();
             Ok(())
         })
@@ -411,15 +485,21 @@ pub unsafe fn serialized_fmu_state_size<E: Model>(c: fmi2Component, state: fmi2F
 
 /// # Safety
 /// As [`call`]; `state` as [`snapshot`] takes it; `buffer` NULL or `size` writable bytes.
-pub unsafe fn serialize_fmu_state<E: Model>(c: fmi2Component, state: fmi2FMUstate, buffer: *mut fmi2Byte, size: usize) -> Status {
+pub unsafe fn serialize_fmu_state<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    state: fmi2FMUstate,
+    buffer: *mut u8,
+    size: usize,
+) -> Status {
     // SAFETY: the caller's contract.
     unsafe {
-        run::<E>(c, fmi2SerializeFMUstate, |_| {
+        run::<E>(c, function, |_| {
             let bytes = snapshot::<E>(state)?.bytes()?;
             if size < bytes.len() {
                 return Err(Refusal::error(format!("buffer of {size} bytes, the state needs {}", bytes.len())));
             }
-            slice_mut(buffer as *mut u8, bytes.len(), "serializedState")?.copy_from_slice(bytes);
+            slice_mut(buffer, bytes.len(), "serializedState")?.copy_from_slice(bytes);
             Ok(())
         })
     }
@@ -427,35 +507,43 @@ pub unsafe fn serialize_fmu_state<E: Model>(c: fmi2Component, state: fmi2FMUstat
 
 /// # Safety
 /// As [`call`]; `buffer` NULL or `size` readable bytes; `state` as [`store`] takes it.
-pub unsafe fn deserialize_fmu_state<E: Model>(c: fmi2Component, buffer: *const fmi2Byte, size: usize, state: *mut fmi2FMUstate) -> Status {
+pub unsafe fn deserialize_fmu_state<E: Model>(
+    function: Function,
+    c: fmi2Component,
+    buffer: *const u8,
+    size: usize,
+    state: *mut fmi2FMUstate,
+) -> Status {
     // SAFETY: the caller's contract.
     unsafe {
-        run::<E>(c, fmi2DeSerializeFMUstate, |comp| {
-            let core = comp.instance.deserialize(slice(buffer as *const u8, size, "serializedState")?)?;
+        run::<E>(c, function, |comp| {
+            let core = comp.instance.deserialize(slice(buffer, size, "serializedState")?)?;
             store(state, core)
         })
     }
 }
 
-/// A capability the XML declares absent: refused with `why` (after the state check, like any call).
+/// Refuses the call with `why` (after the state check, like any call): a capability the XML declares absent,
+/// or arguments the FMU cannot take.
 ///
 /// # Safety
 /// As [`call`].
-unsafe fn unsupported<E: Model>(c: fmi2Component, function: Function, why: &str) -> Status {
+pub unsafe fn refuse<E: Model>(function: Function, c: fmi2Component, why: &str) -> Status {
     // SAFETY: the caller's contract.
     unsafe { run::<E>(c, function, |_| Err(Refusal::error(why))) }
 }
 
 /// # Safety
 /// As [`call`].
-pub unsafe fn get_directional_derivative<E: Model>(c: fmi2Component) -> Status {
+pub unsafe fn get_directional_derivative<E: Model>(function: Function, c: fmi2Component) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { unsupported::<E>(c, fmi2GetDirectionalDerivative, "not provided (providesDirectionalDerivative = false)") }
+    unsafe { refuse::<E>(function, c, "not provided (providesDirectionalDerivative = false)") }
 }
 
 /// # Safety
 /// As [`call`]; `vr`, `order` and `value` are NULL or point to `n` elements.
 pub unsafe fn set_real_input_derivatives<E: Model>(
+    function: Function,
     c: fmi2Component,
     vr: *const fmi2ValueReference,
     n: usize,
@@ -464,7 +552,7 @@ pub unsafe fn set_real_input_derivatives<E: Model>(
 ) -> Status {
     // SAFETY: the caller's contract.
     unsafe {
-        run::<E>(c, fmi2SetRealInputDerivatives, |comp| {
+        run::<E>(c, function, |comp| {
             let (vrs, orders, values) = (slice(vr, n, "vr")?, slice(order, n, "order")?, slice(value, n, "value")?);
             comp.instance.set_input_derivatives(vrs, orders, values)
         })
@@ -474,6 +562,7 @@ pub unsafe fn set_real_input_derivatives<E: Model>(
 /// # Safety
 /// As [`call`]; `vr`, `order` and `value` are NULL or point to `n` elements.
 pub unsafe fn get_real_output_derivatives<E: Model>(
+    function: Function,
     c: fmi2Component,
     vr: *const fmi2ValueReference,
     n: usize,
@@ -482,7 +571,7 @@ pub unsafe fn get_real_output_derivatives<E: Model>(
 ) -> Status {
     // SAFETY: the caller's contract.
     unsafe {
-        run::<E>(c, fmi2GetRealOutputDerivatives, |comp| {
+        run::<E>(c, function, |comp| {
             let (vrs, orders, out) = (slice(vr, n, "vr")?, slice(order, n, "order")?, slice_mut(value, n, "value")?);
             comp.instance.output_derivatives(vrs, orders, out)
         })
@@ -491,16 +580,16 @@ pub unsafe fn get_real_output_derivatives<E: Model>(
 
 /// # Safety
 /// As [`call`].
-pub unsafe fn do_step<E: Model>(c: fmi2Component, t: fmi2Real, h: fmi2Real) -> Status {
+pub unsafe fn do_step<E: Model>(function: Function, c: fmi2Component, t: fmi2Real, h: fmi2Real) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { run::<E>(c, fmi2DoStep, |comp| comp.instance.do_step(t, h)) }
+    unsafe { run::<E>(c, function, |comp| comp.instance.do_step(t, h)) }
 }
 
 /// # Safety
 /// As [`call`].
-pub unsafe fn cancel_step<E: Model>(c: fmi2Component) -> Status {
+pub unsafe fn cancel_step<E: Model>(function: Function, c: fmi2Component) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { unsupported::<E>(c, fmi2CancelStep, "fmi2DoStep is synchronous: there is never a step in progress to cancel") }
+    unsafe { refuse::<E>(function, c, "fmi2DoStep is synchronous: there is never a step in progress to cancel") }
 }
 
 /// The fmi2Get*Status functions: `answer` gives the value for the kinds this FMU defines.
@@ -527,38 +616,36 @@ unsafe fn status<E: Model, T>(
 
 /// # Safety
 /// As [`status`].
-pub unsafe fn get_status<E: Model>(c: fmi2Component, kind: c_int, value: *mut c_int) -> Status {
+pub unsafe fn get_status<E: Model>(function: Function, c: fmi2Component, kind: c_int, value: *mut c_int) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { status::<E, c_int>(c, fmi2GetStatus, kind, value, |_, _| None) }
+    unsafe { status::<E, c_int>(c, function, kind, value, |_, _| None) }
 }
 
 /// # Safety
 /// As [`status`].
-pub unsafe fn get_real_status<E: Model>(c: fmi2Component, kind: c_int, value: *mut fmi2Real) -> Status {
+pub unsafe fn get_real_status<E: Model>(function: Function, c: fmi2Component, kind: c_int, value: *mut fmi2Real) -> Status {
     // SAFETY: the caller's contract.
-    unsafe {
-        status::<E, fmi2Real>(c, fmi2GetRealStatus, kind, value, |inst, kind| (kind == FMI2_LAST_SUCCESSFUL_TIME).then(|| inst.time()))
-    }
+    unsafe { status::<E, fmi2Real>(c, function, kind, value, |inst, kind| (kind == FMI2_LAST_SUCCESSFUL_TIME).then(|| inst.time())) }
 }
 
 /// # Safety
 /// As [`status`].
-pub unsafe fn get_integer_status<E: Model>(c: fmi2Component, kind: c_int, value: *mut fmi2Integer) -> Status {
+pub unsafe fn get_integer_status<E: Model>(function: Function, c: fmi2Component, kind: c_int, value: *mut fmi2Integer) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { status::<E, fmi2Integer>(c, fmi2GetIntegerStatus, kind, value, |_, _| None) }
+    unsafe { status::<E, fmi2Integer>(c, function, kind, value, |_, _| None) }
 }
 
 /// # Safety
 /// As [`status`].
-pub unsafe fn get_boolean_status<E: Model>(c: fmi2Component, kind: c_int, value: *mut fmi2Boolean) -> Status {
+pub unsafe fn get_boolean_status<E: Model>(function: Function, c: fmi2Component, kind: c_int, value: *mut fmi2Boolean) -> Status {
     // The FMU never asks the master to stop.
     // SAFETY: the caller's contract.
-    unsafe { status::<E, fmi2Boolean>(c, fmi2GetBooleanStatus, kind, value, |_, kind| (kind == FMI2_TERMINATED).then_some(FMI2_FALSE)) }
+    unsafe { status::<E, fmi2Boolean>(c, function, kind, value, |_, kind| (kind == FMI2_TERMINATED).then_some(FMI2_FALSE)) }
 }
 
 /// # Safety
 /// As [`status`].
-pub unsafe fn get_string_status<E: Model>(c: fmi2Component, kind: c_int, value: *mut fmi2String) -> Status {
+pub unsafe fn get_string_status<E: Model>(function: Function, c: fmi2Component, kind: c_int, value: *mut fmi2String) -> Status {
     // SAFETY: the caller's contract.
-    unsafe { status::<E, fmi2String>(c, fmi2GetStringStatus, kind, value, |_, _| None) }
+    unsafe { status::<E, fmi2String>(c, function, kind, value, |_, _| None) }
 }

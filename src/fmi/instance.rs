@@ -262,15 +262,17 @@ impl<E: Model> Instance<E> {
     }
 
     /// Reads variables of one kind. In initialization mode the outputs are the initial ones of a
-    /// simulation built from the current parameters.
+    /// simulation built from the current parameters. `independent`: a value reference beyond the table
+    /// that `read` answers (FMI 3.0's time).
     pub fn get<T>(
         &self,
         vrs: &[u32],
         kind: Kind,
         read: impl for<'a> Fn(u32, &'a E::Parameters, &'a E::Inputs, &'a E::Outputs) -> Option<T>,
         out: &mut [T],
+        independent: Option<u32>,
     ) -> Outcome {
-        for &vr in vrs {
+        for &vr in vrs.iter().filter(|&&vr| Some(vr) != independent) {
             typed_variable::<E>(vr, kind)?;
         }
         let preview;
@@ -322,13 +324,13 @@ impl<E: Model> Instance<E> {
         Ok(())
     }
 
-    /// fmi2GetBoolean / fmi2SetBoolean: the models have no Boolean variable, so any value reference is
-    /// refused (an empty list is fine).
-    pub fn booleans(&self, vrs: &[u32]) -> Outcome {
+    /// The getters and setters of a type no table has (fmi2GetBoolean, fmi3GetInt8, …): any value reference
+    /// is refused (an empty list is fine).
+    pub fn none_of_kind(&self, vrs: &[u32], kind: &str) -> Outcome {
         match vrs.first() {
             None => Ok(()),
             Some(&vr) => Err(match E::DESCRIPTION.variable(vr) {
-                Some(v) => Refusal::error(format!("{} (value reference {vr}) is a {:?} variable, not Boolean", v.name, v.kind)),
+                Some(v) => Refusal::error(format!("{} (value reference {vr}) is a {:?} variable, not {kind}", v.name, v.kind)),
                 None => Refusal::error(format!("unknown value reference {vr}")),
             }),
         }

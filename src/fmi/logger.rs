@@ -1,8 +1,9 @@
-//! Messages to the host's logger callback, filtered by fmi2SetDebugLogging.
+//! Messages to the host's logger callback (FMI 2.0's or FMI 3.0's), filtered by fmi2SetDebugLogging and
+//! fmi3SetDebugLogging.
 #![allow(unsafe_code)]
 
 use super::description::LOG_CATEGORIES;
-use super::types::{fmi2CallbackLogger, fmi2ComponentEnvironment, fmi2String, Status};
+use super::types::{fmi2CallbackLogger, fmi2ComponentEnvironment, fmi2String, fmi3LogMessageCallback, Status};
 use std::ffi::{c_int, CString};
 
 /// A logger callback written with fixed arguments only (variadic definitions are unstable in Rust):
@@ -18,19 +19,32 @@ pub fn fixed_argument_logger(logger: FixedArgumentLogger) -> fmi2CallbackLogger 
     unsafe { std::mem::transmute::<FixedArgumentLogger, fmi2CallbackLogger>(logger) }
 }
 
+/// The host's callback, as the FMI version of the instantiating function gives it.
+enum Callback {
+    /// FMI 2.0's variadic logger, told the instance's name.
+    Fmi2 { callback: fmi2CallbackLogger, instance_name: CString },
+    /// FMI 3.0's logger; none silences the instance.
+    Fmi3(Option<fmi3LogMessageCallback>),
+}
+
 /// Where an instance's messages go: the host's callback with its environment pointer.
 pub struct Logger {
-    callback: fmi2CallbackLogger,
+    callback: Callback,
     environment: fmi2ComponentEnvironment,
-    instance_name: CString,
     /// Per category of `LOG_CATEGORIES`: whether debug logging is on for it.
     enabled: [bool; LOG_CATEGORIES.len()],
 }
 
 impl Logger {
-    /// A logger calling the host's `callback` for instance `instance_name`, every category on or off.
+    /// A logger calling the host's FMI 2.0 `callback` for instance `instance_name`, every category on or off.
     pub fn new(callback: fmi2CallbackLogger, environment: fmi2ComponentEnvironment, instance_name: &str, on: bool) -> Self {
-        Self { callback, environment, instance_name: c_string(instance_name), enabled: [on; LOG_CATEGORIES.len()] }
+        let callback = Callback::Fmi2 { callback, instance_name: c_string(instance_name) };
+        Self { callback, environment, enabled: [on; LOG_CATEGORIES.len()] }
+    }
+
+    /// A logger calling the host's FMI 3.0 `callback` (none: silent), every category on or off.
+    pub fn fmi3(callback: Option<fmi3LogMessageCallback>, environment: fmi2ComponentEnvironment, on: bool) -> Self {
+        Self { callback: Callback::Fmi3(callback), environment, enabled: [on; LOG_CATEGORIES.len()] }
     }
 
     /// fmi2SetDebugLogging: no categories = all of them; an unknown name is refused, nothing changed.
@@ -67,18 +81,16 @@ impl Logger {
 
     fn send(&self, status: Status, category: &str, message: &str) {
         let (category, message) = (c_string(category), c_string(message));
-        // The message goes through "%s": a '%' in it must not be read as a format directive.
-        // SAFETY: the callback and environment are the host's, given at fmi2Instantiate; the strings
-        // are NUL-terminated and outlive the call.
-        unsafe {
-            (self.callback)(
-                self.environment,
-                self.instance_name.as_ptr(),
-                status as c_int,
-                category.as_ptr(),
-                c"%s".as_ptr(),
-                message.as_ptr(),
-            );
+        match &self.callback {
+            // The message goes through "%s": a '%' in it must not be read as a format directive.
+            // SAFETY: the callback and environment are the host's, given at fmi2Instantiate; the strings
+            // are NUL-terminated and outlive the call.
+            Callback::Fmi2 { callback, instance_name } => unsafe {
+                callback(self.environment, instance_name.as_ptr(), status as c_int, category.as_ptr(), c"%s".as_ptr(), message.as_ptr());
+            },
+            // SAFETY: as above, given at fmi3InstantiateCoSimulation; FMI 3.0's message is no format.
+            Callback::Fmi3(Some(callback)) => unsafe { callback(self.environment, status as c_int, category.as_ptr(), message.as_ptr()) },
+            Callback::Fmi3(None) => {}
         }
     }
 }

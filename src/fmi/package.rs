@@ -6,8 +6,10 @@ use super::description::Variable;
 pub struct Package {
     /// The model identifier: the archive's name and the binaries' file name.
     pub name: &'static str,
-    /// The generated `modelDescription.xml`.
+    /// The generated FMI 2.0 `modelDescription.xml`.
     pub model_description_xml: &'static str,
+    /// The generated FMI 3.0 `modelDescription.xml` of the FMI 3.0 FMU.
+    pub fmi3_model_description_xml: &'static str,
     /// The variable table the documentation lists.
     pub variables: &'static [Variable],
     /// `documentation/index.html` with the placeholders `{{version}}` and `{{variables}}`.

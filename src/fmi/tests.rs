@@ -6,6 +6,7 @@ use super::description;
 use super::fixed_argument_logger;
 use super::functions;
 use super::instance::Model;
+use super::state_machine::Function;
 use super::types::*;
 use crate::fmus::piston_slap::simulation::test_model::{Shuttle, SHUTTLE_SPEED};
 use crate::fmus::piston_slap::simulation::ModelVariant;
@@ -97,33 +98,35 @@ impl<E: Model> Host<E> {
 
     fn setup(&self, start: f64, stop: Option<f64>) -> Status {
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::setup_experiment::<E>(self.c, start, stop.is_some() as c_int, stop.unwrap_or(0.0)) }
+        unsafe {
+            functions::setup_experiment::<E>(Function::fmi2SetupExperiment, self.c, start, stop.is_some() as c_int, stop.unwrap_or(0.0))
+        }
     }
     fn enter(&self) -> Status {
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::enter_initialization_mode::<E>(self.c) }
+        unsafe { functions::enter_initialization_mode::<E>(Function::fmi2EnterInitializationMode, self.c) }
     }
     fn exit(&self) -> Status {
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::exit_initialization_mode::<E>(self.c) }
+        unsafe { functions::exit_initialization_mode::<E>(Function::fmi2ExitInitializationMode, self.c) }
     }
     fn step(&self, t: f64, h: f64) -> Status {
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::do_step::<E>(self.c, t, h) }
+        unsafe { functions::do_step::<E>(Function::fmi2DoStep, self.c, t, h) }
     }
     fn set_real(&self, name: &str, value: f64) -> Status {
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::set_real::<E>(self.c, &vr(name), 1, &value) }
+        unsafe { functions::set_real::<E>(Function::fmi2SetReal, self.c, &vr(name), 1, &value) }
     }
     fn set_integer(&self, name: &str, value: i32) -> Status {
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::set_integer::<E>(self.c, &vr(name), 1, &value) }
+        unsafe { functions::set_integer::<E>(Function::fmi2SetInteger, self.c, &vr(name), 1, &value) }
     }
     fn real(&self, name: &str) -> f64 {
         let mut value = f64::NAN;
         assert_eq!(
             // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-            unsafe { functions::get_real::<E>(self.c, &vr(name), 1, &mut value) },
+            unsafe { functions::get_real::<E>(Function::fmi2GetReal, self.c, &vr(name), 1, &mut value) },
             Status::Ok,
             "{name}"
         );
@@ -133,7 +136,7 @@ impl<E: Model> Host<E> {
         let mut value = -1;
         assert_eq!(
             // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-            unsafe { functions::get_integer::<E>(self.c, &vr(name), 1, &mut value) },
+            unsafe { functions::get_integer::<E>(Function::fmi2GetInteger, self.c, &vr(name), 1, &mut value) },
             Status::Ok,
             "{name}"
         );
@@ -154,19 +157,19 @@ impl<E: Model> Host<E> {
         let mut state = null_mut();
         assert_eq!(
             // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-            unsafe { functions::get_fmu_state::<E>(self.c, &mut state) },
+            unsafe { functions::get_fmu_state::<E>(Function::fmi2GetFMUstate, self.c, &mut state) },
             Status::Ok
         );
         state
     }
     fn set_state(&self, state: fmi2FMUstate) -> Status {
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::set_fmu_state::<E>(self.c, state) }
+        unsafe { functions::set_fmu_state::<E>(Function::fmi2SetFMUstate, self.c, state) }
     }
     fn free_state(&self, mut state: fmi2FMUstate) {
         assert_eq!(
             // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-            unsafe { functions::free_fmu_state::<E>(self.c, &mut state) },
+            unsafe { functions::free_fmu_state::<E>(Function::fmi2FreeFMUstate, self.c, &mut state) },
             Status::Ok
         );
         assert!(state.is_null());
@@ -175,19 +178,22 @@ impl<E: Model> Host<E> {
         let mut size = 0;
         assert_eq!(
             // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-            unsafe { functions::serialized_fmu_state_size::<E>(self.c, state, &mut size) },
+            unsafe { functions::serialized_fmu_state_size::<E>(Function::fmi2SerializedFMUstateSize, self.c, state, &mut size) },
             Status::Ok
         );
         let mut bytes = vec![0u8; size];
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        let status = unsafe { functions::serialize_fmu_state::<E>(self.c, state, bytes.as_mut_ptr() as *mut c_char, size) };
+        let status =
+            unsafe { functions::serialize_fmu_state::<E>(Function::fmi2SerializeFMUstate, self.c, state, bytes.as_mut_ptr(), size) };
         assert_eq!(status, Status::Ok);
         bytes
     }
     fn deserialize(&self, bytes: &[u8]) -> (Status, fmi2FMUstate) {
         let mut state = null_mut();
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        let status = unsafe { functions::deserialize_fmu_state::<E>(self.c, bytes.as_ptr() as *const c_char, bytes.len(), &mut state) };
+        let status = unsafe {
+            functions::deserialize_fmu_state::<E>(Function::fmi2DeSerializeFMUstate, self.c, bytes.as_ptr(), bytes.len(), &mut state)
+        };
         (status, state)
     }
     fn run(&self, from: f64, to: f64, h: f64) {
@@ -226,7 +232,7 @@ fn a_full_cycle_gives_the_closed_form_impacts() {
     assert_eq!(host.integer("last_impact_corner"), 3);
     assert!((host.real("impact_velocity") - 0.25 * SHUTTLE_SPEED).abs() < 1e-15);
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-    assert_eq!(unsafe { functions::terminate::<Shuttle>(host.c) }, Status::Ok);
+    assert_eq!(unsafe { functions::terminate::<Shuttle>(Function::fmi2Terminate, host.c) }, Status::Ok);
     assert_eq!(host.integer("impact_count"), 3, "outputs stay readable after fmi2Terminate");
     assert!(host.messages().is_empty(), "{:?}", host.messages());
 }
@@ -240,11 +246,11 @@ fn calls_in_states_the_standard_forbids_are_refused_and_change_nothing() {
     let mut x = 0.0;
     assert_eq!(
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::get_real::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut x) },
+        unsafe { functions::get_real::<Shuttle>(Function::fmi2GetReal, host.c, &vr("crank_angle"), 1, &mut x) },
         Status::Error
     );
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-    assert_eq!(unsafe { functions::terminate::<Shuttle>(host.c) }, Status::Error);
+    assert_eq!(unsafe { functions::terminate::<Shuttle>(Function::fmi2Terminate, host.c) }, Status::Error);
     assert_eq!(host.enter(), Status::Ok);
     assert_eq!(host.setup(0.0, None), Status::Error, "setup only before initialization");
     assert_eq!(host.enter(), Status::Error);
@@ -255,15 +261,15 @@ fn calls_in_states_the_standard_forbids_are_refused_and_change_nothing() {
     assert_eq!(host.set_real("crank_speed", 100.0), Status::Ok, "inputs may be set in step mode");
     assert_eq!(
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::cancel_step::<Shuttle>(host.c) },
+        unsafe { functions::cancel_step::<Shuttle>(Function::fmi2CancelStep, host.c) },
         Status::Error
     );
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-    assert_eq!(unsafe { functions::terminate::<Shuttle>(host.c) }, Status::Ok);
+    assert_eq!(unsafe { functions::terminate::<Shuttle>(Function::fmi2Terminate, host.c) }, Status::Ok);
     assert_eq!(host.step(0.0, 1e-3), Status::Error);
     host.logged("not allowed in state Terminated");
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-    assert_eq!(unsafe { functions::reset::<Shuttle>(host.c) }, Status::Ok);
+    assert_eq!(unsafe { functions::reset::<Shuttle>(Function::fmi2Reset, host.c) }, Status::Ok);
     assert_eq!(host.setup(0.0, None), Status::Ok, "back to instantiated after fmi2Reset");
     assert_eq!(host.enter(), Status::Ok);
     assert_eq!(host.exit(), Status::Ok);
@@ -277,29 +283,39 @@ fn null_pointers_unknown_references_and_wrong_types_are_refused() {
     let mut i = 0;
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
-        assert_eq!(functions::do_step::<Shuttle>(null_mut(), 0.0, 1e-3), Status::Error);
-        assert_eq!(functions::get_real::<Shuttle>(host.c, null(), 1, &mut x), Status::Error);
+        assert_eq!(functions::do_step::<Shuttle>(Function::fmi2DoStep, null_mut(), 0.0, 1e-3), Status::Error);
+        assert_eq!(functions::get_real::<Shuttle>(Function::fmi2GetReal, host.c, null(), 1, &mut x), Status::Error);
         host.logged("vr is NULL");
-        assert_eq!(functions::get_real::<Shuttle>(host.c, &vr("crank_angle"), 1, null_mut()), Status::Error);
-        assert_eq!(functions::set_real::<Shuttle>(host.c, &vr("crank_speed"), 1, null()), Status::Error);
-        assert_eq!(functions::get_real::<Shuttle>(host.c, null(), 0, null_mut()), Status::Ok, "nothing asked");
-        assert_eq!(functions::get_real::<Shuttle>(host.c, &9999, 1, &mut x), Status::Error);
+        assert_eq!(functions::get_real::<Shuttle>(Function::fmi2GetReal, host.c, &vr("crank_angle"), 1, null_mut()), Status::Error);
+        assert_eq!(functions::set_real::<Shuttle>(Function::fmi2SetReal, host.c, &vr("crank_speed"), 1, null()), Status::Error);
+        assert_eq!(functions::get_real::<Shuttle>(Function::fmi2GetReal, host.c, null(), 0, null_mut()), Status::Ok, "nothing asked");
+        assert_eq!(functions::get_real::<Shuttle>(Function::fmi2GetReal, host.c, &9999, 1, &mut x), Status::Error);
         host.logged("unknown value reference 9999");
-        assert_eq!(functions::get_integer::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut i), Status::Error);
+        assert_eq!(functions::get_integer::<Shuttle>(Function::fmi2GetInteger, host.c, &vr("crank_angle"), 1, &mut i), Status::Error);
         host.logged("not Integer");
         let mut b = 0;
-        assert_eq!(functions::get_boolean::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut b), Status::Error);
-        assert_eq!(functions::set_boolean::<Shuttle>(host.c, &0, 1, &1), Status::Error);
-        assert_eq!(functions::set_string::<Shuttle>(host.c, &vr("impact_log"), 1, &null()), Status::Error);
+        assert_eq!(functions::get_boolean::<Shuttle>(Function::fmi2GetBoolean, host.c, &vr("crank_angle"), 1, &mut b), Status::Error);
+        assert_eq!(functions::set_boolean::<Shuttle>(Function::fmi2SetBoolean, host.c, &0, 1, &1), Status::Error);
+        assert_eq!(functions::set_string::<Shuttle>(Function::fmi2SetString, host.c, &vr("impact_log"), 1, &null()), Status::Error);
         let mut state = null_mut();
-        assert_eq!(functions::get_fmu_state::<Shuttle>(host.c, null_mut()), Status::Error);
-        assert_eq!(functions::set_fmu_state::<Shuttle>(host.c, null_mut()), Status::Error);
-        assert_eq!(functions::free_fmu_state::<Shuttle>(host.c, &mut state), Status::Ok, "freeing NULL is a no-op");
-        assert_eq!(functions::serialized_fmu_state_size::<Shuttle>(host.c, null_mut(), &mut 0), Status::Error);
+        assert_eq!(functions::get_fmu_state::<Shuttle>(Function::fmi2GetFMUstate, host.c, null_mut()), Status::Error);
+        assert_eq!(functions::set_fmu_state::<Shuttle>(Function::fmi2SetFMUstate, host.c, null_mut()), Status::Error);
+        assert_eq!(
+            functions::free_fmu_state::<Shuttle>(Function::fmi2FreeFMUstate, host.c, &mut state),
+            Status::Ok,
+            "freeing NULL is a no-op"
+        );
+        assert_eq!(
+            functions::serialized_fmu_state_size::<Shuttle>(Function::fmi2SerializedFMUstateSize, host.c, null_mut(), &mut 0),
+            Status::Error
+        );
         let mut fake = [0u64; 8];
-        assert_eq!(functions::set_fmu_state::<Shuttle>(host.c, fake.as_mut_ptr() as fmi2FMUstate), Status::Error);
+        assert_eq!(
+            functions::set_fmu_state::<Shuttle>(Function::fmi2SetFMUstate, host.c, fake.as_mut_ptr() as fmi2FMUstate),
+            Status::Error
+        );
         host.logged("not made by this FMU");
-        assert_eq!(functions::get_status::<Shuttle>(host.c, FMI2_DO_STEP_STATUS, null_mut()), Status::Error);
+        assert_eq!(functions::get_status::<Shuttle>(Function::fmi2GetStatus, host.c, FMI2_DO_STEP_STATUS, null_mut()), Status::Error);
     }
     assert_eq!(host.set_real("impact_velocity", 1.0), Status::Error);
     host.logged("is an output");
@@ -307,7 +323,7 @@ fn null_pointers_unknown_references_and_wrong_types_are_refused() {
     let (vrs, values) = ([vr("crank_speed"), 9999], [50.0, 1.0]);
     assert_eq!(
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::set_real::<Shuttle>(host.c, vrs.as_ptr(), 2, values.as_ptr()) },
+        unsafe { functions::set_real::<Shuttle>(Function::fmi2SetReal, host.c, vrs.as_ptr(), 2, values.as_ptr()) },
         Status::Error
     );
     assert_eq!(host.real("crank_speed"), 125.66);
@@ -373,14 +389,14 @@ fn bad_parameters_are_refused_at_exit_initialization_mode_by_name() {
     assert_eq!(host.set_real("piston_mass", -0.4), Status::Ok, "ranges are checked at exit");
     let mut x = 0.0;
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-    let status = unsafe { functions::get_real::<Shuttle>(host.c, &vr("piston_lateral"), 1, &mut x) };
+    let status = unsafe { functions::get_real::<Shuttle>(Function::fmi2GetReal, host.c, &vr("piston_lateral"), 1, &mut x) };
     assert_eq!(status, Status::Error, "no initial outputs from bad parameters");
     assert_eq!(host.exit(), Status::Error);
     host.logged("piston_mass");
     assert_eq!(host.step(0.0, 1e-3), Status::Error);
     host.logged("state Error");
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-    assert_eq!(unsafe { functions::reset::<Shuttle>(host.c) }, Status::Ok);
+    assert_eq!(unsafe { functions::reset::<Shuttle>(Function::fmi2Reset, host.c) }, Status::Ok);
     assert_eq!(host.enter(), Status::Ok);
     assert_eq!(host.set_integer("model_variant", 3), Status::Ok);
     assert_eq!(host.exit(), Status::Error);
@@ -396,12 +412,12 @@ fn a_panic_is_contained_as_fatal() {
     let mut x = 0.0;
     assert_eq!(
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::get_real::<Shuttle>(host.c, &vr("crank_angle"), 1, &mut x) },
+        unsafe { functions::get_real::<Shuttle>(Function::fmi2GetReal, host.c, &vr("crank_angle"), 1, &mut x) },
         Status::Error
     );
     assert_eq!(
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::reset::<Shuttle>(host.c) },
+        unsafe { functions::reset::<Shuttle>(Function::fmi2Reset, host.c) },
         Status::Error,
         "fatal: only fmi2FreeInstance"
     );
@@ -414,18 +430,21 @@ fn strings_status_queries_and_debug_logging() {
     let path_c = CString::new(path.to_str().unwrap()).unwrap();
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
-        assert_eq!(functions::set_string::<Shuttle>(host.c, &vr("impact_log"), 1, &path_c.as_ptr()), Status::Ok);
+        assert_eq!(functions::set_string::<Shuttle>(Function::fmi2SetString, host.c, &vr("impact_log"), 1, &path_c.as_ptr()), Status::Ok);
         let on = [c"logEvents".as_ptr()];
-        assert_eq!(functions::set_debug_logging::<Shuttle>(host.c, FMI2_TRUE, 1, on.as_ptr()), Status::Ok);
+        assert_eq!(functions::set_debug_logging::<Shuttle>(Function::fmi2SetDebugLogging, host.c, FMI2_TRUE, 1, on.as_ptr()), Status::Ok);
         let unknown = [c"logEverything".as_ptr()];
-        assert_eq!(functions::set_debug_logging::<Shuttle>(host.c, FMI2_TRUE, 1, unknown.as_ptr()), Status::Error);
+        assert_eq!(
+            functions::set_debug_logging::<Shuttle>(Function::fmi2SetDebugLogging, host.c, FMI2_TRUE, 1, unknown.as_ptr()),
+            Status::Error
+        );
     }
     assert_eq!(host.enter(), Status::Ok);
     assert_eq!(host.exit(), Status::Ok);
     let mut s: fmi2String = null();
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
-        assert_eq!(functions::get_string::<Shuttle>(host.c, &vr("impact_log"), 1, &mut s), Status::Ok);
+        assert_eq!(functions::get_string::<Shuttle>(Function::fmi2GetString, host.c, &vr("impact_log"), 1, &mut s), Status::Ok);
         assert_eq!(CStr::from_ptr(s), path_c.as_c_str());
     }
     host.run(0.0, 0.005, 1e-3);
@@ -434,21 +453,38 @@ fn strings_status_queries_and_debug_logging() {
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
         let mut t = 0.0;
-        assert_eq!(functions::get_real_status::<Shuttle>(host.c, FMI2_LAST_SUCCESSFUL_TIME, &mut t), Status::Ok);
+        assert_eq!(
+            functions::get_real_status::<Shuttle>(Function::fmi2GetRealStatus, host.c, FMI2_LAST_SUCCESSFUL_TIME, &mut t),
+            Status::Ok
+        );
         assert!((t - 0.005).abs() < 1e-15);
         let mut status = 0;
-        assert_eq!(functions::get_status::<Shuttle>(host.c, FMI2_DO_STEP_STATUS, &mut status), Status::Discard);
-        assert_eq!(functions::get_status::<Shuttle>(host.c, FMI2_PENDING_STATUS, &mut status), Status::Discard);
+        assert_eq!(functions::get_status::<Shuttle>(Function::fmi2GetStatus, host.c, FMI2_DO_STEP_STATUS, &mut status), Status::Discard);
+        assert_eq!(functions::get_status::<Shuttle>(Function::fmi2GetStatus, host.c, FMI2_PENDING_STATUS, &mut status), Status::Discard);
         let mut terminated = FMI2_TRUE;
-        assert_eq!(functions::get_boolean_status::<Shuttle>(host.c, FMI2_TERMINATED, &mut terminated), Status::Ok);
+        assert_eq!(
+            functions::get_boolean_status::<Shuttle>(Function::fmi2GetBooleanStatus, host.c, FMI2_TERMINATED, &mut terminated),
+            Status::Ok
+        );
         assert_eq!(terminated, FMI2_FALSE);
-        assert_eq!(functions::get_directional_derivative::<Shuttle>(host.c), Status::Error);
+        assert_eq!(functions::get_directional_derivative::<Shuttle>(Function::fmi2GetDirectionalDerivative, host.c), Status::Error);
         let mut rate = 0.0;
-        assert_eq!(functions::get_real_output_derivatives::<Shuttle>(host.c, &vr("crank_angle"), 1, &1, &mut rate), Status::Error);
+        assert_eq!(
+            functions::get_real_output_derivatives::<Shuttle>(
+                Function::fmi2GetRealOutputDerivatives,
+                host.c,
+                &vr("crank_angle"),
+                1,
+                &1,
+                &mut rate
+            ),
+            Status::Error
+        );
     }
     std::fs::remove_file(&path).unwrap();
 }
 
+mod fmi3;
 mod fmu_state;
 mod fuzz;
 mod reentry;

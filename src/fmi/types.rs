@@ -1,4 +1,4 @@
-//! The C types of `fmi_headers/` on the Rust side.
+//! The C types of `fmi_headers/` on the Rust side: FMI 2.0's, then FMI 3.0's.
 #![allow(non_camel_case_types)]
 
 use std::ffi::{c_char, c_int, c_uint, c_void};
@@ -82,3 +82,72 @@ pub struct fmi2CallbackFunctions {
     /// Passed back to `logger` and `step_finished`.
     pub component_environment: fmi2ComponentEnvironment,
 }
+
+/// The instance handle given to the host by fmi3InstantiateCoSimulation.
+pub type fmi3Instance = *mut c_void;
+/// The host's pointer passed back to its callbacks.
+pub type fmi3InstanceEnvironment = *mut c_void;
+/// A saved FMU state's handle (fmi3GetFMUState).
+pub type fmi3FMUState = *mut c_void;
+/// A variable's value reference.
+pub type fmi3ValueReference = c_uint;
+/// An FMI 3.0 Float64.
+pub type fmi3Float64 = f64;
+/// An FMI 3.0 Float32 (the tables have none).
+pub type fmi3Float32 = f32;
+/// An FMI 3.0 Int32.
+pub type fmi3Int32 = i32;
+/// An FMI 3.0 Int8 (the tables have none).
+pub type fmi3Int8 = i8;
+/// An FMI 3.0 UInt8 (the tables have none).
+pub type fmi3UInt8 = u8;
+/// An FMI 3.0 Int16 (the tables have none).
+pub type fmi3Int16 = i16;
+/// An FMI 3.0 UInt16 (the tables have none).
+pub type fmi3UInt16 = u16;
+/// An FMI 3.0 UInt32 (the tables have none).
+pub type fmi3UInt32 = u32;
+/// An FMI 3.0 Int64 (the tables have none).
+pub type fmi3Int64 = i64;
+/// An FMI 3.0 UInt64 (the tables have none).
+pub type fmi3UInt64 = u64;
+/// C's `bool`, read as a byte (0 false, anything else true): no byte from C is an invalid Rust value.
+pub type fmi3Boolean = u8;
+/// An FMI 3.0 Clock: a `bool`, as `fmi3Boolean`.
+pub type fmi3Clock = u8;
+/// A NUL-terminated UTF-8 string owned by its giver.
+pub type fmi3String = *const c_char;
+/// A byte of a serialized FMU state or of a Binary.
+pub type fmi3Byte = u8;
+/// A Binary variable's value: its bytes.
+pub type fmi3Binary = *const fmi3Byte;
+/// fmi3IntervalQualifier, an enum read as an int.
+pub type fmi3IntervalQualifier = c_int;
+/// fmi3DependencyKind, an enum read as an int.
+pub type fmi3DependencyKind = c_int;
+
+/// fmi3True as this layer writes it.
+pub const FMI3_TRUE: fmi3Boolean = 1;
+/// fmi3False.
+pub const FMI3_FALSE: fmi3Boolean = 0;
+
+/// The host's logger: its environment, the status, the log category and the message (no format).
+pub type fmi3LogMessageCallback =
+    unsafe extern "C" fn(env: fmi3InstanceEnvironment, status: c_int, category: fmi3String, message: fmi3String);
+
+/// The host's intermediate-update callback (never called: providesIntermediateUpdate is false).
+pub type fmi3IntermediateUpdateCallback = unsafe extern "C" fn(
+    env: fmi3InstanceEnvironment,
+    intermediate_update_time: fmi3Float64,
+    intermediate_variable_set_requested: fmi3Boolean,
+    intermediate_variable_get_allowed: fmi3Boolean,
+    intermediate_step_finished: fmi3Boolean,
+    can_return_early: fmi3Boolean,
+    early_return_requested: *mut fmi3Boolean,
+    early_return_time: *mut fmi3Float64,
+);
+
+/// Scheduled Execution's callbacks (never called: the FMU has no Scheduled Execution interface).
+pub type fmi3ClockUpdateCallback = unsafe extern "C" fn(env: fmi3InstanceEnvironment);
+/// See [`fmi3ClockUpdateCallback`].
+pub type fmi3LockPreemptionCallback = unsafe extern "C" fn();

@@ -51,7 +51,7 @@ fn a_restored_state_continues_bit_identically_also_through_bytes_and_other_insta
     let mut reused = state;
     assert_eq!(
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        unsafe { functions::get_fmu_state::<Shuttle>(host.c, &mut reused) },
+        unsafe { functions::get_fmu_state::<Shuttle>(Function::fmi2GetFMUstate, host.c, &mut reused) },
         Status::Ok
     );
     assert_eq!(reused, state);
@@ -96,10 +96,16 @@ fn corrupt_or_foreign_state_bytes_are_refused() {
     refused(&padded, "trailing byte");
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
     unsafe {
-        assert_eq!(functions::deserialize_fmu_state::<Shuttle>(host.c, null(), 10, &mut null_mut()), Status::Error);
+        assert_eq!(
+            functions::deserialize_fmu_state::<Shuttle>(Function::fmi2DeSerializeFMUstate, host.c, null(), 10, &mut null_mut()),
+            Status::Error
+        );
         let mut small = vec![0 as c_char; 4];
         let state = host.get_state();
-        assert_eq!(functions::serialize_fmu_state::<Shuttle>(host.c, state, small.as_mut_ptr(), 4), Status::Error);
+        assert_eq!(
+            functions::serialize_fmu_state::<Shuttle>(Function::fmi2SerializeFMUstate, host.c, state, small.as_mut_ptr().cast(), 4),
+            Status::Error
+        );
         host.free_state(state);
     }
     assert_eq!(host.step(0.03, 1e-3), Status::Ok, "the instance is still usable");
@@ -111,7 +117,7 @@ fn a_state_cannot_cut_another_instances_impact_log() {
     let path_c = CString::new(path.to_str().unwrap()).unwrap();
     let writer = ShuttleHost::new();
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-    let set = unsafe { functions::set_string::<Shuttle>(writer.c, &vr("impact_log"), 1, &path_c.as_ptr()) };
+    let set = unsafe { functions::set_string::<Shuttle>(Function::fmi2SetString, writer.c, &vr("impact_log"), 1, &path_c.as_ptr()) };
     assert_eq!(set, Status::Ok);
     assert_eq!((writer.enter(), writer.exit()), (Status::Ok, Status::Ok));
     let state = writer.get_state();

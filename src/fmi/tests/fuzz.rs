@@ -133,7 +133,7 @@ fn valid_states() -> Vec<Vec<u8>> {
         host.run(0.0, 0.05, 1e-3);
         save();
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        assert_eq!(unsafe { functions::terminate::<ModelVariant>(host.c) }, Status::Ok);
+        assert_eq!(unsafe { functions::terminate::<ModelVariant>(Function::fmi2Terminate, host.c) }, Status::Ok);
         save();
     }
     states
@@ -143,7 +143,7 @@ fn valid_states() -> Vec<Vec<u8>> {
 fn time<E: Model>(host: &Host<E>) -> Option<f64> {
     let mut t = f64::NAN;
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-    let status = unsafe { functions::get_real_status::<E>(host.c, FMI2_LAST_SUCCESSFUL_TIME, &mut t) };
+    let status = unsafe { functions::get_real_status::<E>(Function::fmi2GetRealStatus, host.c, FMI2_LAST_SUCCESSFUL_TIME, &mut t) };
     (status == Status::Ok).then_some(t)
 }
 
@@ -249,17 +249,17 @@ fn set_checked(rng: &mut Rng, host: &Host<ModelVariant>, read_back: bool, case: 
         match kind {
             0 => {
                 let values: Vec<f64> = (0..n).map(|_| real(rng)).collect();
-                let status = functions::set_real::<ModelVariant>(host.c, vrs.as_ptr(), n, values.as_ptr());
+                let status = functions::set_real::<ModelVariant>(Function::fmi2SetReal, host.c, vrs.as_ptr(), n, values.as_ptr());
                 (status, values.iter().map(|x| x.to_bits().to_string()).collect())
             }
             1 => {
                 let values: Vec<i32> = (0..n).map(|_| integer(rng)).collect();
-                let status = functions::set_integer::<ModelVariant>(host.c, vrs.as_ptr(), n, values.as_ptr());
+                let status = functions::set_integer::<ModelVariant>(Function::fmi2SetInteger, host.c, vrs.as_ptr(), n, values.as_ptr());
                 (status, values.iter().map(i32::to_string).collect())
             }
             2 => {
                 let values: Vec<c_int> = (0..n).map(|_| rng.next() as c_int).collect();
-                let status = functions::set_boolean::<ModelVariant>(host.c, vrs.as_ptr(), n, values.as_ptr());
+                let status = functions::set_boolean::<ModelVariant>(Function::fmi2SetBoolean, host.c, vrs.as_ptr(), n, values.as_ptr());
                 assert!(n == 0 || status == Status::Error, "{case}: PistonSlap has no Boolean");
                 (status, Vec::new())
             }
@@ -278,7 +278,7 @@ fn set_checked(rng: &mut Rng, host: &Host<ModelVariant>, read_back: bool, case: 
                     })
                     .collect();
                 let pointers: Vec<*const c_char> = strings.iter().map(|s| s.as_ptr() as *const c_char).collect();
-                let status = functions::set_string::<ModelVariant>(host.c, vrs.as_ptr(), n, pointers.as_ptr());
+                let status = functions::set_string::<ModelVariant>(Function::fmi2SetString, host.c, vrs.as_ptr(), n, pointers.as_ptr());
                 let shown = strings.iter().map(|s| CStr::from_bytes_until_nul(s).unwrap().to_string_lossy().into_owned());
                 (status, shown.collect())
             }
@@ -309,7 +309,7 @@ fn set_checked(rng: &mut Rng, host: &Host<ModelVariant>, read_back: bool, case: 
 fn string(host: &Host<ModelVariant>, vr: u32) -> String {
     let mut s: fmi2String = null();
     // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-    assert_eq!(unsafe { functions::get_string::<ModelVariant>(host.c, &vr, 1, &mut s) }, Status::Ok);
+    assert_eq!(unsafe { functions::get_string::<ModelVariant>(Function::fmi2GetString, host.c, &vr, 1, &mut s) }, Status::Ok);
     // SAFETY: a NUL-terminated string the FMU returned, valid until its next call.
     unsafe { CStr::from_ptr(s) }.to_string_lossy().into_owned()
 }
@@ -330,7 +330,7 @@ fn fuzz_setters(seed: u64, cases: usize) -> usize {
         let label = format!("seed {seed} after case {case}");
         let cleared = ["impact_log", "landing_log", "skirt_map"].map(|name| {
             // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-            unsafe { functions::set_string::<ModelVariant>(host.c, &vr(name), 1, &c"".as_ptr()) }
+            unsafe { functions::set_string::<ModelVariant>(Function::fmi2SetString, host.c, &vr(name), 1, &c"".as_ptr()) }
         });
         let _ = (host.setup(0.0, None), host.enter());
         let status = host.exit();

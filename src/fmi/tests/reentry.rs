@@ -26,8 +26,8 @@ unsafe extern "C" fn calling_back_logger(
     let host = &*(env as *const CallingBack);
     let (logging, other) = (host.logging.load(Ordering::SeqCst), host.other.load(Ordering::SeqCst));
     let mut value = 0.0;
-    let own = functions::get_real::<Shuttle>(logging, &vr("crank_angle"), 1, &mut value);
-    let others = functions::get_real::<Shuttle>(other, &vr("crank_angle"), 1, &mut value);
+    let own = functions::get_real::<Shuttle>(Function::fmi2GetReal, logging, &vr("crank_angle"), 1, &mut value);
+    let others = functions::get_real::<Shuttle>(Function::fmi2GetReal, other, &vr("crank_angle"), 1, &mut value);
     functions::free_instance::<Shuttle>(logging);
     host.statuses.lock().unwrap().extend([("own", own), ("other", others)]);
 }

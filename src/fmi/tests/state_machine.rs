@@ -115,7 +115,7 @@ fn reach<E: Model>(subject: &Subject<E>, state: Mode) -> Host<E> {
     }
     match state {
         // SAFETY: an instance this test made and has not freed; the other pointers are NULL or live locals.
-        Mode::Terminated => assert_eq!(unsafe { functions::terminate::<E>(host.c) }, Status::Ok),
+        Mode::Terminated => assert_eq!(unsafe { functions::terminate::<E>(Function::fmi2Terminate, host.c) }, Status::Ok),
         Mode::Error => {
             (subject.break_step)(&host);
             assert_eq!(host.step(H, H), Status::Error);
@@ -161,26 +161,26 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
         match function {
             "fmi2GetTypesPlatform" => constant(c_string(exports::fmi2GetTypesPlatform()) == "default"),
             "fmi2GetVersion" => constant(c_string(exports::fmi2GetVersion()) == "2.0"),
-            "fmi2SetDebugLogging" => (functions::set_debug_logging::<E>(c, FMI2_TRUE, 0, null()), OK),
+            "fmi2SetDebugLogging" => (functions::set_debug_logging::<E>(Function::fmi2SetDebugLogging, c, FMI2_TRUE, 0, null()), OK),
             "fmi2SetupExperiment" => (host.setup(0.0, Some(1.0)), OK),
             "fmi2EnterInitializationMode" => (host.enter(), OK),
             "fmi2ExitInitializationMode" => (host.exit(), OK),
-            "fmi2Terminate" => (functions::terminate::<E>(c), OK),
-            "fmi2Reset" => (functions::reset::<E>(c), OK),
-            "fmi2GetReal" => (functions::get_real::<E>(c, reals.as_ptr(), 3, real.as_mut_ptr()), OK),
-            "fmi2GetInteger" => (functions::get_integer::<E>(c, integers.as_ptr(), 2, int.as_mut_ptr()), OK),
-            "fmi2GetBoolean" => (functions::get_boolean::<E>(c, null(), 0, boolean.as_mut_ptr()), OK),
-            "fmi2GetString" => (functions::get_string::<E>(c, impact_log.as_ptr(), 1, string.as_mut_ptr()), OK),
-            "fmi2SetReal" => (functions::set_real::<E>(c, reals.as_ptr(), 1, &100.0), OK),
-            "fmi2SetInteger" => (functions::set_integer::<E>(c, crank_mode.as_ptr(), fixed(&crank_mode), &1), OK),
-            "fmi2SetBoolean" => (functions::set_boolean::<E>(c, null(), 0, null()), OK),
+            "fmi2Terminate" => (functions::terminate::<E>(Function::fmi2Terminate, c), OK),
+            "fmi2Reset" => (functions::reset::<E>(Function::fmi2Reset, c), OK),
+            "fmi2GetReal" => (functions::get_real::<E>(Function::fmi2GetReal, c, reals.as_ptr(), 3, real.as_mut_ptr()), OK),
+            "fmi2GetInteger" => (functions::get_integer::<E>(Function::fmi2GetInteger, c, integers.as_ptr(), 2, int.as_mut_ptr()), OK),
+            "fmi2GetBoolean" => (functions::get_boolean::<E>(Function::fmi2GetBoolean, c, null(), 0, boolean.as_mut_ptr()), OK),
+            "fmi2GetString" => (functions::get_string::<E>(Function::fmi2GetString, c, impact_log.as_ptr(), 1, string.as_mut_ptr()), OK),
+            "fmi2SetReal" => (functions::set_real::<E>(Function::fmi2SetReal, c, reals.as_ptr(), 1, &100.0), OK),
+            "fmi2SetInteger" => (functions::set_integer::<E>(Function::fmi2SetInteger, c, crank_mode.as_ptr(), fixed(&crank_mode), &1), OK),
+            "fmi2SetBoolean" => (functions::set_boolean::<E>(Function::fmi2SetBoolean, c, null(), 0, null()), OK),
             "fmi2SetString" => {
                 let empty = [c"".as_ptr()];
-                (functions::set_string::<E>(c, impact_log.as_ptr(), fixed(&impact_log), empty.as_ptr()), OK)
+                (functions::set_string::<E>(Function::fmi2SetString, c, impact_log.as_ptr(), fixed(&impact_log), empty.as_ptr()), OK)
             }
             "fmi2GetFMUstate" => {
                 let mut state = null_mut();
-                let status = functions::get_fmu_state::<E>(c, &mut state);
+                let status = functions::get_fmu_state::<E>(Function::fmi2GetFMUstate, c, &mut state);
                 assert_eq!(status == Status::Ok, !state.is_null());
                 if !state.is_null() {
                     donor.free_state(state);
@@ -195,7 +195,7 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
             }
             "fmi2FreeFMUstate" => {
                 let mut state = donor.get_state();
-                let status = functions::free_fmu_state::<E>(c, &mut state);
+                let status = functions::free_fmu_state::<E>(Function::fmi2FreeFMUstate, c, &mut state);
                 assert_eq!(status == Status::Ok, state.is_null());
                 if !state.is_null() {
                     donor.free_state(state);
@@ -204,14 +204,15 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
             }
             "fmi2SerializedFMUstateSize" => {
                 let (state, mut size) = (donor.get_state(), 0);
-                let status = functions::serialized_fmu_state_size::<E>(c, state, &mut size);
+                let status = functions::serialized_fmu_state_size::<E>(Function::fmi2SerializedFMUstateSize, c, state, &mut size);
                 donor.free_state(state);
                 (status, OK)
             }
             "fmi2SerializeFMUstate" => {
                 let state = donor.get_state();
                 let mut bytes = vec![0 as c_char; donor.serialize(state).len()];
-                let status = functions::serialize_fmu_state::<E>(c, state, bytes.as_mut_ptr(), bytes.len());
+                let status =
+                    functions::serialize_fmu_state::<E>(Function::fmi2SerializeFMUstate, c, state, bytes.as_mut_ptr().cast(), bytes.len());
                 donor.free_state(state);
                 (status, OK)
             }
@@ -225,21 +226,32 @@ fn call<E: Model>(host: &Host<E>, donor: &Host<E>, function: &str) -> (Status, E
                 }
                 (status, OK)
             }
-            "fmi2GetDirectionalDerivative" => {
-                (functions::get_directional_derivative::<E>(c), (Status::Error, Some("providesDirectionalDerivative = false")))
+            "fmi2GetDirectionalDerivative" => (
+                functions::get_directional_derivative::<E>(Function::fmi2GetDirectionalDerivative, c),
+                (Status::Error, Some("providesDirectionalDerivative = false")),
+            ),
+            "fmi2SetRealInputDerivatives" => {
+                (functions::set_real_input_derivatives::<E>(Function::fmi2SetRealInputDerivatives, c, reals.as_ptr(), 1, &1, &50.0), OK)
             }
-            "fmi2SetRealInputDerivatives" => (functions::set_real_input_derivatives::<E>(c, reals.as_ptr(), 1, &1, &50.0), OK),
             "fmi2GetRealOutputDerivatives" => (
-                functions::get_real_output_derivatives::<E>(c, &reals[2], 1, &1, real.as_mut_ptr()),
+                functions::get_real_output_derivatives::<E>(Function::fmi2GetRealOutputDerivatives, c, &reals[2], 1, &1, real.as_mut_ptr()),
                 (Status::Error, Some("maxOutputDerivativeOrder = 0")),
             ),
             "fmi2DoStep" => (host.step(H, H), OK),
-            "fmi2CancelStep" => (functions::cancel_step::<E>(c), OK),
-            "fmi2GetStatus" => (functions::get_status::<E>(c, FMI2_DO_STEP_STATUS, &mut int[0]), no_value),
-            "fmi2GetRealStatus" => (functions::get_real_status::<E>(c, FMI2_LAST_SUCCESSFUL_TIME, &mut real[0]), OK),
-            "fmi2GetIntegerStatus" => (functions::get_integer_status::<E>(c, FMI2_DO_STEP_STATUS, &mut int[0]), no_value),
-            "fmi2GetBooleanStatus" => (functions::get_boolean_status::<E>(c, FMI2_TERMINATED, &mut boolean[0]), OK),
-            "fmi2GetStringStatus" => (functions::get_string_status::<E>(c, FMI2_PENDING_STATUS, &mut string[0]), no_value),
+            "fmi2CancelStep" => (functions::cancel_step::<E>(Function::fmi2CancelStep, c), OK),
+            "fmi2GetStatus" => (functions::get_status::<E>(Function::fmi2GetStatus, c, FMI2_DO_STEP_STATUS, &mut int[0]), no_value),
+            "fmi2GetRealStatus" => {
+                (functions::get_real_status::<E>(Function::fmi2GetRealStatus, c, FMI2_LAST_SUCCESSFUL_TIME, &mut real[0]), OK)
+            }
+            "fmi2GetIntegerStatus" => {
+                (functions::get_integer_status::<E>(Function::fmi2GetIntegerStatus, c, FMI2_DO_STEP_STATUS, &mut int[0]), no_value)
+            }
+            "fmi2GetBooleanStatus" => {
+                (functions::get_boolean_status::<E>(Function::fmi2GetBooleanStatus, c, FMI2_TERMINATED, &mut boolean[0]), OK)
+            }
+            "fmi2GetStringStatus" => {
+                (functions::get_string_status::<E>(Function::fmi2GetStringStatus, c, FMI2_PENDING_STATUS, &mut string[0]), no_value)
+            }
             other => panic!("no call for {other}"),
         }
     }

@@ -7,6 +7,9 @@ use crate::models::{EngineCycleInputs as Inputs, EngineCycleOutputs as Outputs, 
 /// The shipped `modelDescription.xml` of EngineCycle.fmu.
 pub const MODEL_DESCRIPTION_XML: &str = DESCRIPTION.model_description_xml;
 
+/// The FMI 3.0 `modelDescription.xml`, from the same table.
+pub const FMI3_MODEL_DESCRIPTION_XML: &str = DESCRIPTION.fmi3_model_description_xml;
+
 // GUID, VARIABLES, the dispatch lists and DESCRIPTION.
 include!(concat!(env!("OUT_DIR"), "/engine_cycle_variables.rs"));
 

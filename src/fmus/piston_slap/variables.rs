@@ -7,6 +7,9 @@ use crate::models::{Inputs, Outputs, Parameters};
 /// The shipped `modelDescription.xml`, generated from the same table as the dispatch.
 pub const MODEL_DESCRIPTION_XML: &str = DESCRIPTION.model_description_xml;
 
+/// The FMI 3.0 `modelDescription.xml`, from the same table.
+pub const FMI3_MODEL_DESCRIPTION_XML: &str = DESCRIPTION.fmi3_model_description_xml;
+
 // GUID, VARIABLES, the dispatch lists and DESCRIPTION.
 include!(concat!(env!("OUT_DIR"), "/piston_slap_variables.rs"));
 

@@ -76,6 +76,7 @@ impl Model for Lag {
         model_name: "Lag",
         guid: GUID,
         model_description_xml: "",
+        fmi3_model_description_xml: "",
         variables: &VARIABLES,
         get_real,
         get_integer: |_, _, _, _| None,
