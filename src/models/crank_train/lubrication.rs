@@ -37,6 +37,7 @@
 
 use super::books::SkirtRates;
 use super::linkage::LinkAngles;
+use super::step_bounds::{CLEAR_ERROR_FACTOR, CLEAR_GAP};
 use super::step_film::{key, Solved, StepFilm};
 use crate::models::numerics::LastValue;
 use crate::models::skirt::{CavitationCondition, Fill, PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
@@ -49,17 +50,6 @@ use std::cell::RefCell;
 /// transients close to ≈ 2e-3 of their energy (`tests/core/absorbing.rs`).
 pub const STEPS_PER_RELAXATION: f64 = 2.0;
 
-/// Corner gap, m, beyond which (at every corner) the film alone carries the piston: a step's local
-/// error may then be [`CLEAR_ERROR_FACTOR`] times the corners' bound. At the corners' 1e-11 m the film's
-/// stiff mode held the default engine's steps at 25 µs (1200 rpm) and 13 µs (3000 rpm), under the
-/// τ/2 = 50 µs its stability allows; at 1e-10 m they are 1.7× and 1.8× longer and every figure of
-/// `film_convergence` (12 × 18) stays within 0.2 % of a 1e-12 m run (the thinnest film moves most:
-/// −0.20 % at 1200 rpm, −0.05 % at 3000), below the grid's and τ's errors. Near the liner the
-/// corners' bound stands: loosened there too, one thin-oil random design of 42 chattered into an
-/// unresolved accumulation (`tools/random_designs.rs`, "lubricated engine").
-pub const CLEAR_GAP: f64 = 10e-6;
-/// See [`CLEAR_GAP`]; 100 (1e-9 m) moves the thinnest film by 0.55 %, more than the 12 × 18 grid's error.
-pub const CLEAR_ERROR_FACTOR: f64 = 10.0;
 
 /// Where in an RK4 step the film is solved, as a fraction of the step ([`predicted`]): half a step
 /// in, the film's position errs to second order over the stages (at the start, first order: the

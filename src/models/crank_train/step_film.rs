@@ -15,7 +15,7 @@
 //! fill would have moved by more than [`CARRY_FILL`] since it, and the next solve takes the fill
 //! moved on from the latest solve to its own time (`FilmLinear::fill_after`).
 
-use super::lubrication::CLEAR_GAP;
+use super::step_bounds::CLEAR_GAP;
 use crate::models::skirt::{Fill, FilmLinear, PressureMap, Skirt, SkirtMotion};
 use nalgebra::{Vector2, Vector3};
 
