@@ -59,17 +59,28 @@ COLUMNS = (
 )
 
 
-class Slave:
-    """One FMU instance stepped by the master: fmpy's FMU2Slave with value references by name."""
+class Extracted:
+    """An FMU unpacked once for any number of instances: they share its one loaded library, as the instances of a
+    host's process do."""
 
-    def __init__(self, path, name, start_values, start_time):
-        description = fmpy.read_model_description(str(path))
-        self.variables = {v.name: v for v in description.modelVariables}
+    def __init__(self, path):
+        self.description = fmpy.read_model_description(str(path))
+        self.variables = {v.name: v for v in self.description.modelVariables}
         self.unzipdir = fmpy.extract(str(path))
+
+    def remove(self):
+        shutil.rmtree(self.unzipdir, ignore_errors=True)
+
+
+class Slave:
+    """One FMU instance stepped by the master: fmpy's FMU2Slave on an `Extracted` FMU, value references by name."""
+
+    def __init__(self, extracted, name, start_values, start_time):
+        self.variables = extracted.variables
         self.fmu = FMU2Slave(
-            guid=description.guid,
-            unzipDirectory=self.unzipdir,
-            modelIdentifier=description.coSimulation.modelIdentifier,
+            guid=extracted.description.guid,
+            unzipDirectory=extracted.unzipdir,
+            modelIdentifier=extracted.description.coSimulation.modelIdentifier,
             instanceName=name,
         )
         self.fmu.instantiate()
@@ -90,7 +101,56 @@ class Slave:
     def free(self):
         self.fmu.terminate()
         self.fmu.freeInstance()
-        shutil.rmtree(self.unzipdir, ignore_errors=True)
+
+
+class Cylinder:
+    """A PistonSlap instance driven by its EngineCycle instance (both in initialization mode), recording `COLUMNS`
+    and the PistonSlap outputs `recorded` (its Real ones first, then its Integer ones) at `points` communication
+    points."""
+
+    def __init__(self, engine, slap, recorded, points):
+        self.engine, self.slap = engine, slap
+        self.outputs = engine.vrs([w[0] for w in WIRES])
+        self.inputs = slap.vrs([w[1] for w in WIRES])
+        self.engine_read = engine.vrs(["crank_angle", "crank_speed", "gas_pressure"])
+        real = [n for n in recorded if slap.variables[n].type == "Real"]
+        integer = [n for n in recorded if slap.variables[n].type == "Integer"]
+        self.slap_real = slap.vrs(
+            [
+                "crank_angle",
+                "gas_pressure_acting",
+                "piston_lateral",
+                "max_impact_velocity_in_step",
+                "impact_energy_total",
+                *real,
+            ]
+        )
+        self.slap_int = slap.vrs(["impact_count", "impacts_in_step", *integer])
+        self.rows = np.zeros(
+            points, dtype=[(c, "f8") for c in COLUMNS] + [(n, "f8") for n in real] + [(n, "i8") for n in integer]
+        )
+
+    def initialize(self):
+        self.engine.fmu.exitInitializationMode()
+        self.slap.fmu.setReal(self.inputs, self.engine.fmu.getReal(self.outputs))
+        self.slap.fmu.exitInitializationMode()
+
+    def step(self, t, step, derivatives):
+        """Passes the engine's outputs (and with `derivatives` their slopes) on, then steps both from `t`."""
+        self.slap.fmu.setReal(self.inputs, self.engine.fmu.getReal(self.outputs))
+        if derivatives:
+            orders = [1] * len(WIRES)
+            self.slap.fmu.setRealInputDerivatives(
+                self.inputs, orders, self.engine.fmu.getRealOutputDerivatives(self.outputs, orders)
+            )
+        self.engine.fmu.doStep(t, step)
+        self.slap.fmu.doStep(t, step)
+
+    def record(self, k, t):
+        a, w, p = self.engine.fmu.getReal(self.engine_read)
+        angle, acting, lateral, vmax, energy, *real = self.slap.fmu.getReal(self.slap_real)
+        count, in_step, *integer = self.slap.fmu.getInteger(self.slap_int)
+        self.rows[k] = (t, a, w, p, angle, acting, lateral, count, in_step, vmax, energy, *real, *integer)
 
 
 def run(stop_time, step, engine_values=None, slap_values=None, derivatives=True, start_time=0.0, step_finished=None):
@@ -101,53 +161,49 @@ def run(stop_time, step, engine_values=None, slap_values=None, derivatives=True,
     `step_finished(time)` is called after each step (a progress line). Returns a structured array with `COLUMNS`,
     one row per communication point including the start.
     """
+    (rows,) = run_cylinders(
+        stop_time, step, [(engine_values or {}, slap_values or {})], derivatives, start_time, step_finished
+    )
+    return rows
+
+
+def run_cylinders(
+    stop_time, step, cylinders, derivatives=True, start_time=0.0, step_finished=None, recorded=(), names=None
+):
+    """`run` for several cylinders in one process: `cylinders` holds each one's `(engine_values, slap_values)`,
+    each a PistonSlap instance driven by its own EngineCycle instance, all instances of one FMU sharing its loaded
+    library and stepped in turn at each communication point. `names` are the instances' name suffixes (default
+    none for one cylinder, else 1, 2, ...). Returns one structured array per cylinder: `COLUMNS`, then the
+    PistonSlap outputs `recorded`.
+    """
     steps = round((stop_time - start_time) / step)
     if steps < 1 or abs(start_time + steps * step - stop_time) > 1e-9 * max(1.0, abs(stop_time)):
         raise ValueError(f"stop_time - start_time = {stop_time - start_time} s is not a whole number of {step} s steps")
-    engine = Slave(ENGINE_FMU, "engine", engine_values or {}, start_time)
-    slap = Slave(fmu_path(), "slap", {**(slap_values or {}), "pressure_source": 1}, start_time)
+    if names is None:
+        names = [""] if len(cylinders) == 1 else [f"_{k}" for k in range(1, len(cylinders) + 1)]
+    engine_fmu, slap_fmu = Extracted(ENGINE_FMU), Extracted(fmu_path())
+    slaves, pairs = [], []
     try:
-        engine.fmu.exitInitializationMode()
-        outputs = engine.vrs([w[0] for w in WIRES])
-        inputs = slap.vrs([w[1] for w in WIRES])
-        slap.fmu.setReal(inputs, engine.fmu.getReal(outputs))
-        slap.fmu.exitInitializationMode()
-
-        engine_read = engine.vrs(["crank_angle", "crank_speed", "gas_pressure"])
-        slap_real = slap.vrs(
-            [
-                "crank_angle",
-                "gas_pressure_acting",
-                "piston_lateral",
-                "max_impact_velocity_in_step",
-                "impact_energy_total",
-            ]
-        )
-        slap_int = slap.vrs(["impact_count", "impacts_in_step"])
-        rows = np.zeros(steps + 1, dtype=[(c, "f8") for c in COLUMNS])
-
-        def record(k, t):
-            a, w, p = engine.fmu.getReal(engine_read)
-            angle, acting, lateral, vmax, energy = slap.fmu.getReal(slap_real)
-            count, in_step = slap.fmu.getInteger(slap_int)
-            rows[k] = (t, a, w, p, angle, acting, lateral, count, in_step, vmax, energy)
-
-        record(0, start_time)
-        orders = [1] * len(WIRES)
+        for name, (engine_values, slap_values) in zip(names, cylinders, strict=True):
+            slaves.append(Slave(engine_fmu, f"engine{name}", engine_values, start_time))
+            slaves.append(Slave(slap_fmu, f"slap{name}", {**slap_values, "pressure_source": 1}, start_time))
+            pairs.append(Cylinder(*slaves[-2:], recorded, steps + 1))
+        for pair in pairs:
+            pair.initialize()
+            pair.record(0, start_time)
         for k in range(steps):
-            t = start_time + k * step
-            slap.fmu.setReal(inputs, engine.fmu.getReal(outputs))
-            if derivatives:
-                slap.fmu.setRealInputDerivatives(inputs, orders, engine.fmu.getRealOutputDerivatives(outputs, orders))
-            engine.fmu.doStep(t, step)
-            slap.fmu.doStep(t, step)
-            record(k + 1, start_time + (k + 1) * step)
+            t, reached = start_time + k * step, start_time + (k + 1) * step
+            for pair in pairs:
+                pair.step(t, step, derivatives)
+                pair.record(k + 1, reached)
             if step_finished is not None:
-                step_finished(start_time + (k + 1) * step)
-        return rows
+                step_finished(reached)
+        return [pair.rows for pair in pairs]
     finally:
-        engine.free()
-        slap.free()
+        for slave in slaves:
+            slave.free()
+        engine_fmu.remove()
+        slap_fmu.remove()
 
 
 def run_libcosim(steps, osp_system=OSP_SYSTEM):
