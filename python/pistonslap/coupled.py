@@ -21,6 +21,7 @@ import numpy as np
 from fmpy.fmi2 import FMU2Slave
 
 from .engine_cycle_presets import slap_geometry
+from .firing_order import firing_order
 from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, from_firing_tdc, read_impact_log
 from .presets import PRESETS as PISTON_PRESETS
 from .progress import Progress
@@ -321,7 +322,15 @@ def write(rows, out, origin=CENTRED, events=None, case="", synchronisation=False
 
 #: PistonSlap's inputs and settings the engine drives: a preset's, a parameter file's or a --set's value of them is
 #: not PistonSlap's to take.
-DRIVEN = ("crank_speed", "gas_pressure", "pressure_source", "peak_pressure", "crank_mode", "load_torque")
+DRIVEN = (
+    "crank_speed",
+    "gas_pressure",
+    "pressure_source",
+    "peak_pressure",
+    "crank_mode",
+    "load_torque",
+    "crank_angle_start",
+)
 #: Default communication step: 1 ms, or this crank angle (1 ms at 1200 rpm) where 1 ms would be more, deg.
 DEFAULT_STEP_DEG = 7.2
 
@@ -348,6 +357,18 @@ def _parser(presets):
     )
     add_parameter_options(parser, "PistonSlap", "skirt_model=2 for the lubricated skirt, clearance=40um")
     parser.add_argument(
+        "--cylinders",
+        metavar="N",
+        help="run a whole engine: N cylinders on one crank, each a PistonSlap and an EngineCycle instance, in one "
+        "process; CSVs per cylinder, an engine summary and a plot (default: one cylinder, as before)",
+    )
+    parser.add_argument(
+        "--firing-order",
+        metavar="1-3-4-2",
+        help="the engine's firing order, cylinder 1 first, fired evenly every 720°/N (default for 1 to 6 cylinders "
+        "the in-line engines' 1, 1-2, 1-2-3, 1-3-4-2, 1-2-4-5-3, 1-5-3-6-2-4)",
+    )
+    parser.add_argument(
         "--crank-0-720",
         action="store_true",
         help="draw the crank angle from 0 to 720° (default -360 to 360°; 0 = firing TDC either way)",
@@ -370,7 +391,7 @@ def slap_start_values(args, engine, md):
     driven = sorted(set(given) & set(DRIVEN))
     if driven:
         raise Refusal(
-            f"{', '.join(driven)}: the engine drives PistonSlap's speed and pressure; set them in EngineCycle"
+            f"{', '.join(driven)}: the engine drives PistonSlap's crank and pressure; set them in EngineCycle"
         )
     values.update(given)
     defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
@@ -381,6 +402,10 @@ def main(argv=None):
     from .engine_cycle_presets import PRESETS
 
     args = _parser(PRESETS).parse_args(argv)
+    whole_engine = args.cylinders is not None or args.firing_order is not None
+    order = firing_order(args.cylinders, args.firing_order) if whole_engine else None
+    if whole_engine and args.synchronisation:
+        raise Refusal("--synchronisation checks the one-cylinder run: leave it out with --cylinders")
     if args.engine is not None and args.engine not in PRESETS:
         raise Refusal(f"unknown --engine {args.engine!r} (presets: {', '.join(PRESETS)})")
     if args.cycles < 3:
@@ -413,6 +438,8 @@ def main(argv=None):
     )
     print(case)
     args.out.mkdir(parents=True, exist_ok=True)
+    if whole_engine:
+        return _whole_engine(args, order, step, speed, engine, slap, origin, md)
     log = args.out / "impact_log.csv"
     progress = Progress("pistonslap coupled: simulating", stop)
     rows = run(
@@ -430,4 +457,20 @@ def main(argv=None):
         f"{energy_per_cycle(rows, 2, args.cycles):.4g} J per cycle after two cycles"
     )
     for path in [*written, log]:
+        print(f"wrote {path}")
+
+
+def _whole_engine(args, order, step, speed, engine, slap, origin, md):
+    """`main` with --cylinders or --firing-order: runs, prints the summary table, writes the files."""
+    from . import cylinders
+
+    records, landings = cylinders.run(order, args.cycles, step, speed, engine, slap, args.out, not args.held)
+    table = cylinders.summary(order, records, landings, args.cycles, origin)
+    written = cylinders.write(args.out, order, records, table, cylinders.record_units(md), origin)
+    print(
+        f"{len(order)} cylinders, firing order {'-'.join(map(str, order))}, {len(records[0]) - 1} steps of "
+        f"{step:.3g} s; cycles {cylinders.FIRST_REPORTED} to {args.cycles} of each cylinder:"
+    )
+    print(cylinders.text_table(table))
+    for path in [*written, *(args.out / f"cylinder_{k}_landing_log.csv" for k in range(1, len(order) + 1))]:
         print(f"wrote {path}")
