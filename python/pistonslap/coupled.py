@@ -168,20 +168,17 @@ def run(stop_time, step, engine_values=None, slap_values=None, derivatives=True,
     return rows
 
 
-def run_cylinders(
-    stop_time, step, cylinders, derivatives=True, start_time=0.0, step_finished=None, recorded=(), names=None
-):
+def run_cylinders(stop_time, step, cylinders, derivatives=True, start_time=0.0, step_finished=None, recorded=()):
     """`run` for several cylinders in one process: `cylinders` holds each one's `(engine_values, slap_values)`,
     each a PistonSlap instance driven by its own EngineCycle instance, all instances of one FMU sharing its loaded
-    library and stepped in turn at each communication point. `names` are the instances' name suffixes (default
-    none for one cylinder, else 1, 2, ...). Returns one structured array per cylinder: `COLUMNS`, then the
+    library and stepped in turn at each communication point (instances named engine_1, slap_1, ..., or engine and
+    slap for one cylinder). Returns one structured array per cylinder: `COLUMNS`, then the
     PistonSlap outputs `recorded`.
     """
     steps = round((stop_time - start_time) / step)
     if steps < 1 or abs(start_time + steps * step - stop_time) > 1e-9 * max(1.0, abs(stop_time)):
         raise ValueError(f"stop_time - start_time = {stop_time - start_time} s is not a whole number of {step} s steps")
-    if names is None:
-        names = [""] if len(cylinders) == 1 else [f"_{k}" for k in range(1, len(cylinders) + 1)]
+    names = [""] if len(cylinders) == 1 else [f"_{k}" for k in range(1, len(cylinders) + 1)]
     engine_fmu, slap_fmu = Extracted(ENGINE_FMU), Extracted(fmu_path())
     slaves, pairs = [], []
     try:
@@ -345,7 +342,7 @@ def _parser(presets):
         "--step",
         type=float,
         help=f"communication step, s (default 0.001, or {DEFAULT_STEP_DEG:g}° of crank angle where that is less; at "
-        f"most {MAX_STEP_DEG:g}°)",
+        f"most {MAX_STEP_DEG:g}°; with --cylinders the largest step up to that dividing the firing interval 720°/N)",
     )
     parser.add_argument("--held", action="store_true", help="hold the inputs over each step (no derivatives)")
     parser.add_argument("--engine", help=f"EngineCycle preset: {', '.join(presets)} (default: the FMU's defaults)")
@@ -399,6 +396,7 @@ def slap_start_values(args, engine, md):
 
 
 def main(argv=None):
+    from . import cylinders  # it imports this module
     from .engine_cycle_presets import PRESETS
 
     args = _parser(PRESETS).parse_args(argv)
@@ -416,6 +414,8 @@ def main(argv=None):
     speed = engine.get("speed_start", SPEED)
     largest = np.radians(MAX_STEP_DEG) / speed
     step = min(1e-3, np.radians(DEFAULT_STEP_DEG) / speed) if args.step is None else args.step
+    if whole_engine and args.step is None:
+        step = cylinders.fitted_step(step, order, speed)
     number(step, "--step", low=0, low_open=True, unit=" s", meaning="the communication step")
     if step > largest:
         raise Refusal(
@@ -439,7 +439,7 @@ def main(argv=None):
     print(case)
     args.out.mkdir(parents=True, exist_ok=True)
     if whole_engine:
-        return _whole_engine(args, order, step, speed, engine, slap, origin, md)
+        return cylinders.main(args, order, step, speed, engine, slap, origin, md)
     log = args.out / "impact_log.csv"
     progress = Progress("pistonslap coupled: simulating", stop)
     rows = run(
@@ -457,20 +457,4 @@ def main(argv=None):
         f"{energy_per_cycle(rows, 2, args.cycles):.4g} J per cycle after two cycles"
     )
     for path in [*written, log]:
-        print(f"wrote {path}")
-
-
-def _whole_engine(args, order, step, speed, engine, slap, origin, md):
-    """`main` with --cylinders or --firing-order: runs, prints the summary table, writes the files."""
-    from . import cylinders
-
-    records, landings = cylinders.run(order, args.cycles, step, speed, engine, slap, args.out, not args.held)
-    table = cylinders.summary(order, records, landings, args.cycles, origin)
-    written = cylinders.write(args.out, order, records, table, cylinders.record_units(md), origin)
-    print(
-        f"{len(order)} cylinders, firing order {'-'.join(map(str, order))}, {len(records[0]) - 1} steps of "
-        f"{step:.3g} s; cycles {cylinders.FIRST_REPORTED} to {args.cycles} of each cylinder:"
-    )
-    print(cylinders.text_table(table))
-    for path in [*written, *(args.out / f"cylinder_{k}_landing_log.csv" for k in range(1, len(order) + 1))]:
         print(f"wrote {path}")

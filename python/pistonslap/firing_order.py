@@ -3,8 +3,10 @@ the command takes it, and each cylinder's phase on the one crank.
 
 A four-stroke engine of N cylinders fires evenly, every 720°/N: the cylinder at position p of the firing order
 (p = 0 for cylinder 1, which leads it) reaches its firing TDC p · 720°/N after cylinder 1. Each cylinder's crank
-angle is its own, firing TDC at 0 mod 4π (DESIGN.md section 3), so at the start, where cylinder 1 is at its firing
-TDC, cylinder k is at −p · 720°/N: EngineCycle's and PistonSlap's `crank_angle_start` both take it.
+angle is its own, firing TDC at 0 mod 4π (DESIGN.md section 3): at the start, where cylinder 1 is at its firing
+TDC (0), cylinder k is at 720° − p · 720°/N, in its first cycle, so that every cylinder's n-th cycle ends at its
+crank angle n · 720° as the per-cycle figures (`tables.cycle_metrics`) count them. EngineCycle's and PistonSlap's
+`crank_angle_start` both take it (`start_angles`).
 """
 
 import numpy as np
@@ -41,6 +43,12 @@ def firing_order(cylinders=None, order=None):
     if numbers[0] != 1:
         raise Refusal(f"--firing-order = {order!r}: start with cylinder 1, the one the others' phases are taken from")
     return tuple(numbers)
+
+
+def start_angles(order):
+    """Each cylinder's crank angle at the start, rad, by cylinder number: 4π less its phase, 0 for cylinder 1."""
+    phase = phases(order)
+    return np.where(phase > 0, CYCLE - phase, 0.0)
 
 
 def phases(order):
