@@ -357,7 +357,7 @@ def _parser(presets):
         "--cylinders",
         metavar="N",
         help="run a whole engine: N cylinders on one crank, each a PistonSlap and an EngineCycle instance, in one "
-        "process; CSVs per cylinder, an engine summary and a plot (default: one cylinder, as before)",
+        "process; CSVs per cylinder, an engine summary and a plot (default: one cylinder)",
     )
     parser.add_argument(
         "--firing-order",
