@@ -37,8 +37,9 @@ RECORDED = (
     "asperity_force",
     *(f"liner_force_{wall}" for wall in WALLS),
 )
-#: The first of each cylinder's cycles reported (they count from its first firing TDC): the two before it let the
-#: start settle out, as in the one-cylinder run's energy per cycle.
+#: The first of each cylinder's cycles reported (its n-th ends at its n-th firing TDC after the start; the first is
+#: a part cycle but in cylinder 1): the two before it let the start settle out, as in the one-cylinder run's energy
+#: per cycle.
 FIRST_REPORTED = 3
 #: Per cylinder and for the engine (cylinder 0): the figures of `summary` and their units; a landing's crank angle is
 #: from its cylinder's firing TDC, `landing_cylinder_*` the cylinder it is in.
