@@ -80,7 +80,7 @@ def fitted_step(step, order, speed):
     the largest landing on the lubricated skirt by 15 % from one cylinder to the next."""
     interval = CYCLE / len(order) / speed
     # 0.1 % longer than `step` at most: 1 ms at 125.66 rad/s (a hair under 1200 rpm) is 1/25.0008 of 180°
-    return interval / np.ceil(interval / step - 1e-3)
+    return interval / np.ceil(interval / step * (1 - 1e-3))
 
 
 def stop_time(cycles, speed, step):
@@ -237,8 +237,8 @@ def main(args, order, step, speed, engine, slap, origin, md):
     table = summary(order, records, landings, args.cycles, origin)
     written = write(args.out, order, records, table, record_units(md), origin)
     print(
-        f"{len(order)} cylinders, firing order {'-'.join(map(str, order))}, {len(records[0]) - 1} steps of "
-        f"{step:.3g} s; cycles {FIRST_REPORTED} to {args.cycles} of each cylinder:"
+        f"{len(order)} cylinder{'s' * (len(order) > 1)}, firing order {'-'.join(map(str, order))}, "
+        f"{len(records[0]) - 1} steps of {step:.3g} s; cycles {FIRST_REPORTED} to {args.cycles} of each cylinder:"
     )
     print(text_table(table))
     for path in [*written, *(args.out / f"cylinder_{k}_landing_log.csv" for k in range(1, len(order) + 1))]:

@@ -114,3 +114,4 @@ def test_the_default_step_divides_the_firing_interval():
     assert np.degrees(step * speed) == pytest.approx(120 / 17)
     # 1 ms at the default 125.66 rad/s is 180° / 25.0008: 25 steps, 0.03 ‰ longer
     assert fitted_step(0.001, firing_order("4"), 125.66) == pytest.approx(np.radians(180 / 25) / 125.66)
+    assert fitted_step(0.001, firing_order("1"), 125.66) == pytest.approx(np.radians(720 / 100) / 125.66)
