@@ -21,6 +21,7 @@ import numpy as np
 from fmpy.fmi2 import FMU2Slave
 
 from .engine_cycle_presets import slap_geometry
+from .firing_order import firing_order
 from .fmu import CENTRED, CYCLE, FROM_FIRING_TDC, fmu_path, from_firing_tdc, read_impact_log
 from .presets import PRESETS as PISTON_PRESETS
 from .progress import Progress
@@ -59,17 +60,28 @@ COLUMNS = (
 )
 
 
-class Slave:
-    """One FMU instance stepped by the master: fmpy's FMU2Slave with value references by name."""
+class Extracted:
+    """An FMU unpacked once for any number of instances: they share its one loaded library, as the instances of a
+    host's process do."""
 
-    def __init__(self, path, name, start_values, start_time):
-        description = fmpy.read_model_description(str(path))
-        self.variables = {v.name: v for v in description.modelVariables}
+    def __init__(self, path):
+        self.description = fmpy.read_model_description(str(path))
+        self.variables = {v.name: v for v in self.description.modelVariables}
         self.unzipdir = fmpy.extract(str(path))
+
+    def remove(self):
+        shutil.rmtree(self.unzipdir, ignore_errors=True)
+
+
+class Slave:
+    """One FMU instance stepped by the master: fmpy's FMU2Slave on an `Extracted` FMU, value references by name."""
+
+    def __init__(self, extracted, name, start_values, start_time):
+        self.variables = extracted.variables
         self.fmu = FMU2Slave(
-            guid=description.guid,
-            unzipDirectory=self.unzipdir,
-            modelIdentifier=description.coSimulation.modelIdentifier,
+            guid=extracted.description.guid,
+            unzipDirectory=extracted.unzipdir,
+            modelIdentifier=extracted.description.coSimulation.modelIdentifier,
             instanceName=name,
         )
         self.fmu.instantiate()
@@ -90,7 +102,56 @@ class Slave:
     def free(self):
         self.fmu.terminate()
         self.fmu.freeInstance()
-        shutil.rmtree(self.unzipdir, ignore_errors=True)
+
+
+class Cylinder:
+    """A PistonSlap instance driven by its EngineCycle instance (both in initialization mode), recording `COLUMNS`
+    and the PistonSlap outputs `recorded` (its Real ones first, then its Integer ones) at `points` communication
+    points."""
+
+    def __init__(self, engine, slap, recorded, points):
+        self.engine, self.slap = engine, slap
+        self.outputs = engine.vrs([w[0] for w in WIRES])
+        self.inputs = slap.vrs([w[1] for w in WIRES])
+        self.engine_read = engine.vrs(["crank_angle", "crank_speed", "gas_pressure"])
+        real = [n for n in recorded if slap.variables[n].type == "Real"]
+        integer = [n for n in recorded if slap.variables[n].type == "Integer"]
+        self.slap_real = slap.vrs(
+            [
+                "crank_angle",
+                "gas_pressure_acting",
+                "piston_lateral",
+                "max_impact_velocity_in_step",
+                "impact_energy_total",
+                *real,
+            ]
+        )
+        self.slap_int = slap.vrs(["impact_count", "impacts_in_step", *integer])
+        self.rows = np.zeros(
+            points, dtype=[(c, "f8") for c in COLUMNS] + [(n, "f8") for n in real] + [(n, "i8") for n in integer]
+        )
+
+    def initialize(self):
+        self.engine.fmu.exitInitializationMode()
+        self.slap.fmu.setReal(self.inputs, self.engine.fmu.getReal(self.outputs))
+        self.slap.fmu.exitInitializationMode()
+
+    def step(self, t, step, derivatives):
+        """Passes the engine's outputs (and with `derivatives` their slopes) on, then steps both from `t`."""
+        self.slap.fmu.setReal(self.inputs, self.engine.fmu.getReal(self.outputs))
+        if derivatives:
+            orders = [1] * len(WIRES)
+            self.slap.fmu.setRealInputDerivatives(
+                self.inputs, orders, self.engine.fmu.getRealOutputDerivatives(self.outputs, orders)
+            )
+        self.engine.fmu.doStep(t, step)
+        self.slap.fmu.doStep(t, step)
+
+    def record(self, k, t):
+        a, w, p = self.engine.fmu.getReal(self.engine_read)
+        angle, acting, lateral, vmax, energy, *real = self.slap.fmu.getReal(self.slap_real)
+        count, in_step, *integer = self.slap.fmu.getInteger(self.slap_int)
+        self.rows[k] = (t, a, w, p, angle, acting, lateral, count, in_step, vmax, energy, *real, *integer)
 
 
 def run(stop_time, step, engine_values=None, slap_values=None, derivatives=True, start_time=0.0, step_finished=None):
@@ -101,53 +162,46 @@ def run(stop_time, step, engine_values=None, slap_values=None, derivatives=True,
     `step_finished(time)` is called after each step (a progress line). Returns a structured array with `COLUMNS`,
     one row per communication point including the start.
     """
+    (rows,) = run_cylinders(
+        stop_time, step, [(engine_values or {}, slap_values or {})], derivatives, start_time, step_finished
+    )
+    return rows
+
+
+def run_cylinders(stop_time, step, cylinders, derivatives=True, start_time=0.0, step_finished=None, recorded=()):
+    """`run` for several cylinders in one process: `cylinders` holds each one's `(engine_values, slap_values)`,
+    each a PistonSlap instance driven by its own EngineCycle instance, all instances of one FMU sharing its loaded
+    library and stepped in turn at each communication point (instances named engine_1, slap_1, ..., or engine and
+    slap for one cylinder). Returns one structured array per cylinder: `COLUMNS`, then the
+    PistonSlap outputs `recorded`.
+    """
     steps = round((stop_time - start_time) / step)
     if steps < 1 or abs(start_time + steps * step - stop_time) > 1e-9 * max(1.0, abs(stop_time)):
         raise ValueError(f"stop_time - start_time = {stop_time - start_time} s is not a whole number of {step} s steps")
-    engine = Slave(ENGINE_FMU, "engine", engine_values or {}, start_time)
-    slap = Slave(fmu_path(), "slap", {**(slap_values or {}), "pressure_source": 1}, start_time)
+    names = [""] if len(cylinders) == 1 else [f"_{k}" for k in range(1, len(cylinders) + 1)]
+    engine_fmu, slap_fmu = Extracted(ENGINE_FMU), Extracted(fmu_path())
+    slaves, pairs = [], []
     try:
-        engine.fmu.exitInitializationMode()
-        outputs = engine.vrs([w[0] for w in WIRES])
-        inputs = slap.vrs([w[1] for w in WIRES])
-        slap.fmu.setReal(inputs, engine.fmu.getReal(outputs))
-        slap.fmu.exitInitializationMode()
-
-        engine_read = engine.vrs(["crank_angle", "crank_speed", "gas_pressure"])
-        slap_real = slap.vrs(
-            [
-                "crank_angle",
-                "gas_pressure_acting",
-                "piston_lateral",
-                "max_impact_velocity_in_step",
-                "impact_energy_total",
-            ]
-        )
-        slap_int = slap.vrs(["impact_count", "impacts_in_step"])
-        rows = np.zeros(steps + 1, dtype=[(c, "f8") for c in COLUMNS])
-
-        def record(k, t):
-            a, w, p = engine.fmu.getReal(engine_read)
-            angle, acting, lateral, vmax, energy = slap.fmu.getReal(slap_real)
-            count, in_step = slap.fmu.getInteger(slap_int)
-            rows[k] = (t, a, w, p, angle, acting, lateral, count, in_step, vmax, energy)
-
-        record(0, start_time)
-        orders = [1] * len(WIRES)
+        for name, (engine_values, slap_values) in zip(names, cylinders, strict=True):
+            slaves.append(Slave(engine_fmu, f"engine{name}", engine_values, start_time))
+            slaves.append(Slave(slap_fmu, f"slap{name}", {**slap_values, "pressure_source": 1}, start_time))
+            pairs.append(Cylinder(*slaves[-2:], recorded, steps + 1))
+        for pair in pairs:
+            pair.initialize()
+            pair.record(0, start_time)
         for k in range(steps):
-            t = start_time + k * step
-            slap.fmu.setReal(inputs, engine.fmu.getReal(outputs))
-            if derivatives:
-                slap.fmu.setRealInputDerivatives(inputs, orders, engine.fmu.getRealOutputDerivatives(outputs, orders))
-            engine.fmu.doStep(t, step)
-            slap.fmu.doStep(t, step)
-            record(k + 1, start_time + (k + 1) * step)
+            t, reached = start_time + k * step, start_time + (k + 1) * step
+            for pair in pairs:
+                pair.step(t, step, derivatives)
+                pair.record(k + 1, reached)
             if step_finished is not None:
-                step_finished(start_time + (k + 1) * step)
-        return rows
+                step_finished(reached)
+        return [pair.rows for pair in pairs]
     finally:
-        engine.free()
-        slap.free()
+        for slave in slaves:
+            slave.free()
+        engine_fmu.remove()
+        slap_fmu.remove()
 
 
 def run_libcosim(steps, osp_system=OSP_SYSTEM):
@@ -265,7 +319,15 @@ def write(rows, out, origin=CENTRED, events=None, case="", synchronisation=False
 
 #: PistonSlap's inputs and settings the engine drives: a preset's, a parameter file's or a --set's value of them is
 #: not PistonSlap's to take.
-DRIVEN = ("crank_speed", "gas_pressure", "pressure_source", "peak_pressure", "crank_mode", "load_torque")
+DRIVEN = (
+    "crank_speed",
+    "gas_pressure",
+    "pressure_source",
+    "peak_pressure",
+    "crank_mode",
+    "load_torque",
+    "crank_angle_start",
+)
 #: Default communication step: 1 ms, or this crank angle (1 ms at 1200 rpm) where 1 ms would be more, deg.
 DEFAULT_STEP_DEG = 7.2
 
@@ -280,7 +342,7 @@ def _parser(presets):
         "--step",
         type=float,
         help=f"communication step, s (default 0.001, or {DEFAULT_STEP_DEG:g}° of crank angle where that is less; at "
-        f"most {MAX_STEP_DEG:g}°)",
+        f"most {MAX_STEP_DEG:g}°; with --cylinders the largest step up to that dividing the firing interval 720°/N)",
     )
     parser.add_argument("--held", action="store_true", help="hold the inputs over each step (no derivatives)")
     parser.add_argument("--engine", help=f"EngineCycle preset: {', '.join(presets)} (default: the FMU's defaults)")
@@ -291,6 +353,18 @@ def _parser(presets):
         "length win where --engine gives them; speed and pressure are the engine's)",
     )
     add_parameter_options(parser, "PistonSlap", "skirt_model=2 for the lubricated skirt, clearance=40um")
+    parser.add_argument(
+        "--cylinders",
+        metavar="N",
+        help="run a whole engine: N cylinders on one crank, each a PistonSlap and an EngineCycle instance, in one "
+        "process; CSVs per cylinder, an engine summary and a plot (default: one cylinder)",
+    )
+    parser.add_argument(
+        "--firing-order",
+        metavar="1-3-4-2",
+        help="the engine's firing order, cylinder 1 first, fired evenly every 720°/N (default for 1 to 6 cylinders "
+        "the in-line engines' 1, 1-2, 1-2-3, 1-3-4-2, 1-2-4-5-3, 1-5-3-6-2-4)",
+    )
     parser.add_argument(
         "--crank-0-720",
         action="store_true",
@@ -314,7 +388,7 @@ def slap_start_values(args, engine, md):
     driven = sorted(set(given) & set(DRIVEN))
     if driven:
         raise Refusal(
-            f"{', '.join(driven)}: the engine drives PistonSlap's speed and pressure; set them in EngineCycle"
+            f"{', '.join(driven)}: the engine drives PistonSlap's crank and pressure; set them in EngineCycle"
         )
     values.update(given)
     defaults = {v.name: float(v.start) for v in md.modelVariables if v.type == "Real" and v.start is not None}
@@ -322,9 +396,14 @@ def slap_start_values(args, engine, md):
 
 
 def main(argv=None):
+    from . import cylinders  # it imports this module
     from .engine_cycle_presets import PRESETS
 
     args = _parser(PRESETS).parse_args(argv)
+    whole_engine = args.cylinders is not None or args.firing_order is not None
+    order = firing_order(args.cylinders, args.firing_order) if whole_engine else None
+    if whole_engine and args.synchronisation:
+        raise Refusal("--synchronisation checks the one-cylinder run: leave it out with --cylinders")
     if args.engine is not None and args.engine not in PRESETS:
         raise Refusal(f"unknown --engine {args.engine!r} (presets: {', '.join(PRESETS)})")
     if args.cycles < 3:
@@ -335,6 +414,8 @@ def main(argv=None):
     speed = engine.get("speed_start", SPEED)
     largest = np.radians(MAX_STEP_DEG) / speed
     step = min(1e-3, np.radians(DEFAULT_STEP_DEG) / speed) if args.step is None else args.step
+    if whole_engine and args.step is None:
+        step = cylinders.fitted_step(step, order, speed)
     number(step, "--step", low=0, low_open=True, unit=" s", meaning="the communication step")
     if step > largest:
         raise Refusal(
@@ -357,6 +438,8 @@ def main(argv=None):
     )
     print(case)
     args.out.mkdir(parents=True, exist_ok=True)
+    if whole_engine:
+        return cylinders.main(args, order, step, speed, engine, slap, origin, md)
     log = args.out / "impact_log.csv"
     progress = Progress("pistonslap coupled: simulating", stop)
     rows = run(

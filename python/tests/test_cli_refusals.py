@@ -49,6 +49,11 @@ CASES = {
         ["bore = 70 mm must exceed piston_diameter = 80 mm"],
     ),
     "the same in coupled": (["coupled", "--set", "rod_length=1mm"], ["crank_radius = 40 mm", "rod_length = 1 mm"]),
+    "no cylinders": (["coupled", "--cylinders", "0"], ["--cylinders = 0", ">= 1"]),
+    "a cylinder count without a common firing order": (["coupled", "--cylinders", "7"], ["--firing-order"]),
+    "a firing order that is no permutation": (["coupled", "--firing-order", "1-2-2"], ["--firing-order", "once"]),
+    "a firing order for another count": (["coupled", "--cylinders", "3", "--firing-order", "1-2"], ["3 cylinders"]),
+    "a one-cylinder check of the whole engine": (["coupled", "--cylinders", "2", "--synchronisation"], ["--cylinders"]),
 }
 
 

@@ -40,6 +40,7 @@ def test_a_piston_preset_on_oil_from_set_and_params(tmp_path):
     "args, words",
     [
         (["--set", "crank_speed=3000rpm"], ["crank_speed", "the engine drives"]),
+        (["--set", "crank_angle_start=1"], ["crank_angle_start", "the engine drives"]),
         (["--set", "restitution=2"], ["restitution = 2", "maximum 1"]),
         (["--set", "bore=80.1mm", "--set", "clearance=40um"], ["bore and clearance"]),
         (["--set", "rod_length=0.03"], ["the FMU refuses", "rod_length"]),
