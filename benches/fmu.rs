@@ -9,7 +9,8 @@
 
 use pistonslap::dynamics::StepperOptions;
 use pistonslap::fmus::piston_slap::mechanisms;
-use pistonslap::models::{CrankTrain, Inputs, Parameters};
+use pistonslap::fmus::piston_slap::{Inputs, Parameters};
+use pistonslap::models::CrankTrain;
 use std::time::Instant;
 
 #[path = "fmu/flop_count.rs"]

@@ -4,7 +4,7 @@
 //! `cargo run --release --example slap_per_cycle -- [rpm] [cycles]` (default 3000 rpm, 4 cycles).
 
 use pistonslap::fmus::piston_slap::Simulation;
-use pistonslap::models::{Inputs, Parameters};
+use pistonslap::fmus::piston_slap::{Inputs, Parameters};
 use std::f64::consts::PI;
 
 fn main() {

@@ -5,7 +5,8 @@
 use crate::common::fmu_host::{vr, Host};
 use pistonslap::fmus::piston_slap::simulation::Simulation;
 use pistonslap::fmus::piston_slap::Mechanism;
-use pistonslap::models::{CrankTrain, Inputs, Parameters, Roller};
+use pistonslap::fmus::piston_slap::{Inputs, Parameters};
+use pistonslap::models::{CrankTrain, Roller};
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 

@@ -2,7 +2,8 @@
 //! on chaos details, with roller_forcing = 1 (f(τ) as printed, which produced the thesis's results).
 
 use pistonslap::fmus::piston_slap::Mechanism;
-use pistonslap::models::{EngineEvent, EngineEventKind, EngineModel, Forcing, Inputs, Outputs, Parameters, Roller, RollerMechanism};
+use pistonslap::fmus::piston_slap::{Inputs, Outputs, Parameters};
+use pistonslap::models::{EngineEvent, EngineEventKind, Forcing, Roller, RollerMechanism};
 use std::f64::consts::PI;
 
 /// The thesis's mechanism (section 4.1) in its own units: l = 1 m, M = 1 kg; with Ω = 1 rad/s the

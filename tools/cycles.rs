@@ -7,7 +7,8 @@
 //! `valgrind --tool=callgrind target/release/examples/cycles 10`.
 
 use pistonslap::fmus::piston_slap::Mechanism;
-use pistonslap::models::{CrankTrain, Inputs, Parameters, Roller};
+use pistonslap::fmus::piston_slap::{Inputs, Parameters};
+use pistonslap::models::{CrankTrain, Roller};
 use std::time::Instant;
 
 const CYCLE: f64 = 0.1;

@@ -8,9 +8,10 @@ use nalgebra::{SVector, Vector2, Vector3};
 use pistonslap::dynamics::System;
 use pistonslap::fmus::piston_slap::mechanisms;
 use pistonslap::fmus::piston_slap::Mechanism;
+use pistonslap::fmus::piston_slap::{Inputs, Parameters};
 use pistonslap::models::crank_train::engine::{FreeCrank, PrescribedCrank};
 use pistonslap::models::crank_train::kinematics::SliderCrank;
-use pistonslap::models::{CrankTrain, InputPolynomial, Inputs, Parameters};
+use pistonslap::models::{CrankTrain, InputPolynomial};
 use std::hint::black_box;
 use std::time::Instant;
 

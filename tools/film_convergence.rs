@@ -6,7 +6,7 @@
 //! `cargo run --release --example film_convergence -- RPM TAU:NC:NA [TAU:NC:NA …]`.
 
 use pistonslap::fmus::piston_slap::Simulation;
-use pistonslap::models::{Inputs, Parameters};
+use pistonslap::fmus::piston_slap::{Inputs, Parameters};
 use std::time::Instant;
 
 /// Communication points per cycle (0.5° of crank angle), where the extremes are sampled.

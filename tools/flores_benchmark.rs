@@ -14,7 +14,7 @@ mod flores;
 mod output_checks;
 
 use flores::{published, run, Run};
-use pistonslap::models::Parameters;
+use pistonslap::fmus::piston_slap::Parameters;
 
 /// The communication steps, s.
 const STEPS: [f64; 3] = [1e-3, 1e-4, 1e-5];

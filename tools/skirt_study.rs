@@ -6,7 +6,7 @@
 //! `cargo run --release --example skirt_study -- [rpm] [cycles] [film_relaxation] [step] [grid across] [grid along]`.
 
 use pistonslap::fmus::piston_slap::Simulation;
-use pistonslap::models::{Inputs, Parameters};
+use pistonslap::fmus::piston_slap::{Inputs, Parameters};
 use std::time::Instant;
 
 /// What a run measures after its first cycle.

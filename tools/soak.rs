@@ -34,9 +34,10 @@
 //! that keep sliding contacts on their manifold.
 
 use pistonslap::fmus::piston_slap::Mechanism;
+use pistonslap::fmus::piston_slap::{Inputs, Parameters};
 use pistonslap::models::crank_train::kinematics::SliderCrank;
 use pistonslap::models::gas::FourStrokePressure;
-use pistonslap::models::{CrankTrain, EfficiencyTarget, EnergyBalance, EngineEvent, Inputs, Parameters, Roller};
+use pistonslap::models::{CrankTrain, EfficiencyTarget, EnergyBalance, EngineEvent, Roller};
 use std::f64::consts::PI;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::time::Instant;

@@ -5,7 +5,8 @@
 
 use pistonslap::dynamics::StepperOptions;
 use pistonslap::fmus::piston_slap::{mechanisms, Mechanism};
-use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, Inputs, Parameters};
+use pistonslap::fmus::piston_slap::{Inputs, Parameters};
+use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind};
 
 fn run(options: StepperOptions, cycles: f64) -> (Vec<EngineEvent>, f64) {
     let inputs = Inputs::default();

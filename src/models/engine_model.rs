@@ -1,7 +1,7 @@
 //! The interface the FMU drives a mechanism through, and the events it reports.
 
 use super::skirt::PressureMap;
-use super::{InputPolynomial, ModelError, Outputs};
+use super::{InputPolynomial, ModelError};
 use crate::dynamics::EventKind;
 use serde::{Deserialize, Serialize};
 
@@ -88,9 +88,6 @@ pub trait EngineModel: Sized + Clone {
     fn prepare(&mut self, _inputs: &StepInputs) -> Result<(), ModelError> {
         Ok(())
     }
-
-    /// Writes the kinematic and force outputs (everything but the impact statistics).
-    fn write_outputs(&self, out: &mut Outputs);
 
     /// The lubricated skirt's pressure and film fields now, where the model has one.
     fn pressure_map(&self) -> Option<PressureMap> {

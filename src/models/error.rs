@@ -34,7 +34,8 @@ pub fn check_real(name: &str, value: f64, min: Option<f64>, max: Option<f64>, po
     }
 }
 
-pub(crate) fn check_integer(name: &str, value: i32, min: Option<i32>, max: Option<i32>) -> Result<(), ModelError> {
+/// Refuses an integer `name` outside `[min, max]`, naming it and the range.
+pub fn check_integer(name: &str, value: i32, min: Option<i32>, max: Option<i32>) -> Result<(), ModelError> {
     let below = min.is_some_and(|lo| value < lo);
     let above = max.is_some_and(|hi| value > hi);
     if below || above {

@@ -1,9 +1,8 @@
 //! Engine models on the core, one folder per concept: the crank train of Awrejcewicz & Kudra
 //! (variant 1), Farahanchi's roller slider crank (variant 2), the gas pressure sources they share, the
-//! partner FMU's engine cycle, and the numerics they have in common; the variable contract and the
-//! interface the FMU drives a mechanism through.
+//! partner FMU's engine cycle, and the numerics they have in common; the interface an FMU drives a
+//! mechanism through.
 
-mod contract;
 pub mod crank_train;
 pub mod engine_cycle;
 mod engine_model;
@@ -13,10 +12,9 @@ pub mod numerics;
 pub mod roller;
 pub mod skirt;
 
-pub use contract::{InputDerivatives, Inputs, Outputs, Parameters};
 pub use crank_train::{CrankTrain, EfficiencyCalibration, EfficiencyTarget};
 pub use engine_cycle::{EngineCycle, EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters};
 pub use engine_model::{EngineEvent, EngineEventKind, EngineModel, StepInputs, CYCLE};
-pub use error::{check, check_real, ModelError};
+pub use error::{check, check_integer, check_real, ModelError};
 pub use numerics::{EnergyBalance, InputPolynomial, PowerFlows};
 pub use roller::{Forcing, Jet, Roller, RollerDesign, RollerMechanism, RollerSystem, SlidingRegion};

@@ -5,9 +5,8 @@
 
 use super::output_checks::{self, GAP_TOLERANCE};
 use pistonslap::fmus::piston_slap::Mechanism;
-use pistonslap::models::{
-    CrankTrain, EngineEvent, EngineEventKind, EngineModel, InputDerivatives, Inputs, Outputs, Parameters, Roller, StepInputs,
-};
+use pistonslap::fmus::piston_slap::{InputDerivatives, Inputs, Outputs, Parameters};
+use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, Roller, StepInputs};
 use std::f64::consts::PI;
 
 /// The published parameters mapped onto the crank train (the benchmark file's table), frictionless

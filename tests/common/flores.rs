@@ -4,7 +4,8 @@
 
 use super::designs::flores;
 use pistonslap::fmus::piston_slap::Mechanism;
-use pistonslap::models::{CrankTrain, EnergyBalance, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
+use pistonslap::fmus::piston_slap::{Inputs, Outputs, Parameters};
+use pistonslap::models::{CrankTrain, EnergyBalance, EngineEvent, EngineEventKind};
 use std::f64::consts::PI;
 
 /// The crank starts at 150 rad/s, unloaded, no gas.

@@ -7,7 +7,7 @@ use pistonslap::fmi::types::{fmi2CallbackFunctions, fmi2Component, fmi2FMUstate,
 use pistonslap::fmi::{Causality, Kind};
 use pistonslap::fmus::exports::*;
 use pistonslap::fmus::piston_slap::{value_reference, DESCRIPTION, GUID, VARIABLES};
-use pistonslap::models::{InputDerivatives, Inputs, Outputs, Parameters};
+use pistonslap::fmus::piston_slap::{InputDerivatives, Inputs, Outputs, Parameters};
 use std::cell::RefCell;
 use std::ffi::{c_char, c_int, c_void, CStr, CString};
 

@@ -10,7 +10,8 @@ pub mod output_checks;
 pub mod testbeds;
 
 use pistonslap::fmus::piston_slap::Mechanism;
-use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
+use pistonslap::fmus::piston_slap::{Inputs, Outputs, Parameters};
+use pistonslap::models::{CrankTrain, EngineEvent, EngineEventKind};
 use std::f64::consts::PI;
 
 /// 1200 rpm.

@@ -5,7 +5,7 @@
 use pistonslap::fmi::{Causality, Kind};
 use pistonslap::fmus::piston_slap::mechanisms::RunningGeometry;
 use pistonslap::fmus::piston_slap::{value_reference, DESCRIPTION, VARIABLES};
-use pistonslap::models::{Inputs, Outputs, Parameters};
+use pistonslap::fmus::piston_slap::{Inputs, Outputs, Parameters};
 
 /// Deepest a corner may lie outside the bore at a communication point, m: ten times the depth the core
 /// refuses at a step's end (measured: 2.6e-10 m at points read from the dense output).

@@ -3,7 +3,8 @@
 //! (the roller).
 
 use pistonslap::fmus::piston_slap::Mechanism;
-use pistonslap::models::{CrankTrain, Inputs, Outputs, Parameters, Roller};
+use pistonslap::fmus::piston_slap::{Inputs, Outputs, Parameters};
+use pistonslap::models::{CrankTrain, Roller};
 use std::f64::consts::PI;
 
 /// The crank angle output after each of `steps` communication steps of `dt`.

@@ -7,7 +7,7 @@
 use crate::common::designs::{engine, lubricated_engine, rubbing_engine, Design, Random};
 use crate::common::fmu_host::{vr, Host};
 use crate::common::*;
-use pistonslap::models::{InputDerivatives, Inputs, Parameters};
+use pistonslap::fmus::piston_slap::{InputDerivatives, Inputs, Parameters};
 
 /// The books of `params` driven by `inputs` over `t_end` in communication steps of `step`, through
 /// the FMU's C functions (`fmu_host`), and its impact count and gas and damping totals.

@@ -5,10 +5,11 @@ use crate::common::*;
 use nalgebra::Vector3;
 use pistonslap::fmus::piston_slap::mechanisms;
 use pistonslap::fmus::piston_slap::Mechanism;
+use pistonslap::fmus::piston_slap::{Inputs, Outputs, Parameters};
 use pistonslap::models::crank_train::kinematics::SliderCrank;
 use pistonslap::models::crank_train::linkage::{Linkage, Loads};
 use pistonslap::models::gas::FourStrokePressure;
-use pistonslap::models::{CrankTrain, EfficiencyTarget, EnergyBalance, EngineModel, Inputs, Outputs, Parameters};
+use pistonslap::models::{CrankTrain, EfficiencyTarget, EnergyBalance};
 use std::f64::consts::PI;
 
 fn conservative(crank_mode: i32) -> Parameters {

@@ -4,7 +4,7 @@
 
 use crate::common::designs::flores;
 use crate::common::flores::{published, run, Run};
-use pistonslap::models::Parameters;
+use pistonslap::fmus::piston_slap::Parameters;
 
 /// The flat slider against Siconos Moreau–Jean extrapolated to h → 0: 2.890957 revolutions at
 /// 0.2 s and 4.8013 % of the kinetic energy dissipated, to 1e-4; at h = 2e-7, 148 impacts faster

@@ -3,7 +3,7 @@
 //! term, integrated by the integrator's own weights), against the film force the outputs report.
 
 use pistonslap::fmus::piston_slap::Simulation;
-use pistonslap::models::{Inputs, Outputs, Parameters};
+use pistonslap::fmus::piston_slap::{Inputs, Outputs, Parameters};
 
 /// The outputs at every communication step of `h` over one engine cycle at 1200 rpm, the start's first.
 fn cycle(params: &Parameters, h: f64) -> Vec<Outputs> {

@@ -7,9 +7,10 @@ use crate::common::*;
 use pistonslap::dynamics::StepperOptions;
 use pistonslap::fmus::piston_slap::mechanisms;
 use pistonslap::fmus::piston_slap::Mechanism;
+use pistonslap::fmus::piston_slap::{Inputs, Outputs, Parameters};
 use pistonslap::models::crank_train::LOCAL_ERROR;
 use pistonslap::models::skirt::BOUNDARY_SLIP;
-use pistonslap::models::{CrankTrain, EnergyBalance, EngineEvent, EngineEventKind, EngineModel, Inputs, Outputs, Parameters};
+use pistonslap::models::{CrankTrain, EnergyBalance, EngineEvent, EngineEventKind};
 
 fn lubricated(crank_mode: i32) -> Parameters {
     Parameters { skirt_model: 2, crank_mode, skirt_grid_circumferential: 6, skirt_grid_axial: 8, ..Parameters::default() }

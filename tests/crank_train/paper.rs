@@ -2,8 +2,8 @@
 //! four-stroke curve), prescribed crank speed.
 
 use crate::common::*;
+use pistonslap::fmus::piston_slap::{Inputs, Parameters};
 use pistonslap::models::gas::FourStrokePressure;
-use pistonslap::models::{Inputs, Parameters};
 
 fn paper(restitution: f64, bore: f64) -> Parameters {
     Parameters { restitution, bore, ..Parameters::default() }

@@ -6,7 +6,7 @@
 use super::*;
 use crate::fmi::state_bytes::{decode, encode, Envelope};
 use crate::fmus::piston_slap::simulation::Simulation;
-use crate::models::{Inputs, Parameters};
+use crate::fmus::piston_slap::{Inputs, Parameters};
 
 #[test]
 fn a_failed_step_is_an_error_and_a_saved_state_continues() {

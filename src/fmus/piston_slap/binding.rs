@@ -7,7 +7,7 @@ use super::simulation::Simulation;
 use super::variables::DESCRIPTION as TABLE;
 use super::Mechanism;
 use crate::fmi::{self, Description, Logger, Model};
-use crate::models::{InputDerivatives, Inputs, Outputs, Parameters};
+use crate::fmus::piston_slap::{InputDerivatives, Inputs, Outputs, Parameters};
 use serde::{de::DeserializeOwned, Serialize};
 use std::fmt::Debug;
 use std::path::Path;

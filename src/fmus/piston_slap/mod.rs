@@ -2,11 +2,14 @@
 //! ([`Simulation`]), its binding to the FMI layer, its variable table and its package.
 
 mod binding;
+mod contract;
 pub mod mechanisms;
+mod outputs;
 mod package;
 pub mod simulation;
 mod variables;
 
+pub use contract::{InputDerivatives, Inputs, Outputs, Parameters};
 pub use mechanisms::Mechanism;
 pub use package::PACKAGE;
 pub use simulation::{ModelVariant, Simulation};

@@ -13,7 +13,8 @@ pub use impact_log::ImpactLog;
 pub use model_variant::ModelVariant;
 
 use super::{mechanisms, Mechanism};
-use crate::models::{EngineEvent, InputDerivatives, Inputs, ModelError, Outputs, Parameters, StepInputs};
+use crate::fmus::piston_slap::{InputDerivatives, Inputs, Outputs, Parameters};
+use crate::models::{EngineEvent, ModelError, StepInputs};
 use landings::{Landing, LandingLog, Landings};
 use serde::{Deserialize, Serialize};
 use skirt_map::SkirtMap;

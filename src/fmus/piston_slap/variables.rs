@@ -2,7 +2,7 @@
 //! [`Parameters`], [`Inputs`] and [`Outputs`].
 
 use crate::fmi::description::{dispatch, Causality, Description, FieldValue, Kind, Variable};
-use crate::models::{Inputs, Outputs, Parameters};
+use crate::fmus::piston_slap::{Inputs, Outputs, Parameters};
 
 /// The shipped `modelDescription.xml`, generated from the same table as the dispatch.
 pub const MODEL_DESCRIPTION_XML: &str = DESCRIPTION.model_description_xml;

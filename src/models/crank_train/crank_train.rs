@@ -1,15 +1,13 @@
 //! Variant 1: the piston – connecting rod – crankshaft system of Awrejcewicz & Kudra on the core,
 //! as the FMU drives it (prescribed crank speed, or a free crank under a load torque).
 
-use super::books::{DAMPING, DRIVE, GAS};
 use super::drive::Drive;
 use super::engine::{Engine, FreeCrank, PrescribedCrank};
 use super::kinematics::SliderCrank;
-use super::linkage::LinkAngles;
 use super::step_bounds::{LOCAL_ERROR, MAX_STEP};
 use crate::dynamics::{DynamicsError, StepCounts, Stepper, StepperOptions};
 use crate::models::skirt::PressureMap;
-use crate::models::{check, EngineEvent, EngineModel, InputPolynomial, ModelError, Outputs, StepInputs};
+use crate::models::{check, EngineEvent, EngineModel, InputPolynomial, ModelError, StepInputs};
 use nalgebra::{Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -17,25 +15,25 @@ use std::f64::consts::PI;
 /// The crank train in one of its two crank modes.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct CrankTrain {
-    pub(super) drive: Drive,
-    pub(super) geometry: SliderCrank,
+    pub(crate) drive: Drive,
+    pub(crate) geometry: SliderCrank,
     start: StartOffset,
     /// The initial state is rebuilt with the first step's crank speed (ARCHITECTURE.md §4: nominal kinematics).
     started: bool,
     options: StepperOptions,
     /// Work the prescribed drive has done through impulses since the start, J (`EnergyBalance`).
-    pub(super) impulse_work: f64,
+    pub(crate) impulse_work: f64,
     /// Whole cycles (4π) taken off the crank angle (`keep_angle_within_a_cycle`).
-    cycles: f64,
+    pub(crate) cycles: f64,
     /// Energy the friction impulses of impacts have dissipated since the start, J.
     impact_friction_energy: f64,
     /// The impacts' impulse on the piston since the start per wall [anti-thrust (K1, K2), major
     /// thrust (K3, K4)], N·s.
-    impact_impulse: [f64; 2],
+    pub(crate) impact_impulse: [f64; 2],
     /// The asperities' elastic energy where the stepper's totals start, J (`skirt_outputs`).
-    pub(super) asperity_energy_start: f64,
+    pub(crate) asperity_energy_start: f64,
     /// The diametral clearance at running temperature, m (`RunningGeometry`).
-    running_clearance: f64,
+    pub(crate) running_clearance: f64,
 }
 
 /// What a [`CrankTrain`] is built from: a validated design at running temperature.
@@ -202,7 +200,7 @@ impl CrankTrain {
     }
 
     /// [`Self::state`] with the crank angle less the whole cycles taken off it.
-    pub(super) fn state_within_cycle(&self) -> (Vector3<f64>, Vector3<f64>) {
+    pub(crate) fn state_within_cycle(&self) -> (Vector3<f64>, Vector3<f64>) {
         self.drive.stepper().angles()
     }
 
@@ -255,7 +253,7 @@ impl CrankTrain {
         self.drive.stepper().time()
     }
 
-    pub(super) fn engine(&self) -> &Engine {
+    pub(crate) fn engine(&self) -> &Engine {
         self.drive.stepper().engine()
     }
 
@@ -331,46 +329,6 @@ impl EngineModel for CrankTrain {
     fn pressure_map(&self) -> Option<PressureMap> {
         self.skirt_pressure_map()
     }
-
-    fn write_outputs(&self, out: &mut Outputs) {
-        // The sines and cosines once, of the angle within the cycle (what the stepper holds).
-        let (phi, phid) = self.state_within_cycle();
-        let trig = LinkAngles::new(&phi);
-        let linkage = &self.engine().linkage;
-        let (pin, gaps) = linkage.pin_and_gaps(&trig);
-        let (forces, in_contact) = self.contacts();
-        let (friction, friction_power, friction_energy) = self.friction();
-        out.piston_lateral = pin.x;
-        // ẋ_O3 = −l1 cos φ1 φ̇1 − l2 cos φ2 φ̇2.
-        out.piston_lateral_velocity =
-            -self.geometry.crank_radius * trig.cos[0] * phid[0] - self.geometry.rod_length * trig.cos[1] * phid[1];
-        out.piston_tilt = phi[2];
-        out.piston_tilt_rate = phid[2];
-        out.lateral_kinetic_energy = linkage.lateral_kinetic_energy(&trig, &phid);
-        // The piston axis at a corner pair's height is midway between the two corners, whose gaps
-        // from their walls are D/2 + x (K1, K2) and D/2 − x (K3, K4).
-        out.skirt_top_lateral = 0.5 * (gaps[0] - gaps[2]);
-        out.skirt_bottom_lateral = 0.5 * (gaps[1] - gaps[3]);
-        let stepper = self.drive.stepper();
-        out.gas_pressure_acting = stepper.gas_pressure(phi[0]);
-        out.piston_axial = pin.y;
-        out.crank_angle = phi[0] + 4.0 * PI * self.cycles;
-        out.rod_angle = phi[1];
-        out.crank_torque = stepper.crank_torque(&forces, &friction);
-        [out.contact_state_1, out.contact_state_2, out.contact_state_3, out.contact_state_4] = in_contact.map(i32::from);
-        [out.contact_force_1, out.contact_force_2, out.contact_force_3, out.contact_force_4] = [forces[0], forces[1], forces[2], forces[3]];
-        out.crank_speed_actual = stepper.crank_speed(phid[0]);
-        (out.kinetic_energy, out.potential_energy) = linkage.energy_with(&trig, &phi, &phid);
-        let contact = self.contact_impulse();
-        out.liner_impulse_total = std::array::from_fn(|w| contact[w] + self.impact_impulse[w]);
-        [out.friction_force_1, out.friction_force_2, out.friction_force_3, out.friction_force_4] = friction.into();
-        (out.friction_power, out.friction_energy_total) = (friction_power, friction_energy);
-        let (_, books) = stepper.powers();
-        out.drive_work_total = books[DRIVE] + self.impulse_work;
-        (out.gas_work_total, out.damping_energy_total) = (books[GAS], books[DAMPING]);
-        out.running_clearance = self.running_clearance;
-        self.write_skirt((&phi, &trig, &phid), &gaps, &forces, out);
-    }
 }
 
 #[cfg(test)]
@@ -379,7 +337,7 @@ mod tests {
     use crate::fmus::piston_slap::mechanisms::design_space::validate;
     use crate::fmus::piston_slap::mechanisms::RunningGeometry;
     use crate::fmus::piston_slap::Mechanism;
-    use crate::models::{Inputs, Parameters};
+    use crate::fmus::piston_slap::{Inputs, Outputs, Parameters};
 
     /// Outputs after each of `n` steps of `h` seconds with `inputs` held.
     fn run(params: &Parameters, inputs: &Inputs, h: f64, n: usize) -> Vec<Outputs> {

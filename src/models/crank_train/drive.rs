@@ -13,7 +13,7 @@ use std::f64::consts::PI;
 
 /// The crank train's stepper, of one drive or the other.
 #[derive(Clone, Debug, Serialize, Deserialize)]
-pub(super) enum Drive {
+pub(crate) enum Drive {
     /// The crank turns at the `crank_speed` input; the coordinates are the rod's and piston's angles.
     Prescribed(Stepper<PrescribedCrank, 2, 4>),
     /// The crank is a coordinate, loaded by the `load_torque` input.
@@ -22,7 +22,7 @@ pub(super) enum Drive {
 
 impl Drive {
     /// The stepper, whichever drive.
-    pub(super) fn stepper(&self) -> &dyn CrankStepper {
+    pub(crate) fn stepper(&self) -> &dyn CrankStepper {
         match self {
             Drive::Prescribed(s) => s,
             Drive::Free(s) => s,
@@ -39,7 +39,7 @@ impl Drive {
 }
 
 /// A core event of either drive as its impact-log row, with what the crank train books from it.
-pub(super) struct CrankEvent {
+pub(crate) struct CrankEvent {
     /// The impact-log row.
     pub row: EngineEvent,
     /// N·s, the normal impulses per corner.
@@ -149,7 +149,7 @@ impl CrankDrive<3> for FreeCrank {
 }
 
 /// What the crank train asks of its stepper.
-pub(super) trait CrankStepper {
+pub(crate) trait CrankStepper {
     /// s.
     fn time(&self) -> f64;
     /// The engine.

@@ -43,7 +43,7 @@ impl PrescribedCrank {
 
 impl CrankTrain {
     /// The persistent contact forces' impulse on the piston per wall since the start, N·s.
-    pub(super) fn contact_impulse(&self) -> [f64; 2] {
+    pub(crate) fn contact_impulse(&self) -> [f64; 2] {
         by_wall(&self.drive.stepper().contact_impulses())
     }
 }
@@ -73,8 +73,8 @@ impl EnergyBalance for CrankTrain {
 mod tests {
     use crate::dynamics::System;
     use crate::fmus::piston_slap::mechanisms;
+    use crate::fmus::piston_slap::Parameters;
     use crate::models::crank_train::engine::PrescribedCrank;
-    use crate::models::Parameters;
     use nalgebra::{Matrix4, Vector2, Vector3, Vector4};
 
     /// The drive's impulse from the bordered full system `[M −e1; e1ᵀ 0] (Δφ̇, P_d) = (JᵀΛ, 0)`

@@ -2,7 +2,7 @@
 
 use super::*;
 use crate::fmus::piston_slap::mechanisms;
-use crate::models::Parameters;
+use crate::fmus::piston_slap::Parameters;
 
 fn prescribed() -> PrescribedCrank {
     PrescribedCrank::new(mechanisms::crank_train::engine(&Parameters::default()).unwrap(), 0.4, 0.01, 125.66)

@@ -389,7 +389,7 @@ impl Linkage {
 mod tests {
     use super::*;
     use crate::fmus::piston_slap::mechanisms;
-    use crate::models::Parameters;
+    use crate::fmus::piston_slap::Parameters;
 
     fn linkage(pin_offset: f64) -> Linkage {
         mechanisms::crank_train::linkage(&Parameters { pin_offset, ..Parameters::default() })

@@ -13,7 +13,7 @@ pub mod engine;
 pub mod kinematics;
 pub mod linkage;
 pub mod lubrication;
-mod skirt_outputs;
+mod skirt_fields;
 mod step_bounds;
 mod step_film;
 

@@ -177,8 +177,8 @@ pub(super) fn key(m: &SkirtMotion) -> [f64; 5] {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::fmus::piston_slap::Parameters;
     use crate::models::skirt::{SkirtDesign, SkirtProfile};
-    use crate::models::Parameters;
 
     /// The default engine's skirt (12 × 18 grid) and its longest arm from the pin, m.
     fn default_skirt() -> (Skirt, f64) {

@@ -18,7 +18,7 @@ impl RollerSystem {
 
 impl Roller {
     /// J per unit of the thesis's energies (M l² Ω²).
-    pub(super) fn energy_scale(&self) -> f64 {
+    pub(crate) fn energy_scale(&self) -> f64 {
         self.piston_mass * (self.rod_length * self.crank_speed).powi(2)
     }
 }

@@ -20,7 +20,7 @@
 use super::forcing::{AtAngle, Forcing, RollerMechanism};
 use crate::dynamics::{DynamicsError, Evaluation, Event, Stepper, StepperOptions, System};
 use crate::models::numerics::LastValue;
-use crate::models::{EngineEvent, EngineModel, ModelError, Outputs, StepInputs, CYCLE};
+use crate::models::{EngineEvent, EngineModel, ModelError, StepInputs, CYCLE};
 use nalgebra::{SMatrix, SVector, Vector1, Vector2};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -95,22 +95,22 @@ impl System<1, 2> for RollerSystem {
 /// The roller slider crank as the FMU drives it: SI in and out, the thesis's variables inside.
 #[derive(Clone, Debug, Serialize, Deserialize)]
 pub struct Roller {
-    pub(super) stepper: Stepper<RollerSystem, 1, 2>,
+    pub(crate) stepper: Stepper<RollerSystem, 1, 2>,
     options: StepperOptions,
     crank_radius: f64,
-    pub(super) rod_length: f64,
-    pub(super) piston_mass: f64,
+    pub(crate) rod_length: f64,
+    pub(crate) piston_mass: f64,
     damping: f64,
     /// The crank's moment of inertia about its axis, J1 + m1 ey1², kg·m² (for the kinetic energy).
-    crank_inertia: f64,
+    pub(crate) crank_inertia: f64,
     /// Held crank speed Ω, rad/s; 0 before the first step.
-    pub(super) crank_speed: f64,
+    pub(crate) crank_speed: f64,
     /// SI time at the stepper's current crank angle.
     time: f64,
     /// Work the moving walls have done through impulses since the start, J (`EnergyBalance`).
     pub(super) impulse_work: f64,
     /// Whole turns (2π) taken off the stepper's crank angle (`keep_angle_bounded`).
-    turns: f64,
+    pub(crate) turns: f64,
     /// The time and crank angle before the last point served from the step ahead (`serve_again`).
     #[serde(skip)]
     served_from: Option<(f64, f64)>,
@@ -160,7 +160,7 @@ impl Roller {
         &self.stepper
     }
 
-    fn mechanism(&self) -> &RollerMechanism {
+    pub(crate) fn mechanism(&self) -> &RollerMechanism {
         self.stepper.system().mechanism()
     }
 
@@ -170,7 +170,7 @@ impl Roller {
     }
 
     /// Pin position along the cylinder axis: r cos θ + l cos(φ − ψ).
-    fn axial_position(&self, theta: f64, psi: f64) -> f64 {
+    pub(crate) fn axial_position(&self, theta: f64, psi: f64) -> f64 {
         let phi = self.mechanism().at(theta).rod_angle().value;
         self.crank_radius * libm::cos(theta) + self.rod_length * libm::cos(phi - psi)
     }
@@ -347,46 +347,5 @@ impl EngineModel for Roller {
             }
             _ => Err(ModelError(format!("model_variant 2: no point served from t = {t} s to read again"))),
         }
-    }
-
-    fn write_outputs(&self, out: &mut Outputs) {
-        let theta = self.stepper.time();
-        let psi = self.stepper.position()[0];
-        let dpsi = self.stepper.velocity()[0];
-        let omega = self.crank_speed;
-        let mechanism = self.mechanism();
-        let at = mechanism.at(theta);
-        let cos_phi = at.cos_phi;
-        let l = self.rod_length;
-        // Wall force F = M l Ω² λ_core / Λ (the core's multiplier acts on ψ, the wall on y = l Λ ψ).
-        let forces = self.stepper.multipliers() * (self.piston_mass * l * omega * omega / cos_phi.value);
-        out.piston_lateral = -l * cos_phi.value * psi;
-        out.piston_lateral_velocity = -l * omega * (cos_phi.d1 * psi + cos_phi.value * dpsi);
-        out.piston_tilt = 0.0;
-        // A point slider without gas: its axis is the pin's at every height.
-        out.skirt_top_lateral = out.piston_lateral;
-        out.skirt_bottom_lateral = out.piston_lateral;
-        out.gas_pressure_acting = 0.0;
-        out.piston_axial = self.axial_position(theta, psi);
-        out.crank_angle = theta + 2.0 * PI * self.turns;
-        out.rod_angle = psi - at.rod_angle().value;
-        let psi_jet = [psi, dpsi, self.stepper.acceleration()[0]];
-        let lambda = self.stepper.system().lambda;
-        out.crank_torque = mechanism.drive_torque(theta, psi_jet, lambda) * self.piston_mass * (l * omega).powi(2);
-        out.contact_state_1 = i32::from(self.stepper.in_contact(UPPER));
-        out.contact_state_2 = 0;
-        out.contact_state_3 = i32::from(self.stepper.in_contact(LOWER));
-        out.contact_state_4 = 0;
-        out.contact_force_1 = forces[UPPER];
-        out.contact_force_2 = 0.0;
-        out.contact_force_3 = forces[LOWER];
-        out.contact_force_4 = 0.0;
-        // The −D/2 wall (upper) pushes toward +x.
-        out.side_force = forces[UPPER] - forces[LOWER];
-        [out.liner_force_antithrust, out.liner_force_thrust] = [forces[UPPER], forces[LOWER]];
-        out.lateral_kinetic_energy = 0.5 * self.piston_mass * out.piston_lateral_velocity * out.piston_lateral_velocity;
-        out.crank_speed_actual = omega;
-        out.running_clearance = 2.0 * self.stepper.system().rho * l;
-        out.kinetic_energy = mechanism.kinetic_energy(theta, psi, dpsi) * self.energy_scale() + 0.5 * self.crank_inertia * omega * omega;
     }
 }

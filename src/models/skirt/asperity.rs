@@ -229,7 +229,7 @@ mod tests {
     fn the_fmu_defaults_are_the_cited_roughness() {
         // The parameters' start values (the variable table) give Greenwood–Tripp's dimensionless
         // groups of the cited pair, ηβσ = 0.04 and σ/β = 1e-3, and E' = 96 GPa.
-        let p = crate::models::Parameters::default();
+        let p = crate::fmus::piston_slap::Parameters::default();
         let (sigma, density, radius) = (p.skirt_roughness, p.asperity_density, p.asperity_radius);
         assert!((density * radius * sigma / 0.04 - 1.0).abs() < 1e-12, "ηβσ = {}", density * radius * sigma);
         assert!((sigma / radius / 1e-3 - 1.0).abs() < 1e-12, "σ/β = {}", sigma / radius);

@@ -3,7 +3,7 @@
 //! film against the Reynolds condition (flooded, and drained while the piston left).
 
 use super::{CavitationCondition, Skirt, SkirtDesign, SkirtMotion, SkirtProfile, BOUNDARY_SLIP};
-use crate::models::Parameters;
+use crate::fmus::piston_slap::Parameters;
 use nalgebra::Vector3;
 
 /// The crank train's default geometry (the default parameters: D = 80.08 mm, d = 80 mm, skirt 80 mm, pin 40 mm

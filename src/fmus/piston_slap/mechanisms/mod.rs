@@ -9,7 +9,9 @@ mod running_geometry;
 
 pub use running_geometry::RunningGeometry;
 
-use crate::models::{CrankTrain, EngineEvent, EngineModel, InputPolynomial, Inputs, ModelError, Parameters, Roller, StepInputs};
+use super::outputs;
+use super::{Inputs, Outputs, Parameters};
+use crate::models::{CrankTrain, EngineEvent, EngineModel, InputPolynomial, ModelError, Roller, StepInputs};
 
 /// An engine model as PistonSlap runs it: built from its parameters, advanced with its inputs.
 pub trait Mechanism: EngineModel {
@@ -17,6 +19,9 @@ pub trait Mechanism: EngineModel {
     /// offending parameter: the table's ranges (`Parameters::validate`) and the model's own conditions, the
     /// only validation a start makes.
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError>;
+
+    /// Writes the kinematic and force outputs (everything but the impact statistics).
+    fn write_outputs(&self, out: &mut Outputs);
 
     /// Advances to exactly `t_end` with `inputs` held, appending every event to `events`.
     fn advance(&mut self, inputs: &Inputs, t_end: f64, events: &mut Vec<EngineEvent>) -> Result<(), ModelError> {
@@ -37,10 +42,18 @@ impl Mechanism for CrankTrain {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         CrankTrain::of(crank_train::design(params)?, start_time)
     }
+
+    fn write_outputs(&self, out: &mut Outputs) {
+        outputs::crank_train::write(self, out);
+    }
 }
 
 impl Mechanism for Roller {
     fn new(params: &Parameters, start_time: f64) -> Result<Self, ModelError> {
         Roller::with_design(roller::design(params)?, start_time)
+    }
+
+    fn write_outputs(&self, out: &mut Outputs) {
+        outputs::roller::write(self, out);
     }
 }

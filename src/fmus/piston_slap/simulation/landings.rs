@@ -21,8 +21,9 @@
 //! cycle is complete once the crank is past it and its last landing has ended.
 
 use super::csv_log::{CsvLog, Rows};
+use crate::fmus::piston_slap::Outputs;
 use crate::models::numerics::floor_to_i64;
-use crate::models::{EngineEvent, EngineEventKind, ModelError, Outputs, CYCLE};
+use crate::models::{EngineEvent, EngineEventKind, ModelError, CYCLE};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 

@@ -2,8 +2,9 @@
 //! Kudra), 2 → roller slider crank (Farahanchi).
 
 use super::super::Mechanism;
+use crate::fmus::piston_slap::{Outputs, Parameters};
 use crate::models::skirt::PressureMap;
-use crate::models::{CrankTrain, EngineEvent, EngineModel, ModelError, Outputs, Parameters, Roller, StepInputs};
+use crate::models::{CrankTrain, EngineEvent, EngineModel, ModelError, Roller, StepInputs};
 use serde::{Deserialize, Serialize};
 
 /// The engine model the FMU runs (one per instance, so the variants' size difference costs nothing).
@@ -34,6 +35,10 @@ impl Mechanism for ModelVariant {
             other => Err(ModelError(format!("model_variant = {other} is not one of 1..=2"))),
         }
     }
+
+    fn write_outputs(&self, out: &mut Outputs) {
+        on_variant!(self, m => m.write_outputs(out))
+    }
 }
 
 impl EngineModel for ModelVariant {
@@ -43,10 +48,6 @@ impl EngineModel for ModelVariant {
 
     fn prepare(&mut self, inputs: &StepInputs) -> Result<(), ModelError> {
         on_variant!(self, m => m.prepare(inputs))
-    }
-
-    fn write_outputs(&self, out: &mut Outputs) {
-        on_variant!(self, m => m.write_outputs(out))
     }
 
     fn pressure_map(&self) -> Option<PressureMap> {

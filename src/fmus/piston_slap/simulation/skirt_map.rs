@@ -8,8 +8,9 @@
 //! Not part of the saved state: a restored state's next pass overwrites the file again.
 
 use super::impact_log::degrees_from_firing_tdc;
+use crate::fmus::piston_slap::Parameters;
 use crate::models::skirt::PressureMap;
-use crate::models::{ModelError, Parameters, CYCLE};
+use crate::models::{ModelError, CYCLE};
 use serde::{Deserialize, Serialize};
 use std::fmt::Write as _;
 

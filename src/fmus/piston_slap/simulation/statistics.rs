@@ -2,8 +2,9 @@
 //! figures and the per-cycle metrics. Kept apart from the model's outputs so a model writing its
 //! `Outputs` cannot disturb them.
 
+use crate::fmus::piston_slap::Outputs;
 use crate::models::numerics::floor_to_i64;
-use crate::models::{EngineEvent, EngineEventKind, Outputs, CYCLE};
+use crate::models::{EngineEvent, EngineEventKind, CYCLE};
 use serde::{Deserialize, Serialize};
 
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]

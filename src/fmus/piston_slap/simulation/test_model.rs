@@ -6,7 +6,8 @@
 //! handling). Input derivatives are ignored (the inputs are held). Never shipped.
 
 use super::super::Mechanism;
-use crate::models::{EngineEvent, EngineEventKind, EngineModel, ModelError, Outputs, Parameters, StepInputs};
+use crate::fmus::piston_slap::{Outputs, Parameters};
+use crate::models::{EngineEvent, EngineEventKind, EngineModel, ModelError, StepInputs};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
 
@@ -35,6 +36,17 @@ impl Mechanism for Shuttle {
             restitution: params.restitution,
             mass: params.piston_mass,
         })
+    }
+
+    fn write_outputs(&self, out: &mut Outputs) {
+        // Overwrite everything, as a model may: the facade must keep its statistics regardless.
+        *out = Outputs {
+            piston_lateral: self.x,
+            piston_lateral_velocity: self.v,
+            crank_angle: self.crank_angle,
+            lateral_kinetic_energy: 0.5 * self.mass * self.v * self.v,
+            ..Outputs::default()
+        };
     }
 }
 
@@ -75,16 +87,5 @@ impl EngineModel for Shuttle {
         }
         self.time = t_end;
         Ok(())
-    }
-
-    fn write_outputs(&self, out: &mut Outputs) {
-        // Overwrite everything, as a model may: the facade must keep its statistics regardless.
-        *out = Outputs {
-            piston_lateral: self.x,
-            piston_lateral_velocity: self.v,
-            crank_angle: self.crank_angle,
-            lateral_kinetic_energy: 0.5 * self.mass * self.v * self.v,
-            ..Outputs::default()
-        };
     }
 }

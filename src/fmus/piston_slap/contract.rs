@@ -2,8 +2,7 @@
 //! Field names are the FMI variable names: the value-reference dispatch generated from
 //! `modelDescription/` addresses these fields by name.
 
-use super::error::{check_integer, check_real};
-use super::{InputPolynomial, ModelError, StepInputs};
+use crate::models::{check_integer, check_real, InputPolynomial, ModelError, StepInputs};
 use serde::{Deserialize, Serialize};
 
 // From modelDescription/piston_slap.xml: the three struct macros, `impl Default for Parameters` and `for
