@@ -200,7 +200,7 @@ impl Lubrication {
     }
 
     /// The factor on the corners' local-error bound (`LOCAL_ERROR`) of a step starting at corner gaps
-    /// `gaps`: [`CLEAR_ERROR_FACTOR`] while every corner is more than [`CLEAR_GAP`] off the liner, 1
+    /// `gaps`: `CLEAR_ERROR_FACTOR` while every corner is more than `CLEAR_GAP` off the liner, 1
     /// otherwise.
     pub fn error_scale(&self, gaps: &Vector4<f64>) -> f64 {
         if gaps.min() > CLEAR_GAP {
@@ -230,7 +230,7 @@ impl Lubrication {
     }
 
     /// Prepares the film for an RK4 step at (t, φ, φ̇), the time and state [`predicted`] [`SOLVE_AT`]
-    /// into it, where the corners' gaps are `gaps`: while every corner is more than [`CLEAR_GAP`] off
+    /// into it, where the corners' gaps are `gaps`: while every corner is more than `CLEAR_GAP` off
     /// the liner, the last solve carried on where `StepFilm::carry_to` allows; otherwise solved there
     /// (near the liner, where the corners' events are, each step has its own solve), with
     /// mass-conserving cavitation at the latest solve's fill moved on to t (`Solved::next`). Until the next
