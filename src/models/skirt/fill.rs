@@ -28,23 +28,33 @@ use super::reynolds::{Film, Grid, Reynolds};
 const FULL: f64 = 1e-12;
 
 /// Both sides' values per node (node order j·nx + i): the fill fraction θ ∈ [0, 1], or its rate and
-/// decay (`fill::rate`); empty sides under the Reynolds condition, which carries none.
+/// decay (`fill::rate`); empty sides under the Reynolds condition, which carries none. With a limited
+/// supply (`skirt/supply.rs`) the fill also holds the oil on the liner and where the pin was.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Fill {
     /// Thrust (+x), anti-thrust (−x).
     pub sides: [Vec<f64>; 2],
+    /// A limited supply's oil on the liner per side, m (`supply::Liner`'s map); empty when flooded.
+    pub liner: [Vec<f64>; 2],
+    /// The pin's axial position the liner's oil was exchanged up to, m (a limited supply's).
+    pub axial: f64,
 }
 
 impl Fill {
     /// Both sides full: a flooded film at rest.
     pub fn flooded(nodes: usize) -> Self {
-        Self { sides: [vec![1.0; nodes], vec![1.0; nodes]] }
+        Self { sides: [vec![1.0; nodes], vec![1.0; nodes]], ..Self::default() }
     }
 
     /// The fill `dt` (s, either sign) after a solve that took this fill and gave `rate` and `decay`
-    /// (`fill::rate`), kept in [0, 1] (a full node stays full: its rate is 0 or negative).
+    /// (`fill::rate`), kept in [0, 1] (a full node stays full: its rate is 0 or negative); the liner's
+    /// oil as it was (`Skirt::fill_after` exchanges it).
     pub fn advanced(&self, (rate, decay): (&Fill, &Fill), dt: f64) -> Fill {
-        Fill { sides: [0, 1].map(|k| advanced(&self.sides[k], (&rate.sides[k], &decay.sides[k]), dt)) }
+        Fill {
+            sides: [0, 1].map(|k| advanced(&self.sides[k], (&rate.sides[k], &decay.sides[k]), dt)),
+            liner: self.liner.clone(),
+            axial: self.axial,
+        }
     }
 
     /// The share of the nodes' film area that is wetted, Σ θ over the nodes of both sides / their
