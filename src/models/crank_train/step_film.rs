@@ -60,7 +60,7 @@ impl Solved {
     /// The film solved at `motion` at `time` after this one, the pin at axial position `axial` (m):
     /// the fill moved on to `time`.
     pub fn next(&self, skirt: &Skirt, motion: &SkirtMotion, time: f64, axial: f64) -> Self {
-        let (fill, lacked) = skirt.fill_after(&self.linear, time - self.time, axial);
+        let (fill, lacked) = skirt.fill_after(&self.linear, time - self.time, (motion, axial));
         Self { lacked: self.lacked + lacked, ..Self::at(skirt, motion, time, Some(&fill)) }
     }
 

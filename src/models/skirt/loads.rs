@@ -110,6 +110,9 @@ pub struct FilmLinear {
     pub supply: [Vec<f64>; 2],
     /// A limited supply: per side, the flows out of the film's edges at the solve's rates, m³/s.
     pub edges: [EdgeFlows; 2],
+    /// Mass-conserving cavitation: per side, each node's film h at the solve and its rate ḣ at the
+    /// solve's rates, m and m/s (node order); empty under the Reynolds condition.
+    pub gaps: [Vec<(f64, f64)>; 2],
     /// Mass-conserving cavitation: the oil the film holds at the solve, `Σ θ h ΔA` over both sides'
     /// nodes, m³.
     pub content: f64,

@@ -20,7 +20,11 @@
 //! takes along it (`Liner::exchange`): what the leading edge takes is taken from the cells it passes,
 //! what leaves the trailing edge and the arcs' ends is left on the cells they pass, each spread
 //! uniformly over its face's path. Oil the film does not take stays where it lies on the liner (under
-//! the skirt, it reappears behind it), so the oil on the liner and in the film changes only where a
+//! the skirt, it reappears behind it). A node whose fill would pass full between two solves (streamers
+//! squeezed by a closing gap faster than the solves follow) has its excess left on the liner under it,
+//! where a shorter interval would have pressed it out through the film and its edges onto the liner.
+//! So the oil on the liner and in the film changes only by the film's first-order transport between
+//! solves and where a
 //! cell would be emptied below zero (what `Liner::exchange` returns, the oil the film took that the liner's cells
 //! did not hold, of first order in the time between solves).
 
@@ -155,6 +159,13 @@ impl Liner {
             put(last, offset, east);
         }
         lacked
+    }
+
+    /// Leaves `volume` (m³, either sign) on the liner under the node (column, row) of a side, the pin at
+    /// `y`; returns what the cell lacked to give it.
+    pub(crate) fn leave(&self, map: &mut [f64], (column, row): (usize, usize), y: f64, volume: f64) -> f64 {
+        let at = y + self.pin_from_top - (row + 1) as f64 * self.spacing;
+        self.spread(map, column, (at, at), volume)
     }
 
     /// Adds `volume` (m³, either sign) to `column`'s cells along the path (a, b) of Y, uniformly; a

@@ -240,6 +240,8 @@ impl Skirt {
             if let Some(theta) = carried {
                 let area = self.grid.dx() * self.grid.dz();
                 linear.content += theta.iter().zip(&s.film.node).map(|(t, h)| t * h).sum::<f64>() * area;
+                let squeeze = |k: usize| -(s.rate_x[k] * motion.lateral_rate + s.rate_tilt[k] * motion.tilt_rate) / area;
+                linear.gaps[side] = s.film.node.iter().enumerate().map(|(k, &h)| (h, squeeze(k))).collect();
                 if supplied.is_some() {
                     let carried = Carried { fill: theta, forward: (true, forward), inlet: (None, Some(&s.inlet)) };
                     let velocity = (0.0, 0.5 * motion.sliding_speed);
@@ -282,31 +284,52 @@ impl Skirt {
     /// what that film fills of the gap, `min(1, l/h)`; none when flooded (a flooded film at rest).
     pub fn starting_fill(&self, motion: &SkirtMotion, axial: f64) -> Option<Fill> {
         let liner = self.liner.as_ref()?;
+        let film = liner.starting_film();
+        let sides = self.node_films(motion).map(|h| h.iter().map(|h| (film / h).min(1.0)).collect());
+        Some(Fill { sides, liner: [liner.start(), liner.start()], axial })
+    }
+
+    /// Both sides' film at the nodes at `motion`'s pose, m (the Reynolds film's, at least its floor).
+    fn node_films(&self, motion: &SkirtMotion) -> [Vec<f64>; 2] {
         let mut workspace = self.scratch.lend(&self.grid);
         let s = &mut *workspace;
         let pose = self.pose(motion);
-        let film = liner.starting_film();
-        let sides = [0, 1].map(|side| {
+        [0, 1].map(|side| {
             s.film_rows.clear();
             s.film_rows.extend(self.rows.nodes.iter().map(|r| pose(r).0));
             s.face_rows.clear();
             s.face_rows.extend(self.rows.faces.iter().map(|r| pose(r).0));
             s.film.fill(&self.grid, (&s.film_rows, &s.face_rows), (&self.sides[side].nodes, &self.sides[side].faces), self.floor);
-            s.film.node.iter().map(|h| (film / h).min(1.0)).collect()
-        });
-        Some(Fill { sides, liner: [liner.start(), liner.start()], axial })
+            s.film.node.clone()
+        })
     }
 
-    /// The fill `dt` (s) after the solve `linear` ([`FilmLinear::fill_after`]) with the pin then at
-    /// axial position `axial` (m): with a limited supply, the film's edge flows at the solve exchanged
-    /// with the liner over the pin's path since the fill's own position (`supply::Liner::exchange`),
-    /// and the oil the film took beyond what the liner's cells held, m³.
-    pub fn fill_after(&self, linear: &FilmLinear, dt: f64, axial: f64) -> (Fill, f64) {
-        let mut fill = linear.fill_after(dt);
+    /// The fill `dt` (s) after the solve `linear` with the skirt then at `motion` and the pin at axial
+    /// position `axial` (m), each node's oil kept to its solve's flows (`fill::advanced_conserving`);
+    /// with a limited supply, the film's edge flows at the solve exchanged with the liner over the
+    /// pin's path since the fill's own position (`supply::Liner::exchange`), and what a node holds
+    /// beyond its flows taken from the liner under it (or, negative, left there): the oil on the liner
+    /// and in the film is then constant but for the oil the film took beyond what the liner's cells
+    /// held, which this also returns, m³. Under the Reynolds condition, no fill.
+    pub fn fill_after(&self, linear: &FilmLinear, dt: f64, (motion, axial): (&SkirtMotion, f64)) -> (Fill, f64) {
+        if linear.fill.sides[0].is_empty() {
+            return (Fill::default(), 0.0);
+        }
+        let (area, nx) = (self.grid.dx() * self.grid.dz(), self.grid.nx);
+        let mut fill = Fill { liner: linear.fill.liner.clone(), axial: linear.fill.axial, ..Fill::default() };
         let mut lacked = 0.0;
-        if let Some(liner) = &self.liner {
-            for (map, edges) in fill.liner.iter_mut().zip(&linear.edges).filter(|(map, _)| !map.is_empty()) {
-                lacked += liner.exchange(map, edges, (linear.fill.axial, axial), dt);
+        for (side, after) in self.node_films(motion).iter().enumerate() {
+            let (before, rates): (Vec<f64>, Vec<f64>) = linear.gaps[side].iter().copied().unzip();
+            let (theta, rate) = (&linear.fill.sides[side], &linear.fill_rate.sides[side]);
+            let (kept, held) = fill::advanced_conserving(theta, rate, dt, (&before, &rates, after));
+            fill.sides[side] = kept;
+            let (Some(liner), map) = (&self.liner, &mut fill.liner[side]) else { continue };
+            if map.is_empty() {
+                continue;
+            }
+            lacked += liner.exchange(map, &linear.edges[side], (linear.fill.axial, axial), dt);
+            for (k, &held) in held.iter().enumerate().filter(|(_, &h)| h != 0.0) {
+                lacked += liner.leave(map, (k % nx, k / nx), axial, -held * area);
             }
             fill.axial = axial;
         }
