@@ -12,6 +12,7 @@
 use super::books::{FILM, IMPLICIT, SKIRT_FRICTION, WALL_PUSH};
 use super::crank_train::CrankTrain;
 use super::linkage::LinkAngles;
+use super::lubrication::Oil;
 use crate::models::skirt::PressureMap;
 use crate::models::Outputs;
 use nalgebra::{Vector3, Vector4};
@@ -22,6 +23,12 @@ impl CrankTrain {
         let lubrication = self.engine().lubrication.as_ref()?;
         let (phi, phid) = self.state_within_cycle();
         Some(lubrication.pressure_map((&phi, &LinkAngles::new(&phi)), &phid))
+    }
+
+    /// With a limited oil supply, the oil on the liner and in the film at the latest film solve
+    /// (`Lubrication::oil`); None dry, flooded or before the first solve.
+    pub fn oil(&self) -> Option<Oil> {
+        self.engine().lubrication.as_ref()?.oil()
     }
 
     /// The asperities' elastic energy now, J (0 dry).
@@ -68,6 +75,7 @@ impl CrankTrain {
         out.potential_energy += loads.asperity_energy;
         out.film_relaxation_work = work[IMPLICIT];
         out.skirt_wetted_fraction = lubrication.wetted_fraction(self.time());
+        out.oil_left_on_liner = lubrication.oil().map_or(0.0, |oil| oil.liner / oil.area);
         // A side's moment about the pin is its push times the height above the pin (thrust), or
         // minus that (anti-thrust): about the skirt top, the push times the pin's depth less it.
         let pin = linkage.pin_depth();
