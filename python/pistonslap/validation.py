@@ -11,6 +11,7 @@ markdown its page holds (`python/tests/test_validation_tables.py` checks every p
     python -m pistonslap.validation landing-motion ENGINE RPM         the thrust landing's translation and tilt, ±1 mm
     python -m pistonslap.validation hot-film ENGINE RPM [RPM ...]     thinnest films on oil, cold against ENGINE-hot
     python -m pistonslap.validation cavitation ENGINE RPM [RPM ...]   the film on oil, Reynolds against mass-conserving
+    python -m pistonslap.validation oil-supply ENGINE RPM [RPM ...]   the film flooded against a limited oil supply
     python -m pistonslap.validation film-books ENGINE:RPM:MPAS:MM ... the oiled skirt's books against its powers
 
 The runs are cached per process, so that the tests which assert on the same runs share them.
@@ -29,6 +30,8 @@ from .presets import PRESETS
 from .tables import sampled_metrics
 
 MJ = 1e3
+#: The FMU's default boundary_friction, for presets that keep it.
+BOUNDARY_FRICTION = 0.1
 
 
 def _table(header, rows):
@@ -262,14 +265,22 @@ def landing_motion_table(engine, rpm):
 # --- the hot running clearance ---------------------------------------------------------------------------------------
 
 
-@cache
 def oil_cycle(engine, rpm, cavitation=1):
     """`sampled_metrics` of the last of `OIL_CYCLES` cycles (about firing TDC) of preset `engine` on oil at `rpm`
     with the film's `cavitation` condition, sampled as `last_cycle` samples, with its running clearance and skirt
     FMEP."""
+    return _oil_run(engine, rpm, (("cavitation", cavitation), ("skirt_model", 2)))
+
+
+@cache
+def _oil_run(engine, rpm, overrides):
+    """`oil_cycle` of preset `engine` with the parameters `overrides` ((name, SI value) pairs): also each wall's
+    largest landing and the wetted fraction's mean and least, the share of the skirt's friction work its asperities'
+    boundary friction did (from the samples: boundary_friction · asperity_force · |sliding speed| against
+    skirt_friction_power) and the oil left on the liner at the end."""
     omega = rpm * np.pi / 30
     interval = np.radians(SAMPLE_DEG) / omega
-    values = dict(PRESETS[engine].values, crank_speed=omega, skirt_model=2, cavitation=cavitation)
+    values = dict(PRESETS[engine].values, crank_speed=omega, **dict(overrides))
     result = simulate(
         stop_time=(OIL_CYCLES * CYCLE - CENTRED) / omega + interval, output_interval=interval, start_values=values
     )
@@ -278,11 +289,23 @@ def oil_cycle(engine, rpm, cavitation=1):
     # Each wall's load as the motion takes it, the mean over each communication step (its impulse over the step).
     cycle = result["time"] > result["time"][-1] - CYCLE / omega
     impulse = np.maximum(result["liner_impulse_thrust_in_step"], result["liner_impulse_antithrust_in_step"])
+    speed = np.abs(np.gradient(result["piston_axial"], result["time"]))
+    boundary = values.get("boundary_friction", BOUNDARY_FRICTION) * result["asperity_force"] * speed
+    landings = {
+        f"cycle_landing_{what}_{wall}": last[f"cycle_landing_{what}_{wall}"]
+        for what in ("energy", "crank_angle")
+        for wall in ("thrust", "antithrust")
+    }
     return dict(
         metrics,
+        **landings,
         running_clearance=last["running_clearance"],
         cycle_skirt_fmep=last["cycle_skirt_fmep"],
         cycle_max_wall_load=float(impulse[cycle].max() / interval),
+        wetted_mean=float(result["skirt_wetted_fraction"][cycle].mean()),
+        wetted_least=float(result["skirt_wetted_fraction"][cycle].min()),
+        asperity_share=float(boundary[cycle].sum() / result["skirt_friction_power"][cycle].sum()),
+        oil_left_on_liner=last["oil_left_on_liner"],
     )
 
 
@@ -347,6 +370,43 @@ def cavitation_table(engine, speeds):
         "film side force, peak",
         "wall load, peak step mean",
         "skirt FMEP",
+    )
+    return _table(header, rows)
+
+
+def oil_supply_table(engine, speeds):
+    """Preset `engine` (a limited supply's) on the mass-conserving film, fully flooded (`oil_supply = 1`) against its
+    limited supply: the thinnest film per side, the wetted fraction's mean and least, the asperities' share of the
+    skirt's friction, the skirt FMEP, each wall's largest landing and the oil left on the liner, of the last cycle."""
+    rows = []
+    for rpm in speeds:
+        for supply, shown in ((1, "flooded"), (2, f"limited, {PRESETS[engine].values['liner_oil_film'] * 1e6:g} µm")):
+            m = _oil_run(engine, rpm, (("oil_supply", supply),))
+            rows.append(
+                (
+                    f"{rpm:g} rpm",
+                    shown,
+                    _thinnest(m, "thrust"),
+                    _thinnest(m, "antithrust"),
+                    f"{m['wetted_mean']:.2f} ({m['wetted_least']:.2f})",
+                    f"{100 * m['asperity_share']:.1f} %",
+                    f"{m['cycle_skirt_fmep'] * 1e-5:.4f} bar",
+                    _landing(m, "thrust"),
+                    _landing(m, "antithrust"),
+                    f"{m['oil_left_on_liner'] * 1e6:.3g} µm" if supply == 2 else "–",
+                )
+            )
+    header = (
+        "speed",
+        "supply",
+        "thinnest film, thrust",
+        "thinnest film, anti-thrust",
+        "wetted, mean (least)",
+        "asperity share of friction",
+        "skirt FMEP",
+        "largest landing, thrust",
+        "largest landing, anti-thrust",
+        "oil left on the liner",
     )
     return _table(header, rows)
 
@@ -613,6 +673,7 @@ TABLES = {
     "landing-motion": landing_motion_table,
     "hot-film": lambda engine, *speeds: hot_film_table(engine, [float(s) for s in speeds]),
     "cavitation": lambda engine, *speeds: cavitation_table(engine, [float(s) for s in speeds]),
+    "oil-supply": lambda engine, *speeds: oil_supply_table(engine, [float(s) for s in speeds]),
     "film-books": film_books_table,
 }
 

@@ -67,6 +67,9 @@ def measured_tables(page):
 
 PAGES = sorted(VALIDATION.glob("*.md"))
 CASES = [(page.name, command, table) for page in PAGES for command, table in measured_tables(page)[0]]
+#: Pages whose tables follow their commands but are not run here: their runs cost more than this check's budget
+#: (oil_supply.md: seven runs on oil, 57 s on a shared two-core machine). Regenerate them with their commands.
+NOT_RUN = {"oil_supply.md"}
 
 
 def test_every_measured_table_follows_its_command():
@@ -90,6 +93,10 @@ def printed(command):
     return done.stdout
 
 
-@pytest.mark.parametrize("name, command, table", CASES, ids=[f"{n}: {c.split(' -- ')[-1][:60]}" for n, c, _ in CASES])
+@pytest.mark.parametrize(
+    "name, command, table",
+    [c for c in CASES if c[0] not in NOT_RUN],
+    ids=[f"{n}: {c.split(' -- ')[-1][:60]}" for n, c, _ in CASES if n not in NOT_RUN],
+)
 def test_the_table_is_what_its_command_prints_now(name, command, table):
     assert printed(command).strip() == table, f"{name}: the table after `{command}` no longer reproduces: regenerate it"

@@ -187,6 +187,14 @@ pub fn mass_conserving_engine(r: &mut Random) -> Design {
     Design { params: Parameters { cavitation: 2, ..design.params }, ..design }
 }
 
+/// A mass-conserving engine (`mass_conserving_engine`) fed by a limited oil supply (`oil_supply = 2`)
+/// of 0.2–20 µm on the liner: from far below the gaps (a starved skirt) to beyond the clearance.
+pub fn limited_supply_engine(r: &mut Random) -> Design {
+    let design = mass_conserving_engine(r);
+    let liner_oil_film = libm::pow(10.0, r.between(-6.7, -4.7));
+    Design { params: Parameters { oil_supply: 2, liner_oil_film, ..design.params }, ..design }
+}
+
 /// One time in two, `params` at running temperatures: an aluminium piston (18–24e-6 1/K) in an iron liner
 /// (10–12e-6 1/K), the liner 0–100 K above a reference of 0–40 °C, the piston as hot as leaves 10–100 % of
 /// the clearance (above or below the liner's temperature as that asks); otherwise as drawn (at the reference).

@@ -30,7 +30,8 @@ pub struct CrankTrain {
     /// The impacts' impulse on the piston since the start per wall [anti-thrust (K1, K2), major
     /// thrust (K3, K4)], N·s.
     pub(crate) impact_impulse: [f64; 2],
-    /// The asperities' elastic energy where the stepper's totals start, J (`skirt_outputs`).
+    /// The asperities' elastic energy where the stepper's totals start, J: the film's dissipation is the
+    /// skirt's absorbed work less the asperities' energy's rise from it.
     pub(crate) asperity_energy_start: f64,
     /// The diametral clearance at running temperature, m (`RunningGeometry`).
     pub(crate) running_clearance: f64,

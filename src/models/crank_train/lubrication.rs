@@ -40,7 +40,9 @@ use super::linkage::LinkAngles;
 use super::step_bounds::{CLEAR_ERROR_FACTOR, CLEAR_GAP};
 use super::step_film::{key, Solved, StepFilm};
 use crate::models::numerics::LastValue;
-use crate::models::skirt::{CavitationCondition, Fill, PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile};
+use crate::models::skirt::{
+    CavitationCondition, Fill, OilSupply, PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile,
+};
 use crate::models::ModelError;
 use nalgebra::{Matrix2x3, Matrix3, SVector, Vector2, Vector3, Vector4};
 use serde::{Deserialize, Serialize};
@@ -87,17 +89,30 @@ struct SavedFilm {
     current_time: f64,
 }
 
-/// A solve's motion, time and the fill fraction it took (both sides; empty under the Reynolds condition).
+/// A solve's motion, time and the fill fraction it took (both sides; empty under the Reynolds
+/// condition); with a limited supply the liner's oil, the pin's axial position it was exchanged up to
+/// and the oil the liner lacked so far (`Solved::lacked`).
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 struct SavedSolve {
     motion: [f64; 5],
     time: f64,
     fill: [Vec<f64>; 2],
+    liner: [Vec<f64>; 2],
+    axial: f64,
+    lacked: f64,
 }
 
 impl From<&Solved> for SavedSolve {
     fn from(solved: &Solved) -> Self {
-        Self { motion: key(&solved.linear.at), time: solved.time, fill: solved.linear.fill.sides.clone() }
+        let fill = &solved.linear.fill;
+        Self {
+            motion: key(&solved.linear.at),
+            time: solved.time,
+            fill: fill.sides.clone(),
+            liner: fill.liner.clone(),
+            axial: fill.axial,
+            lacked: solved.lacked,
+        }
     }
 }
 
@@ -120,6 +135,9 @@ pub(crate) struct Design {
     pub(crate) grid: (usize, usize),
     /// `cavitation`: 1 Reynolds, 2 mass-conserving.
     pub(crate) cavitation: i32,
+    /// `oil_supply`: 1 fully flooded, 2 limited to the oil on the liner, starting at `liner_oil_film`, m.
+    pub(crate) oil_supply: i32,
+    pub(crate) liner_oil_film: f64,
 }
 
 impl PartialEq for Lubrication {
@@ -147,8 +165,11 @@ impl TryFrom<Saved> for Lubrication {
         let lubrication = Self::try_from(saved.design)?;
         if let Some(film) = saved.film {
             let solve = |s: &SavedSolve| {
-                let fill = Fill { sides: s.fill.clone() };
-                Solved::at(&lubrication.skirt, &motion(&s.motion), s.time, Some(&fill).filter(|f| !f.sides[0].is_empty()))
+                let fill = Fill { sides: s.fill.clone(), liner: s.liner.clone(), axial: s.axial };
+                let fill = Some(&fill).filter(|f| !f.sides[0].is_empty());
+                let mut solved = Solved::at(&lubrication.skirt, &motion(&s.motion), s.time, fill);
+                solved.lacked = s.lacked;
+                solved
             };
             let previous = film.previous.as_ref().map(solve);
             let mut step = StepFilm::solved(solve(&film.latest), previous);
@@ -173,6 +194,7 @@ impl TryFrom<Design> for Lubrication {
             boundary_friction: design.boundary_friction,
             grid: design.grid,
             cavitation: CavitationCondition::try_from(design.cavitation)?,
+            supply: supply(&design)?,
             ..SkirtDesign::new(radius_bore, radius_piston, length, pin_from_top, pin_offset, design.arc, design.viscosity)
         };
         let skirt = Skirt::new(film)?;
@@ -180,9 +202,21 @@ impl TryFrom<Design> for Lubrication {
     }
 }
 
+/// The supply `oil_supply` names, placed along the pin's travel (l2 − l1 to l2 + l1 from the crank centre).
+fn supply(design: &Design) -> Result<OilSupply, ModelError> {
+    let [l1, l2] = design.links;
+    match design.oil_supply {
+        1 => Ok(OilSupply::Flooded),
+        2 => Ok(OilSupply::Limited { liner_film: design.liner_oil_film, travel: (l2 - l1, l2 + l1) }),
+        n => Err(ModelError(format!("oil_supply = {n} must be 1 (fully flooded) or 2 (limited to the oil on the liner)"))),
+    }
+}
+
 /// The skirt's motion and how it moves with φ.
 struct Kinematics {
     motion: SkirtMotion,
+    /// The pin's axial position `y = l1 cos φ1 + l2 cos φ2` from the crank centre, m.
+    axial_position: f64,
     /// `G = ∂(x, φ3)/∂φ`.
     lateral: Matrix2x3<f64>,
     /// `g = ∂y/∂φ`.
@@ -200,7 +234,7 @@ impl Lubrication {
     }
 
     /// The factor on the corners' local-error bound (`LOCAL_ERROR`) of a step starting at corner gaps
-    /// `gaps`: [`CLEAR_ERROR_FACTOR`] while every corner is more than [`CLEAR_GAP`] off the liner, 1
+    /// `gaps`: `CLEAR_ERROR_FACTOR` while every corner is more than `CLEAR_GAP` off the liner, 1
     /// otherwise.
     pub fn error_scale(&self, gaps: &Vector4<f64>) -> f64 {
         if gaps.min() > CLEAR_GAP {
@@ -226,26 +260,27 @@ impl Lubrication {
         };
         let bias = Vector2::new(l1 * s1 * phid[0] * phid[0] + l2 * s2 * phid[1] * phid[1], 0.0);
         let axial_bias = -l1 * c1 * phid[0] * phid[0] - l2 * c2 * phid[1] * phid[1];
-        Kinematics { motion, lateral, axial, bias, axial_bias }
+        Kinematics { motion, axial_position: l1 * c1 + l2 * c2, lateral, axial, bias, axial_bias }
     }
 
     /// Prepares the film for an RK4 step at (t, φ, φ̇), the time and state [`predicted`] [`SOLVE_AT`]
-    /// into it, where the corners' gaps are `gaps`: while every corner is more than [`CLEAR_GAP`] off
+    /// into it, where the corners' gaps are `gaps`: while every corner is more than `CLEAR_GAP` off
     /// the liner, the last solve carried on where `StepFilm::carry_to` allows; otherwise solved there
     /// (near the liner, where the corners' events are, each step has its own solve), with
-    /// mass-conserving cavitation at the latest solve's fill moved on to t (`Solved::next`). Until the next
+    /// mass-conserving cavitation at the latest solve's fill moved on to t (`Solved::next`; a limited
+    /// supply's first solve takes `Skirt::starting_fill`). Until the next
     /// step begins, every evaluation takes the film's loads linear in its own rates from it
     /// (`Skirt::loads_with`). A step taken again from the same start and length (an event's search)
     /// takes the same film.
     pub fn begin_step(&self, t: f64, phi: &Vector3<f64>, phid: &Vector3<f64>, gaps: &Vector4<f64>) {
-        let motion = self.kinematics((phi, &LinkAngles::new(phi)), phid).motion;
+        let Kinematics { motion, axial_position, .. } = self.kinematics((phi, &LinkAngles::new(phi)), phid);
         let mut frozen = self.frozen.borrow_mut();
         let clear = gaps.min() > CLEAR_GAP;
         if !frozen.as_mut().is_some_and(|f| f.carry_to(&motion, t, self.skirt.arm(), clear)) {
             let previous = frozen.take().map(|f| f.latest);
             let solved = match &previous {
-                Some(p) => p.next(&self.skirt, &motion, t),
-                None => Solved::at(&self.skirt, &motion, t, None),
+                Some(p) => p.next(&self.skirt, &motion, t, axial_position),
+                None => Solved::at(&self.skirt, &motion, t, self.skirt.starting_fill(&motion, axial_position).as_ref()),
             };
             *frozen = Some(StepFilm::solved(solved, previous));
         }
@@ -288,6 +323,16 @@ impl Lubrication {
     /// fill moved on to `t`; 1 before the first solve.
     pub fn wetted_fraction(&self, t: f64) -> f64 {
         self.frozen.borrow().as_ref().map_or(1.0, |f| f.latest.linear.fill_after(t - f.latest.time).wetted())
+    }
+
+    /// With a limited supply, the oil at the latest solve (none before the first): on the liner and in
+    /// the film, m³, what the liner's cells lacked of what the film took since the start, m³, and the
+    /// area the liner's maps cover, m².
+    pub fn oil(&self) -> Option<Oil> {
+        let frozen = self.frozen.borrow();
+        let latest = &frozen.as_ref()?.latest;
+        let (liner, area) = self.skirt.liner_oil(&latest.linear.fill);
+        (area > 0.0).then_some(Oil { liner, film: latest.linear.content, lacked: latest.lacked, area })
     }
 
     /// The loads at (φ, φ̇), for the outputs.
@@ -333,6 +378,19 @@ impl Lubrication {
         let k = self.kinematics(at, phid);
         -friction_power(&k, &self.loads(&k.motion))
     }
+}
+
+/// A limited supply's oil ([`Lubrication::oil`]).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Oil {
+    /// On both sides' liner maps, m³.
+    pub liner: f64,
+    /// In the film, m³.
+    pub film: f64,
+    /// What the liner's cells lacked of what the film took since the start, m³.
+    pub lacked: f64,
+    /// The area the liner's maps cover, m².
+    pub area: f64,
 }
 
 /// The time `SOLVE_AT·dt` into an RK4 step of `dt` from (q, q̇, q̈) and the state there to second

@@ -2,6 +2,7 @@
 
 use super::crank_train::CrankTrain;
 use super::linkage::LinkAngles;
+use super::lubrication::Oil;
 use crate::models::skirt::PressureMap;
 
 impl CrankTrain {
@@ -10,6 +11,12 @@ impl CrankTrain {
         let lubrication = self.engine().lubrication.as_ref()?;
         let (phi, phid) = self.state_within_cycle();
         Some(lubrication.pressure_map((&phi, &LinkAngles::new(&phi)), &phid))
+    }
+
+    /// With a limited oil supply, the oil on the liner and in the film at the latest film solve
+    /// (`Lubrication::oil`); None dry, flooded or before the first solve.
+    pub fn oil(&self) -> Option<Oil> {
+        self.engine().lubrication.as_ref()?.oil()
     }
 
     /// The asperities' elastic energy now, J (0 dry).

@@ -13,7 +13,8 @@
 //! Near the liner (a corner or the thinnest film within `CLEAR_GAP`), where the corners' events
 //! are, every step is solved. With mass-conserving cavitation a solve is carried only while no node's
 //! fill would have moved by more than [`CARRY_FILL`] since it, and the next solve takes the fill
-//! moved on from the latest solve to its own time (`FilmLinear::fill_after`).
+//! moved on from the latest solve to its own time, with a limited supply the liner's oil exchanged
+//! with the film's edges over the pin's path (`Skirt::fill_after`).
 
 use super::step_bounds::CLEAR_GAP;
 use crate::models::skirt::{Fill, FilmLinear, PressureMap, Skirt, SkirtMotion};
@@ -37,12 +38,14 @@ pub const CARRY_FILL: f64 = 0.01;
 /// is not trusted that far.
 const SECANT_REACH: f64 = 16.0;
 
-/// A film solve, its time (s) and the thinnest film at its motion, m.
+/// A film solve, its time (s) and the thinnest film at its motion, m; with a limited supply, the oil
+/// the film has taken since the first solve beyond what the liner's cells held, m³ (`Skirt::fill_after`).
 #[derive(Clone, Debug)]
 pub(super) struct Solved {
     pub linear: FilmLinear,
     pub time: f64,
     thinnest: f64,
+    pub lacked: f64,
 }
 
 impl Solved {
@@ -51,12 +54,14 @@ impl Solved {
     pub fn at(skirt: &Skirt, motion: &SkirtMotion, time: f64, fill: Option<&Fill>) -> Self {
         let linear = skirt.linearise_filled(motion, fill);
         let [thrust, antithrust] = skirt.loads_with(&linear, motion).min_film;
-        Self { linear, time, thinnest: thrust.min(antithrust) }
+        Self { linear, time, thinnest: thrust.min(antithrust), lacked: 0.0 }
     }
 
-    /// The film solved at `motion` at `time` after this one: the fill moved on to `time`.
-    pub fn next(&self, skirt: &Skirt, motion: &SkirtMotion, time: f64) -> Self {
-        Self::at(skirt, motion, time, Some(&self.linear.fill_after(time - self.time)))
+    /// The film solved at `motion` at `time` after this one, the pin at axial position `axial` (m):
+    /// the fill moved on to `time`.
+    pub fn next(&self, skirt: &Skirt, motion: &SkirtMotion, time: f64, axial: f64) -> Self {
+        let (fill, lacked) = skirt.fill_after(&self.linear, time - self.time, (motion, axial));
+        Self { lacked: self.lacked + lacked, ..Self::at(skirt, motion, time, Some(&fill)) }
     }
 
     /// Whether a step with its middle at `motion` at `time` may take this solve, `arm` the skirt's

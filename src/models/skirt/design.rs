@@ -1,6 +1,6 @@
 //! The skirt's design data and their checks.
 
-use super::{Roughness, SkirtProfile};
+use super::{OilSupply, Roughness, SkirtProfile};
 use crate::models::ModelError;
 
 /// Design data of the skirt and its oil, SI.
@@ -41,6 +41,8 @@ pub struct SkirtDesign {
     pub grid: (usize, usize),
     /// How the film cavitates (`cavitation`).
     pub cavitation: CavitationCondition,
+    /// How oil reaches the skirt's edges (`oil_supply`, `liner_oil_film`).
+    pub supply: OilSupply,
 }
 
 /// The film's cavitation condition.
@@ -91,6 +93,7 @@ impl SkirtDesign {
             boundary_friction: Self::DEFAULT_BOUNDARY_FRICTION,
             grid: Self::DEFAULT_GRID,
             cavitation: CavitationCondition::Reynolds,
+            supply: OilSupply::Flooded,
         }
     }
 
@@ -130,6 +133,7 @@ impl SkirtDesign {
             return refuse(&format!("grid ({nc}, {na}) must have 2 to 256 nodes each way"));
         }
         self.profile.validate()?;
+        self.supply.validate(self.cavitation == CavitationCondition::MassConserving)?;
         self.roughness.validate()
     }
 }

@@ -28,23 +28,33 @@ use super::reynolds::{Film, Grid, Reynolds};
 const FULL: f64 = 1e-12;
 
 /// Both sides' values per node (node order j·nx + i): the fill fraction θ ∈ [0, 1], or its rate and
-/// decay (`fill::rate`); empty sides under the Reynolds condition, which carries none.
+/// decay (`fill::rate`); empty sides under the Reynolds condition, which carries none. With a limited
+/// supply (`skirt/supply.rs`) the fill also holds the oil on the liner and where the pin was.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Fill {
     /// Thrust (+x), anti-thrust (−x).
     pub sides: [Vec<f64>; 2],
+    /// A limited supply's oil on the liner per side, m (`supply::Liner`'s map); empty when flooded.
+    pub liner: [Vec<f64>; 2],
+    /// The pin's axial position the liner's oil was exchanged up to, m (a limited supply's).
+    pub axial: f64,
 }
 
 impl Fill {
     /// Both sides full: a flooded film at rest.
     pub fn flooded(nodes: usize) -> Self {
-        Self { sides: [vec![1.0; nodes], vec![1.0; nodes]] }
+        Self { sides: [vec![1.0; nodes], vec![1.0; nodes]], ..Self::default() }
     }
 
     /// The fill `dt` (s, either sign) after a solve that took this fill and gave `rate` and `decay`
-    /// (`fill::rate`), kept in [0, 1] (a full node stays full: its rate is 0 or negative).
+    /// (`fill::rate`), kept in [0, 1] (a full node stays full: its rate is 0 or negative); the liner's
+    /// oil as it was (`Skirt::fill_after` exchanges it).
     pub fn advanced(&self, (rate, decay): (&Fill, &Fill), dt: f64) -> Fill {
-        Fill { sides: [0, 1].map(|k| advanced(&self.sides[k], (&rate.sides[k], &decay.sides[k]), dt)) }
+        Fill {
+            sides: [0, 1].map(|k| advanced(&self.sides[k], (&rate.sides[k], &decay.sides[k]), dt)),
+            liner: self.liner.clone(),
+            axial: self.axial,
+        }
     }
 
     /// The share of the nodes' film area that is wetted, Σ θ over the nodes of both sides / their
@@ -61,11 +71,49 @@ impl Fill {
 /// One side's fill `theta` moved `dt` along `rate` with `decay` implicit ([`Fill::advanced`]); a step
 /// back in time (a rejected step's solve retaken earlier) is explicit.
 pub(crate) fn advanced(theta: &[f64], (rate, decay): (&[f64], &[f64]), dt: f64) -> Vec<f64> {
-    let step = |((t, r), d): ((&f64, &f64), &f64)| {
+    unsettled(theta, (rate, decay), dt).map(settle).collect()
+}
+
+/// One side's fill `dt` on with each node's oil kept to the flows of its solve (a limited supply's,
+/// `Skirt::fill_after`): the content the solve's rates give, `θ h + (h θ̇ + θ ḣ) dt` (h and ḣ at the
+/// solve, `before` and `rates`), over the film now, `after` (m), kept in [0, 1]; a full node whose
+/// rate does not empty it stays full (its content the gap now). The step is explicit, so that what
+/// leaves one node is what enters the next: the faces' fluxes are shared, the film's content changes
+/// by its edges' flows alone. Moving θ alone would change a squeezed partial node's oil by
+/// `−θ h (ḣ dt/h)²` at every step, the gap's actual change differs from `ḣ dt` by `ḧ dt²/2`, and the
+/// implicit decay of [`advanced`] scales each node's rate by `1/(1 + d dt)`; each is of one sign over
+/// a landing or a stroke. Returns the fill and what it holds beyond what the flows gave, m of film per
+/// node (negative: a node filled beyond full, or emptied below nothing, at a step longer than its
+/// flows allow; positive: a full node's gap grew more than its rate said).
+pub(crate) fn advanced_conserving(
+    theta: &[f64],
+    rate: &[f64],
+    dt: f64,
+    (before, rates, after): (&[f64], &[f64], &[f64]),
+) -> (Vec<f64>, Vec<f64>) {
+    let gaps = before.iter().zip(rates).zip(after);
+    theta
+        .iter()
+        .zip(rate)
+        .zip(gaps)
+        .map(|((&t, r), ((h0, hdot), h1))| {
+            let content = h0 * (t + r * dt) + t * hdot * dt;
+            let kept = if t == 1.0 && *r >= 0.0 { 1.0 } else { settle(content / h1) };
+            (kept, kept * h1 - content)
+        })
+        .unzip()
+}
+
+/// Each node's fill `dt` on before [`settle`].
+fn unsettled<'a>(theta: &'a [f64], (rate, decay): (&'a [f64], &'a [f64]), dt: f64) -> impl Iterator<Item = f64> + 'a {
+    theta.iter().zip(rate).zip(decay).map(move |((t, r), d)| {
         let implicit = dt * d;
-        settle(if implicit > 0.0 { (t + dt * (r + d * t)) / (1.0 + implicit) } else { t + dt * r })
-    };
-    theta.iter().zip(rate).zip(decay).map(step).collect()
+        if implicit > 0.0 {
+            (t + dt * (r + d * t)) / (1.0 + implicit)
+        } else {
+            t + dt * r
+        }
+    })
 }
 
 /// θ kept in [0, 1], within [`FULL`] of 1 made 1.

@@ -3,26 +3,28 @@
 //! flow balance of each solve.
 
 use super::fill::{self, partial};
-use super::reynolds::{Carried, Cavitation, Film, Grid, Reynolds};
+use super::reynolds::{Carried, Cavitation, EdgeFlows, Film, Grid, Reynolds};
 
-const VISCOSITY: f64 = 0.01;
+pub(super) const VISCOSITY: f64 = 0.01;
 
 /// A long film of thickness `h(x)` (per metre of width) under a mean surface velocity `u` along +x and a
-/// uniform squeeze rate `ht`, with its fill fraction.
-struct Slider {
-    grid: Grid,
-    film: Film,
-    u: f64,
-    ht: f64,
-    solver: Reynolds,
-    fill: Vec<f64>,
-    rhs: Vec<f64>,
-    rate: Vec<f64>,
-    decay: Vec<f64>,
+/// uniform squeeze rate `ht`, with its fill fraction; flooded at its inlet, or with a `supply` (m) the
+/// oil arriving there fills `min(1, supply/h)` of the inlet face's gap (`skirt/supply.rs`).
+pub(super) struct Slider {
+    pub grid: Grid,
+    pub film: Film,
+    pub u: f64,
+    pub ht: f64,
+    pub solver: Reynolds,
+    pub fill: Vec<f64>,
+    pub rhs: Vec<f64>,
+    pub rate: Vec<f64>,
+    pub decay: Vec<f64>,
+    pub supply: Option<f64>,
 }
 
 impl Slider {
-    fn new(nx: usize, length: f64, h: impl Fn(f64) -> f64, u: f64, ht: f64) -> Self {
+    pub fn new(nx: usize, length: f64, h: impl Fn(f64) -> f64, u: f64, ht: f64) -> Self {
         let grid = Grid::long(nx, length);
         let mut film = Film::new(&grid);
         let column = |x: f64| (0.0, h(x));
@@ -30,18 +32,33 @@ impl Slider {
         let faces: Vec<_> = (0..=nx).map(|i| column((i as f64 + 0.5) * grid.dx())).collect();
         film.fill(&grid, (&[(0.0, 0.0)], &[(0.0, 0.0); 2]), (&nodes, &faces), 0.0);
         let solver = Reynolds::new(grid.clone());
-        Self { grid, film, u, ht, solver, fill: vec![1.0; nx], rhs: vec![0.0; nx], rate: vec![0.0; nx], decay: vec![0.0; nx] }
+        let (fill, rhs, rate, decay) = (vec![1.0; nx], vec![0.0; nx], vec![0.0; nx], vec![0.0; nx]);
+        Self { grid, film, u, ht, solver, fill, rhs, rate, decay, supply: None }
     }
 
-    fn area(&self) -> f64 {
+    pub fn area(&self) -> f64 {
         self.grid.dx() * self.grid.dz()
     }
 
+    /// The fill of the oil crossing the inlet (the upstream edge's face), one row's.
+    pub fn inlet(&self) -> Option<[f64; 1]> {
+        let face = if self.u >= 0.0 { self.film.face_x[0] } else { self.film.face_x[self.grid.nx] };
+        self.supply.map(|l| [(l / face).min(1.0)])
+    }
+
+    /// The flows out of the film's edges after the last solve (`Carried::edge_flows`), m³/s per metre.
+    pub fn edge_flows(&self) -> EdgeFlows {
+        let inlet = self.inlet();
+        let carried = Carried { fill: &self.fill, forward: (self.u >= 0.0, true), inlet: (inlet.as_ref().map(|i| &i[..]), None) };
+        carried.edge_flows(&self.solver, &self.film, VISCOSITY, (self.u, 0.0))
+    }
+
     /// One mass-conserving solve at the current fill: the pressure in `solver`, θ̇ in `rate`.
-    fn solve(&mut self) {
+    pub fn solve(&mut self) {
         let area = self.area();
         self.rhs.fill(-self.ht * area);
-        let carried = Carried { fill: &self.fill, forward: (self.u >= 0.0, true) };
+        let inlet = self.inlet();
+        let carried = Carried { fill: &self.fill, forward: (self.u >= 0.0, true), inlet: (inlet.as_ref().map(|i| &i[..]), None) };
         self.film.add_wedge(&self.grid, (self.u, 0.0), Some(&carried), &mut self.rhs);
         self.solver.pin(self.fill.iter().map(|&t| partial(t)));
         self.solver.solve(&self.film, VISCOSITY, &self.rhs, Cavitation::MassConserving, &[]);
@@ -59,13 +76,13 @@ impl Slider {
     }
 
     /// The fill `dt` on.
-    fn advance(&mut self, dt: f64) {
+    pub fn advance(&mut self, dt: f64) {
         self.fill = fill::advanced(&self.fill, (&self.rate, &self.decay), dt);
     }
 
     /// Marches the fill from flooded to its steady state, the steady JFO solution, at steps of
     /// `courant` cells' transit of the thinnest film's share of the thickest.
-    fn steady(&mut self, courant: f64) {
+    pub fn steady(&mut self, courant: f64) {
         let (hmin, hmax) = self.film.face_x.iter().fold((f64::INFINITY, 0.0_f64), |(a, b), &h| (a.min(h), b.max(h)));
         let dt = courant * self.grid.dx() / self.u.abs() * hmin / hmax;
         for _ in 0..200 * self.grid.nx {
@@ -79,7 +96,7 @@ impl Slider {
     }
 
     /// The load per metre of width, N/m.
-    fn load(&self) -> f64 {
+    pub fn load(&self) -> f64 {
         self.solver.pressure.iter().sum::<f64>() * self.grid.dx()
     }
 
@@ -91,7 +108,7 @@ impl Slider {
     }
 }
 
-fn relative(value: f64, exact: f64) -> f64 {
+pub(super) fn relative(value: f64, exact: f64) -> f64 {
     (value - exact).abs() / exact.abs()
 }
 

@@ -1,5 +1,6 @@
 //! What goes into and comes out of a skirt evaluation.
 
+use super::reynolds::EdgeFlows;
 use super::{Fill, Shear};
 use nalgebra::{Matrix2, Matrix2x3, Matrix4x3, Vector2};
 
@@ -104,6 +105,17 @@ pub struct FilmLinear {
     pub fill_rate: Fill,
     /// The fill's decay, 1/s: each node's own outflow per unit fill over its oil volume (`skirt/fill.rs`).
     pub fill_decay: Fill,
+    /// A limited supply: per side, the oil on the liner just ahead of the leading edge per column, m
+    /// (`supply::Liner::ahead`); empty when flooded.
+    pub supply: [Vec<f64>; 2],
+    /// A limited supply: per side, the flows out of the film's edges at the solve's rates, m³/s.
+    pub edges: [EdgeFlows; 2],
+    /// Mass-conserving cavitation: per side, each node's film h at the solve and its rate ḣ at the
+    /// solve's rates, m and m/s (node order); empty under the Reynolds condition.
+    pub gaps: [Vec<(f64, f64)>; 2],
+    /// Mass-conserving cavitation: the oil the film holds at the solve, `Σ θ h ΔA` over both sides'
+    /// nodes, m³.
+    pub content: f64,
 }
 
 impl FilmLinear {

@@ -182,25 +182,76 @@ impl Film {
 }
 
 /// A fill fraction carried by the wedge's flow: per node (node order j·nx + i), θ ∈ [0, 1], and the
-/// flow's direction along x and z (true: toward +x, +z). Beyond the edges the supply is full (θ = 1).
+/// flow's direction along x and z (true: toward +x, +z). Beyond the edges the supply is `inlet`'s:
+/// along x per row, along z per column, the fill the oil arriving across the upstream edge has (a
+/// limited supply, `skirt/supply.rs`); full (θ = 1, flooded) where none is given.
 #[derive(Clone, Copy, Debug)]
 pub(crate) struct Carried<'a> {
     pub fill: &'a [f64],
     pub forward: (bool, bool),
+    pub inlet: (Option<&'a [f64]>, Option<&'a [f64]>),
 }
 
 impl Carried<'_> {
-    /// The fill each face of node (i, j) carries, [west, east, south, north]: its upwind node's.
+    /// The fill each face of node (i, j) carries, [west, east, south, north]: its upwind node's, or
+    /// beyond an edge the supply's.
     fn upwind(&self, grid: &Grid, i: usize, j: usize) -> [f64; 4] {
         let (nx, nz) = (grid.nx, grid.nz);
         let at = |i: Option<usize>, j: Option<usize>| match (i, j) {
             (Some(i), Some(j)) if i < nx && j < nz => self.fill[j * nx + i],
+            (Some(i), _) if i < nx => self.inlet.1.map_or(1.0, |inlet| inlet[i]),
+            (_, Some(j)) if j < nz => self.inlet.0.map_or(1.0, |inlet| inlet[j]),
             _ => 1.0,
         };
         let (here, (x, z)) = (at(Some(i), Some(j)), self.forward);
         let (west, east) = if x { (at(i.checked_sub(1), Some(j)), here) } else { (here, at(Some(i + 1), Some(j))) };
         let (south, north) = if z { (at(Some(i), j.checked_sub(1)), here) } else { (here, at(Some(i), Some(j + 1))) };
         [west, east, south, north]
+    }
+
+    /// The flows out of the rectangle across its edges after a solve, m³/s (negative: inflow), by edge
+    /// face: [`EdgeFlows`]'s order. Each is the wedge's `u·h·θ` across the face, θ upwind of it, plus
+    /// the Poiseuille flow `h³/(12μ) p` over the half cell to the edge's p = 0, the same face fluxes the
+    /// solve and `fill::rate` take, so that the content of the film changes by their sum alone.
+    pub(crate) fn edge_flows(&self, reynolds: &Reynolds, film: &Film, viscosity: f64, (ux, uz): (f64, f64)) -> EdgeFlows {
+        let g = &reynolds.grid;
+        let (nx, nz, dx, dz) = (g.nx, g.nz, g.dx(), g.dz());
+        let p = |i: usize, j: usize| reynolds.pressure[j * nx + i];
+        let conductance = |h: f64, across: f64, along: f64| h * h * h / (12.0 * viscosity) * across / along;
+        let mut flows = EdgeFlows::default();
+        for j in 0..nz {
+            let (west, east) = (film.face_x[j * (nx + 1)], film.face_x[j * (nx + 1) + nx]);
+            let (w, e) = (self.upwind(g, 0, j)[0], self.upwind(g, nx - 1, j)[1]);
+            flows.west.push(-ux * west * w * dz + conductance(west, dz, dx) * p(0, j));
+            flows.east.push(ux * east * e * dz + conductance(east, dz, dx) * p(nx - 1, j));
+        }
+        if !g.long {
+            for i in 0..nx {
+                let (south, north) = (film.face_z[i], film.face_z[nz * nx + i]);
+                let (s, n) = (self.upwind(g, i, 0)[2], self.upwind(g, i, nz - 1)[3]);
+                flows.south.push(-uz * south * s * dx + conductance(south, dx, dz) * p(i, 0));
+                flows.north.push(uz * north * n * dx + conductance(north, dx, dz) * p(i, nz - 1));
+            }
+        }
+        flows
+    }
+}
+
+/// The flows out of a film's rectangle after a solve, m³/s (negative: inflow), per face of each
+/// edge: `west` (x = 0) and `east` (x = lx) per row, `south` (z = 0) and `north` (z = lz) per column
+/// (empty for a long film).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct EdgeFlows {
+    pub west: Vec<f64>,
+    pub east: Vec<f64>,
+    pub south: Vec<f64>,
+    pub north: Vec<f64>,
+}
+
+impl EdgeFlows {
+    /// The net outflow, m³/s.
+    pub fn total(&self) -> f64 {
+        [&self.west, &self.east, &self.south, &self.north].into_iter().flatten().sum()
     }
 }
 

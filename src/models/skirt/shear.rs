@@ -43,20 +43,22 @@ impl Shear {
 
 /// A side's shear sums at the pose of `rows` (the closed grid's rows, [`RowTerms`]) and, with
 /// `GRADIENT`, their gradient in (lateral, tilt): `columns` the closed columns' (cos θ, ovality
-/// term), `free` the interior nodes' film set and `fill` their fill fraction (node order; empty under
-/// the Reynolds condition), `forward` the oil's direction, `floor` the film the Reynolds solve takes at
+/// term), `free` the interior nodes' film set, `fill` their fill fraction (node order; empty under
+/// the Reynolds condition) and `supply` a limited supply's oil ahead of the upstream edge per interior
+/// column (empty: flooded), `forward` the oil's direction, `floor` the film the Reynolds solve takes at
 /// least, `tilt` (sin φ3, cos φ3), `area` a cell's area.
 ///
 /// Under the Reynolds condition oil fills a cavitated point as far as the film carried into it along
 /// the liner's motion allows: at a rupture the pressure flow vanishes, so the Couette flux V·h_r/2 goes
 /// on as streamers filling h_r/h of a thicker gap. The mass-conserving film knows its content at each
-/// node, θ h (θ held at the solve's as the pose moves). The upstream edge is flooded. The shear acts on
+/// node, θ h (θ held at the solve's as the pose moves). The upstream edge is flooded, or with a
+/// limited supply holds `min(l, h)` of the liner's oil l (the edge columns take their neighbours'). The shear acts on
 /// the filled part, with the trapezoid weights of the closed grid.
 #[allow(clippy::too_many_arguments)]
 pub(super) fn walk<const GRADIENT: bool>(
     rows: &[RowTerms],
     columns: &[(f64, f64)],
-    (free, fill): (&[bool], &[f64]),
+    (free, fill, supply): (&[bool], &[f64], &[f64]),
     forward: bool,
     floor: f64,
     tilt: (f64, f64),
@@ -82,6 +84,8 @@ pub(super) fn walk<const GRADIENT: bool>(
             let theta = if inside { fill.get((jj - 1) * nx + ii - 1) } else { None };
             if let Some(&theta) = theta {
                 (carried, d_carried) = (theta * h, d_h.map(|d| theta * d));
+            } else if let (0, Some(&oil)) = (step, supply.get(ii.clamp(1, nx) - 1)) {
+                (carried, d_carried) = if oil < h { (oil, [0.0; 2]) } else { (h, d_h) };
             } else if step == 0 || (inside && free[(jj - 1) * nx + ii - 1]) || h < carried {
                 (carried, d_carried) = (h, d_h);
             }

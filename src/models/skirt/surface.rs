@@ -14,6 +14,7 @@ use super::asperity::Asperity;
 use super::fill::{self, partial, Fill};
 use super::reynolds::{Carried, Cavitation, Film, Grid, Reynolds};
 use super::shear::{self, arm, closed_weight, RowTerms, Shear};
+use super::supply::{self, Liner};
 use super::{CavitationCondition, FilmLinear, PressureMap, SideMap, SkirtDesign, SkirtLoads, SkirtMotion};
 use crate::models::ModelError;
 use nalgebra::{Matrix2, Matrix4x3, RowVector3, Vector2, Vector3};
@@ -68,6 +69,8 @@ pub struct Skirt {
     rows: Rows,
     asperity: Asperity,
     floor: f64,
+    /// A limited supply's map of the liner; none when flooded.
+    liner: Option<Liner>,
     /// The workspace, lent to each evaluation: every entry is written before it is read, so an
     /// evaluation's result does not depend on the one before.
     scratch: Workspace,
@@ -104,6 +107,8 @@ struct Scratch {
     rate_tilt: Vec<f64>,
     wedge: Vec<f64>,
     arm_wedge: Vec<f64>,
+    /// A limited supply's inlet fill per column (`supply::inlet_fill`).
+    inlet: Vec<f64>,
     /// [`RowTerms`] at the node rows and on the closed grid; (a, b) at the node rows and the z faces.
     node_rows: Vec<RowTerms>,
     closed_rows: Vec<RowTerms>,
@@ -123,6 +128,7 @@ impl Scratch {
             rate_tilt: vec![0.0; n],
             wedge: vec![0.0; n],
             arm_wedge: vec![0.0; n],
+            inlet: Vec::with_capacity(grid.nx),
             node_rows: Vec::with_capacity(grid.nz),
             closed_rows: Vec::with_capacity(grid.nz + 2),
             film_rows: Vec::with_capacity(grid.nz),
@@ -162,7 +168,8 @@ impl Skirt {
         let asperity = Asperity::new(&design.roughness);
         let floor = 0.1 * design.roughness.sigma;
         let scratch = Workspace::default();
-        Ok(Self { sides: [side(0.0), side(std::f64::consts::PI)], rows, asperity, floor, grid, design, scratch })
+        let liner = Liner::new(&design, &grid);
+        Ok(Self { sides: [side(0.0), side(std::f64::consts::PI)], rows, asperity, floor, liner, grid, design, scratch })
     }
 
     /// The skirt's longest distance from the pin, m (axially, plus the pin's offset): a tilt change δφ3
@@ -207,8 +214,10 @@ impl Skirt {
     }
 
     /// [`Skirt::linearise`] with mass-conserving cavitation at the fill fraction `fill` (flooded where
-    /// none), giving also the fill's rate and decay at `motion`'s rates; under the Reynolds condition
-    /// `fill` is not read.
+    /// none), giving also the fill's rate and decay at `motion`'s rates and the oil the film holds;
+    /// with a limited supply whose liner `fill` holds ([`Skirt::starting_fill`]), the leading edge fed
+    /// by the liner's oil ahead of it and the film's edge flows (`skirt/supply.rs`). Under the Reynolds
+    /// condition `fill` is not read.
     pub fn linearise_filled(&self, motion: &SkirtMotion, fill: Option<&Fill>) -> FilmLinear {
         let mut workspace = self.scratch.lend(&self.grid);
         let s = &mut *workspace;
@@ -218,13 +227,26 @@ impl Skirt {
             linear.fill_rate = Fill::flooded(self.grid.len());
             linear.fill_decay = Fill::flooded(self.grid.len());
         }
+        let forward = motion.sliding_speed >= 0.0;
         for side in 0..2 {
             let carried = linear.fill.sides[side].as_slice();
             let carried = (!carried.is_empty()).then_some(carried);
+            if let (Some(liner), false) = (&self.liner, linear.fill.liner[side].is_empty()) {
+                liner.ahead(&linear.fill.liner[side], linear.fill.axial, forward, &mut linear.supply[side]);
+            }
+            let supplied = Some(linear.supply[side].as_slice()).filter(|l| !l.is_empty());
             let cavitation = if carried.is_some() { Cavitation::MassConserving } else { Cavitation::Reynolds };
-            linear.factorisations[side] = self.solve_side(s, side, motion, cavitation, carried);
+            linear.factorisations[side] = self.solve_side(s, side, motion, cavitation, (carried, supplied));
             if let Some(theta) = carried {
                 let area = self.grid.dx() * self.grid.dz();
+                linear.content += theta.iter().zip(&s.film.node).map(|(t, h)| t * h).sum::<f64>() * area;
+                let squeeze = |k: usize| -(s.rate_x[k] * motion.lateral_rate + s.rate_tilt[k] * motion.tilt_rate) / area;
+                linear.gaps[side] = s.film.node.iter().enumerate().map(|(k, &h)| (h, squeeze(k))).collect();
+                if supplied.is_some() {
+                    let carried = Carried { fill: theta, forward: (true, forward), inlet: (None, Some(&s.inlet)) };
+                    let velocity = (0.0, 0.5 * motion.sliding_speed);
+                    linear.edges[side] = carried.edge_flows(&s.reynolds[side], &s.film, self.design.viscosity, velocity);
+                }
                 let solve = fill::Solve {
                     reynolds: &s.reynolds[side],
                     film: &s.film,
@@ -249,12 +271,80 @@ impl Skirt {
         let (tilt, forward) = ((libm::sin(motion.tilt), libm::cos(motion.tilt)), motion.sliding_speed >= 0.0);
         linear.shear = Shear { at: Vector2::new(motion.lateral, motion.tilt), forward, ..Shear::default() };
         for side in 0..2 {
-            let (sums, gradient) =
-                self.shear_walk::<true>(&s.closed_rows, side, (&linear.free[side], &linear.fill.sides[side]), forward, tilt);
+            let wetted = (&linear.free[side][..], &linear.fill.sides[side][..], &linear.supply[side][..]);
+            let (sums, gradient) = self.shear_walk::<true>(&s.closed_rows, side, wetted, forward, tilt);
             linear.shear.sums += sums;
             linear.shear.gradient += gradient;
         }
         linear
+    }
+
+    /// With a limited supply, the oil a run starts with, the pin at axial position `axial` (m) and the
+    /// skirt at `motion`: the liner's uniform film on both sides' maps, and in the film at each node
+    /// what that film fills of the gap, `min(1, l/h)`; none when flooded (a flooded film at rest).
+    pub fn starting_fill(&self, motion: &SkirtMotion, axial: f64) -> Option<Fill> {
+        let liner = self.liner.as_ref()?;
+        let film = liner.starting_film();
+        let sides = self.node_films(motion).map(|h| h.iter().map(|h| (film / h).min(1.0)).collect());
+        Some(Fill { sides, liner: [liner.start(), liner.start()], axial })
+    }
+
+    /// Both sides' film at the nodes at `motion`'s pose, m (the Reynolds film's, at least its floor).
+    fn node_films(&self, motion: &SkirtMotion) -> [Vec<f64>; 2] {
+        let mut workspace = self.scratch.lend(&self.grid);
+        let s = &mut *workspace;
+        let pose = self.pose(motion);
+        [0, 1].map(|side| {
+            s.film_rows.clear();
+            s.film_rows.extend(self.rows.nodes.iter().map(|r| pose(r).0));
+            s.face_rows.clear();
+            s.face_rows.extend(self.rows.faces.iter().map(|r| pose(r).0));
+            s.film.fill(&self.grid, (&s.film_rows, &s.face_rows), (&self.sides[side].nodes, &self.sides[side].faces), self.floor);
+            s.film.node.clone()
+        })
+    }
+
+    /// The fill `dt` (s) after the solve `linear` with the skirt then at `motion` and the pin at axial
+    /// position `axial` (m), each node's oil kept to its solve's flows (`fill::advanced_conserving`);
+    /// with a limited supply, the film's edge flows at the solve exchanged with the liner over the
+    /// pin's path since the fill's own position (`supply::Liner::exchange`), and what a node holds
+    /// beyond its flows taken from the liner under it (or, negative, left there): the oil on the liner
+    /// and in the film is then constant but for the oil the film took beyond what the liner's cells
+    /// held, which this also returns, m³. Under the Reynolds condition, no fill.
+    pub fn fill_after(&self, linear: &FilmLinear, dt: f64, (motion, axial): (&SkirtMotion, f64)) -> (Fill, f64) {
+        if linear.fill.sides[0].is_empty() {
+            return (Fill::default(), 0.0);
+        }
+        let (area, nx) = (self.grid.dx() * self.grid.dz(), self.grid.nx);
+        let mut fill = Fill { liner: linear.fill.liner.clone(), axial: linear.fill.axial, ..Fill::default() };
+        let mut lacked = 0.0;
+        for (side, after) in self.node_films(motion).iter().enumerate() {
+            let (before, rates): (Vec<f64>, Vec<f64>) = linear.gaps[side].iter().copied().unzip();
+            let (theta, rate) = (&linear.fill.sides[side], &linear.fill_rate.sides[side]);
+            let (kept, held) = fill::advanced_conserving(theta, rate, dt, (&before, &rates, after));
+            fill.sides[side] = kept;
+            let (Some(liner), map) = (&self.liner, &mut fill.liner[side]) else { continue };
+            if map.is_empty() {
+                continue;
+            }
+            lacked += liner.exchange(map, &linear.edges[side], (linear.fill.axial, axial), dt);
+            for (k, &held) in held.iter().enumerate().filter(|(_, &h)| h != 0.0) {
+                lacked += liner.leave(map, (k % nx, k / nx), axial, -held * area);
+            }
+            fill.axial = axial;
+        }
+        (fill, lacked)
+    }
+
+    /// With a limited supply, the oil `fill`'s liner holds, m³, and the area its maps cover, m² (both
+    /// sides); (0, 0) when flooded.
+    pub fn liner_oil(&self, fill: &Fill) -> (f64, f64) {
+        match &self.liner {
+            Some(liner) => {
+                fill.liner.iter().filter(|m| !m.is_empty()).fold((0.0, 0.0), |(v, a), m| (v + liner.volume(m), a + liner.area()))
+            }
+            None => (0.0, 0.0),
+        }
     }
 
     /// The row terms of the pose (lateral position, tilt) of `m` at rows (u, r).
@@ -272,9 +362,17 @@ impl Skirt {
     /// the extra right-hand sides ∂b/∂ẋ = cos θ ΔA, ∂b/∂φ̇3 = −(α + β cos θ) ΔA, ∂b/∂V (the wedge per
     /// unit speed, −½ ∂h/∂u ΔA: minus the axial push's weights) and that times the axial force's arm
     /// (minus the axial moment's weights). With a `fill` (mass-conserving), the wedge carries it upwind
-    /// of each face along the sliding and its partly filled nodes are held at p = 0. Returns the
-    /// active-set steps.
-    fn solve_side(&self, s: &mut Scratch, side_index: usize, m: &SkirtMotion, cavitation: Cavitation, fill: Option<&[f64]>) -> usize {
+    /// of each face along the sliding and its partly filled nodes are held at p = 0; with a `supply`
+    /// (the liner's oil ahead of the leading edge per column), the oil crossing that edge fills
+    /// `supply::inlet_fill` of the gap (into `s.inlet`), full otherwise. Returns the active-set steps.
+    fn solve_side(
+        &self,
+        s: &mut Scratch,
+        side_index: usize,
+        m: &SkirtMotion,
+        cavitation: Cavitation,
+        (fill, supply): (Option<&[f64]>, Option<&[f64]>),
+    ) -> usize {
         let pose = self.pose(m);
         s.node_rows.clear();
         s.node_rows.extend(self.rows.nodes.iter().map(&pose));
@@ -286,7 +384,13 @@ impl Skirt {
         let (nx, area) = (self.grid.nx, self.grid.dx() * self.grid.dz());
         s.film.fill(&self.grid, (&s.film_rows, &s.face_rows), (&side.nodes, &side.faces), self.floor);
         s.wedge.fill(0.0);
-        let carried = fill.map(|fill| Carried { fill, forward: (true, m.sliding_speed >= 0.0) });
+        let forward = m.sliding_speed >= 0.0;
+        if let Some(liner) = supply {
+            let edge = if forward { 0 } else { self.grid.nz * nx };
+            supply::inlet_fill(liner, s.film.face_z[edge..edge + nx].iter().copied(), &mut s.inlet);
+        }
+        let inlet = supply.map(|_| s.inlet.as_slice());
+        let carried = fill.map(|fill| Carried { fill, forward: (true, forward), inlet: (None, inlet) });
         s.film.add_wedge(&self.grid, (0.0, 0.5), carried.as_ref(), &mut s.wedge);
         if let Some(fill) = fill {
             s.reynolds[side_index].pin(fill.iter().map(|&t| partial(t)));
@@ -347,7 +451,10 @@ impl Skirt {
         } else {
             (0..2)
                 .map(|side| {
-                    self.shear_walk::<false>(&s.closed_rows, side, (&linear.free[side], &linear.fill.sides[side]), v >= 0.0, (s3, c3)).0
+                    // The supply feeds the solve's leading edge.
+                    let supply = if (v >= 0.0) == linear.shear.forward { &linear.supply[side][..] } else { &[] };
+                    let wetted = (&linear.free[side][..], &linear.fill.sides[side][..], supply);
+                    self.shear_walk::<false>(&s.closed_rows, side, wetted, v >= 0.0, (s3, c3)).0
                 })
                 .sum()
         };
@@ -367,7 +474,8 @@ impl Skirt {
                 s.reynolds[side_index].free.clone_from(&linear.free[side_index]);
                 let held = SkirtMotion { lateral: linear.at.lateral, tilt: linear.at.tilt, ..*m };
                 let carried = Some(linear.fill.sides[side_index].as_slice()).filter(|f| !f.is_empty());
-                self.solve_side(s, side_index, &held, Cavitation::Held, carried);
+                let supplied = Some(linear.supply[side_index].as_slice()).filter(|l| !l.is_empty());
+                self.solve_side(s, side_index, &held, Cavitation::Held, (carried, supplied));
             }
             // Asperities on the closed grid (trapezoid weights), with the true film thickness down to
             // the film's floor σ/10, below which the corners carry the collapsed film (the asperities'
@@ -418,12 +526,12 @@ impl Skirt {
     }
 
     /// One side's Couette shear sums (and with `GRADIENT` their gradient) at the pose of `rows`, its
-    /// film set and fill `wetted` (`shear::walk`).
+    /// film set, fill and supply `wetted` (`shear::walk`).
     fn shear_walk<const GRADIENT: bool>(
         &self,
         rows: &[RowTerms],
         side: usize,
-        wetted: (&[bool], &[f64]),
+        wetted: (&[bool], &[f64], &[f64]),
         forward: bool,
         tilt: (f64, f64),
     ) -> (Vector2<f64>, Matrix2<f64>) {

@@ -106,6 +106,8 @@ fn skirt(p: &Parameters) -> Result<Option<lubrication::Design>, ModelError> {
         roughness: [p.skirt_roughness, p.asperity_density, p.asperity_radius, p.composite_modulus],
         boundary_friction: p.boundary_friction,
         cavitation: p.cavitation,
+        oil_supply: p.oil_supply,
+        liner_oil_film: p.liner_oil_film,
         grid: (grid("skirt_grid_circumferential", p.skirt_grid_circumferential)?, grid("skirt_grid_axial", p.skirt_grid_axial)?),
     }))
 }
