@@ -50,7 +50,6 @@ use std::cell::RefCell;
 /// transients close to ≈ 2e-3 of their energy (`tests/core/absorbing.rs`).
 pub const STEPS_PER_RELAXATION: f64 = 2.0;
 
-
 /// Where in an RK4 step the film is solved, as a fraction of the step ([`predicted`]): half a step
 /// in, the film's position errs to second order over the stages (at the start, first order: the
 /// default engine's peak side force then moved 0.60 % from the per-stage solve, against 0.31 %).

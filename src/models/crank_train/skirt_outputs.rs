@@ -58,18 +58,12 @@ impl CrankTrain {
             return;
         };
         let loads = lubrication.loads_at((phi, trig), phid);
-        let (_, work) = self.drive.stepper().powers();
+        let work = self.drive.stepper().energies();
         out.side_force = corners + loads.lateral_force;
         [out.min_film_thickness_thrust, out.min_film_thickness_antithrust] = loads.min_film;
         (out.film_force, out.asperity_force) = (loads.film_force, loads.asperity_force);
         out.skirt_friction_force = loads.friction_force;
         out.skirt_friction_power = lubrication.friction_power((phi, trig), phid);
-        {
-            let (rates, _) = self.drive.stepper().powers();
-            if (rates[SKIRT_FRICTION] - out.skirt_friction_power).abs() > 0.01 * out.skirt_friction_power.abs() + 1.0 {
-                eprintln!("DBG point {} books rate {}", out.skirt_friction_power, rates[SKIRT_FRICTION]);
-            }
-        }
         out.film_energy_total = work[FILM] - (loads.asperity_energy - self.asperity_energy_start);
         out.potential_energy += loads.asperity_energy;
         out.film_relaxation_work = work[IMPLICIT];
