@@ -301,9 +301,9 @@ fn thesis_study() {
                 ("piston_diameter", diameter),
                 ("bore", diameter + 2.0 * rho),
                 ("restitution", 0.9),
-                ("crank_speed", 1.0),
             ];
             let host = Host::new(&[("model_variant", 2), ("roller_forcing", 1)], &reals);
+            host.set_inputs(&Inputs { crank_speed: 1.0, ..Inputs::default() }, &InputDerivatives::default()).expect("Ω = 1");
             wall += run(&host, stop, 2.0 * std::f64::consts::PI);
         }
     }
