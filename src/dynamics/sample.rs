@@ -259,8 +259,21 @@ pub(super) fn sample_of<S: System<N, M>, const N: usize, const M: usize>(
     v: SVector<f64, N>,
     contacts: Contacts,
 ) -> Result<Sample<N, M>, DynamicsError> {
+    sample_rated(sys, ev, (t, q, v), contacts, S::POWERS)
+}
+
+/// [`sample_of`] with the system's rates (`System::powers`) only where `rates` (zero otherwise): a
+/// communication point's are computed when asked (`Stepper::rates`), since no step integrates them.
+#[inline(always)]
+pub(super) fn sample_rated<S: System<N, M>, const N: usize, const M: usize>(
+    sys: &S,
+    ev: &Evaluation<N, M>,
+    (t, q, v): (f64, SVector<f64, N>, SVector<f64, N>),
+    contacts: Contacts,
+    rates: bool,
+) -> Result<Sample<N, M>, DynamicsError> {
     let m = motion(sys, ev, (t, &q, &v), contacts)?;
-    let powers = if S::POWERS { powers(sys, (t, &q, &v), &m) } else { Powers::zeros() };
+    let powers = if rates { powers(sys, (t, &q, &v), &m) } else { Powers::zeros() };
     let Motion { acc, lambda, friction, slip, .. } = m;
     let hd = ev.gap_jacobian * v + ev.gap_time_rate;
     let hdd = ev.gap_jacobian * acc + ev.gap_bias;

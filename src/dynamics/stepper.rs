@@ -5,7 +5,7 @@
 use super::complementarity::{bit, contains, select, Contacts};
 use super::options::{MAX_STEPS_PER_ADVANCE, PENETRATION_FACTOR, TOO_MANY_STEPS};
 use super::rk4::{local_error, rk4_cut, rk4_step, rk4_to, Hermite5, Stepped};
-use super::sample::{sample, sample_of, Evaluated, Forces, Sample};
+use super::sample::{motion, powers, sample, sample_of, sample_rated, Evaluated, Forces, Sample};
 use super::{
     DynamicsError, Evaluation, Event, Powers, StepBounds, StepCounts, StepperOptions, System, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET,
 };
@@ -234,7 +234,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         } else {
             (q, v, ev)
         };
-        let mut s = sample_of(&self.system, &ev, t, q, v, contacts)?;
+        let mut s = sample_rated(&self.system, &ev, (t, q, v), contacts, false)?;
         (s.friction_work, s.contact_impulse, s.energies) = interpolated_totals(s0, end, t);
         Ok(s)
     }
@@ -324,11 +324,22 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         let s = self.current();
         (s.friction_power(), s.friction_work)
     }
-    /// The rates the system reports now, and their integrals since the start (`System::powers`,
+    /// The integrals since the start of the rates the system reports (`System::powers`,
     /// `Change::Jump`; zero where it reports none).
-    pub fn powers(&self) -> (Powers, Powers) {
-        let s = self.current();
-        (s.powers, s.energies)
+    pub fn energies(&self) -> Powers {
+        self.current().energies
+    }
+    /// The rates the system reports now (`System::powers`; zero where it reports none). A point
+    /// read from the step ahead has them computed here, from its state and contacts.
+    pub fn rates(&self) -> Result<Powers, DynamicsError> {
+        match &self.ahead {
+            Some(Ahead { now: s, .. }) if S::POWERS => {
+                let (t, q, v) = (s.t, &s.q, &s.v);
+                let m = motion(&self.system, &self.system.evaluate_point(t, q, v), (t, q, v), self.contacts)?;
+                Ok(powers(&self.system, (t, q, v), &m))
+            }
+            _ => Ok(self.current().powers),
+        }
     }
     /// ∫ λ dt per constraint since the start, N·s: the impulse of the persistent contact forces
     /// (impacts: `Event::impulses`).

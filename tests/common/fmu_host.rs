@@ -41,10 +41,14 @@ pub struct Host {
 }
 
 impl Host {
-    /// The default design with `integers` and `reals` set by name; panics unless it is accepted.
+    /// The default design with the parameters `integers` and `reals` set by name; panics unless it
+    /// is accepted, or where a name is not a parameter's (an input is set with `set_inputs`).
     pub fn new(integers: &[(&str, i32)], reals: &[(&str, f64)]) -> Self {
         let mut params = Parameters::default();
         let no_inputs = &mut Inputs::default();
+        for n in integers.iter().map(|p| p.0).chain(reals.iter().map(|p| p.0)) {
+            assert!(VARIABLES[vr(n) as usize].causality == Causality::Parameter, "{n} is not a parameter");
+        }
         for &(n, v) in integers {
             *(DESCRIPTION.integer_mut)(vr(n), &mut params, no_inputs).expect(n) = v;
         }

@@ -166,8 +166,11 @@ pub(crate) trait CrankStepper {
     fn friction(&self) -> (Vector4<f64>, (f64, f64));
     /// N·s, the persistent contact forces' impulse per corner since the start.
     fn contact_impulses(&self) -> Vector4<f64>;
-    /// The rates the crank train reports now and their integrals since the start (`books`).
-    fn powers(&self) -> (Powers, Powers);
+    /// The integrals since the start of the rates the crank train reports (`books`).
+    fn energies(&self) -> Powers;
+    /// The rates the crank train reports now (`books`); NaN where the state's motion no longer
+    /// solves (it solved when the state was reached).
+    fn rates(&self) -> Powers;
     /// The integrator's work so far.
     fn counts(&self) -> StepCounts;
     /// Follows the drive input `speed` or `load` unless it already does (a change makes the core
@@ -217,8 +220,11 @@ impl<S: CrankDrive<N>, const N: usize> CrankStepper for Stepper<S, N, 4> {
     fn contact_impulses(&self) -> Vector4<f64> {
         Stepper::contact_impulses(self)
     }
-    fn powers(&self) -> (Powers, Powers) {
-        Stepper::powers(self)
+    fn energies(&self) -> Powers {
+        Stepper::energies(self)
+    }
+    fn rates(&self) -> Powers {
+        Stepper::rates(self).unwrap_or_else(|_| Powers::repeat(f64::NAN))
     }
     fn counts(&self) -> StepCounts {
         Stepper::counts(self)

@@ -58,7 +58,7 @@ impl EnergyBalance for CrankTrain {
 
     /// The rates the crank train reports to the core (`books`) at the state now.
     fn power_flows(&self) -> PowerFlows {
-        let (rates, _) = self.drive.stepper().powers();
+        let rates = self.drive.stepper().rates();
         let (_, friction, _) = self.friction();
         let film = rates[FILM] + rates[IMPLICIT];
         PowerFlows { drive: rates[DRIVE], gas: rates[GAS], damping: rates[DAMPING], friction, film }

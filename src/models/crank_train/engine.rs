@@ -32,8 +32,10 @@ pub struct Engine {
     pub restitution: f64,
     /// Coulomb friction coefficient μ of the corners on the liner.
     pub friction: f64,
-    /// The lubricated skirt (`skirt_model = 2`); none: the dry corners alone.
-    pub lubrication: Option<Lubrication>,
+    /// The lubricated skirt (`skirt_model = 2`); none: the dry corners alone. Boxed: the engine is
+    /// copied with the model before every step a host may have undone, and the dry one carries no
+    /// room for the film.
+    pub lubrication: Option<Box<Lubrication>>,
 }
 
 /// What an [`Engine`] is built from, SI.
@@ -76,7 +78,7 @@ impl Engine {
             crown_area: 0.25 * std::f64::consts::PI * d * d,
             restitution: design.restitution,
             friction: design.friction,
-            lubrication: design.skirt.map(Lubrication::try_from).transpose()?,
+            lubrication: design.skirt.map(Lubrication::try_from).transpose()?.map(Box::new),
         })
     }
 

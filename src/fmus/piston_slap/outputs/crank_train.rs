@@ -42,7 +42,7 @@ pub(in crate::fmus::piston_slap) fn write(model: &CrankTrain, out: &mut Outputs)
     out.liner_impulse_total = std::array::from_fn(|w| contact[w] + model.impact_impulse[w]);
     [out.friction_force_1, out.friction_force_2, out.friction_force_3, out.friction_force_4] = friction.into();
     (out.friction_power, out.friction_energy_total) = (friction_power, friction_energy);
-    let (_, books) = stepper.powers();
+    let books = stepper.energies();
     out.drive_work_total = books[DRIVE] + model.impulse_work;
     (out.gas_work_total, out.damping_energy_total) = (books[GAS], books[DAMPING]);
     out.running_clearance = model.running_clearance;

@@ -42,7 +42,7 @@ pub(super) fn write(
         return;
     };
     let loads = lubrication.loads_at((phi, trig), phid);
-    let (_, work) = model.drive.stepper().powers();
+    let work = model.drive.stepper().energies();
     out.side_force = corners + loads.lateral_force;
     [out.min_film_thickness_thrust, out.min_film_thickness_antithrust] = loads.min_film;
     (out.film_force, out.asperity_force) = (loads.film_force, loads.asperity_force);
