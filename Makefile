@@ -52,9 +52,10 @@ coupled: fmu venv
 	for preset in $$($(VENV_PYTHON) -c "from pistonslap.engine_cycle_presets import PRESETS; print(*PRESETS)"); do $(PISTONSLAP) coupled --engine $$preset --out out/coupled/$$preset || exit 1; done
 
 # The style gate (the text gate of build/text_gate.py: no history words or design/seed numbers in src/'s comments
-# and the design documents; rustfmt, clippy with warnings as errors, the API documentation's links, ruff's formatter
-# and linter on python/), the Rust tests, then the fmpy tests against the packaged FMU, its win64 binary under Wine
-# among them, and the documentation's tables against what their commands print now; fails if any fails.
+# and the design documents; rustfmt, clippy with warnings as errors, which also compiles the tools and benches, the
+# API documentation's links, ruff's formatter and linter on python/), the Rust tests of the library and of tests/,
+# then the fmpy tests against the packaged FMU, its win64 binary under Wine among them, and the documentation's
+# tables against what their commands print now; fails if any fails.
 test: toolchain fmu venv
 	$(PYTHON) build/text_gate.py
 	cargo fmt --check
@@ -62,7 +63,7 @@ test: toolchain fmu venv
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --lib --quiet
 	$(VENV)/bin/ruff format --check python
 	$(VENV)/bin/ruff check python
-	cargo test --release
+	cargo test --release --lib --test lib
 	$(VENV_PYTHON) -m pytest python/tests
 
 # Farahanchi's chapter 2 figures (constraint forces, sliding regions) and chapter 4 (20 runs of 30 + 1500 crank
