@@ -32,7 +32,7 @@ pub(crate) fn select<const M: usize>(pred: impl Fn(usize) -> bool) -> Set {
 /// The held constraints and how each carries tangential force: `stick` at tangential rest, the
 /// others slipping forward (`γ > 0`) or, in `back`, backward. Without friction only `held` is used.
 /// `projected`: the held motion keeps a system's implicit inertia out of the held normals
-/// (`implicit.rs`), where through it the contact problem had no solution.
+/// (`implicit/`), where through it the contact problem had no solution.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub(crate) struct Contacts {
     pub held: Set,

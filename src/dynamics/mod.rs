@@ -28,10 +28,11 @@
 //! `settle.rs` (an event resolved, drift removed) over `contact_laws.rs` (the impact law and the
 //! laws of persistent contact), which reduce to `complementarity.rs` (constraint sets, the held
 //! set, `W`, the held acceleration, the LCP) and `coulomb.rs` (the friction problems by
-//! enumeration, `wedge.rs` where a stick's rows are dependent), and `implicit.rs` (the implicit part
-//! of a stiff force: impacts through `M` alone, the held motion with the implicit inertia kept off the
-//! held normals where through it the law has no solution); `rk4.rs` (the RK4 step of a sample, its error estimate, its quintic extension)
-//! over `sample.rs` (the state the loop carries); `inertia.rs` (`M⁻¹`); `system.rs`,
+//! enumeration, `wedge.rs` where a stick's rows are dependent); `implicit/` (the implicit part of a
+//! stiff force, all the core does with it: impacts through `M` alone, the held motion with the implicit
+//! inertia kept off the held normals where through it the law has no solution, the jumps' books, a held
+//! step's totals on its path); `rk4.rs` (the RK4 step of a sample, its error estimate) and `hermite.rs`
+//! (its quintic extension) over `sample.rs` (the state the loop carries); `inertia.rs` (`M⁻¹`); `system.rs`,
 //! `options.rs`, `event.rs`, `error.rs` (what the core takes, is told, records and refuses). The
 //! closed-form systems the tests and benches run it on are `tests/common/testbeds.rs`.
 
@@ -40,6 +41,7 @@ mod contact_laws;
 mod coulomb;
 mod error;
 mod event;
+mod hermite;
 mod implicit;
 mod inertia;
 mod options;

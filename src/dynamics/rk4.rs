@@ -1,7 +1,7 @@
-//! The classical fourth-order Runge–Kutta step for `q̈ = a(t, q, q̇)`, its continuous extension,
-//! and the step of a sample with its contacts held and that step's local error estimate.
+//! The classical fourth-order Runge–Kutta step for `q̈ = a(t, q, q̇)`, and the step of a sample with its contacts held and that step's local error estimate.
 
 use super::complementarity::{Contacts, Frame, Set};
+use super::implicit::on_path_totals;
 use super::sample::{acceleration, dissipated, free_motion, motion, powers, sample, sample_of, Forces, Motion, Sample};
 use super::system::friction_of;
 use super::{DynamicsError, Evaluation, Powers, System};
@@ -38,83 +38,6 @@ pub(crate) struct Step<const N: usize> {
     pub q: SVector<f64, N>,
     pub v: SVector<f64, N>,
     pub last_slopes: (SVector<f64, N>, SVector<f64, N>),
-}
-
-/// Quintic Hermite interpolant of one step, matching `q`, `q̇`, `q̈` at both ends; `q` is any
-/// smooth function of time: the coordinates, or the gaps `h` (with `ḣ` and `ḧ = J q̈ + d`).
-///
-/// Its interpolation error is O(dt⁶), below the O(dt⁵) local error of the RK4 step itself, so
-/// event location on it is as accurate as the step; the stepper still confirms every located
-/// event on the RK4 map (see `search.rs`).
-#[derive(Clone, Debug)]
-pub(crate) struct Hermite5<const N: usize> {
-    pub t0: f64,
-    pub dt: f64,
-    pub q0: SVector<f64, N>,
-    pub v0: SVector<f64, N>,
-    pub a0: SVector<f64, N>,
-    pub q1: SVector<f64, N>,
-    pub v1: SVector<f64, N>,
-    pub a1: SVector<f64, N>,
-}
-
-impl<const N: usize> Hermite5<N> {
-    /// `(q, q̇)` at time `t ∈ [t0, t0 + dt]`.
-    pub fn at(&self, t: f64) -> (SVector<f64, N>, SVector<f64, N>) {
-        let ([d1, d2, d3, d4, d5], dt) = (self.velocity_weights(t), self.dt);
-        let v = (self.q1 - self.q0) * (d3 / dt) + self.v0 * d1 + self.v1 * d4 + (self.a0 * d2 + self.a1 * d5) * dt;
-        (self.position(t), v)
-    }
-
-    /// Component `i` of `q̇` at time `t`: the event search looks for the bottom of a gap's dip.
-    pub fn velocity_of(&self, i: usize, t: f64) -> f64 {
-        let ([d1, d2, d3, d4, d5], dt) = (self.velocity_weights(t), self.dt);
-        (self.q1[i] - self.q0[i]) * (d3 / dt) + self.v0[i] * d1 + self.v1[i] * d4 + (self.a0[i] * d2 + self.a1[i] * d5) * dt
-    }
-
-    /// The weights of `q̇₀`, `q̈₀ dt`, `(q₁ − q₀)/dt`, `q̇₁`, `q̈₁ dt` in `q̇(t)`.
-    fn velocity_weights(&self, t: f64) -> [f64; 5] {
-        let s = (t - self.t0) / self.dt;
-        let (s2, s3, s4) = (s * s, s * s * s, s * s * s * s);
-        [
-            1.0 - 18.0 * s2 + 32.0 * s3 - 15.0 * s4,
-            s - 4.5 * s2 + 6.0 * s3 - 2.5 * s4,
-            30.0 * s2 - 60.0 * s3 + 30.0 * s4,
-            -12.0 * s2 + 28.0 * s3 - 15.0 * s4,
-            1.5 * s2 - 4.0 * s3 + 2.5 * s4,
-        ]
-    }
-
-    /// `q` alone at time `t`.
-    pub fn position(&self, t: f64) -> SVector<f64, N> {
-        let [h1, h2, h3, h4, h5] = self.position_weights(t);
-        let dt = self.dt;
-        self.q0 + (self.q1 - self.q0) * h3 + (self.v0 * h1 + self.v1 * h4) * dt + (self.a0 * h2 + self.a1 * h5) * (dt * dt)
-    }
-
-    /// Component `i` of `q` at time `t`: the event search watches one gap at a time.
-    pub fn position_of(&self, i: usize, t: f64) -> f64 {
-        let [h1, h2, h3, h4, h5] = self.position_weights(t);
-        let dt = self.dt;
-        self.q0[i]
-            + (self.q1[i] - self.q0[i]) * h3
-            + (self.v0[i] * h1 + self.v1[i] * h4) * dt
-            + (self.a0[i] * h2 + self.a1[i] * h5) * (dt * dt)
-    }
-
-    /// The weights of `q̇₀ dt`, `q̈₀ dt²`, `q₁ − q₀`, `q̇₁ dt`, `q̈₁ dt²` in `q(t)`.
-    fn position_weights(&self, t: f64) -> [f64; 5] {
-        let s = (t - self.t0) / self.dt;
-        let (s2, s3) = (s * s, s * s * s);
-        let (s4, s5) = (s3 * s, s3 * s2);
-        [
-            s - 6.0 * s3 + 8.0 * s4 - 3.0 * s5,
-            0.5 * s2 - 1.5 * s3 + 1.5 * s4 - 0.5 * s5,
-            10.0 * s3 - 15.0 * s4 + 6.0 * s5,
-            -4.0 * s3 + 7.0 * s4 - 3.0 * s5,
-            0.5 * s3 - s4 + 0.5 * s5,
-        ]
-    }
 }
 
 /// One RK4 step from `s0` to `t` with `contacts` held, and the end's evaluation.
@@ -242,30 +165,8 @@ pub(super) fn rk4_step<S: System<N, M>, const N: usize, const M: usize>(
     if S::POWERS {
         s.energies += (s0.powers + (rates[1] + rates[2]) * 2.0 + rates[3]) * (dt / 6.0);
     }
-    if ev.implicit.is_some() && contacts.held != 0 {
-        on_path_totals(sys, s0, &mut s, contacts);
-    }
+    on_path_totals(sys, s0, &mut s, &ev, contacts);
     Ok(Stepped { end: s, ev, slopes: end.last_slopes, middle, start: refreshed, prepared })
-}
-
-/// The totals of a held step `s0 → s` of a system with an implicit part (`Evaluation::implicit`), by
-/// Simpson's rule on the step's path (its quintic dense output, whose middle lies on the held
-/// constraints to the step's order): the system's rates, the contact impulse and the friction work.
-/// The stages leave the held constraints by ≈ q̈ dt²/8, where a stiff force, steep in the gap, reads
-/// many times what the path has: the motion, held, does not feel it (the contact force takes it),
-/// but rates and forces taken at the stages book it. Where the middle's inertia is singular to
-/// round-off, the stages' totals stand.
-fn on_path_totals<S: System<N, M>, const N: usize, const M: usize>(sys: &S, s0: &Sample<N, M>, s: &mut Sample<N, M>, contacts: Contacts) {
-    let dt = s.t - s0.t;
-    let path = Hermite5 { t0: s0.t, dt, q0: s0.q, v0: s0.v, a0: s0.acc, q1: s.q, v1: s.v, a1: s.acc };
-    let (q, v) = path.at(s0.t + 0.5 * dt);
-    let Ok(mid) = sample(sys, s0.t + 0.5 * dt, q, v, contacts) else {
-        return;
-    };
-    let sixth = dt / 6.0;
-    s.energies = s0.energies + (s0.powers + mid.powers * 4.0 + s.powers) * sixth;
-    s.contact_impulse = s0.contact_impulse + (s0.lambda + mid.lambda * 4.0 + s.lambda) * sixth;
-    s.friction_work = s0.friction_work + (s0.friction_power() + 4.0 * mid.friction_power() + s.friction_power()) * sixth;
 }
 
 /// The local error of the RK4 step `s0 → s1` on the gaps, m: the embedded third-order estimate
@@ -291,36 +192,4 @@ pub(super) fn local_error<const N: usize, const M: usize>(
     dv += frame.projection(&(ev.gap_jacobian * dv), active).ok_or_else(dependent)?.0;
     let along = lengths.component_mul(&dq).amax().max(lengths.component_mul(&dv).amax() * dt);
     Ok(on_gaps(&dq, &dv).max(along))
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use nalgebra::Vector1;
-
-    /// The interpolant reproduces any quintic exactly (independent of the integrator).
-    #[test]
-    fn hermite_reproduces_a_quintic() {
-        let p = |t: f64| 1.0 - 2.0 * t + 0.5 * t * t + 3.0 * t.powi(3) - t.powi(4) + 0.7 * t.powi(5);
-        let dp = |t: f64| -2.0 + t + 9.0 * t * t - 4.0 * t.powi(3) + 3.5 * t.powi(4);
-        let ddp = |t: f64| 1.0 + 18.0 * t - 12.0 * t * t + 14.0 * t.powi(3);
-        let (t0, dt) = (0.3, 0.9);
-        let v = |f: &dyn Fn(f64) -> f64, t| Vector1::new(f(t));
-        let h = Hermite5 {
-            t0,
-            dt,
-            q0: v(&p, t0),
-            v0: v(&dp, t0),
-            a0: v(&ddp, t0),
-            q1: v(&p, t0 + dt),
-            v1: v(&dp, t0 + dt),
-            a1: v(&ddp, t0 + dt),
-        };
-        for k in 0..=10 {
-            let t = t0 + dt * k as f64 / 10.0;
-            let (q, qd) = h.at(t);
-            assert!((q[0] - p(t)).abs() < 1e-13 && (h.position_of(0, t) - p(t)).abs() < 1e-13, "q at {t}");
-            assert!((qd[0] - dp(t)).abs() < 1e-12, "q̇ at {t}");
-        }
-    }
 }

@@ -158,7 +158,8 @@ pub(super) fn powers<S: System<N, M>, const N: usize, const M: usize>(
     sys.powers(t, q, Change::Rates { v, acc: &m.acc, forces: (&m.lambda, &m.friction) }) + implicit_share(m.taken)
 }
 
-/// `Motion` at `(t, q, q̇)` with `contacts` held, from the evaluation there.
+/// `Motion` at `(t, q, q̇)` with `contacts` held, from the evaluation there: through the projection where
+/// the contacts are projected, with the power they take over from the implicit force.
 #[inline(always)]
 pub(super) fn motion<S: System<N, M>, const N: usize, const M: usize>(
     sys: &S,
@@ -166,12 +167,11 @@ pub(super) fn motion<S: System<N, M>, const N: usize, const M: usize>(
     (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
     contacts: Contacts,
 ) -> Result<Motion<N, M>, DynamicsError> {
-    if contacts.projected && contacts.held != 0 {
-        let projected = Projected::new(ev, t, contacts.held)?;
-        let m = motion_through(sys, &projected.ev, (t, q, v), contacts)?;
-        return Ok(Motion { taken: projected.taken(v, &m.acc), ..m });
-    }
-    motion_through(sys, ev, (t, q, v), contacts)
+    let Some(projected) = Projected::for_held(ev, t, contacts)? else {
+        return motion_through(sys, ev, (t, q, v), contacts);
+    };
+    let m = motion_through(sys, &projected.ev, (t, q, v), contacts)?;
+    Ok(Motion { taken: projected.taken(v, &m.acc), ..m })
 }
 
 /// `Motion` with the inertia and force of `ev` as they are.

@@ -1,7 +1,9 @@
 //! The event search of one RK4 step: the earliest gap or multiplier crossing, located on the
 //! step's quintic extension and confirmed on the RK4 map.
 
-use super::rk4::{rk4_to, Hermite5};
+use super::hermite::Hermite5;
+use super::implicit::stages_off_path;
+use super::rk4::rk4_to;
 use super::root_finding::{self, Bracket, Located, Start};
 use super::sample::{acceleration, sample, Evaluated, Forces, Sample, Watch};
 use super::stepper::StepEnd;
@@ -47,7 +49,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         };
         let watched = |s: &Sample<N, M>, i: usize, w: Watch| s.watched(i, w) - shift(i, w);
         let step_end = &s1.0;
-        let implicit = s1.1.as_ref().is_some_and(|ev| ev.implicit.is_some());
+        let path_middle = stages_off_path(s1.1.as_ref());
         // The step's quintic extensions, of the gaps and of the configuration, built once a scan
         // needs them (most steps scan nothing).
         let (gaps, configuration) = (OnceCell::new(), OnceCell::new());
@@ -108,13 +110,11 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 // values at the ends and the middle comes within the step's own variation of zero
                 // (the middle is an RK4 stage, off the motion by that much: a dip of 7 mN the
                 // quintic extension shows, and the outputs with it, had a stage value of +16 mN).
-                // An implicit part (`Evaluation::implicit`, thousands of times the inertia in the
-                // fast modes) magnifies the stage's offset: there the quintic extension's middle is
-                // read as well (a held force can be newtons above zero at the stage and below it on
-                // the extension).
+                // Where the stages lie far off the path (`stages_off_path`), the quintic extension's
+                // middle is read as well.
                 let held_dip = w != Watch::Gap && located.is_none() && {
                     let dipping = |gm: f64| lowest(g0, gm, g1) < (g0 - gm).abs() + (gm - g1).abs();
-                    dipping(middle.watched(i, w) - lift) || (implicit && dipping(on_dense(0.5 * (s0.t + step_end.t), i, w)? - lift))
+                    dipping(middle.watched(i, w) - lift) || (path_middle && dipping(on_dense(0.5 * (s0.t + step_end.t), i, w)? - lift))
                 };
                 if g1 >= -tol && !dips && !held_dip {
                     continue;

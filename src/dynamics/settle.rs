@@ -3,11 +3,11 @@
 //! of held contacts removed between events.
 
 use super::complementarity::{members, select, Contacts, Frame, Set};
-use super::contact_laws::{energy_lost, impact, sliding_law, stick_jump, Jump, Tolerances};
-use super::implicit::{for_impact, Projected};
-use super::sample::{frame_at, motion, sample, sample_of, Sample};
+use super::contact_laws::{energy_lost, impact, stick_jump, Jump, Tolerances};
+use super::implicit::for_impact;
+use super::sample::{frame_at, sample, sample_of, Sample};
 use super::system::friction_of;
-use super::{Change, DynamicsError, Evaluation, Event, EventKind, Powers, Stepper, System};
+use super::{DynamicsError, Evaluation, Event, EventKind, Powers, Stepper, System};
 use nalgebra::SVector;
 
 /// Zeno guard: after an impact a closed constraint whose free flight would rise no higher than
@@ -83,31 +83,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.onto_contacts(t, &mut q, &v, active, (&mut ev, &mut frame))?;
         let hd = ev.gap_jacobian * v + ev.gap_time_rate;
         let dependent = DynamicsError::DependentContacts { time: t, constraints: active };
-        // Projected held contacts move the velocity through `M` alone (the projected
-        // inertia's `M⁻¹ J_Hᵀ`), which the implicit part takes no impulse in.
-        let jump = if self.contacts.projected {
-            Projected::new(&ev, t, active)?.frame(t)?.projection(&hd, active)
-        } else {
-            frame.projection(&hd, active)
-        };
+        let jump = self.held_jump((&ev, &frame), t, &hd, active)?;
         Ok((q, v + jump.ok_or(dependent)?.0))
-    }
-
-    /// What the system books of the jump `before → after` at `(t, q)` onto the held contacts
-    /// (`Change::Jump`), where its evaluation there `ev` has an implicit part: only that part takes an
-    /// impulse at a jump. None where the contacts are projected: see `onto_held`.
-    fn booked_jump(
-        &self,
-        ev: &Evaluation<N, M>,
-        (t, q): (f64, &SVector<f64, N>),
-        before: &SVector<f64, N>,
-        after: &SVector<f64, N>,
-    ) -> Powers {
-        if S::POWERS && ev.implicit.is_some() && !self.contacts.projected {
-            self.system.powers(t, q, Change::Jump { before, after })
-        } else {
-            Powers::zeros()
-        }
     }
 
     /// `q` moved onto `h_S = 0` by Newton steps in the metric of `M` until every gap of `set` is
@@ -136,37 +113,6 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             *frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
         }
         Ok(())
-    }
-
-    /// The law of persistent contact over `candidates` at `(t, q, q̇)` (`sliding_law`); where the
-    /// system's implicit inertia leaves it without a solution, the law with that inertia projected
-    /// off every candidate's normal (`implicit.rs`): the normal rows are then those of `M` alone, and
-    /// its answer is the contact problem of the motion with the stiff force at the instant's rates. The set it
-    /// holds is held with the projection off its own normals. A candidate it opens that the
-    /// implicit term pushes back (leaving its surface under `M` while the force's relaxation returns it)
-    /// closes again along the motion, and the laws decide anew at that event.
-    /// Returns the contacts and `q̈` of their motion.
-    pub(super) fn persistent_law(
-        &self,
-        tol: Tolerances,
-        (t, q, v): (f64, &SVector<f64, N>, &SVector<f64, N>),
-        (ev, frame): (&Evaluation<N, M>, &Frame<N, M>),
-        candidates: Set,
-    ) -> Result<(Contacts, SVector<f64, N>), DynamicsError> {
-        let probe = |contacts, steps| self.probe((t, q, v), ev, contacts, steps);
-        let through_implicit = sliding_law(&self.system, tol, (t, q, v), (ev, frame), candidates, &probe);
-        if ev.implicit.is_none() || !matches!(through_implicit, Err(DynamicsError::ContactUnresolved { .. })) {
-            return through_implicit;
-        }
-        let projected = Projected::new(ev, t, candidates)?;
-        let probe = |contacts: Contacts, steps| {
-            let contacts = Contacts { projected: true, ..contacts };
-            let (t, q, v, ev) = self.probe((t, q, v), ev, contacts, steps)?;
-            Ok((t, q, v, Projected::new(&ev, t, candidates)?.ev))
-        };
-        let (contacts, _) = sliding_law(&self.system, tol, (t, q, v), (&projected.ev, &projected.frame(t)?), candidates, &probe)?;
-        let contacts = Contacts { projected: contacts.held != 0, ..contacts };
-        Ok((contacts, motion(&self.system, ev, (t, q, v), contacts)?.acc))
     }
 
     /// Records one event per constraint of `set` at the current configuration; the first carries
@@ -307,18 +253,13 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             let (mut q, mut ev, mut frame) = (q, ev, frame);
             self.onto_contacts(t, &mut q, &v, onto, (&mut ev, &mut frame))?;
             let hd = ev.gap_jacobian * v + ev.gap_time_rate;
-            // Projected contacts jump through the inertia their motion takes.
-            let projected = if contacts.projected { Some(Projected::new(&ev, t, support)?) } else { None };
-            let (ev, frame) = match &projected {
-                Some(p) => (p.ev.clone(), p.frame(t)?),
-                None => (ev, frame),
-            };
-            let jump = match stick_jump(&self.system, tol, (t, &q, &v), &ev, contacts) {
+            let through = self.jump_through(contacts, t, (ev, frame))?;
+            let jump = match stick_jump(&self.system, tol, (t, &q, &v), &through.ev, contacts) {
                 Some(jump) => jump,
                 None => {
                     let (dv, normal) =
-                        frame.projection(&hd, support).ok_or(DynamicsError::DependentContacts { time: t, constraints: support })?;
-                    let hd_after = hd + frame.w * normal;
+                        through.frame.projection(&hd, support).ok_or(DynamicsError::DependentContacts { time: t, constraints: support })?;
+                    let hd_after = hd + through.frame.w * normal;
                     let lost = energy_lost(&normal, &hd, &hd_after);
                     Jump { normal, tangent: SVector::zeros(), v: v + dv, hd: hd_after, lost, friction_lost: SVector::zeros() }
                 }
@@ -326,10 +267,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             let losses = (&jump.lost, &jump.friction_lost);
             self.record((EventKind::Slide, &v), support & !was_active, (&hd, &jump.hd), losses, (jump.normal, jump.tangent));
             stick_losses = (jump.lost, jump.friction_lost);
-            booked += match &projected {
-                Some(p) => p.by_jump(&v, &jump.v),
-                None => self.booked_jump(&ev, (t, &q), &v, &jump.v),
-            };
+            booked += self.jump_books(&through, (t, &q), &v, &jump.v);
             sample(&self.system, t, q, jump.v, contacts)?
         };
         let none = SVector::zeros();

@@ -3,8 +3,9 @@
 //! (`settle`), found by the event search (`search`).
 
 use super::complementarity::{bit, contains, select, Contacts};
+use super::hermite::Hermite5;
 use super::options::{MAX_STEPS_PER_ADVANCE, PENETRATION_FACTOR, TOO_MANY_STEPS};
-use super::rk4::{local_error, rk4_cut, rk4_step, rk4_to, Hermite5, Stepped};
+use super::rk4::{local_error, rk4_cut, rk4_step, rk4_to, Stepped};
 use super::sample::{motion, powers, sample, sample_of, sample_rated, Evaluated, Forces, Sample};
 use super::{
     DynamicsError, Evaluation, Event, Powers, StepBounds, StepCounts, StepperOptions, System, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET,

@@ -6,7 +6,7 @@ use nalgebra::{SMatrix, SVector};
 /// keeps with every step's own weights and carries across events alike, in up to eight channels the
 /// system names (W and J, or N and N·s for a force it reports). `[0]` holds the power the implicit
 /// part of its force (`Evaluation::implicit`) takes from the motion, to which the core adds the share
-/// contacts held with that part projected take over (`implicit.rs`).
+/// contacts held with that part projected take over (`implicit/`).
 pub type Powers = SVector<f64, 8>;
 
 /// Everything one RK4 stage, one impact or one sliding solve needs, evaluated at `(t, q, q̇)`.
@@ -20,7 +20,7 @@ pub struct Evaluation<const N: usize, const M: usize> {
     /// `K`: the implicit part of a stiff force. A damper `−D q̇` applied as `−D (q̇ + τ q̈)`, its
     /// rates a time τ ahead, has `K = τ D` here and the rest in `f`: the motion between events
     /// takes `M + K` ([`Self::inertia`]), stable at steps up to τ however large D; an impact, in
-    /// which the finite force takes no impulse, takes `M` (`implicit.rs`). None: no such force.
+    /// which the finite force takes no impulse, takes `M` (`implicit/`). None: no such force.
     pub implicit: Option<SMatrix<f64, N, N>>,
     /// `f(q,q̇,t)`: gyroscopic, damping, potential and exciting forces.
     pub force: SVector<f64, N>,

@@ -317,7 +317,7 @@ fn boundary_friction_closes_the_books_as_it_stops_the_crank() {
 /// Random declared designs (`common::designs::lubricated_declared`) whose corners, held through the
 /// film's implicit inertia, meet Painlevé's paradox (no non-negative contact force: the implicit term
 /// shrinks a held corner's own response far below friction's coupling) and on the linkage's inertia
-/// do not (`dynamics/implicit.rs`): each runs past the instant where through `M + τ Gᵀ D G` the law
+/// do not (`dynamics/implicit/`): each runs past the instant where through `M + τ Gᵀ D G` the law
 /// has no solution, free crank (1018, at 1.3 ms, one corner) and held (8405 at 28 ms, one corner;
 /// 2802 at 87 ms and 2293 at 121 ms, a wall's pair), and its books close to 1e-4 of the work. The contacts' share of the implicit force's
 /// power (`Projected::taken`) is in them: left out, 2293's residual is 6.5e-3 J of 2.1 J.

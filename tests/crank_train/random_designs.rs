@@ -100,7 +100,7 @@ fn random_limited_supply_engines_all_run() {
 /// slip it started found undone at the very start of each step, 10⁴ times, where the laws and the step
 /// read the corner with films half a step apart (`Stepper::step` now takes such a step again shorter);
 /// 18 of seeds 0–8999 on Painlevé's paradox through the film's implicit inertia (no non-negative
-/// contact force; the law on the linkage's inertia, `dynamics/implicit.rs`, has one); 5932, 8561 and
+/// contact force; the law on the linkage's inertia, `dynamics/implicit/`, has one); 5932, 8561 and
 /// 14312, the film solved at a state predicted through the liner, on its floor (5932: an inertia matrix
 /// 1e16 times the linkage's, not positive definite to round-off; 8561: a corner 2.2e-9 m outside the
 /// bore; the film is now solved at the step's start there).

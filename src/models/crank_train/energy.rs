@@ -19,7 +19,7 @@ impl PrescribedCrank {
     /// (`impact`) through the linkage's alone (`Evaluation::mass`), a projection
     /// through the lubricated skirt's, which depends on `v` and on the film prepared when this is
     /// asked (after the communication step: not always the one the jump acted through). A
-    /// projection onto projected contacts (`dynamics/implicit.rs`) acts through `M⁻¹ Jᵀ`, the
+    /// projection onto projected contacts (`dynamics/implicit/`) acts through `M⁻¹ Jᵀ`, the
     /// linkage's, and is reckoned here through the skirt's all the same: the event does not say.
     pub fn impulse_work(
         &self,

@@ -1,42 +1,15 @@
-//! The implicit part of a stiff force (`Evaluation::implicit`), in one place: a damper `−D q̇`
-//! applied as `−D (q̇ + τ q̈)`, its `K = τ D` beside the inertia `M`.
-//!
-//! - Between events the motion takes `M + K` (`Evaluation::inertia`): a mode `m v̇ = −c v` relaxes at
-//!   `−c/(m + τ c) ≥ −1/τ`, inside RK4's stability region at steps up to τ however large c.
-//! - An impact takes `M` alone ([`for_impact`]): the force is finite and takes no impulse in an
-//!   instant. (Through `M + K`, Newton's law would dissipate in that metric, not in the kinetic
-//!   energy's: where D turns between impacts each impact could feed the motion.)
-//! - A held motion whose contact problem has no solution through `M + K` is held with `K` projected
-//!   off the held normals ([`Projected`], below).
-//! - The system books the work of `−K q̈` with its other rates (`System::powers`); the core adds the
-//!   share projected contacts take over from it ([`Projected::taken`], [`Projected::by_jump`]).
-//!
-//! The projection. Through `M + K` the contact problem is the implicit term's, not the motion's: where
-//! `K` ≫ `M` along the held normals, `W_NN = J (M + K)⁻¹ Jᵀ` shrinks with `K` while friction's coupling
-//! `W_NT` keeps its share, and the slipping contact problem can have no non-negative solution at
-//! a friction far below the critical one (Painlevé's paradox made by a numerical
-//! device). Along a held normal the rate is the constraint's, so the damper is not stiff there:
-//! the implicit term is needed only in the motions the held contacts leave free. With `P` the
-//! `M`-orthogonal projector onto `ker J_H` and `a_p = −M⁻¹ J_Hᵀ W⁻¹ d_H` the acceleration the held
-//! gaps impose (every held `q̈` is `a_p + P q̈`), the held motion takes
-//!
-//! `(M + Pᵀ K P) q̈ = f − Pᵀ K a_p + J_Hᵀ λ + J_Tᵀ λ_T`:
-//!
-//! the implicit force `−Pᵀ K q̈` instead of `−K q̈`, the difference `(I − Pᵀ) K q̈` (along `J_Hᵀ`)
-//! taken by the contact force. Since `P M⁻¹ J_Hᵀ = 0`, `(M + Pᵀ K P)⁻¹ J_Hᵀ = M⁻¹ J_Hᵀ`: the held
-//! rows' `W_NN` and `W_NT` are those of `M` alone, whose friction a well-posed system keeps below its
-//! critical coefficient. Without friction the motion is the one through `M + K`; only the normal
-//! force leaves out the implicit term's normal share.
+//! The projection of the implicit term off held normals, and the evaluation an impact acts through (see the
+//! module `implicit`).
 
-use super::complementarity::{Frame, Set};
-use super::system::implicit_share;
-use super::{DynamicsError, Evaluation, Powers};
+use crate::dynamics::complementarity::{Contacts, Frame, Set};
+use crate::dynamics::system::implicit_share;
+use crate::dynamics::{DynamicsError, Evaluation, Powers};
 use nalgebra::{SMatrix, SVector};
 
 /// The evaluation and frame an impact at `t` acts through where `ev` has an implicit part: `ev`
 /// without it. None where it has none: `ev` and its frame are the impact's.
 #[allow(clippy::type_complexity)]
-pub(super) fn for_impact<const N: usize, const M: usize>(
+pub(in crate::dynamics) fn for_impact<const N: usize, const M: usize>(
     ev: &Evaluation<N, M>,
     t: f64,
 ) -> Result<Option<(Evaluation<N, M>, Frame<N, M>)>, DynamicsError> {
@@ -49,7 +22,7 @@ pub(super) fn for_impact<const N: usize, const M: usize>(
 }
 
 /// A held motion's evaluation with the implicit term projected (see the module).
-pub(super) struct Projected<const N: usize, const M: usize> {
+pub(in crate::dynamics) struct Projected<const N: usize, const M: usize> {
     pub ev: Evaluation<N, M>,
     /// `P`.
     projector: SMatrix<f64, N, N>,
@@ -76,6 +49,15 @@ impl<const N: usize, const M: usize> Projected<N, M> {
         Ok(Self { ev: Evaluation { implicit: Some(taken * projector), force, ..bare }, projector, implicit })
     }
 
+    /// The projection a held motion at `t` with `contacts` acts through: None unless they are projected.
+    pub fn for_held(ev: &Evaluation<N, M>, t: f64, contacts: Contacts) -> Result<Option<Self>, DynamicsError> {
+        if contacts.projected && contacts.held != 0 {
+            Self::new(ev, t, contacts.held).map(Some)
+        } else {
+            Ok(None)
+        }
+    }
+
     /// The power the held contacts take over from the implicit force at `(q̇, q̈)`,
     /// `((Pᵀ K − K) q̈)·q̇`, W: the system's power of the implicit part, reckoned with `−K q̈`, plus this is
     /// what the force applied here takes.
@@ -99,9 +81,9 @@ impl<const N: usize, const M: usize> Projected<N, M> {
 
 #[cfg(test)]
 mod tests {
-    use super::super::sample::acceleration;
-    use super::super::test_random::{positive_definite, uniform};
     use super::*;
+    use crate::dynamics::sample::acceleration;
+    use crate::dynamics::test_random::{positive_definite, uniform};
     use nalgebra::{SMatrix, SVector};
 
     /// Random linkages with an implicit term up to 1e4 times their inertia, one or two constraints
