@@ -11,9 +11,9 @@ settles out.
 
 import numpy as np
 
-from .coupled import COLUMNS, run_cylinders
 from .firing_order import phases, start_angles
 from .fmu import CENTRED, CYCLE, from_firing_tdc, read_landing_log
+from .master import COLUMNS, run_cylinders
 from .progress import Progress
 from .tables import (
     CYCLE_METRICS,
@@ -26,7 +26,7 @@ from .tables import (
     write_table,
 )
 
-#: PistonSlap outputs each cylinder's record holds beyond `coupled.COLUMNS`: what its per-cycle figures
+#: PistonSlap outputs each cylinder's record holds beyond `master.COLUMNS`: what its per-cycle figures
 #: (`tables.cycle_metrics`) are read from, and the wall loads drawn.
 RECORDED = (
     "cycle_count",
@@ -93,7 +93,7 @@ def stop_time(cycles, speed, step):
 def run(order, cycles, step, speed, engine_values, slap_values, out, derivatives=True):
     """Runs the engine of firing order `order` (`firing_order.firing_order`) at `speed` (rad/s, EngineCycle's) for
     cylinder 1's `cycles` cycles (`stop_time`), each cylinder's landing log in `out`. Returns each cylinder's record
-    (`coupled.COLUMNS` and `RECORDED`) and landing log."""
+    (`master.COLUMNS` and `RECORDED`) and landing log."""
     logs = [out / f"cylinder_{k}_landing_log.csv" for k in range(1, len(order) + 1)]
     cylinders = [
         (engine, dict(slap, landing_log=str(log)))

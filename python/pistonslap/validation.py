@@ -516,7 +516,8 @@ COUPLED_STEPS = (1e-3, 2.5e-4)
 @cache
 def coupled_energy(h, derivatives):
     """Impact energy per cycle over cycles 2–5 of the default engines coupled at steps of `h`, J."""
-    from .coupled import energy_per_cycle, run
+    from .coupled import energy_per_cycle
+    from .master import run
 
     return energy_per_cycle(run(0.6, h, derivatives=derivatives), 2, 5)
 

@@ -4,7 +4,7 @@ in one process."""
 import numpy as np
 import pytest
 
-from pistonslap.coupled import run
+from pistonslap.master import run
 from pistonslap.validation import coupled_energy
 
 RAMP_TIME = 8.4  # s: 100 → 200 rad/s, (100 + 200)/2 · 8.4 = 1260 rad > 100 cycles of 4π

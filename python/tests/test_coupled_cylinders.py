@@ -6,10 +6,10 @@ import numpy as np
 import pytest
 from cli import pistonslap
 
-from pistonslap.coupled import run_cylinders
 from pistonslap.cylinders import RECORDED, fitted_step, start_values
 from pistonslap.firing_order import firing_order, phases, start_angles
 from pistonslap.fmu import from_firing_tdc
+from pistonslap.master import run_cylinders
 from pistonslap.refusal import Refusal
 
 STEP = 1e-3  # s: 7.2° at the engine's default 1200 rpm

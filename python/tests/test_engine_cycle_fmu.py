@@ -8,8 +8,8 @@ import pytest
 from fmpy.fmi1 import FMICallException
 from fmpy.validation import validate_fmu
 
-from pistonslap.coupled import ENGINE_FMU
 from pistonslap.engine_cycle_presets import PRESETS
+from pistonslap.master import ENGINE_FMU
 
 from harness import FMI_ERROR, Instance
 
