@@ -4,7 +4,8 @@
 //! thesis study's wall time; the cost of one RK4 step against its floating-point work (counted
 //! under callgrind, `fmu/flop_count.rs`), and the bound that cost and the default case's count of
 //! steps set on its real-time factor; the lubricated skirt's CPU time per cycle at 1200 and 3000 rpm
-//! against the dry model's, and its mass-conserving film's against the Reynolds condition's.
+//! against the dry model's, and its mass-conserving film's, flooded and on a limited oil supply, against
+//! the Reynolds condition's.
 //! Each figure is the median of several runs.
 
 use pistonslap::dynamics::StepperOptions;
@@ -71,6 +72,8 @@ fn real_time_factor(what: &str, integers: &[(&str, i32)], reals: &[(&str, f64)],
 const PLAIN_STEPS: &str = "--plain-steps";
 /// The argument that makes it only take `n` communication steps of `h` (the instruction count's child run).
 const DO_STEPS: &str = "--do-steps";
+/// The argument that runs the lubricated skirt's figures alone (`lubricated`).
+const LUBRICATED: &str = "--lubricated";
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
@@ -83,8 +86,12 @@ fn main() {
         run(&Host::new(&[], &[]), n as f64 * h, h);
         return;
     }
-    let cycle = 4.0 * std::f64::consts::PI / 125.66;
     println!("machine: {}", machine());
+    if args.iter().any(|a| a == LUBRICATED) {
+        lubricated();
+        return;
+    }
+    let cycle = 4.0 * std::f64::consts::PI / 125.66;
     let what = "roller variant, default parameters (1200 rpm), 10 cycles, step  1 ms";
     real_time_factor(what, &[("model_variant", 2)], &[], 10.0 * cycle, 1e-3);
 
@@ -117,13 +124,20 @@ fn main() {
 }
 
 /// The lubricated skirt (`skirt_model = 2`, default film grid and relaxation) against the dry
-/// default case, and the mass-conserving film (`cavitation = 2`) against the Reynolds condition's, at
-/// 1200 and 3000 rpm, through the C ABI at 1 ms steps over one whole cycle (the second: the first
-/// starts the film from rest): the CPU time per cycle of each, the real-time factor it gives and the
-/// ratios, the median over rounds (a ratio taken within a round, under one load of the machine).
+/// default case, and the mass-conserving film (`cavitation = 2`), flooded and on a limited supply
+/// (`oil_supply = 2`, the default `liner_oil_film`), against the Reynolds condition's, at 1200 and
+/// 3000 rpm, through the C ABI at 1 ms steps over one whole cycle (the second: the first starts the
+/// film from rest): the CPU time per cycle of each, the real-time factor it gives and the ratios, the
+/// median over rounds (a ratio taken within a round, under one load of the machine).
+/// `cargo bench --bench fmu -- --lubricated` runs these alone.
 fn lubricated() {
     let h = 1e-3;
-    let cases: [&[(&str, i32)]; 3] = [&[("skirt_model", 1)], &[("skirt_model", 2)], &[("skirt_model", 2), ("cavitation", 2)]];
+    let cases: [&[(&str, i32)]; 4] = [
+        &[("skirt_model", 1)],
+        &[("skirt_model", 2)],
+        &[("skirt_model", 2), ("cavitation", 2)],
+        &[("skirt_model", 2), ("cavitation", 2), ("oil_supply", 2)],
+    ];
     for rpm in [1200.0, 3000.0] {
         let speed = rpm * std::f64::consts::PI / 30.0;
         let cycle = 4.0 * std::f64::consts::PI / speed;
@@ -133,13 +147,14 @@ fn lubricated() {
             run(&host, cycle, h);
             run_on(libc::CLOCK_THREAD_CPUTIME_ID, &host, (cycle, 2.0 * cycle), h)
         };
-        let rounds: Vec<[f64; 3]> = (0..RUNS).map(|_| cases.map(second_cycle)).collect();
+        let rounds: Vec<[f64; 4]> = (0..RUNS).map(|_| cases.map(second_cycle)).collect();
         let cpu = |k: usize| median(rounds.iter().map(|r| r[k]).collect());
         let ratio = |k: usize, of: usize| median(rounds.iter().map(|r| r[k] / r[of]).collect());
         println!(
             "crank train, default case at {rpm:.0} rpm, one cycle in 1 ms steps, CPU time: dry {:.2} ms ({:.0}× real time); \
              lubricated skirt {:.1} ms ({:.2}× real time), {:.1}× the dry model's; mass-conserving cavitation {:.1} ms \
-             ({:.2}× real time), {:.2}× the Reynolds film's",
+             ({:.2}× real time), {:.2}× the Reynolds film's; on a limited supply {:.1} ms ({:.2}× real time), {:.2}× the \
+             Reynolds film's",
             cpu(0) * 1e3,
             cycle / cpu(0),
             cpu(1) * 1e3,
@@ -147,7 +162,10 @@ fn lubricated() {
             ratio(1, 0),
             cpu(2) * 1e3,
             cycle / cpu(2),
-            ratio(2, 1)
+            ratio(2, 1),
+            cpu(3) * 1e3,
+            cycle / cpu(3),
+            ratio(3, 1)
         );
     }
 }

@@ -12,6 +12,7 @@ markdown its page holds (`python/tests/test_validation_tables.py` checks every p
     python -m pistonslap.validation hot-film ENGINE RPM [RPM ...]     thinnest films on oil, cold against ENGINE-hot
     python -m pistonslap.validation cavitation ENGINE RPM [RPM ...]   the film on oil, Reynolds against mass-conserving
     python -m pistonslap.validation oil-supply ENGINE RPM [RPM ...]   the film flooded against a limited oil supply
+    python -m pistonslap.validation running-engine ENGINE RPM ...     cold and hot, flooded and limited (ENGINE-running)
     python -m pistonslap.validation film-books ENGINE:RPM:MPAS:MM ... the oiled skirt's books against its powers
 
 The runs are cached per process, so that the tests which assert on the same runs share them.
@@ -26,7 +27,7 @@ from fmpy.fmi2 import FMU2Slave
 
 from .demo import SAMPLE_DEG
 from .fmu import CENTRED, CYCLE, fmu_path, simulate, simulate_with_logs
-from .presets import PRESETS
+from .presets import PRESETS, SUPPLY
 from .tables import sampled_metrics
 
 MJ = 1e3
@@ -411,6 +412,51 @@ def oil_supply_table(engine, speeds):
     return _table(header, rows)
 
 
+def running_engine_table(engine, speeds):
+    """Preset `engine` on the mass-conserving film at 20 °C and at its running temperature (`engine-hot`), each fully
+    flooded and on the limited supply of `engine-running`: the thinnest film per side, the wetted fraction's mean and
+    least, the asperities' share of the skirt's friction, the skirt FMEP and each wall's largest landing, of the last
+    cycle."""
+    running = f"{engine}-running"
+    limited = f"limited, {PRESETS[running].values['liner_oil_film'] * 1e6:g} µm"
+    rows = []
+    for rpm in speeds:
+        for temperature in ("cold", "hot"):
+            for supply, shown in ((1, "flooded"), (2, limited)):
+                if temperature == "hot":
+                    m = _oil_run(running, rpm, (("oil_supply", supply),))
+                else:
+                    cold = {**SUPPLY, "oil_supply": supply}
+                    m = _oil_run(engine, rpm, tuple(sorted(cold.items())))
+                rows.append(
+                    (
+                        f"{rpm:g} rpm",
+                        f"{temperature}, {m['running_clearance'] * 1e6:.3g} µm",
+                        shown,
+                        _thinnest(m, "thrust"),
+                        _thinnest(m, "antithrust"),
+                        f"{m['wetted_mean']:.2f} ({m['wetted_least']:.2f})",
+                        f"{100 * m['asperity_share']:.1f} %",
+                        f"{m['cycle_skirt_fmep'] * 1e-5:.4f} bar",
+                        _landing(m, "thrust"),
+                        _landing(m, "antithrust"),
+                    )
+                )
+    header = (
+        "speed",
+        "temperature, running clearance",
+        "supply",
+        "thinnest film, thrust",
+        "thinnest film, anti-thrust",
+        "wetted, mean (least)",
+        "asperity share of friction",
+        "skirt FMEP",
+        "largest landing, thrust",
+        "largest landing, anti-thrust",
+    )
+    return _table(header, rows)
+
+
 # --- a fed pressure: held against first-order input derivatives ------------------------------------------------------
 
 #: rad/s, the crank speed of the fed-pressure runs (1200 rpm).
@@ -675,6 +721,7 @@ TABLES = {
     "hot-film": lambda engine, *speeds: hot_film_table(engine, [float(s) for s in speeds]),
     "cavitation": lambda engine, *speeds: cavitation_table(engine, [float(s) for s in speeds]),
     "oil-supply": lambda engine, *speeds: oil_supply_table(engine, [float(s) for s in speeds]),
+    "running-engine": lambda engine, *speeds: running_engine_table(engine, [float(s) for s in speeds]),
     "film-books": film_books_table,
 }
 
