@@ -7,7 +7,7 @@
 //! - `contract.rs`: the macros `parameters_struct!`, `inputs_struct!` and `outputs_struct!` that declare the
 //!   contract types with one documented field per variable, the defaults and range checks of `Parameters`
 //!   and `Inputs`, the finiteness check of the Real outputs and the input derivatives by name (included where
-//!   the model keeps its contract types: `src/models/contract.rs`, `src/models/engine_cycle/contract.rs`);
+//!   each FMU's room keeps its contract types: `src/fmus/<fmu>/contract.rs`);
 //!
 //! and once, `log_categories.rs` (included by `src/fmi/description.rs`).
 //!

@@ -5,9 +5,9 @@
 use pistonslap::fmi::fixed_argument_logger;
 use pistonslap::fmi::types::{fmi2CallbackFunctions, fmi2Component, fmi2FMUstate, Status, FMI2_CO_SIMULATION, FMI2_FALSE, FMI2_TRUE};
 use pistonslap::fmus::engine_cycle::EngineCycleRun;
+use pistonslap::fmus::engine_cycle::Parameters as EngineCycleParameters;
 use pistonslap::fmus::exports::*;
 use pistonslap::fmus::{engine_cycle, piston_slap::GUID};
-use pistonslap::models::EngineCycleParameters;
 use std::ffi::{c_char, c_int, c_void, CString};
 
 unsafe extern "C" fn quiet_logger(_: *mut c_void, _: *const c_char, _: c_int, _: *const c_char, _: *const c_char, _: *const c_char) {}

@@ -13,7 +13,7 @@ pub mod roller;
 pub mod skirt;
 
 pub use crank_train::{CrankTrain, EfficiencyCalibration, EfficiencyTarget};
-pub use engine_cycle::{EngineCycle, EngineCycleInputs, EngineCycleOutputs, EngineCycleParameters};
+pub use engine_cycle::{CycleDesign, EngineCycle};
 pub use engine_model::{EngineEvent, EngineEventKind, EngineModel, StepInputs, CYCLE};
 pub use error::{check, check_integer, check_real, ModelError};
 pub use numerics::{EnergyBalance, InputPolynomial, PowerFlows};

@@ -16,7 +16,7 @@
 
 use super::heat_transfer::{Correlation, Reference, WallHeat};
 use super::thermo::{stoichiometric_fuel_air, Charge};
-use super::EngineCycleParameters;
+use super::CycleDesign;
 use crate::models::ModelError;
 use serde::{Deserialize, Serialize};
 use std::f64::consts::PI;
@@ -71,7 +71,7 @@ pub struct ClosedCycle {
 
 /// What the right-hand side needs besides the state.
 struct Dynamics<'a> {
-    parameters: &'a EngineCycleParameters,
+    parameters: &'a CycleDesign,
     charge: Charge,
     mass: f64,
     wall: WallHeat,
@@ -87,7 +87,7 @@ struct Rates {
 }
 
 /// Wiebe burn fraction x_b and dx_b/dϑ at ϑ (0 when nothing burns).
-pub fn wiebe(parameters: &EngineCycleParameters, theta: f64) -> (f64, f64) {
+pub fn wiebe(parameters: &CycleDesign, theta: f64) -> (f64, f64) {
     let p = parameters;
     let x = (theta - p.burn_start) / p.burn_duration;
     if x <= 0.0 || p.heat_release == 0.0 {
@@ -131,8 +131,8 @@ impl Dynamics<'_> {
 }
 
 impl ClosedCycle {
-    /// The charge of validated `parameters`, its plausibility checked, and the integrated table.
-    pub fn new(parameters: &EngineCycleParameters) -> Result<Self, ModelError> {
+    /// The charge of a validated design `parameters`, its plausibility checked, and the integrated table.
+    pub fn new(parameters: &CycleDesign) -> Result<Self, ModelError> {
         let par = parameters;
         let (y, x_r) = (par.fuel_hydrogen_carbon_ratio, par.residual_gas_fraction);
         let v_ivc = par.volume(-PI).v;
@@ -187,7 +187,7 @@ impl ClosedCycle {
         Ok(cycle)
     }
 
-    fn check_plausible(&self, par: &EngineCycleParameters) -> Result<(), ModelError> {
+    fn check_plausible(&self, par: &CycleDesign) -> Result<(), ModelError> {
         let finite = self.nodes.iter().all(|n| [n.p, n.dp, n.t, n.dt, n.q, n.dq].iter().all(|v| v.is_finite()) && n.p > 0.0 && n.t > 0.0);
         if !finite {
             return Err(ModelError("the closed-cycle pressure or temperature is not finite and positive: check heat_release".into()));

@@ -1,5 +1,5 @@
 //! The engine cycle as a function of time: the crank angle of the prescribed speed, the pressure of the
-//! closed part ([`super::closed_cycle`]) and of the gas exchange, the outputs and their time derivatives.
+//! closed part ([`super::closed_cycle`]) and of the gas exchange, the wall heat, and their time derivatives.
 //!
 //! With ϑ the crank angle reduced to [−π, 3π) about firing top dead centre (ϑ = 0 at crank angle 0 mod 4π):
 //! - ϑ ∈ [−π, ϑ_EVO]: the closed cycle, intake valve closing at bottom dead centre with `p(−π) = p_intake`;
@@ -8,38 +8,37 @@
 //! - exhaust stroke, ϑ ∈ (π, 2π): `p_exhaust`; intake stroke, ϑ ∈ [2π, 3π): `p_intake`.
 //!
 //! The indicated torque is `(p − p_crankcase) dV/dϑ` (the work of the gas on the crank per radian), whose
-//! integral over a cycle is IMEP · V_d. Heat flows to the walls over the closed part only: `wall_heat_total` is
-//! the closed parts' wall heat since the start time, `wall_heat_flux` its time derivative `dQ_w/dϑ · ω`.
+//! integral over a cycle is IMEP · V_d. Heat flows to the walls over the closed part only: the wall heat since the
+//! start time is the closed parts', its time derivative `dQ_w/dϑ · ω`.
 
 use super::closed_cycle::{ClosedCycle, ClosedState};
-use super::parameters::Volume;
-use super::{EngineCycleOutputs, EngineCycleParameters};
+use super::design::{CycleDesign, Volume};
 use crate::models::{ModelError, CYCLE};
 use serde::{Deserialize, Serialize};
 use std::f64::consts::{FRAC_PI_2, PI};
 
-/// The single-zone cycle: the parameters and the closed cycle.
+/// The single-zone cycle: its design and the closed cycle.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 pub struct EngineCycle {
-    parameters: EngineCycleParameters,
+    design: CycleDesign,
     start_time: f64,
     closed: ClosedCycle,
 }
 
 impl EngineCycle {
-    /// Validates the parameters and integrates the closed part of the cycle (refusing an implausible one).
-    pub fn new(parameters: &EngineCycleParameters, start_time: f64) -> Result<Self, ModelError> {
-        parameters.validate()?;
+    /// Validates the design and integrates the closed part of the cycle (refusing an implausible one).
+    pub fn new(design: &CycleDesign, start_time: f64) -> Result<Self, ModelError> {
+        design.validate()?;
         if !start_time.is_finite() {
             return Err(ModelError(format!("start time {start_time} s is not finite")));
         }
-        let closed = ClosedCycle::new(parameters)?;
-        Ok(Self { parameters: parameters.clone(), start_time, closed })
+        let closed = ClosedCycle::new(design)?;
+        Ok(Self { design: design.clone(), start_time, closed })
     }
 
-    /// The parameters it was made with.
-    pub fn parameters(&self) -> &EngineCycleParameters {
-        &self.parameters
+    /// The design it was made with.
+    pub fn design(&self) -> &CycleDesign {
+        &self.design
     }
 
     /// s, the time the crank is at `crank_angle_start`.
@@ -54,12 +53,12 @@ impl EngineCycle {
 
     /// The slider-crank volume at crank angle `theta`.
     pub fn volume(&self, theta: f64) -> Volume {
-        self.parameters.volume(theta)
+        self.design.volume(theta)
     }
 
     /// Absolute cylinder pressure p and dp/dϑ at crank angle `crank_angle` (any value; period 4π).
     pub fn pressure(&self, crank_angle: f64) -> (f64, f64) {
-        let p = &self.parameters;
+        let p = &self.design;
         let theta = (crank_angle + PI).rem_euclid(CYCLE) - PI;
         let evo = p.exhaust_valve_opening;
         if theta <= evo {
@@ -81,8 +80,8 @@ impl EngineCycle {
     /// The wall heat since inlet valve closing of the cycle `crank_angle` lies in, J, with its first two
     /// crank-angle derivatives, plus the whole cycles' wall heat before it: a continuous function of the
     /// accumulated crank angle.
-    fn wall_heat(&self, crank_angle: f64) -> (f64, f64, f64) {
-        let evo = self.parameters.exhaust_valve_opening;
+    pub fn wall_heat(&self, crank_angle: f64) -> (f64, f64, f64) {
+        let evo = self.design.exhaust_valve_opening;
         let cycles = ((crank_angle + PI) / CYCLE).floor();
         let theta = crank_angle - cycles * CYCLE;
         let per_cycle = self.closed.state(evo).q;
@@ -97,7 +96,7 @@ impl EngineCycle {
 
     /// rad/s and rad/s²: the prescribed speed (constant, or the linear ramp) at time `t`.
     pub fn speed(&self, t: f64) -> (f64, f64) {
-        let p = &self.parameters;
+        let p = &self.design;
         let elapsed = t - self.start_time;
         if p.ramp_time > 0.0 && elapsed < p.ramp_time {
             let slope = (p.speed_end - p.speed_start) / p.ramp_time;
@@ -111,7 +110,7 @@ impl EngineCycle {
 
     /// rad, the crank angle at time `t`: the exact integral of [`Self::speed`].
     pub fn crank_angle(&self, t: f64) -> f64 {
-        let p = &self.parameters;
+        let p = &self.design;
         let elapsed = (t - self.start_time).max(0.0);
         if p.ramp_time > 0.0 {
             let ramp = elapsed.min(p.ramp_time);
@@ -122,45 +121,15 @@ impl EngineCycle {
         }
     }
 
-    /// The outputs at time `t` and their first time derivatives.
-    pub fn outputs(&self, t: f64) -> (EngineCycleOutputs, EngineCycleOutputs) {
-        let crank_angle = self.crank_angle(t);
-        let (speed, acceleration) = self.speed(t);
-        let (pressure, slope) = self.pressure(crank_angle);
-        let vol = self.volume(crank_angle);
-        let gauge = pressure - self.parameters.crankcase_pressure;
-        let (q, dq, d2q) = self.wall_heat(crank_angle);
-        let q_start = self.wall_heat(self.parameters.crank_angle_start).0;
-        let value = EngineCycleOutputs {
-            crank_angle,
-            crank_speed: speed,
-            cylinder_pressure: pressure,
-            gas_pressure: gauge,
-            indicated_torque: gauge * vol.dv,
-            wall_heat_flux: dq * speed,
-            wall_heat_total: q - q_start,
-        };
-        let rate = EngineCycleOutputs {
-            crank_angle: speed,
-            crank_speed: acceleration,
-            cylinder_pressure: slope * speed,
-            gas_pressure: slope * speed,
-            indicated_torque: (slope * vol.dv + gauge * vol.d2v) * speed,
-            wall_heat_flux: d2q * speed * speed + dq * acceleration,
-            wall_heat_total: dq * speed,
-        };
-        (value, rate)
-    }
-
     /// Pa, indicated mean effective pressure ∮ p dV / V_d over one cycle, by the trapezoidal rule on
     /// `samples` equal crank-angle intervals.
     pub fn imep(&self, samples: usize) -> f64 {
         let h = CYCLE / samples as f64;
         let torque = |k: usize| {
             let theta = -PI + k as f64 * h;
-            (self.pressure(theta).0 - self.parameters.crankcase_pressure) * self.volume(theta).dv
+            (self.pressure(theta).0 - self.design.crankcase_pressure) * self.volume(theta).dv
         };
         let work: f64 = (0..samples).map(|k| 0.5 * h * (torque(k) + torque(k + 1))).sum();
-        work / self.parameters.displacement()
+        work / self.design.displacement()
     }
 }

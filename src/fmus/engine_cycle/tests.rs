@@ -1,17 +1,25 @@
 //! The engine cycle against closed forms, its own derivatives, the first law and published data.
 
-use super::*;
-use crate::models::CYCLE;
+use super::contract::{Outputs, Parameters};
+use super::design::design;
+use super::run::outputs;
+use crate::models::engine_cycle::*;
+use crate::models::{ModelError, CYCLE};
 use std::f64::consts::PI;
 
+/// The model of the FMU's parameters `p` started at `t0`.
+fn cycle(p: &Parameters, t0: f64) -> Result<EngineCycle, ModelError> {
+    EngineCycle::new(&design(p)?, t0)
+}
+
 /// Today's textbook cycle: constant exponent, no wall heat.
-fn textbook() -> EngineCycleParameters {
-    EngineCycleParameters { gas_properties: 1, heat_transfer: 0, ..Default::default() }
+fn textbook() -> Parameters {
+    Parameters { gas_properties: 1, heat_transfer: 0, ..Default::default() }
 }
 
 fn motored() -> EngineCycle {
-    let parameters = EngineCycleParameters { heat_release: 0.0, ..textbook() };
-    EngineCycle::new(&parameters, 0.0).unwrap()
+    let parameters = Parameters { heat_release: 0.0, ..textbook() };
+    cycle(&parameters, 0.0).unwrap()
 }
 
 /// Peak pressure (Pa) and its crank angle (degrees after firing TDC) on a 0.1° grid.
@@ -28,7 +36,7 @@ fn peak(model: &EngineCycle) -> (f64, f64) {
 #[test]
 fn motored_pressure_follows_p_v_to_the_n_constant() {
     let model = motored();
-    let p = model.parameters().clone();
+    let p = model.design().clone();
     let v_ivc = model.volume(-PI).v;
     let mut worst: f64 = 0.0;
     for k in 0..=20_000 {
@@ -49,14 +57,14 @@ fn motored_cycle_is_a_loss_and_fired_cycle_does_work() {
     // pumping loops are losses, so IMEP is small and negative.
     let imep = motored().imep(14_400);
     assert!(imep < 0.0 && imep > -0.5e5, "motored IMEP {imep} Pa");
-    let fired = EngineCycle::new(&textbook(), 0.0).unwrap();
+    let fired = cycle(&textbook(), 0.0).unwrap();
     let imep = fired.imep(14_400);
     assert!(imep > 5e5 && imep < 15e5, "fired IMEP {imep} Pa");
 }
 
 #[test]
 fn pressure_slope_is_the_derivative_of_the_pressure() {
-    let model = EngineCycle::new(&EngineCycleParameters::default(), 0.0).unwrap();
+    let model = cycle(&Parameters::default(), 0.0).unwrap();
     let h = 1e-6;
     for k in 0..400 {
         let theta = -PI + 0.0123 + k as f64 * CYCLE / 400.0;
@@ -68,14 +76,14 @@ fn pressure_slope_is_the_derivative_of_the_pressure() {
 
 #[test]
 fn output_derivatives_are_time_derivatives_of_the_outputs() {
-    let parameters = EngineCycleParameters { speed_start: 100.0, speed_end: 200.0, ramp_time: 0.5, ..Default::default() };
-    let model = EngineCycle::new(&parameters, 0.1).unwrap();
+    let parameters = Parameters { speed_start: 100.0, speed_end: 200.0, ramp_time: 0.5, ..Default::default() };
+    let model = cycle(&parameters, 0.1).unwrap();
     let h = 1e-7;
     for k in 0..200 {
         let t = 0.1 + 0.0017 + k as f64 * 0.0031;
-        let (_, rate) = model.outputs(t);
-        let (up, down) = (model.outputs(t + h).0, model.outputs(t - h).0);
-        let numeric = |f: fn(&EngineCycleOutputs) -> f64| (f(&up) - f(&down)) / (2.0 * h);
+        let (_, rate) = outputs(&model, t);
+        let (up, down) = (outputs(&model, t + h).0, outputs(&model, t - h).0);
+        let numeric = |f: fn(&Outputs) -> f64| (f(&up) - f(&down)) / (2.0 * h);
         assert!((numeric(|o| o.crank_angle) - rate.crank_angle).abs() < 1e-6);
         assert!((numeric(|o| o.crank_speed) - rate.crank_speed).abs() < 1e-3);
         let dp = numeric(|o| o.gas_pressure);
@@ -84,7 +92,7 @@ fn output_derivatives_are_time_derivatives_of_the_outputs() {
         assert!((dq - rate.indicated_torque).abs() <= 1e-4 * rate.indicated_torque.abs() + 1e-1, "t = {t}");
         let dw = numeric(|o| o.wall_heat_total);
         assert!((dw - rate.wall_heat_total).abs() <= 1e-5 * rate.wall_heat_total.abs() + 1e-3, "t = {t}: {dw}");
-        assert_eq!(rate.wall_heat_total, model.outputs(t).0.wall_heat_flux);
+        assert_eq!(rate.wall_heat_total, outputs(&model, t).0.wall_heat_flux);
         let df = numeric(|o| o.wall_heat_flux);
         assert!((df - rate.wall_heat_flux).abs() <= 1e-4 * rate.wall_heat_flux.abs() + 1e2, "t = {t}: {df} vs {}", rate.wall_heat_flux);
     }
@@ -92,51 +100,51 @@ fn output_derivatives_are_time_derivatives_of_the_outputs() {
 
 #[test]
 fn ramp_speed_integrates_to_the_crank_angle() {
-    let parameters = EngineCycleParameters { speed_start: 100.0, speed_end: 300.0, ramp_time: 1.0, ..Default::default() };
-    let model = EngineCycle::new(&parameters, 0.0).unwrap();
+    let parameters = Parameters { speed_start: 100.0, speed_end: 300.0, ramp_time: 1.0, ..Default::default() };
+    let model = cycle(&parameters, 0.0).unwrap();
     // ∫ ω dt over the ramp = (100 + 300)/2 · 1 s, then 300 rad/s.
     assert!((model.crank_angle(1.0) - 200.0).abs() < 1e-12);
     assert!((model.crank_angle(2.0) - 500.0).abs() < 1e-12);
     assert_eq!(model.speed(0.5), (200.0, 200.0));
 }
 
-fn refusal(parameters: &EngineCycleParameters) -> String {
-    EngineCycle::new(parameters, 0.0).err().map(|e| e.0).unwrap_or_default()
+fn refusal(parameters: &Parameters) -> String {
+    cycle(parameters, 0.0).err().map(|e| e.0).unwrap_or_default()
 }
 
 #[test]
 fn bad_parameters_are_refused_by_name() {
-    let parameters = EngineCycleParameters { rod_length: 0.03, ..Default::default() };
+    let parameters = Parameters { rod_length: 0.03, ..Default::default() };
     assert!(refusal(&parameters).contains("rod_length"));
-    let parameters = EngineCycleParameters { exhaust_valve_opening: 4.0, ..Default::default() };
+    let parameters = Parameters { exhaust_valve_opening: 4.0, ..Default::default() };
     assert!(refusal(&parameters).contains("exhaust_valve_opening"));
-    let parameters = EngineCycleParameters { compression_ratio: 1.0, ..Default::default() };
+    let parameters = Parameters { compression_ratio: 1.0, ..Default::default() };
     assert!(refusal(&parameters).contains("compression_ratio"));
-    let parameters = EngineCycleParameters { heat_release: f64::NAN, ..Default::default() };
+    let parameters = Parameters { heat_release: f64::NAN, ..Default::default() };
     assert!(refusal(&parameters).contains("heat_release"));
 }
 
 #[test]
 fn implausible_cycles_are_refused_with_the_reason() {
     // The issue's case: 1e9 J per cycle from a 0.4 l cylinder.
-    let why = refusal(&EngineCycleParameters { heat_release: 1e9, ..Default::default() });
+    let why = refusal(&Parameters { heat_release: 1e9, ..Default::default() });
     assert!(why.contains("heat_release = 1000000000 J is implausible") && why.contains("holds fuel for at most"), "{why}");
-    let why = refusal(&EngineCycleParameters { heat_release: 1e9, ..textbook() });
+    let why = refusal(&Parameters { heat_release: 1e9, ..textbook() });
     assert!(why.contains("implausible"), "{why}");
     // Stoichiometric at 3 bar boost and ε = 22: within the fuel, beyond any engine's peak pressure.
-    let boosted = EngineCycleParameters { intake_pressure: 3e5, compression_ratio: 22.0, ..Default::default() };
+    let boosted = Parameters { intake_pressure: 3e5, compression_ratio: 22.0, ..Default::default() };
     let most = boosted_fuel(&boosted);
-    let why = refusal(&EngineCycleParameters { heat_release: 0.99 * most, ..boosted });
+    let why = refusal(&Parameters { heat_release: 0.99 * most, ..boosted });
     assert!(why.contains("peak cylinder pressure") && why.contains("exceeds 300 bar"), "{why}");
-    let why = refusal(&EngineCycleParameters { speed_start: 1.0, ..Default::default() });
+    let why = refusal(&Parameters { speed_start: 1.0, ..Default::default() });
     assert!(why.contains("heat_transfer = 1 needs a running engine"), "{why}");
-    let why = refusal(&EngineCycleParameters { intake_temperature: 1000.0, ..Default::default() });
+    let why = refusal(&Parameters { intake_temperature: 1000.0, ..Default::default() });
     assert!(why.contains("intake_temperature"), "{why}");
 }
 
 /// J: the heat release of a stoichiometric charge (the fuel bound) of `parameters`.
-fn boosted_fuel(parameters: &EngineCycleParameters) -> f64 {
-    let closed = ClosedCycle::new(&EngineCycleParameters { heat_release: 0.0, ..parameters.clone() }).unwrap();
+fn boosted_fuel(parameters: &Parameters) -> f64 {
+    let closed = ClosedCycle::new(&design(&Parameters { heat_release: 0.0, ..parameters.clone() }).unwrap()).unwrap();
     let y = parameters.fuel_hydrogen_carbon_ratio;
     (1.0 - parameters.residual_gas_fraction) * closed.mass * stoichiometric_fuel_air(y) * parameters.fuel_heating_value
 }
@@ -180,7 +188,7 @@ fn nbs_entropy(t1: f64, t2: f64) -> f64 {
 #[test]
 fn real_gas_motored_peak_matches_the_air_tables() {
     // Isentropic compression of air from 300 K and 1 bar by ε = 17 (no heat loss, no residual gas).
-    let parameters = EngineCycleParameters {
+    let parameters = Parameters {
         heat_release: 0.0,
         heat_transfer: 0,
         residual_gas_fraction: 0.0,
@@ -189,7 +197,7 @@ fn real_gas_motored_peak_matches_the_air_tables() {
         compression_ratio: 17.0,
         ..Default::default()
     };
-    let model = EngineCycle::new(&parameters, 0.0).unwrap();
+    let model = cycle(&parameters, 0.0).unwrap();
     // The tables: ∫ c_v/T dT = R ln ε fixes T2 (bisection), then p2 = p1 ε T2/T1.
     let target = 0.287 * libm::log(17.0);
     let (mut lo, mut hi) = (300.0, 1000.0);
@@ -216,14 +224,14 @@ fn real_gas_motored_peak_matches_the_air_tables() {
     assert!((model.closed().state(0.0).t / lo - 1.0).abs() <= 0.01);
 }
 
-fn textbook_motored_peak(parameters: &EngineCycleParameters) -> f64 {
-    EngineCycle::new(&EngineCycleParameters { gas_properties: 1, ..parameters.clone() }, 0.0).unwrap().pressure(0.0).0
+fn textbook_motored_peak(parameters: &Parameters) -> f64 {
+    cycle(&Parameters { gas_properties: 1, ..parameters.clone() }, 0.0).unwrap().pressure(0.0).0
 }
 
 /// Heat released, work, change of internal energy and wall heat from inlet valve closing to exhaust valve
 /// opening, J; the work by 5-point Gauss-Legendre quadrature of p dV/dϑ on every table interval.
 fn first_law(model: &EngineCycle) -> (f64, f64, f64, f64) {
-    let par = model.parameters();
+    let par = model.design();
     let closed = model.closed();
     let evo = par.exhaust_valve_opening;
     let h = PI / 1800.0;
@@ -261,8 +269,8 @@ fn first_law(model: &EngineCycle) -> (f64, f64, f64, f64) {
 #[test]
 fn the_first_law_closes_over_the_closed_cycle() {
     for (gas, wall) in [(1, 0), (1, 1), (2, 0), (2, 1), (2, 2)] {
-        let parameters = EngineCycleParameters { gas_properties: gas, heat_transfer: wall, ..Default::default() };
-        let model = EngineCycle::new(&parameters, 0.0).unwrap();
+        let parameters = Parameters { gas_properties: gas, heat_transfer: wall, ..Default::default() };
+        let model = cycle(&parameters, 0.0).unwrap();
         let (released, work, change, wall_heat) = first_law(&model);
         let imbalance = (released - work - change - wall_heat) / released;
         println!(
@@ -276,22 +284,22 @@ fn the_first_law_closes_over_the_closed_cycle() {
 
 #[test]
 fn wall_heat_total_counts_whole_cycles_and_the_flux_is_its_rate() {
-    let model = EngineCycle::new(&EngineCycleParameters::default(), 0.0).unwrap();
-    let per_cycle = model.closed().state(model.parameters().exhaust_valve_opening).q;
+    let model = cycle(&Parameters::default(), 0.0).unwrap();
+    let per_cycle = model.closed().state(model.design().exhaust_valve_opening).q;
     assert!(per_cycle > 0.0);
-    let period = CYCLE / model.parameters().speed_start;
-    let (now, later) = (model.outputs(0.013).0, model.outputs(0.013 + 3.0 * period).0);
+    let period = CYCLE / model.design().speed_start;
+    let (now, later) = (outputs(&model, 0.013).0, outputs(&model, 0.013 + 3.0 * period).0);
     assert!(((later.wall_heat_total - now.wall_heat_total) / (3.0 * per_cycle) - 1.0).abs() < 1e-9);
-    assert_eq!(model.outputs(0.0).0.wall_heat_total, 0.0);
+    assert_eq!(outputs(&model, 0.0).0.wall_heat_total, 0.0);
 }
 
 #[test]
 fn report_fired_default_case() {
-    let fired = EngineCycle::new(&EngineCycleParameters::default(), 0.0).unwrap();
-    let textbook_cycle = EngineCycle::new(&textbook(), 0.0).unwrap();
+    let fired = cycle(&Parameters::default(), 0.0).unwrap();
+    let textbook_cycle = cycle(&textbook(), 0.0).unwrap();
     let (peak_p, at) = peak(&fired);
-    let q = fired.parameters().heat_release;
-    let efficiency = |m: &EngineCycle| m.imep(14_400) * m.parameters().displacement() / q;
+    let q = fired.design().heat_release;
+    let efficiency = |m: &EngineCycle| m.imep(14_400) * m.design().displacement() / q;
     let wall = first_law(&fired).3;
     println!(
         "fired default: IMEP {:.4} bar, indicated efficiency {:.4} (textbook cycle {:.4}), wall heat {:.2} J ({:.2} % of Q), \
@@ -306,7 +314,7 @@ fn report_fired_default_case() {
     );
     // Combustion raises the peak well above the motored compression pressure, after TDC; wall heat and real
     // gas cost efficiency against the textbook cycle.
-    let motored = EngineCycle::new(&EngineCycleParameters { heat_release: 0.0, ..Default::default() }, 0.0).unwrap().pressure(0.0).0;
+    let motored = cycle(&Parameters { heat_release: 0.0, ..Default::default() }, 0.0).unwrap().pressure(0.0).0;
     assert!(peak_p > 1.3 * motored && peak_p < 200e5 && at > 0.0 && at < 30.0, "peak {peak_p} Pa at {at}°");
     assert!(efficiency(&fired) < efficiency(&textbook_cycle) - 0.05);
 }
@@ -317,7 +325,7 @@ fn the_textbook_cycle_is_bit_identical_to_the_one_before_real_gas() {
     // transcendentals, before gas_properties and heat_transfer existed), whose defaults differ only in the new
     // parameters. (With the platform's libm, at f0898c4: da4e41ec4e6072a4, 6a177cdedf3fa265, f69b7e527d19f6a8.)
     for (q, expected) in [(800.0, 0xbdc8d5abd143c1d7_u64), (0.0, 0xabefc6191170bbae), (1200.0, 0x4d51fcbc17676e91)] {
-        let model = EngineCycle::new(&EngineCycleParameters { heat_release: q, ..textbook() }, 0.0).unwrap();
+        let model = cycle(&Parameters { heat_release: q, ..textbook() }, 0.0).unwrap();
         let mut hash: u64 = 0;
         for k in 0..20000 {
             let (p, slope) = model.pressure(-3.0 + k as f64 * 0.000731);
