@@ -52,13 +52,13 @@ fn main() {
         times.sort_by(f64::total_cmp);
         let time = times[RUNS / 2];
         // Flops: a band Cholesky of n unknowns, half band b, takes ≈ n·b² (n·b²/2 multiply-adds); a
-        // forward or back substitution 2·n·b. Each active-set step factorises and substitutes forward
-        // five right-hand sides (the pressure's and the four of `FilmLinear`'s loads per unit rate) and
-        // back the pressure's.
+        // forward or back substitution 2·n·b. Each active-set step factorises and substitutes the
+        // pressure's right-hand side forward and back; each side's last set substitutes forward the
+        // four of `FilmLinear`'s loads per unit rate.
         // An upper bound: a partial refactorisation and the cavitated rows' work are less.
         let (n, b) = ((grid.0 * grid.1) as f64, grid.0.min(grid.1) as f64);
         let per_call = factorisations as f64 / motions.len() as f64;
-        let flops = per_call * (n * b * b + 6.0 * 2.0 * n * b);
+        let flops = per_call * (n * b * b + 2.0 * 2.0 * n * b) + 2.0 * 4.0 * 2.0 * n * b;
         let marker = if grid == SkirtDesign::DEFAULT_GRID { " (default)" } else { "" };
         println!(
             "grid {:>2}×{:<2}{marker:<10} {:>8.1} µs/call  {:>4.2} factorisations/call  {:>6.2} Mflop/call  {:>5.2} Gflop/s",

@@ -270,10 +270,10 @@ pub(crate) struct Reynolds {
     lower: Vec<[f64; 2]>,
     /// Band order: the pressure's right-hand side.
     rhs: Vec<f64>,
-    /// Band order: the pressure's right-hand side, then up to [`EXTRA`] others (forward-substituted only).
-    work: Vec<[f64; 1 + EXTRA]>,
-    /// Band order: the pressure's column of `work`, back-substituted on its own (contiguous).
-    back: Vec<f64>,
+    /// Band order: up to [`EXTRA`] right-hand sides besides the pressure's, forward-substituted only.
+    work: Vec<[f64; EXTRA]>,
+    /// Band order: the pressure's right-hand side, forward- then back-substituted.
+    back: Vec<[f64; 1]>,
     /// Cavitated rows in band order (identity rows of the reduced matrix).
     identity: Vec<bool>,
     /// Band order: nodes held at p = 0 by a partial fill ([`Cavitation::MassConserving`], [`Reynolds::pin`]).
@@ -324,8 +324,8 @@ impl Reynolds {
             diagonal: vec![0.0; n],
             lower: vec![[0.0; 2]; n],
             rhs: vec![0.0; n],
-            work: vec![[0.0; 1 + EXTRA]; n],
-            back: vec![0.0; n],
+            work: vec![[0.0; EXTRA]; n],
+            back: vec![[0.0]; n],
             identity: vec![false; n],
             pinned: vec![false; n],
             pressure: vec![0.0; n],
@@ -351,7 +351,7 @@ impl Reynolds {
         for (k, &row) in self.order.iter().enumerate() {
             self.free[k] = !self.identity[row];
             // Negative pressures under the Reynolds condition are round-off below its tolerance.
-            let p = self.back[row];
+            let [p] = self.back[row];
             self.pressure[k] = if cavitation.complementary() && p < 0.0 { 0.0 } else { p };
         }
         // Σ over the film rows (the cavitated ones' are 0) of the outer product, in row order.
@@ -359,7 +359,7 @@ impl Reynolds {
         for (y, _) in self.work.iter().zip(&self.identity).filter(|(_, &cavitated)| !cavitated) {
             for (a, row) in gram.iter_mut().enumerate() {
                 for (c, g) in row.iter_mut().enumerate() {
-                    *g += y[1 + a] * y[1 + c];
+                    *g += y[a] * y[c];
                 }
             }
         }
@@ -368,8 +368,9 @@ impl Reynolds {
     }
 
     /// The primal–dual active-set iteration from the set in `identity` (band order), the pressure into
-    /// `back` (band order); the factorisation of the last set stays in `matrix`, the last step's
-    /// forward-substituted extras in `work`.
+    /// `back` (band order); the factorisation of the last set stays in `matrix`, and the extras,
+    /// forward-substituted on it once the set holds, in `work` (a column's substitution takes the same
+    /// operations alone or beside others, so the extras are those of a pass with the pressure's).
     fn active_set(&mut self, extra: &[&[f64]], cavitation: Cavitation) -> usize {
         let n = self.grid.len();
         let scale_b = self.rhs.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
@@ -381,32 +382,22 @@ impl Reynolds {
             self.assemble(first);
             if !self.matrix.factor_from(&self.identity, first) {
                 // Only a non-finite film gets here (the callers keep h > 0): say so with NaN, never panic.
-                self.back.fill(f64::NAN);
-                self.work.fill([f64::NAN; 1 + EXTRA]);
+                self.back.fill([f64::NAN]);
+                self.work.fill([f64::NAN; EXTRA]);
                 return steps;
             }
-            for (k, &row) in self.order.iter().enumerate() {
-                let column = &mut self.work[row];
-                *column = [0.0; 1 + EXTRA];
-                if !self.identity[row] {
-                    column[0] = self.rhs[row];
-                    for (x, r) in column[1..].iter_mut().zip(extra) {
-                        *x = r[k];
-                    }
-                }
+            for ((p, &b), &cavitated) in self.back.iter_mut().zip(&self.rhs).zip(&self.identity) {
+                *p = [if cavitated { 0.0 } else { b }];
             }
-            self.matrix.forward(&self.identity, &mut self.work);
-            for (x, y) in self.back.iter_mut().zip(&self.work) {
-                *x = y[0];
-            }
-            self.matrix.backward(&self.identity, &mut self.back);
+            self.matrix.forward(&self.identity, &mut self.back);
+            self.matrix.backward(&self.identity, self.back.as_flattened_mut());
             if !cavitation.complementary() || steps > n {
                 break;
             }
             // w = A p − b on the cavitated nodes; a node joins the film where w < 0 (oil would flow in),
             // leaves it where p < 0. Tolerances far below the solution's scale stop round-off cycling.
             // A node's change alters its own row and its higher-indexed neighbours' rows.
-            let scale_p = self.back.iter().fold(0.0_f64, |m, v| m.max(v.abs()));
+            let scale_p = self.back.iter().fold(0.0_f64, |m, [v]| m.max(v.abs()));
             first = n;
             for row in 0..n {
                 if self.held(row, cavitation) {
@@ -415,7 +406,7 @@ impl Reynolds {
                 let free = if self.identity[row] {
                     self.residual(row) - self.rhs[row] < -1e-12 * scale_b
                 } else {
-                    self.back[row] >= -1e-12 * scale_p
+                    self.back[row][0] >= -1e-12 * scale_p
                 };
                 if free == self.identity[row] {
                     self.identity[row] = !free;
@@ -426,6 +417,16 @@ impl Reynolds {
                 break;
             }
         }
+        for (k, &row) in self.order.iter().enumerate() {
+            let column = &mut self.work[row];
+            *column = [0.0; EXTRA];
+            if !self.identity[row] {
+                for (x, r) in column.iter_mut().zip(extra) {
+                    *x = r[k];
+                }
+            }
+        }
+        self.matrix.forward(&self.identity, &mut self.work);
         steps
     }
 
@@ -497,7 +498,7 @@ impl Reynolds {
 
     /// (A p)_row of the full operator at band row `row`, p the pressure in `back`.
     fn residual(&self, row: usize) -> f64 {
-        let (n, b, p) = (self.grid.len(), self.grid.band(), &self.back);
+        let (n, b, p) = (self.grid.len(), self.grid.band(), self.back.as_flattened());
         let mut s = self.diagonal[row] * p[row];
         let [along, before] = self.lower[row];
         if along != 0.0 {
