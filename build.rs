@@ -334,9 +334,10 @@ fn contract_rs(variables: &[Resolved], table: &Table) -> String {
     for v in &reals {
         s += &format!("            self.{},\n", v.a.name);
     }
-    s += "        ];\n        // One sum clears them all (x · 0 is NaN exactly for an infinite or NaN x) before any is named:\n";
-    s += "        // the values alone, the names only for a step that failed (every step checks its outputs).\n";
-    s += "        if values.iter().map(|x| x * 0.0).sum::<f64>() == 0.0 {\n            return None;\n        }\n";
+    s += "        ];\n        // One sum clears them all before any is named (an infinite or NaN value makes it infinite or NaN;\n";
+    s += "        // finite values that overflow it are looked at one by one below): the values alone, one addition\n";
+    s += "        // each, the names only for a step that failed (every step checks its outputs).\n";
+    s += "        if values.iter().sum::<f64>().is_finite() {\n            return None;\n        }\n";
     s += "        let names = [\n";
     for v in &reals {
         s += &format!("            {:?},\n", v.a.name);

@@ -385,14 +385,21 @@ impl PrescribedCrank {
         let force = self.reduced(t, &full.inertia(), &full.force).1;
         let crank_column = full.gap_jacobian.column(0);
         let gap_bias = if self.speed.is_held() { full.gap_bias } else { full.gap_bias + crank_column * self.acceleration(t) };
+        Evaluation { force, gap_bias, ..self.reduce_configuration(t, &full) }
+    }
+
+    /// The terms of [`Self::reduce`] that the configuration and the crank's speed set (M, K, h, J,
+    /// ∂h/∂t), with f and d zero.
+    #[inline(always)]
+    fn reduce_configuration(&self, t: f64, full: &Evaluation<3, 4>) -> Evaluation<2, 4> {
         Evaluation {
             mass: rod_and_piston(&full.mass),
             implicit: full.implicit.as_ref().map(rod_and_piston),
-            force,
+            force: Vector2::zeros(),
             gap: full.gap,
             gap_jacobian: Matrix4x2::from_columns(&[full.gap_jacobian.column(1), full.gap_jacobian.column(2)]),
-            gap_time_rate: crank_column * self.speed.at(t),
-            gap_bias,
+            gap_time_rate: full.gap_jacobian.column(0) * self.speed.at(t),
+            gap_bias: Vector4::zeros(),
         }
     }
 
@@ -411,6 +418,17 @@ impl PrescribedCrank {
 impl System<2, 4> for PrescribedCrank {
     fn evaluate(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
         self.reduce(t, self.evaluate_full(t, q, qd))
+    }
+
+    /// The dry linkage's configuration terms alone (`Linkage::configuration_with`); with the film, the
+    /// whole evaluation.
+    fn evaluate_configuration(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
+        if self.engine.lubrication.is_some() {
+            return self.evaluate(t, q, qd);
+        }
+        let (phi, _, crank) = self.full_state_and_crank(t, q, qd);
+        let (trig, linkage) = (LinkAngles::with_crank((crank.sin, crank.cos), &phi), &self.engine.linkage);
+        self.reduce_configuration(t, &linkage.configuration_with(&trig, linkage.inertia_with(&trig)))
     }
 
     /// Keeps the crank row, without the gaps' column, for the drive torque of a free stage.
