@@ -81,8 +81,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         ev: Option<Evaluation<N, M>>,
     ) -> Result<(SVector<f64, N>, SVector<f64, N>), DynamicsError> {
         let (mut q, v, active) = (*q, *v, self.contacts.held);
-        let ev = ev.unwrap_or_else(|| self.system.evaluate_configuration(t, &q, &v));
-        let (mut ev, mut frame) = frame_at(&self.system, t, &q, &v, Some(ev))?;
+        let mut ev = ev.unwrap_or_else(|| self.system.evaluate_configuration(t, &q, &v));
+        let mut frame = Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: t })?;
         let configuration = |q: &SVector<f64, N>| self.system.evaluate_configuration(t, q, &v);
         self.onto_contacts(t, &mut q, active, configuration, (&mut ev, &mut frame))?;
         let hd = ev.gap_jacobian * v + ev.gap_time_rate;
