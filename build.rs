@@ -334,9 +334,13 @@ fn contract_rs(variables: &[Resolved], table: &Table) -> String {
     for v in &reals {
         s += &format!("            self.{},\n", v.a.name);
     }
-    s += "        ];\n        // One sum clears them all (x · 0 is NaN exactly for an infinite or NaN x) before any is named:\n";
-    s += "        // the values alone, the names only for a step that failed (every step checks its outputs).\n";
-    s += "        if values.iter().map(|x| x * 0.0).sum::<f64>() == 0.0 {\n            return None;\n        }\n";
+    s += "        ];\n        // One sum clears them all before any is named (an infinite or NaN value makes it infinite or NaN;\n";
+    s += "        // finite values that overflow it are looked at one by one below): the values alone, one addition\n";
+    s += "        // each, the names only for a step that failed (every step checks its outputs). Four running sums,\n";
+    s += "        // so that the additions do not wait on one another.\n";
+    s += "        let mut sums = [0.0_f64; 4];\n";
+    s += "        for chunk in values.chunks(4) {\n            for (sum, x) in sums.iter_mut().zip(chunk) {\n                *sum += x;\n            }\n        }\n";
+    s += "        if ((sums[0] + sums[1]) + (sums[2] + sums[3])).is_finite() {\n            return None;\n        }\n";
     s += "        let names = [\n";
     for v in &reals {
         s += &format!("            {:?},\n", v.a.name);

@@ -214,19 +214,42 @@ pub(crate) fn held_acceleration<const N: usize, const M: usize>(
 /// Solves `W_SS x_S = r_S` with `x = 0` outside `S`, without heap: the rows and columns outside
 /// `S` are replaced by the identity. `None` when `W_SS` is singular.
 pub(crate) fn solve_on<const M: usize>(w: &SMatrix<f64, M, M>, r: &SVector<f64, M>, set: Set) -> Option<SVector<f64, M>> {
-    // No constraint or one (most calls, from the impact and sliding laws): the factor's operations
-    // written out, to the bit the same.
+    // No constraint, one or two (most calls: the impact and sliding laws, the projections onto a
+    // wall's two corners): the factor's operations written out, to the bit the same (the identity
+    // outside `S` adds only zeros to them).
     let mut x = SVector::<f64, M>::zeros();
     let mut indices = members::<M>(set);
-    match (indices.next(), indices.next()) {
-        (None, _) => return Some(x),
-        (Some(a), None) => {
+    match (indices.next(), indices.next(), indices.next()) {
+        (None, ..) => return Some(x),
+        (Some(a), None, _) => {
             let w_aa = w[(a, a)];
             if w_aa.is_nan() || w_aa <= 0.0 {
                 return None;
             }
             let l = w_aa.sqrt();
             x[a] = r[a] / l / l;
+            return Some(x);
+        }
+        (Some(a), Some(b), None) => {
+            let w_aa = w[(a, a)];
+            if w_aa.is_nan() || w_aa <= 0.0 {
+                return None;
+            }
+            let l_aa = w_aa.sqrt();
+            // The factor reads the lower triangle: W's round-off need not be symmetric.
+            let l_ba = w[(b, a)] / l_aa;
+            let pivot = w[(b, b)] - l_ba * l_ba;
+            if pivot.is_nan() || pivot <= 0.0 {
+                return None;
+            }
+            let l_bb = pivot.sqrt();
+            if l_aa * l_aa <= DEPENDENT_PIVOT * w_aa || l_bb * l_bb <= DEPENDENT_PIVOT * w[(b, b)] {
+                return None;
+            }
+            let y_a = r[a] / l_aa;
+            let y_b = (r[b] - l_ba * y_a) / l_bb;
+            x[b] = y_b / l_bb;
+            x[a] = (y_a - l_ba * x[b]) / l_aa;
             return Some(x);
         }
         _ => {}
@@ -288,6 +311,40 @@ mod tests {
     use super::super::test_random::{positive_definite, uniform};
     use super::*;
     use nalgebra::{Matrix2, Vector2};
+
+    /// `solve_on` over two constraints gives the factor of `W_SS` padded with the identity to the bit,
+    /// and refuses where it does (a dependent pair, a pair whose factor is not positive).
+    #[test]
+    fn two_constraints_solve_as_the_padded_factor_does() {
+        let mut random = uniform(2024);
+        let padded = |w: &SMatrix<f64, 4, 4>, r: &SVector<f64, 4>, set: Set| {
+            let (mut a, mut rhs) = (SMatrix::<f64, 4, 4>::identity(), SVector::<f64, 4>::zeros());
+            for i in members::<4>(set) {
+                rhs[i] = r[i];
+                for k in members::<4>(set) {
+                    a[(i, k)] = w[(i, k)];
+                }
+            }
+            let chol = Cholesky::new(a)?;
+            let l = chol.l_dirty();
+            (!members::<4>(set).any(|i| l[(i, i)] * l[(i, i)] <= DEPENDENT_PIVOT * w[(i, i)])).then(|| chol.solve(&rhs))
+        };
+        let bits = |x: Option<SVector<f64, 4>>| x.map(|x| x.map(f64::to_bits));
+        for round in 0..300 {
+            // J M⁻¹ Jᵀ as the frames form it (its round-off not symmetric); every third a repeated row.
+            let mut j = SMatrix::<f64, 4, 3>::from_fn(|_, _| random());
+            if round % 3 == 0 {
+                j.set_row(2, &j.row(1).into_owned());
+            }
+            let w = j * positive_definite::<3>(&mut random) * j.transpose();
+            let r = SVector::<f64, 4>::from_fn(|_, _| random());
+            for set in (1..16_u32).filter(|s| s.count_ones() == 2) {
+                assert_eq!(bits(solve_on(&w, &r, set)), bits(padded(&w, &r, set)), "set {set:b}");
+            }
+            let negative = -w;
+            assert_eq!(solve_on(&negative, &r, 0b11), None);
+        }
+    }
 
     /// The closed-form solve for one or two held constraints gives the general path's result to
     /// the bit (so taking it changed no trajectory), and refuses dependent sets like it.

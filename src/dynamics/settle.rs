@@ -71,7 +71,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         self.onto_held_at((s.t, &s.q, &s.v), ev)
     }
 
-    /// `(q, q̇)` at `t` projected onto the held set's manifold (see `onto_held`).
+    /// `(q, q̇)` at `t` projected onto the held set's manifold (see `onto_held`). `ev` may be the
+    /// configuration's terms alone (`System::evaluate_configuration`): the projection reads no more,
+    /// and evaluates no more at the configurations it moves through.
     #[allow(clippy::type_complexity)]
     pub(super) fn onto_held_at(
         &self,
@@ -79,8 +81,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         ev: Option<Evaluation<N, M>>,
     ) -> Result<(SVector<f64, N>, SVector<f64, N>), DynamicsError> {
         let (mut q, v, active) = (*q, *v, self.contacts.held);
-        let (mut ev, mut frame) = frame_at(&self.system, t, &q, &v, ev)?;
-        self.onto_contacts(t, &mut q, &v, active, (&mut ev, &mut frame))?;
+        let mut ev = ev.unwrap_or_else(|| self.system.evaluate_configuration(t, &q, &v));
+        let mut frame = Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: t })?;
+        let configuration = |q: &SVector<f64, N>| self.system.evaluate_configuration(t, q, &v);
+        self.onto_contacts(t, &mut q, active, configuration, (&mut ev, &mut frame))?;
         let hd = ev.gap_jacobian * v + ev.gap_time_rate;
         let dependent = DynamicsError::DependentContacts { time: t, constraints: active };
         let jump = self.held_jump((&ev, &frame), t, &hd, active)?;
@@ -89,9 +93,10 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
 
     /// `q` moved onto `h_S = 0` by Newton steps in the metric of `M` until every gap of `set` is
     /// within `DRIFT_FRACTION · ε_h` (each step leaves about the square of the last residual: a
-    /// drift of microns after a long step held in contact needs two), with the evaluation and
-    /// frame there. The velocity is left to the caller, to be projected with these gradients:
-    /// those at the drifted configuration leave `ḣ` off by the change of `J` times `q̇`.
+    /// drift of microns after a long step held in contact needs two), with the evaluation
+    /// (`evaluate` at the configuration) and frame there. The velocity is left to the caller, to be
+    /// projected with these gradients: those at the drifted configuration leave `ḣ` off by the
+    /// change of `J` times `q̇`.
     ///
     /// In place (`q` and the evaluation and frame at it): they are large, and a projection at a
     /// communication point moves no copies of them.
@@ -99,8 +104,8 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         &self,
         t: f64,
         q: &mut SVector<f64, N>,
-        v: &SVector<f64, N>,
         set: Set,
+        evaluate: impl Fn(&SVector<f64, N>) -> Evaluation<N, M>,
         (ev, frame): (&mut Evaluation<N, M>, &mut Frame<N, M>),
     ) -> Result<(), DynamicsError> {
         let tol = DRIFT_FRACTION * self.options.gap_tolerance;
@@ -109,7 +114,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
                 break;
             }
             *q += frame.projection(&ev.gap, set).ok_or(DynamicsError::DependentContacts { time: t, constraints: set })?.0;
-            *ev = self.system.evaluate(t, q, v);
+            *ev = evaluate(q);
             *frame = Frame::new(ev).ok_or(DynamicsError::SingularMass { time: t })?;
         }
         Ok(())
@@ -251,7 +256,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
             sample_of(&self.system, &ev, t, q, v, contacts)?
         } else {
             let (mut q, mut ev, mut frame) = (q, ev, frame);
-            self.onto_contacts(t, &mut q, &v, onto, (&mut ev, &mut frame))?;
+            self.onto_contacts(t, &mut q, onto, |q| self.system.evaluate(t, q, &v), (&mut ev, &mut frame))?;
             let hd = ev.gap_jacobian * v + ev.gap_time_rate;
             let through = self.jump_through(contacts, t, (ev, frame))?;
             let jump = match stick_jump(&self.system, tol, (t, &q, &v), &through.ev, contacts) {

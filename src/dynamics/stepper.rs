@@ -220,21 +220,21 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// error, O(dt⁶) (1e-9 m on a 1 m lever at 450 rad/s and 0.13 rad steps), which the step's end
     /// removes by projection; the point is projected likewise.
     ///
-    /// The drift is judged from the evaluation at the interpolated state (its gaps and `ḣ`, what
-    /// the sample there would hold), which the projection starts from: a drifted point evaluates
-    /// the system once there and builds one sample, at the projected state.
+    /// The drift is judged from the configuration's terms at the interpolated state (its gaps and
+    /// `ḣ`, what the sample there would hold; `System::evaluate_configuration`), which the projection
+    /// starts from: a point evaluates the system in full once, at the state it shows.
     #[inline(always)]
     fn point(&self, end: &Sample<N, M>, t: f64) -> Result<Sample<N, M>, DynamicsError> {
         let (s0, contacts) = (&self.state, self.contacts);
         let dense = Hermite5 { t0: s0.t, dt: end.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: end.q, v1: end.v, a1: end.acc };
         let (q, v) = dense.at(t);
-        let ev = self.system.evaluate_point(t, &q, &v);
-        let (q, v, ev) = if self.drifted_at(&ev.gap, &(ev.gap_jacobian * v + ev.gap_time_rate)) {
-            let (q, v) = self.onto_held_at((t, &q, &v), Some(ev))?;
-            (q, v, self.system.evaluate_point(t, &q, &v))
+        let at = self.system.evaluate_configuration(t, &q, &v);
+        let (q, v) = if self.drifted_at(&at.gap, &(at.gap_jacobian * v + at.gap_time_rate)) {
+            self.onto_held_at((t, &q, &v), Some(at))?
         } else {
-            (q, v, ev)
+            (q, v)
         };
+        let ev = self.system.evaluate_point(t, &q, &v);
         let mut s = sample_rated(&self.system, &ev, (t, q, v), contacts, false)?;
         (s.friction_work, s.contact_impulse, s.energies) = interpolated_totals(s0, end, t);
         Ok(s)

@@ -120,6 +120,13 @@ pub trait System<const N: usize, const M: usize> {
         self.evaluate(t, q, qd)
     }
 
+    /// `evaluate` where only the terms the configuration sets are read (`mass`, `implicit`, `gap`,
+    /// `gap_jacobian`, `gap_time_rate`: a projection onto the held constraints): a system may leave
+    /// `force` and `gap_bias` zero. The terms it gives must equal `evaluate`'s.
+    fn evaluate_configuration(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> Evaluation<N, M> {
+        self.evaluate(t, q, qd)
+    }
+
     /// The inertia of the motion `M + K` (`Evaluation::inertia`) and `f` alone: all an RK4 stage
     /// needs while no constraint is held. A system whose constraint terms cost work of their own
     /// overrides it; the result must equal `evaluate`'s.

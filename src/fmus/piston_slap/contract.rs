@@ -28,9 +28,15 @@ inputs_struct! {
 impl InputDerivatives {
     /// Refuses an input whose value or derivatives are not finite, naming it.
     pub fn check_finite(&self, inputs: &Inputs) -> Result<(), ModelError> {
+        let inputs = self.with_values(inputs);
+        // One sum clears them all (an infinite or NaN term makes it so; finite terms that overflow it
+        // are looked at one by one) before any is named: every step checks its inputs.
+        if inputs.iter().map(|(_, value, [slope, curvature])| value + slope + curvature).sum::<f64>().is_finite() {
+            return Ok(());
+        }
         let finite =
             |(_, value, [slope, curvature]): &(&str, f64, [f64; 2])| value.is_finite() && slope.is_finite() && curvature.is_finite();
-        match self.with_values(inputs).into_iter().find(|input| !finite(input)) {
+        match inputs.into_iter().find(|input| !finite(input)) {
             Some((name, value, [slope, curvature])) => {
                 Err(ModelError(format!("input {name} = {value} (derivatives {slope}, {curvature}) is not finite")))
             }
@@ -123,7 +129,14 @@ mod tests {
 
     #[test]
     fn the_first_non_finite_output_is_named() {
-        let finite = Outputs { impact_velocity: f64::MAX, kinetic_energy: -0.0, side_force: f64::MIN_POSITIVE, ..Outputs::default() };
+        // Finite values whose sum overflows: named by none.
+        let finite = Outputs {
+            impact_velocity: f64::MAX,
+            crank_angle: f64::MAX,
+            kinetic_energy: -0.0,
+            side_force: f64::MIN_POSITIVE,
+            ..Outputs::default()
+        };
         assert_eq!(finite.first_non_finite(), None);
         for x in [f64::INFINITY, f64::NEG_INFINITY] {
             let out = Outputs { crank_torque: x, kinetic_energy: f64::NAN, ..finite.clone() };
@@ -131,6 +144,16 @@ mod tests {
         }
         let nan = Outputs { kinetic_energy: f64::NAN, ..finite }.first_non_finite();
         assert!(matches!(nan, Some(("kinetic_energy", x)) if x.is_nan()), "{nan:?}");
+    }
+
+    #[test]
+    fn finite_inputs_pass_however_large_and_the_first_other_is_named() {
+        let inputs = Inputs { gas_pressure: f64::MAX, ..Inputs::default() };
+        let mut derivatives = InputDerivatives { gas_pressure: [f64::MAX, f64::MAX], ..InputDerivatives::default() };
+        assert_eq!(derivatives.check_finite(&inputs), Ok(()));
+        derivatives.load_torque[1] = f64::NEG_INFINITY;
+        let err = derivatives.check_finite(&inputs).unwrap_err();
+        assert!(err.0.starts_with("input load_torque"), "{err}");
     }
 
     #[test]

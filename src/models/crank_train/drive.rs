@@ -68,6 +68,8 @@ pub(super) trait CrankDrive<const N: usize>: System<N, 4> + Sized {
     fn drive_work(&self, event: &Event<N, 4>) -> Option<f64>;
     /// Pa, the gauge gas pressure at time `t` and crank angle `angle`.
     fn gas_pressure(&self, t: f64, angle: f64) -> f64;
+    /// The sines and cosines of the full link angles `phi`.
+    fn link_angles(&self, phi: &Vector3<f64>) -> LinkAngles;
     /// N·m, the external torque on the crank now, the corners' contact and friction forces given.
     fn crank_torque(stepper: &Stepper<Self, N, 4>, forces: &Vector4<f64>, friction: &Vector4<f64>) -> f64;
     /// rad/s, the crank speed at time `t`, the crank's rate `rate` given.
@@ -105,6 +107,9 @@ impl CrankDrive<2> for PrescribedCrank {
     fn gas_pressure(&self, t: f64, angle: f64) -> f64 {
         self.pressure(t, angle)
     }
+    fn link_angles(&self, phi: &Vector3<f64>) -> LinkAngles {
+        PrescribedCrank::link_angles(self, phi)
+    }
     fn crank_torque(s: &Stepper<Self, 2, 4>, forces: &Vector4<f64>, friction: &Vector4<f64>) -> f64 {
         s.system().drive_torque(s.time(), (s.position(), s.velocity(), &s.acceleration()), (forces, friction))
     }
@@ -138,6 +143,9 @@ impl CrankDrive<3> for FreeCrank {
     }
     fn gas_pressure(&self, t: f64, angle: f64) -> f64 {
         self.engine.pressure(t, angle)
+    }
+    fn link_angles(&self, phi: &Vector3<f64>) -> LinkAngles {
+        LinkAngles::new(phi)
     }
     /// The load, opposing rotation.
     fn crank_torque(s: &Stepper<Self, 3, 4>, _: &Vector4<f64>, _: &Vector4<f64>) -> f64 {
@@ -189,6 +197,8 @@ pub(crate) trait CrankStepper {
     fn clear_events(&mut self);
     /// Pa, the gauge gas pressure now at crank angle `angle` within the cycle.
     fn gas_pressure(&self, angle: f64) -> f64;
+    /// The sines and cosines of the full link angles `phi` (`LinkAngles::new`).
+    fn link_angles(&self, phi: &Vector3<f64>) -> LinkAngles;
     /// N·m, the external torque on the crank now.
     fn crank_torque(&self, forces: &Vector4<f64>, friction: &Vector4<f64>) -> f64;
     /// rad/s, the crank speed now, φ̇1 being `rate`.
@@ -270,6 +280,9 @@ impl<S: CrankDrive<N>, const N: usize> CrankStepper for Stepper<S, N, 4> {
     }
     fn gas_pressure(&self, angle: f64) -> f64 {
         self.system().gas_pressure(Stepper::time(self), angle)
+    }
+    fn link_angles(&self, phi: &Vector3<f64>) -> LinkAngles {
+        self.system().link_angles(phi)
     }
     fn crank_torque(&self, forces: &Vector4<f64>, friction: &Vector4<f64>) -> f64 {
         S::crank_torque(self, forces, friction)

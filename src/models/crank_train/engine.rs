@@ -125,10 +125,23 @@ impl Engine {
     /// and the load torque `load_torque`, and the gas's and the damping's power there.
     #[inline(always)]
     fn evaluate(&self, t: f64, phi: &Vector3<f64>, phid: &Vector3<f64>, load_torque: f64, crank: Crank) -> (Evaluation<3, 4>, Applied) {
-        let (trig, loads) = self.trig_and_loads(t, phi, load_torque, &crank);
-        let mut ev = self.linkage.evaluate_with(&trig, phid, loads);
-        ev.implicit = self.lubrication.as_ref().map(|l| l.apply((phi, &trig), phid, &mut ev.force));
-        (ev, self.linkage.gas_and_damping_power(&trig, phid, loads.gas_force))
+        self.evaluate_with(t, (phi, &LinkAngles::with_crank((crank.sin, crank.cos), phi)), phid, load_torque, crank)
+    }
+
+    /// [`Self::evaluate`] with the angles' sines and cosines `trig` (of φ) at hand.
+    #[inline(always)]
+    fn evaluate_with(
+        &self,
+        t: f64,
+        (phi, trig): (&Vector3<f64>, &LinkAngles),
+        phid: &Vector3<f64>,
+        load_torque: f64,
+        crank: Crank,
+    ) -> (Evaluation<3, 4>, Applied) {
+        let loads = Loads { gas_force: self.gas_force_at(t, &crank), load_torque };
+        let mut ev = self.linkage.evaluate_with(trig, phid, loads);
+        ev.implicit = self.lubrication.as_ref().map(|l| l.apply((phi, trig), phid, &mut ev.force));
+        (ev, self.linkage.gas_and_damping_power(trig, phid, loads.gas_force))
     }
 
     /// The inertia `M + K` and f of [`Self::evaluate`] alone, and the gas's and the damping's power.
@@ -218,6 +231,11 @@ pub struct PrescribedCrank {
     /// The crank row at the state last evaluated, for its drive torque.
     #[serde(skip)]
     row: LastValue<CrankRow, 7>,
+    /// The link angles' sines and cosines at the configuration whose terms were last taken alone
+    /// (`evaluate_configuration`, which judges a communication point): for the point's evaluation
+    /// and outputs there.
+    #[serde(skip)]
+    angles: LastValue<LinkAngles, 3>,
 }
 
 /// The crank row of the full equations at one state, the drive torque's terms: `M_1·`, `f_1` and,
@@ -247,7 +265,14 @@ impl PrescribedCrank {
     /// The crank at `crank_angle` at `time`, turning at `speed` held.
     pub fn new(engine: Engine, crank_angle: f64, time: f64, speed: f64) -> Self {
         let speed = InputPolynomial { time, ..InputPolynomial::held(speed) };
-        Self { engine, angle_ref: crank_angle, speed, last_crank: LastValue::default(), row: LastValue::default() }
+        Self {
+            engine,
+            angle_ref: crank_angle,
+            speed,
+            last_crank: LastValue::default(),
+            row: LastValue::default(),
+            angles: LastValue::default(),
+        }
     }
 
     /// φ1(t): the speed integrated exactly.
@@ -283,8 +308,8 @@ impl PrescribedCrank {
     /// The same crank with the crank angle `angle` at time `t` (a whole number of cycles away from
     /// its own), the speed's reference moved to `t`.
     pub fn rebased(&self, t: f64, angle: f64) -> Self {
-        let (last_crank, row) = (LastValue::default(), LastValue::default());
-        Self { engine: self.engine.clone(), angle_ref: angle, speed: self.speed.from(t), last_crank, row }
+        let (last_crank, row, angles) = (LastValue::default(), LastValue::default(), LastValue::default());
+        Self { engine: self.engine.clone(), angle_ref: angle, speed: self.speed.from(t), last_crank, row, angles }
     }
 
     /// The crank terms at `angle`, from the cache when it is the last angle evaluated (inlined:
@@ -309,9 +334,32 @@ impl PrescribedCrank {
     #[inline(always)]
     pub fn evaluate_full(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<3, 4> {
         let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
-        let full = self.engine.evaluate(t, &phi, &phid, 0.0, crank);
-        self.row.set(self.row_key(t, &phi, &phid, &crank), CrankRow::of(&full));
+        self.keep_row(t, (&phi, &phid, &crank), self.engine.evaluate(t, &phi, &phid, 0.0, crank))
+    }
+
+    /// The evaluation `full` at (t, φ, φ̇), its crank row kept for the drive torque there.
+    #[inline(always)]
+    fn keep_row(
+        &self,
+        t: f64,
+        (phi, phid, crank): (&Vector3<f64>, &Vector3<f64>, &Crank),
+        full: (Evaluation<3, 4>, Applied),
+    ) -> Evaluation<3, 4> {
+        self.row.set(self.row_key(t, phi, phid, crank), CrankRow::of(&full));
         full.0
+    }
+
+    /// The sines and cosines of the link angles φ, the crank's from `crank`: those the configuration's
+    /// terms last took where φ is theirs.
+    #[inline(always)]
+    fn angles_of(&self, phi: &Vector3<f64>, crank: &Crank) -> LinkAngles {
+        self.angles.get_or([phi[0], phi[1], phi[2]], || LinkAngles::with_crank((crank.sin, crank.cos), phi))
+    }
+
+    /// The sines and cosines of the link angles φ (`LinkAngles::new`), from the configuration's terms
+    /// where they were last taken at φ.
+    pub fn link_angles(&self, phi: &Vector3<f64>) -> LinkAngles {
+        self.angles_of(phi, &self.crank(phi[0]))
     }
 
     /// φ, φ̇ and the crank's terms at `(t, q, q̇)`.
@@ -385,14 +433,21 @@ impl PrescribedCrank {
         let force = self.reduced(t, &full.inertia(), &full.force).1;
         let crank_column = full.gap_jacobian.column(0);
         let gap_bias = if self.speed.is_held() { full.gap_bias } else { full.gap_bias + crank_column * self.acceleration(t) };
+        Evaluation { force, gap_bias, ..self.reduce_configuration(t, &full) }
+    }
+
+    /// The terms of [`Self::reduce`] that the configuration and the crank's speed set (M, K, h, J,
+    /// ∂h/∂t), with f and d zero.
+    #[inline(always)]
+    fn reduce_configuration(&self, t: f64, full: &Evaluation<3, 4>) -> Evaluation<2, 4> {
         Evaluation {
             mass: rod_and_piston(&full.mass),
             implicit: full.implicit.as_ref().map(rod_and_piston),
-            force,
+            force: Vector2::zeros(),
             gap: full.gap,
             gap_jacobian: Matrix4x2::from_columns(&[full.gap_jacobian.column(1), full.gap_jacobian.column(2)]),
-            gap_time_rate: crank_column * self.speed.at(t),
-            gap_bias,
+            gap_time_rate: full.gap_jacobian.column(0) * self.speed.at(t),
+            gap_bias: Vector4::zeros(),
         }
     }
 
@@ -411,6 +466,24 @@ impl PrescribedCrank {
 impl System<2, 4> for PrescribedCrank {
     fn evaluate(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
         self.reduce(t, self.evaluate_full(t, q, qd))
+    }
+
+    /// The dry linkage's configuration terms alone (`Linkage::configuration_with`); with the film, the
+    /// whole evaluation.
+    fn evaluate_configuration(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
+        if self.engine.lubrication.is_some() {
+            return self.evaluate(t, q, qd);
+        }
+        let (phi, _, crank) = self.full_state_and_crank(t, q, qd);
+        let (trig, linkage) = (self.angles_of(&phi, &crank), &self.engine.linkage);
+        self.reduce_configuration(t, &linkage.configuration_with(&trig, linkage.inertia_with(&trig)))
+    }
+
+    /// With the sines and cosines of the configuration's terms taken there (`link_angles`).
+    fn evaluate_point(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
+        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
+        let full = self.engine.evaluate_with(t, (&phi, &self.angles_of(&phi, &crank)), &phid, 0.0, crank);
+        self.reduce(t, self.keep_row(t, (&phi, &phid, &crank), full))
     }
 
     /// Keeps the crank row, without the gaps' column, for the drive torque of a free stage.

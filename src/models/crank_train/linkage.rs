@@ -138,6 +138,13 @@ impl LinkAngles {
         let [(s2, c2), (s3, c3)] = [trig::small_sin_cos(phi[1]), trig::small_sin_cos(phi[2])];
         Self { sin: [s1, s2, s3], cos: [c1, c2, c3] }
     }
+
+    /// The cosines and sines of φi − φj, each `[12, 13, 23]`.
+    #[inline(always)]
+    fn differences(&self) -> ([f64; 3], [f64; 3]) {
+        let ([s1, s2, s3], [c1, c2, c3]) = (self.sin, self.cos);
+        ([c1 * c2 + s1 * s2, c1 * c3 + s1 * s3, c2 * c3 + s2 * s3], [s1 * c2 - c1 * s2, s1 * c3 - c1 * s3, s2 * c3 - c2 * s3])
+    }
 }
 
 fn along(phi: f64) -> Vector2<f64> {
@@ -238,27 +245,51 @@ impl Linkage {
     #[inline(always)]
     pub fn evaluate_with(&self, trig: &LinkAngles, phid: &Vector3<f64>, loads: Loads) -> Evaluation<3, 4> {
         let (mass, force) = self.inertia_and_force_with(trig, phid, loads);
-        let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
+        let ([s1, s2, s3], [_, _, c3]) = (trig.sin, trig.cos);
         let [l1, l2] = self.bodies.links;
         let (w1, w2, w3) = (phid[0] * phid[0], phid[1] * phid[1], phid[2] * phid[2]);
-        // x_O3 = −l1 s1 − l2 s2 and its second derivative at φ̈ = 0.
-        let (x_pin, pin_bias) = (-l1 * s1 - l2 * s2, l1 * s1 * w1 + l2 * s2 * w2);
+        // The second derivative of x_O3 = −l1 s1 − l2 s2 at φ̈ = 0.
+        let pin_bias = l1 * s1 * w1 + l2 * s2 * w2;
+        Evaluation {
+            force,
+            gap_bias: Vector4::from_fn(|i, _| {
+                let (z, w, side) = self.bodies.corners[i];
+                side * (pin_bias + (z * s3 - w * c3) * w3)
+            }),
+            ..self.configuration_with(trig, mass)
+        }
+    }
+
+    /// The terms of [`Self::evaluate_with`] that the configuration alone sets (M the given `mass`, h,
+    /// J), with f and d zero: what a projection onto the liner reads.
+    #[inline(always)]
+    pub fn configuration_with(&self, trig: &LinkAngles, mass: Matrix3<f64>) -> Evaluation<3, 4> {
+        let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
+        let [l1, l2] = self.bodies.links;
+        // x_O3 = −l1 s1 − l2 s2.
+        let x_pin = -l1 * s1 - l2 * s2;
         let (jacobian_1, jacobian_2) = (-l1 * c1, -l2 * c2);
         Evaluation {
             mass,
             implicit: None,
-            force,
+            force: Vector3::zeros(),
             gap: self.corner_gaps(x_pin, s3, c3),
             gap_jacobian: nalgebra::Matrix4x3::from_fn(|i, j| {
                 let (z, w, side) = self.bodies.corners[i];
                 side * [jacobian_1, jacobian_2, -(z * c3 + w * s3)][j]
             }),
             gap_time_rate: Vector4::zeros(),
-            gap_bias: Vector4::from_fn(|i, _| {
-                let (z, w, side) = self.bodies.corners[i];
-                side * (pin_bias + (z * s3 - w * c3) * w3)
-            }),
+            gap_bias: Vector4::zeros(),
         }
+    }
+
+    /// M of [`Self::evaluate_with`] alone.
+    #[inline(always)]
+    pub fn inertia_with(&self, trig: &LinkAngles) -> Matrix3<f64> {
+        let k = &self.terms;
+        let ([c12, c13, c23], [_, s13, s23]) = trig.differences();
+        let (m12, m13, m23) = (k.p12 * c12, k.p13 * c13 + k.q13 * s13, k.p23 * c23 + k.q23 * s23);
+        Matrix3::new(k.diagonal[0], m12, m13, m12, k.diagonal[1], m23, m13, m23, k.diagonal[2])
     }
 
     /// M and f of [`Self::evaluate_with`] alone (an RK4 stage in flight needs no more).
@@ -266,12 +297,8 @@ impl Linkage {
     pub fn inertia_and_force_with(&self, trig: &LinkAngles, phid: &Vector3<f64>, loads: Loads) -> (Matrix3<f64>, Vector3<f64>) {
         let ([s1, s2, s3], [c1, c2, c3]) = (trig.sin, trig.cos);
         let k = &self.terms;
-        // cos and sin of φi − φj.
-        let (c12, s12) = (c1 * c2 + s1 * s2, s1 * c2 - c1 * s2);
-        let (c13, s13) = (c1 * c3 + s1 * s3, s1 * c3 - c1 * s3);
-        let (c23, s23) = (c2 * c3 + s2 * s3, s2 * c3 - c2 * s3);
-        let (m12, m13, m23) = (k.p12 * c12, k.p13 * c13 + k.q13 * s13, k.p23 * c23 + k.q23 * s23);
-        let mass = Matrix3::new(k.diagonal[0], m12, m13, m12, k.diagonal[1], m23, m13, m23, k.diagonal[2]);
+        let mass = self.inertia_with(trig);
+        let ([_, c13, c23], [s12, s13, s23]) = trig.differences();
         // F'_ij(φi − φj) and the squared rates.
         let (g12, g13, g23) = (-k.p12 * s12, k.q13 * c13 - k.p13 * s13, k.q23 * c23 - k.p23 * s23);
         let (w1, w2, w3) = (phid[0] * phid[0], phid[1] * phid[1], phid[2] * phid[2]);

@@ -5,15 +5,16 @@
 use super::skirt;
 use crate::fmus::piston_slap::Outputs;
 use crate::models::crank_train::books::{DAMPING, DRIVE, GAS};
-use crate::models::crank_train::linkage::LinkAngles;
 use crate::models::CrankTrain;
 use std::f64::consts::PI;
 
 /// Writes everything but the impact statistics.
 pub(in crate::fmus::piston_slap) fn write(model: &CrankTrain, out: &mut Outputs) {
-    // The sines and cosines once, of the angle within the cycle (what the stepper holds).
+    // The sines and cosines once, of the angle within the cycle (what the stepper holds; at a point
+    // those its evaluation took).
     let (phi, phid) = model.state_within_cycle();
-    let trig = LinkAngles::new(&phi);
+    let stepper = model.drive.stepper();
+    let trig = stepper.link_angles(&phi);
     let linkage = &model.engine().linkage;
     let (pin, gaps) = linkage.pin_and_gaps(&trig);
     let (forces, in_contact) = model.contacts();
@@ -28,7 +29,6 @@ pub(in crate::fmus::piston_slap) fn write(model: &CrankTrain, out: &mut Outputs)
     // from their walls are D/2 + x (K1, K2) and D/2 − x (K3, K4).
     out.skirt_top_lateral = 0.5 * (gaps[0] - gaps[2]);
     out.skirt_bottom_lateral = 0.5 * (gaps[1] - gaps[3]);
-    let stepper = model.drive.stepper();
     out.gas_pressure_acting = stepper.gas_pressure(phi[0]);
     out.piston_axial = pin.y;
     out.crank_angle = phi[0] + 4.0 * PI * model.cycles;
