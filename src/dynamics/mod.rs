@@ -61,4 +61,4 @@ pub use event::{Event, EventKind, StepCounts};
 pub use options::{StepperOptions, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET};
 pub use settle::ZENO_APEX_FACTOR;
 pub use stepper::Stepper;
-pub use system::{Change, Evaluation, Powers, StepBounds, System, Tangents};
+pub use system::{Change, Evaluation, Powers, StepBounds, System, Tangents, Terms};

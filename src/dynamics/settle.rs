@@ -7,7 +7,7 @@ use super::contact_laws::{energy_lost, impact, stick_jump, Jump, Tolerances};
 use super::implicit::for_impact;
 use super::sample::{frame_at, sample, sample_of, Sample};
 use super::system::friction_of;
-use super::{DynamicsError, Evaluation, Event, EventKind, Powers, Stepper, System};
+use super::{DynamicsError, Evaluation, Event, EventKind, Powers, Stepper, System, Terms};
 use nalgebra::SVector;
 
 /// Zeno guard: after an impact a closed constraint whose free flight would rise no higher than
@@ -72,7 +72,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     }
 
     /// `(q, q̇)` at `t` projected onto the held set's manifold (see `onto_held`). `ev` may be the
-    /// configuration's terms alone (`System::evaluate_configuration`): the projection reads no more,
+    /// configuration's terms alone (`System::evaluate_terms`, `Terms::Configuration`): the projection reads no more,
     /// and evaluates no more at the configurations it moves through.
     #[allow(clippy::type_complexity)]
     pub(super) fn onto_held_at(
@@ -81,9 +81,9 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         ev: Option<Evaluation<N, M>>,
     ) -> Result<(SVector<f64, N>, SVector<f64, N>), DynamicsError> {
         let (mut q, v, active) = (*q, *v, self.contacts.held);
-        let mut ev = ev.unwrap_or_else(|| self.system.evaluate_configuration(t, &q, &v));
+        let mut ev = ev.unwrap_or_else(|| self.system.evaluate_terms(t, &q, &v, Terms::Configuration));
         let mut frame = Frame::new(&ev).ok_or(DynamicsError::SingularMass { time: t })?;
-        let configuration = |q: &SVector<f64, N>| self.system.evaluate_configuration(t, q, &v);
+        let configuration = |q: &SVector<f64, N>| self.system.evaluate_terms(t, q, &v, Terms::Configuration);
         self.onto_contacts(t, &mut q, active, configuration, (&mut ev, &mut frame))?;
         let hd = ev.gap_jacobian * v + ev.gap_time_rate;
         let dependent = DynamicsError::DependentContacts { time: t, constraints: active };

@@ -8,7 +8,8 @@ use super::options::{MAX_STEPS_PER_ADVANCE, PENETRATION_FACTOR, TOO_MANY_STEPS};
 use super::rk4::{local_error, rk4_cut, rk4_step, rk4_to, Stepped};
 use super::sample::{motion, powers, sample, sample_of, sample_rated, Evaluated, Forces, Sample};
 use super::{
-    DynamicsError, Evaluation, Event, Powers, StepBounds, StepCounts, StepperOptions, System, ACCUMULATION_WINDOW, DEFAULT_EVENT_BUDGET,
+    DynamicsError, Evaluation, Event, Powers, StepBounds, StepCounts, StepperOptions, System, Terms, ACCUMULATION_WINDOW,
+    DEFAULT_EVENT_BUDGET,
 };
 use nalgebra::SVector;
 use serde::{Deserialize, Serialize};
@@ -221,20 +222,20 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
     /// removes by projection; the point is projected likewise.
     ///
     /// The drift is judged from the configuration's terms at the interpolated state (its gaps and
-    /// `ḣ`, what the sample there would hold; `System::evaluate_configuration`), which the projection
+    /// `ḣ`, what the sample there would hold; `System::evaluate_terms`, `Terms::Configuration`), which the projection
     /// starts from: a point evaluates the system in full once, at the state it shows.
     #[inline(always)]
     fn point(&self, end: &Sample<N, M>, t: f64) -> Result<Sample<N, M>, DynamicsError> {
         let (s0, contacts) = (&self.state, self.contacts);
         let dense = Hermite5 { t0: s0.t, dt: end.t - s0.t, q0: s0.q, v0: s0.v, a0: s0.acc, q1: end.q, v1: end.v, a1: end.acc };
         let (q, v) = dense.at(t);
-        let at = self.system.evaluate_configuration(t, &q, &v);
+        let at = self.system.evaluate_terms(t, &q, &v, Terms::Configuration);
         let (q, v) = if self.drifted_at(&at.gap, &(at.gap_jacobian * v + at.gap_time_rate)) {
             self.onto_held_at((t, &q, &v), Some(at))?
         } else {
             (q, v)
         };
-        let ev = self.system.evaluate_point(t, &q, &v);
+        let ev = self.system.evaluate_terms(t, &q, &v, Terms::Point);
         let mut s = sample_rated(&self.system, &ev, (t, q, v), contacts, false)?;
         (s.friction_work, s.contact_impulse, s.energies) = interpolated_totals(s0, end, t);
         Ok(s)
@@ -336,7 +337,7 @@ impl<S: System<N, M>, const N: usize, const M: usize> Stepper<S, N, M> {
         match &self.ahead {
             Some(Ahead { now: s, .. }) if S::POWERS => {
                 let (t, q, v) = (s.t, &s.q, &s.v);
-                let m = motion(&self.system, &self.system.evaluate_point(t, q, v), (t, q, v), self.contacts)?;
+                let m = motion(&self.system, &self.system.evaluate_terms(t, q, v, Terms::Point), (t, q, v), self.contacts)?;
                 Ok(powers(&self.system, (t, q, v), &m))
             }
             _ => Ok(self.current().powers),

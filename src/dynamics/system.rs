@@ -62,6 +62,17 @@ impl<const N: usize, const M: usize> Tangents<N, M> {
     }
 }
 
+/// The uses of [`System::evaluate_terms`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Terms {
+    /// A communication point read from a step ahead (the state the stepper then shows): all the terms, where a
+    /// system whose outputs need more of the same may keep them.
+    Point,
+    /// A projection onto the held constraints: only the terms the configuration sets are read (`mass`,
+    /// `implicit`, `gap`, `gap_jacobian`, `gap_time_rate`), and a system may leave `force` and `gap_bias` zero.
+    Configuration,
+}
+
 /// What bounds an RK4 step from one state (`System::step_bounds`).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StepBounds {
@@ -113,17 +124,9 @@ pub trait System<const N: usize, const M: usize> {
     /// Full evaluation at `(t, q, q̇)`; computes each trigonometric function once.
     fn evaluate(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> Evaluation<N, M>;
 
-    /// `evaluate` at a communication point read from a step ahead (the state the stepper then
-    /// shows): a system whose outputs need more of the same terms may keep them here. The result
-    /// must equal `evaluate`'s.
-    fn evaluate_point(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> Evaluation<N, M> {
-        self.evaluate(t, q, qd)
-    }
-
-    /// `evaluate` where only the terms the configuration sets are read (`mass`, `implicit`, `gap`,
-    /// `gap_jacobian`, `gap_time_rate`: a projection onto the held constraints): a system may leave
-    /// `force` and `gap_bias` zero. The terms it gives must equal `evaluate`'s.
-    fn evaluate_configuration(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>) -> Evaluation<N, M> {
+    /// `evaluate` for a use that reads only some of its terms (see [`Terms`]): a system may keep or leave
+    /// out work there. The terms the use reads must equal `evaluate`'s.
+    fn evaluate_terms(&self, t: f64, q: &SVector<f64, N>, qd: &SVector<f64, N>, _terms: Terms) -> Evaluation<N, M> {
         self.evaluate(t, q, qd)
     }
 

@@ -12,7 +12,7 @@ use super::books::{self, SkirtRates};
 use super::linkage::{Bodies, LinkAngles, Linkage, Loads};
 use super::lubrication::{self, predicted, Lubrication};
 use super::step_bounds::MAX_STEP_ANGLE;
-use crate::dynamics::{Change, Evaluation, Powers, StepBounds, System, Tangents};
+use crate::dynamics::{Change, Evaluation, Powers, StepBounds, System, Tangents, Terms};
 use crate::models::gas::GasPressure;
 use crate::models::numerics::{trig, LastValue};
 use crate::models::{InputPolynomial, ModelError};
@@ -232,7 +232,7 @@ pub struct PrescribedCrank {
     #[serde(skip)]
     row: LastValue<CrankRow, 7>,
     /// The link angles' sines and cosines at the configuration whose terms were last taken alone
-    /// (`evaluate_configuration`, which judges a communication point): for the point's evaluation
+    /// (`Terms::Configuration`, which judges a communication point): for the point's evaluation
     /// and outputs there.
     #[serde(skip)]
     angles: LastValue<LinkAngles, 3>,
@@ -468,22 +468,22 @@ impl System<2, 4> for PrescribedCrank {
         self.reduce(t, self.evaluate_full(t, q, qd))
     }
 
-    /// The dry linkage's configuration terms alone (`Linkage::configuration_with`); with the film, the
-    /// whole evaluation.
-    fn evaluate_configuration(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
-        if self.engine.lubrication.is_some() {
-            return self.evaluate(t, q, qd);
+    /// A point with the sines and cosines of the configuration's terms taken there (`link_angles`); the dry
+    /// linkage's configuration terms alone (`Linkage::configuration_with`), with the film the whole evaluation.
+    fn evaluate_terms(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>, terms: Terms) -> Evaluation<2, 4> {
+        match terms {
+            Terms::Point => {
+                let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
+                let full = self.engine.evaluate_with(t, (&phi, &self.angles_of(&phi, &crank)), &phid, 0.0, crank);
+                self.reduce(t, self.keep_row(t, (&phi, &phid, &crank), full))
+            }
+            Terms::Configuration if self.engine.lubrication.is_some() => self.evaluate(t, q, qd),
+            Terms::Configuration => {
+                let (phi, _, crank) = self.full_state_and_crank(t, q, qd);
+                let (trig, linkage) = (self.angles_of(&phi, &crank), &self.engine.linkage);
+                self.reduce_configuration(t, &linkage.configuration_with(&trig, linkage.inertia_with(&trig)))
+            }
         }
-        let (phi, _, crank) = self.full_state_and_crank(t, q, qd);
-        let (trig, linkage) = (self.angles_of(&phi, &crank), &self.engine.linkage);
-        self.reduce_configuration(t, &linkage.configuration_with(&trig, linkage.inertia_with(&trig)))
-    }
-
-    /// With the sines and cosines of the configuration's terms taken there (`link_angles`).
-    fn evaluate_point(&self, t: f64, q: &Vector2<f64>, qd: &Vector2<f64>) -> Evaluation<2, 4> {
-        let (phi, phid, crank) = self.full_state_and_crank(t, q, qd);
-        let full = self.engine.evaluate_with(t, (&phi, &self.angles_of(&phi, &crank)), &phid, 0.0, crank);
-        self.reduce(t, self.keep_row(t, (&phi, &phid, &crank), full))
     }
 
     /// Keeps the crank row, without the gaps' column, for the drive torque of a free stage.

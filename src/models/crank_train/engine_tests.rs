@@ -78,7 +78,7 @@ fn the_kept_row_never_changes_a_drive_torque() {
         sys.engine.hold_pressure(InputPolynomial { time: 0.01, value: pressure, slope: 4e8, curvature: 0.0 });
         sys.hold_speed(InputPolynomial { time: 0.01, value: speed, slope: 3000.0, curvature: 0.0 });
         let fresh = PrescribedCrank { row: LastValue::default(), ..sys.clone() };
-        assert_eq!(sys.evaluate_point(t, &q, &qd), fresh.evaluate(t, &q, &qd));
+        assert_eq!(sys.evaluate_terms(t, &q, &qd, Terms::Point), fresh.evaluate(t, &q, &qd));
         let torque = sys.drive_torque(t, (&q, &qd, &qdd), (&forces.0, &forces.1));
         assert_eq!(torque.to_bits(), fresh.drive_torque(t, (&q, &qd, &qdd), (&forces.0, &forces.1)).to_bits(), "{pressure} {speed}");
     }
