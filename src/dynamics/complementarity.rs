@@ -214,8 +214,8 @@ pub(crate) fn held_acceleration<const N: usize, const M: usize>(
 /// Solves `W_SS x_S = r_S` with `x = 0` outside `S`, without heap: the rows and columns outside
 /// `S` are replaced by the identity. `None` when `W_SS` is singular.
 pub(crate) fn solve_on<const M: usize>(w: &SMatrix<f64, M, M>, r: &SVector<f64, M>, set: Set) -> Option<SVector<f64, M>> {
-    // No constraint, one or two (most calls: the impact and sliding laws, the projections onto a
-    // wall's two corners): the factor's operations written out, to the bit the same (the identity
+    // No constraint, one or two (most calls: the impact and sliding laws, the projections onto two
+    // constraints held together): the factor's operations written out, to the bit the same (the identity
     // outside `S` adds only zeros to them).
     let mut x = SVector::<f64, M>::zeros();
     let mut indices = members::<M>(set);
