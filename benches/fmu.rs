@@ -124,19 +124,21 @@ fn main() {
 }
 
 /// The lubricated skirt (`skirt_model = 2`, default film grid and relaxation) against the dry
-/// default case, and the mass-conserving film (`cavitation = 2`), flooded and on a limited supply
-/// (`oil_supply = 2`, the default `liner_oil_film`), against the Reynolds condition's, at 1200 and
-/// 3000 rpm, through the C ABI at 1 ms steps over one whole cycle (the second: the first starts the
-/// film from rest): the CPU time per cycle of each, the real-time factor it gives and the ratios, the
-/// median over rounds (a ratio taken within a round, under one load of the machine).
+/// default case, the mass-conserving film (`cavitation = 2`), flooded and on a limited supply
+/// (`oil_supply = 2`, the default `liner_oil_film`), against the Reynolds condition's, and the elastic
+/// skirt (`skirt_compliance = 1`, the built-in shell) against the rigid one, at 1200 and 3000 rpm,
+/// through the C ABI at 1 ms steps over one whole cycle (the second: the first starts the film from
+/// rest): the CPU time per cycle of each, the real-time factor it gives and the ratios, the median over
+/// rounds (a ratio taken within a round, under one load of the machine).
 /// `cargo bench --bench fmu -- --lubricated` runs these alone.
 fn lubricated() {
     let h = 1e-3;
-    let cases: [&[(&str, i32)]; 4] = [
+    let cases: [&[(&str, i32)]; 5] = [
         &[("skirt_model", 1)],
         &[("skirt_model", 2)],
         &[("skirt_model", 2), ("cavitation", 2)],
         &[("skirt_model", 2), ("cavitation", 2), ("oil_supply", 2)],
+        &[("skirt_model", 2), ("skirt_compliance", 1)],
     ];
     for rpm in [1200.0, 3000.0] {
         let speed = rpm * std::f64::consts::PI / 30.0;
@@ -147,14 +149,14 @@ fn lubricated() {
             run(&host, cycle, h);
             run_on(libc::CLOCK_THREAD_CPUTIME_ID, &host, (cycle, 2.0 * cycle), h)
         };
-        let rounds: Vec<[f64; 4]> = (0..RUNS).map(|_| cases.map(second_cycle)).collect();
+        let rounds: Vec<[f64; 5]> = (0..RUNS).map(|_| cases.map(second_cycle)).collect();
         let cpu = |k: usize| median(rounds.iter().map(|r| r[k]).collect());
         let ratio = |k: usize, of: usize| median(rounds.iter().map(|r| r[k] / r[of]).collect());
         println!(
             "crank train, default case at {rpm:.0} rpm, one cycle in 1 ms steps, CPU time: dry {:.2} ms ({:.0}× real time); \
              lubricated skirt {:.1} ms ({:.2}× real time), {:.1}× the dry model's; mass-conserving cavitation {:.1} ms \
              ({:.2}× real time), {:.2}× the Reynolds film's; on a limited supply {:.1} ms ({:.2}× real time), {:.2}× the \
-             Reynolds film's",
+             Reynolds film's; elastic skirt {:.1} ms ({:.2}× real time), {:.2}× the rigid skirt's",
             cpu(0) * 1e3,
             cycle / cpu(0),
             cpu(1) * 1e3,
@@ -165,7 +167,10 @@ fn lubricated() {
             ratio(2, 1),
             cpu(3) * 1e3,
             cycle / cpu(3),
-            ratio(3, 1)
+            ratio(3, 1),
+            cpu(4) * 1e3,
+            cycle / cpu(4),
+            ratio(4, 1)
         );
     }
 }

@@ -16,8 +16,8 @@ mod fmu_host;
 mod output_checks;
 
 use designs::{
-    declared, declared_conservative, declared_ramped, engine, limited_supply_engine, lubricated_declared, lubricated_engine,
-    mass_conserving_engine, roller, rubbing_engine, rubbing_slider, run, slider, Design, Random,
+    declared, declared_conservative, declared_ramped, elastic_engine, engine, limited_supply_engine, lubricated_declared,
+    lubricated_engine, mass_conserving_engine, roller, rubbing_engine, rubbing_slider, run, slider, Design, Random,
 };
 use fmu_designs::NotRun;
 use std::time::Instant;
@@ -38,6 +38,7 @@ fn main() {
         ("lubricated declared", lubricated_declared),
         ("mass-conserving engine", mass_conserving_engine),
         ("limited supply engine", limited_supply_engine),
+        ("elastic engine", elastic_engine),
     ];
     let through_the_fmu =
         [("fmu declared", declared as fn(&mut Random) -> Design), ("fmu declared ramped", declared_ramped), ("fmu roller", roller)];

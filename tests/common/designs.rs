@@ -187,6 +187,21 @@ pub fn mass_conserving_engine(r: &mut Random) -> Design {
     Design { params: Parameters { cavitation: 2, ..design.params }, ..design }
 }
 
+/// A lubricated engine (`lubricated_engine`) on the built-in elastic shell (`skirt_compliance = 1`): a
+/// wall of 1.5–6 mm and a modulus of 40–200 GPa (from a soft aluminium alloy to steel), the film
+/// cavitating mass-conserving one time in two.
+pub fn elastic_engine(r: &mut Random) -> Design {
+    let design = lubricated_engine(r);
+    let params = Parameters {
+        skirt_compliance: 1,
+        skirt_wall_thickness: r.between(1.5e-3, 6e-3),
+        skirt_modulus: r.between(40e9, 200e9),
+        cavitation: 1 + i32::from(r.next() < 0.5),
+        ..design.params
+    };
+    Design { params, ..design }
+}
+
 /// A mass-conserving engine (`mass_conserving_engine`) fed by a limited oil supply (`oil_supply = 2`)
 /// of 0.2–20 µm on the liner: from far below the gaps (a starved skirt) to beyond the clearance.
 pub fn limited_supply_engine(r: &mut Random) -> Design {

@@ -4,8 +4,8 @@
 //! and sliding starts dissipated. `tools/random_designs.rs` runs the same families by the thousand.
 
 use crate::common::designs::{
-    declared, declared_conservative, declared_ramped, engine, limited_supply_engine, lubricated_declared, lubricated_engine,
-    mass_conserving_engine, rubbing_engine, rubbing_slider, run, slider, Design, Finished, Random,
+    declared, declared_conservative, declared_ramped, elastic_engine, engine, limited_supply_engine, lubricated_declared,
+    lubricated_engine, mass_conserving_engine, rubbing_engine, rubbing_slider, run, slider, Design, Finished, Random,
 };
 
 const DESIGNS: u64 = 250;
@@ -86,6 +86,14 @@ fn random_lubricated_engines_all_run() {
 fn random_mass_conserving_engines_all_run() {
     let failed = failures_of(0..12, mass_conserving_engine, |_, _| Ok(()));
     assert!(failed.is_empty(), "{} of 12 failed:\n{}", failed.len(), failed.join("\n"));
+}
+
+/// Lubricated engines on the built-in elastic shell: the film and the skirt's deflection solved
+/// together, carried between solves and through a saved state's round trip (`run`).
+#[test]
+fn random_elastic_engines_all_run() {
+    let failed = failures_of(0..6, elastic_engine, |_, _| Ok(()));
+    assert!(failed.is_empty(), "{} of 6 failed:\n{}", failed.len(), failed.join("\n"));
 }
 
 /// Lubricated engines on a limited oil supply: the liner's oil fed to the film and left by it, carried

@@ -27,7 +27,8 @@ impl<E: Mechanism + Debug + Serialize + DeserializeOwned + 'static> Model for E 
 
     fn resolve(parameters: &Parameters, resources: Option<&Path>) -> Parameters {
         let trace = fmi::resolve_resource(&parameters.pressure_trace, resources);
-        Parameters { pressure_trace: trace, ..parameters.clone() }
+        let compliance = fmi::resolve_resource(&parameters.skirt_compliance_file, resources);
+        Parameters { pressure_trace: trace, skirt_compliance_file: compliance, ..parameters.clone() }
     }
     fn validate(parameters: &Parameters) -> Result<(), fmi::Error> {
         Ok(parameters.validate()?)

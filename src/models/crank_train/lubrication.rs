@@ -41,7 +41,8 @@ use super::step_bounds::{CLEAR_ERROR_FACTOR, CLEAR_GAP};
 use super::step_film::{key, Solved, StepFilm};
 use crate::models::numerics::LastValue;
 use crate::models::skirt::{
-    CavitationCondition, Fill, OilSupply, PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads, SkirtMotion, SkirtProfile,
+    read_matrix, CavitationCondition, Compliance, Fill, FilmLinear, OilSupply, PressureMap, Roughness, Skirt, SkirtDesign, SkirtLoads,
+    SkirtMotion, SkirtProfile,
 };
 use crate::models::ModelError;
 use nalgebra::{Matrix2x3, Matrix3, SVector, Vector2, Vector3, Vector4};
@@ -91,7 +92,7 @@ struct SavedFilm {
 
 /// A solve's motion, time and the fill fraction it took (both sides; empty under the Reynolds
 /// condition); with a limited supply the liner's oil, the pin's axial position it was exchanged up to
-/// and the oil the liner lacked so far (`Solved::lacked`).
+/// and the oil the liner lacked so far (`Solved::lacked`); an elastic skirt's deflection it started from.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 struct SavedSolve {
     motion: [f64; 5],
@@ -100,6 +101,7 @@ struct SavedSolve {
     liner: [Vec<f64>; 2],
     axial: f64,
     lacked: f64,
+    start: [Vec<f64>; 2],
 }
 
 impl From<&Solved> for SavedSolve {
@@ -112,6 +114,7 @@ impl From<&Solved> for SavedSolve {
             liner: fill.liner.clone(),
             axial: fill.axial,
             lacked: solved.lacked,
+            start: solved.start.clone(),
         }
     }
 }
@@ -138,6 +141,11 @@ pub(crate) struct Design {
     /// `oil_supply`: 1 fully flooded, 2 limited to the oil on the liner, starting at `liner_oil_film`, m.
     pub(crate) oil_supply: i32,
     pub(crate) liner_oil_film: f64,
+    /// `skirt_compliance`: 0 rigid, 1 the built-in shell of `wall` (thickness, m; Young's modulus,
+    /// Pa), 2 the matrix in `compliance_file`.
+    pub(crate) compliance: i32,
+    pub(crate) wall: [f64; 2],
+    pub(crate) compliance_file: String,
 }
 
 impl PartialEq for Lubrication {
@@ -167,7 +175,7 @@ impl TryFrom<Saved> for Lubrication {
             let solve = |s: &SavedSolve| {
                 let fill = Fill { sides: s.fill.clone(), liner: s.liner.clone(), axial: s.axial };
                 let fill = Some(&fill).filter(|f| !f.sides[0].is_empty());
-                let mut solved = Solved::at(&lubrication.skirt, &motion(&s.motion), s.time, fill);
+                let mut solved = Solved::at(&lubrication.skirt, &motion(&s.motion), s.time, fill, &s.start);
                 solved.lacked = s.lacked;
                 solved
             };
@@ -195,6 +203,7 @@ impl TryFrom<Design> for Lubrication {
             grid: design.grid,
             cavitation: CavitationCondition::try_from(design.cavitation)?,
             supply: supply(&design)?,
+            compliance: compliance(&design)?,
             ..SkirtDesign::new(radius_bore, radius_piston, length, pin_from_top, pin_offset, design.arc, design.viscosity)
         };
         let skirt = Skirt::new(film)?;
@@ -209,6 +218,16 @@ fn supply(design: &Design) -> Result<OilSupply, ModelError> {
         1 => Ok(OilSupply::Flooded),
         2 => Ok(OilSupply::Limited { liner_film: design.liner_oil_film, travel: (l2 - l1, l2 + l1) }),
         n => Err(ModelError(format!("oil_supply = {n} must be 1 (fully flooded) or 2 (limited to the oil on the liner)"))),
+    }
+}
+
+/// The compliance `skirt_compliance` names.
+fn compliance(design: &Design) -> Result<Compliance, ModelError> {
+    match design.compliance {
+        0 => Ok(Compliance::Rigid),
+        1 => Ok(Compliance::Shell { thickness: design.wall[0], modulus: design.wall[1] }),
+        2 => read_matrix(&design.compliance_file),
+        n => Err(ModelError(format!("skirt_compliance = {n} must be 0 (rigid), 1 (the built-in shell) or 2 (a matrix from a file)"))),
     }
 }
 
@@ -280,7 +299,9 @@ impl Lubrication {
             let previous = frozen.take().map(|f| f.latest);
             let solved = match &previous {
                 Some(p) => p.next(&self.skirt, &motion, t, axial_position),
-                None => Solved::at(&self.skirt, &motion, t, self.skirt.starting_fill(&motion, axial_position).as_ref()),
+                None => {
+                    Solved::at(&self.skirt, &motion, t, self.skirt.starting_fill(&motion, axial_position).as_ref(), &Default::default())
+                }
             };
             *frozen = Some(StepFilm::solved(solved, previous));
         }
@@ -333,6 +354,19 @@ impl Lubrication {
         let latest = &frozen.as_ref()?.latest;
         let (liner, area) = self.skirt.liner_oil(&latest.linear.fill);
         (area > 0.0).then_some(Oil { liner, film: latest.linear.content, lacked: latest.lacked, area })
+    }
+
+    /// The largest film pressure, Pa, and the skirt's largest deflection away from the liner, m, at
+    /// the latest film solve (with none yet, of a solve at (φ, φ̇)).
+    pub fn film_peaks(&self, at: (&Vector3<f64>, &LinkAngles), phid: &Vector3<f64>) -> (f64, f64) {
+        let peaks = |linear: &FilmLinear| {
+            let deflection = linear.deflection.iter().flatten().fold(0.0_f64, |m, &d| m.max(d));
+            (linear.peak_pressure, deflection)
+        };
+        match self.frozen.borrow().as_ref() {
+            Some(f) => peaks(&f.latest.linear),
+            None => peaks(&self.skirt.linearise(&self.kinematics(at, phid).motion)),
+        }
     }
 
     /// The loads at (φ, φ̇), for the outputs.

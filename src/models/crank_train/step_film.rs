@@ -39,29 +39,31 @@ pub const CARRY_FILL: f64 = 0.01;
 const SECANT_REACH: f64 = 16.0;
 
 /// A film solve, its time (s) and the thinnest film at its motion, m; with a limited supply, the oil
-/// the film has taken since the first solve beyond what the liner's cells held, m³ (`Skirt::fill_after`).
+/// the film has taken since the first solve beyond what the liner's cells held, m³ (`Skirt::fill_after`);
+/// an elastic skirt's deflection the solve started from (the solve before's; empty: undeflected).
 #[derive(Clone, Debug)]
 pub(super) struct Solved {
     pub linear: FilmLinear,
     pub time: f64,
     thinnest: f64,
     pub lacked: f64,
+    pub start: [Vec<f64>; 2],
 }
 
 impl Solved {
     /// The film solved at `motion` at `time`, with mass-conserving cavitation at the fill fraction
-    /// `fill` (flooded where none).
-    pub fn at(skirt: &Skirt, motion: &SkirtMotion, time: f64, fill: Option<&Fill>) -> Self {
-        let linear = skirt.linearise_filled(motion, fill);
+    /// `fill` (flooded where none), an elastic skirt's deflection relaxed from `start`.
+    pub fn at(skirt: &Skirt, motion: &SkirtMotion, time: f64, fill: Option<&Fill>, start: &[Vec<f64>; 2]) -> Self {
+        let linear = skirt.linearise_deflected(motion, fill, start);
         let [thrust, antithrust] = skirt.loads_with(&linear, motion).min_film;
-        Self { linear, time, thinnest: thrust.min(antithrust), lacked: 0.0 }
+        Self { linear, time, thinnest: thrust.min(antithrust), lacked: 0.0, start: start.clone() }
     }
 
     /// The film solved at `motion` at `time` after this one, the pin at axial position `axial` (m):
     /// the fill moved on to `time`.
     pub fn next(&self, skirt: &Skirt, motion: &SkirtMotion, time: f64, axial: f64) -> Self {
         let (fill, lacked) = skirt.fill_after(&self.linear, time - self.time, (motion, axial));
-        Self { lacked: self.lacked + lacked, ..Self::at(skirt, motion, time, Some(&fill)) }
+        Self { lacked: self.lacked + lacked, ..Self::at(skirt, motion, time, Some(&fill), &self.linear.deflection) }
     }
 
     /// Whether a step with its middle at `motion` at `time` may take this solve, `arm` the skirt's
@@ -219,7 +221,11 @@ mod tests {
                 tilt_rate: 0.05,
                 sliding_speed: 6.0,
             };
-            let (a, b, at) = (Solved::at(&skirt, &pose(0.0), 0.0, None), Solved::at(&skirt, &pose(1.0), 0.0, None), pose(2.0));
+            let (a, b, at) = (
+                Solved::at(&skirt, &pose(0.0), 0.0, None, &Default::default()),
+                Solved::at(&skirt, &pose(1.0), 0.0, None, &Default::default()),
+                pose(2.0),
+            );
             assert_eq!(a.linear.free, b.linear.free, "one cavitation set along the path");
             let thinnest = b.thinnest;
             let fresh = -skirt.linearise(&at).gram * rates(&at);

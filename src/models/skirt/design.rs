@@ -2,6 +2,7 @@
 
 use super::{OilSupply, Roughness, SkirtProfile};
 use crate::models::ModelError;
+use std::sync::Arc;
 
 /// Design data of the skirt and its oil, SI.
 ///
@@ -43,6 +44,27 @@ pub struct SkirtDesign {
     pub cavitation: CavitationCondition,
     /// How oil reaches the skirt's edges (`oil_supply`, `liner_oil_film`).
     pub supply: OilSupply,
+    /// How the skirt deforms under its film (`skirt_compliance`).
+    pub compliance: Compliance,
+}
+
+/// How the skirt deforms under the film's and the asperities' pressure.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub enum Compliance {
+    /// A rigid skirt (`skirt_compliance = 0`).
+    #[default]
+    Rigid,
+    /// The built-in shell (`skirt_compliance = 1`, `skirt/shell.rs`).
+    Shell {
+        /// Wall thickness, m.
+        thickness: f64,
+        /// Young's modulus, Pa.
+        modulus: f64,
+    },
+    /// One side's compliance on the film's nodes, m/N, both sides alike (`skirt_compliance = 2`):
+    /// row-major (deflected node, loaded node), nodes in node order (axial row by circumferential
+    /// column), the deflection away from the liner per newton pressing.
+    Matrix(Arc<[f64]>),
 }
 
 /// The film's cavitation condition.
@@ -74,6 +96,10 @@ impl SkirtDesign {
     /// film, FMEP and forces (`make film-convergence`); see also the grid-convergence tests.
     pub const DEFAULT_GRID: (usize, usize) = (12, 18);
 
+    /// The most film nodes per side an elastic skirt takes: its compliance is a dense matrix of the
+    /// nodes by the closed grid (under 10 MB and a fraction of a second to build at this size).
+    pub const ELASTIC_NODES: usize = 1024;
+
     /// Boundary friction coefficient by default, –.
     pub const DEFAULT_BOUNDARY_FRICTION: f64 = 0.1;
 
@@ -94,6 +120,7 @@ impl SkirtDesign {
             grid: Self::DEFAULT_GRID,
             cavitation: CavitationCondition::Reynolds,
             supply: OilSupply::Flooded,
+            compliance: Compliance::Rigid,
         }
     }
 
@@ -132,8 +159,52 @@ impl SkirtDesign {
         if !(2..=256).contains(&nc) || !(2..=256).contains(&na) {
             return refuse(&format!("grid ({nc}, {na}) must have 2 to 256 nodes each way"));
         }
+        self.validate_compliance()?;
         self.profile.validate()?;
         self.supply.validate(self.cavitation == CavitationCondition::MassConserving)?;
         self.roughness.validate()
+    }
+
+    /// Refuses an elastic skirt on a grid too fine for its dense compliance, a shell no thinner than the
+    /// skirt's radius, or a compliance matrix of the wrong shape.
+    fn validate_compliance(&self) -> Result<(), ModelError> {
+        let nodes = self.grid.0 * self.grid.1;
+        if self.compliance != Compliance::Rigid && nodes > Self::ELASTIC_NODES {
+            return Err(ModelError(format!(
+                "skirt_compliance needs a film grid of at most {} nodes per side, ({}, {}) has {nodes}: its dense compliance grows as their square",
+                Self::ELASTIC_NODES,
+                self.grid.0,
+                self.grid.1
+            )));
+        }
+        match &self.compliance {
+            Compliance::Rigid => Ok(()),
+            Compliance::Shell { thickness, modulus } => {
+                if !(thickness.is_finite() && *thickness > 0.0 && *thickness < self.radius_piston) {
+                    return Err(ModelError(format!(
+                        "skirt_wall_thickness = {thickness} m must be finite, > 0 and below the piston's radius {} m",
+                        self.radius_piston
+                    )));
+                }
+                if !(modulus.is_finite() && *modulus > 0.0) {
+                    return Err(ModelError(format!("skirt_modulus = {modulus} Pa must be finite and > 0")));
+                }
+                Ok(())
+            }
+            Compliance::Matrix(matrix) => {
+                if matrix.len() != nodes * nodes {
+                    return Err(ModelError(format!(
+                        "skirt compliance matrix has {} entries, the film grid ({}, {}) needs {nodes} × {nodes}",
+                        matrix.len(),
+                        self.grid.0,
+                        self.grid.1
+                    )));
+                }
+                match matrix.iter().position(|v| !v.is_finite()) {
+                    Some(k) => Err(ModelError(format!("skirt compliance matrix entry ({}, {}) is not finite", k / nodes, k % nodes))),
+                    None => Ok(()),
+                }
+            }
+        }
     }
 }

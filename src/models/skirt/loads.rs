@@ -116,6 +116,12 @@ pub struct FilmLinear {
     /// Mass-conserving cavitation: the oil the film holds at the solve, `Σ θ h ΔA` over both sides'
     /// nodes, m³.
     pub content: f64,
+    /// An elastic skirt: per side, its deflection away from the liner at the solve on the closed grid
+    /// (nodes and edges, row-major by axial line: `(nz + 2)` rows of `(nx + 2)`), m, held by the
+    /// evaluations this solve serves; empty for a rigid skirt.
+    pub deflection: [Vec<f64>; 2],
+    /// The largest film pressure of the solve at its own rates, both sides, Pa.
+    pub peak_pressure: f64,
 }
 
 impl FilmLinear {

@@ -6,6 +6,9 @@
 mod asperity;
 mod band;
 mod design;
+mod elastic;
+#[cfg(test)]
+mod elastic_tests;
 mod fill;
 #[cfg(test)]
 mod fill_tests;
@@ -15,6 +18,9 @@ mod reynolds;
 #[cfg(test)]
 mod reynolds_tests;
 mod shear;
+mod shell;
+#[cfg(test)]
+mod shell_tests;
 mod supply;
 #[cfg(test)]
 mod supply_tests;
@@ -23,7 +29,8 @@ mod surface;
 mod surface_tests;
 
 pub use asperity::Roughness;
-pub use design::{CavitationCondition, SkirtDesign};
+pub use design::{CavitationCondition, Compliance, SkirtDesign};
+pub use elastic::read_matrix;
 pub use fill::Fill;
 pub use loads::{FilmLinear, PressureMap, SideMap, SkirtLoads, SkirtMotion};
 pub use profile::SkirtProfile;

@@ -142,6 +142,31 @@ impl Film {
         }
     }
 
+    /// Deflects the film by `deflection` (m, away from the liner) given on the closed grid (the nodes
+    /// and the edges, row-major by axial line; empty: none): the nodes take their points', each face
+    /// the mean of the two points either side of it; the film kept at least `floor`.
+    pub(crate) fn deform(&mut self, grid: &Grid, deflection: &[f64], floor: f64) {
+        if deflection.is_empty() {
+            return;
+        }
+        let (nx, nz) = (grid.nx, grid.nz);
+        let at = |i: usize, j: usize| deflection[j * (nx + 2) + i];
+        let bend = |h: &mut f64, d: f64| *h = (*h + d).max(floor);
+        for j in 0..nz {
+            for i in 0..nx {
+                bend(&mut self.node[j * nx + i], at(i + 1, j + 1));
+            }
+            for i in 0..=nx {
+                bend(&mut self.face_x[j * (nx + 1) + i], 0.5 * (at(i, j + 1) + at(i + 1, j + 1)));
+            }
+        }
+        for j in 0..=nz {
+            for i in 0..nx {
+                bend(&mut self.face_z[j * nx + i], 0.5 * (at(i + 1, j) + at(i + 1, j + 1)));
+            }
+        }
+    }
+
     /// Adds the wedge term of a uniform mean surface velocity (u_x, u_z) to `b` (node order j·nx + i):
     /// `−[u_x (h_e − h_w) dz + u_z (h_n − h_s) dx]`, each face's h times the fill upwind of it where
     /// `carried` gives one.

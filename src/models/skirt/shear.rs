@@ -13,6 +13,9 @@ use nalgebra::{Matrix2, Vector2};
 /// the height z above the pin and the skirt radius r there.
 pub(super) type RowTerms = ((f64, f64), (f64, f64), f64, f64);
 
+/// A side's wetting at a solve: its nodes' film set, fill and a limited supply's oil (see [`walk`]).
+pub(super) type Wetted<'a> = (&'a [bool], &'a [f64], &'a [f64]);
+
 /// Both sides' shear sums at a pose and their gradient there.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct Shear {
@@ -43,7 +46,8 @@ impl Shear {
 
 /// A side's shear sums at the pose of `rows` (the closed grid's rows, [`RowTerms`]) and, with
 /// `GRADIENT`, their gradient in (lateral, tilt): `columns` the closed columns' (cos θ, ovality
-/// term), `free` the interior nodes' film set, `fill` their fill fraction (node order; empty under
+/// term) and the skirt's deflection on the closed grid (row-major; empty: rigid), held as the pose
+/// moves, `free` the interior nodes' film set, `fill` their fill fraction (node order; empty under
 /// the Reynolds condition) and `supply` a limited supply's oil ahead of the upstream edge per interior
 /// column (empty: flooded), `forward` the oil's direction, `floor` the film the Reynolds solve takes at
 /// least, `tilt` (sin φ3, cos φ3), `area` a cell's area.
@@ -57,8 +61,8 @@ impl Shear {
 #[allow(clippy::too_many_arguments)]
 pub(super) fn walk<const GRADIENT: bool>(
     rows: &[RowTerms],
-    columns: &[(f64, f64)],
-    (free, fill, supply): (&[bool], &[f64], &[f64]),
+    (columns, deflection): (&[(f64, f64)], &[f64]),
+    (free, fill, supply): Wetted,
     forward: bool,
     floor: f64,
     tilt: (f64, f64),
@@ -77,7 +81,8 @@ pub(super) fn walk<const GRADIENT: bool>(
         for step in 0..nz + 2 {
             let jj = if forward { step } else { nz + 1 - step };
             let ((a, b), (alpha, beta), z, r) = rows[jj];
-            let raw = a + b * c + ov;
+            let rigid = a + b * c + ov;
+            let raw = if deflection.is_empty() { rigid } else { rigid + deflection[jj * (nx + 2) + ii] };
             let h = raw.max(floor);
             let inside = ii > 0 && ii <= nx && jj > 0 && jj <= nz;
             let d_h = if GRADIENT && raw > floor { [-c, alpha + beta * c] } else { [0.0; 2] };

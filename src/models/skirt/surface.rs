@@ -11,9 +11,10 @@
 //! squeeze resistance and the asperity law, with the true h, carries the load.
 
 use super::asperity::Asperity;
+use super::elastic::{self, Elastic, Relaxation};
 use super::fill::{self, partial, Fill};
 use super::reynolds::{Carried, Cavitation, Film, Grid, Reynolds};
-use super::shear::{self, arm, closed_weight, RowTerms, Shear};
+use super::shear::{self, arm, closed_weight, RowTerms, Shear, Wetted};
 use super::supply::{self, Liner};
 use super::{CavitationCondition, FilmLinear, PressureMap, SideMap, SkirtDesign, SkirtLoads, SkirtMotion};
 use crate::models::ModelError;
@@ -71,6 +72,8 @@ pub struct Skirt {
     floor: f64,
     /// A limited supply's map of the liner; none when flooded.
     liner: Option<Liner>,
+    /// An elastic skirt's compliance; none when rigid.
+    elastic: Option<Elastic>,
     /// The workspace, lent to each evaluation: every entry is written before it is read, so an
     /// evaluation's result does not depend on the one before.
     scratch: Workspace,
@@ -109,6 +112,9 @@ struct Scratch {
     arm_wedge: Vec<f64>,
     /// A limited supply's inlet fill per column (`supply::inlet_fill`).
     inlet: Vec<f64>,
+    /// An elastic skirt's nodal loads, N, and the deflection they cause on the closed grid, m.
+    loads: Vec<f64>,
+    target: Vec<f64>,
     /// [`RowTerms`] at the node rows and on the closed grid; (a, b) at the node rows and the z faces.
     node_rows: Vec<RowTerms>,
     closed_rows: Vec<RowTerms>,
@@ -129,6 +135,8 @@ impl Scratch {
             wedge: vec![0.0; n],
             arm_wedge: vec![0.0; n],
             inlet: Vec::with_capacity(grid.nx),
+            loads: vec![0.0; n],
+            target: vec![0.0; (grid.nx + 2) * (grid.nz + 2)],
             node_rows: Vec::with_capacity(grid.nz),
             closed_rows: Vec::with_capacity(grid.nz + 2),
             film_rows: Vec::with_capacity(grid.nz),
@@ -169,7 +177,8 @@ impl Skirt {
         let floor = 0.1 * design.roughness.sigma;
         let scratch = Workspace::default();
         let liner = Liner::new(&design, &grid);
-        Ok(Self { sides: [side(0.0), side(std::f64::consts::PI)], rows, asperity, floor, liner, grid, design, scratch })
+        let elastic = Elastic::new(&design, &grid);
+        Ok(Self { sides: [side(0.0), side(std::f64::consts::PI)], rows, asperity, floor, liner, elastic, grid, design, scratch })
     }
 
     /// The skirt's longest distance from the pin, m (axially, plus the pin's offset): a tilt change δφ3
@@ -219,6 +228,13 @@ impl Skirt {
     /// by the liner's oil ahead of it and the film's edge flows (`skirt/supply.rs`). Under the Reynolds
     /// condition `fill` is not read.
     pub fn linearise_filled(&self, motion: &SkirtMotion, fill: Option<&Fill>) -> FilmLinear {
+        self.linearise_deflected(motion, fill, &Default::default())
+    }
+
+    /// [`Skirt::linearise_filled`], an elastic skirt's deflection relaxed from `start` (per side, on
+    /// the closed grid, as [`FilmLinear::deflection`]; empty: undeflected): a nearby solve's deflection
+    /// saves most of the relaxation. A rigid skirt does not read it.
+    pub fn linearise_deflected(&self, motion: &SkirtMotion, fill: Option<&Fill>, start: &[Vec<f64>; 2]) -> FilmLinear {
         let mut workspace = self.scratch.lend(&self.grid);
         let s = &mut *workspace;
         let mut linear = FilmLinear { at: *motion, ..FilmLinear::default() };
@@ -228,7 +244,7 @@ impl Skirt {
             linear.fill_decay = Fill::flooded(self.grid.len());
         }
         let forward = motion.sliding_speed >= 0.0;
-        for side in 0..2 {
+        for (side, start) in start.iter().enumerate() {
             let carried = linear.fill.sides[side].as_slice();
             let carried = (!carried.is_empty()).then_some(carried);
             if let (Some(liner), false) = (&self.liner, linear.fill.liner[side].is_empty()) {
@@ -236,7 +252,16 @@ impl Skirt {
             }
             let supplied = Some(linear.supply[side].as_slice()).filter(|l| !l.is_empty());
             let cavitation = if carried.is_some() { Cavitation::MassConserving } else { Cavitation::Reynolds };
-            linear.factorisations[side] = self.solve_side(s, side, motion, cavitation, (carried, supplied));
+            linear.factorisations[side] = match &self.elastic {
+                Some(elastic) => {
+                    let oil = (carried, supplied);
+                    let (steps, deflection) = self.solve_elastic(s, (elastic, start), side, motion, cavitation, oil);
+                    linear.deflection[side] = deflection;
+                    steps
+                }
+                None => self.solve_side(s, side, motion, cavitation, (carried, supplied), &[]),
+            };
+            linear.peak_pressure = s.reynolds[side].pressure.iter().fold(linear.peak_pressure, |m, &p| m.max(p));
             if let Some(theta) = carried {
                 let area = self.grid.dx() * self.grid.dz();
                 linear.content += theta.iter().zip(&s.film.node).map(|(t, h)| t * h).sum::<f64>() * area;
@@ -272,7 +297,7 @@ impl Skirt {
         linear.shear = Shear { at: Vector2::new(motion.lateral, motion.tilt), forward, ..Shear::default() };
         for side in 0..2 {
             let wetted = (&linear.free[side][..], &linear.fill.sides[side][..], &linear.supply[side][..]);
-            let (sums, gradient) = self.shear_walk::<true>(&s.closed_rows, side, wetted, forward, tilt);
+            let (sums, gradient) = self.shear_walk::<true>(&s.closed_rows, side, (wetted, &linear.deflection[side]), forward, tilt);
             linear.shear.sums += sums;
             linear.shear.gradient += gradient;
         }
@@ -285,12 +310,13 @@ impl Skirt {
     pub fn starting_fill(&self, motion: &SkirtMotion, axial: f64) -> Option<Fill> {
         let liner = self.liner.as_ref()?;
         let film = liner.starting_film();
-        let sides = self.node_films(motion).map(|h| h.iter().map(|h| (film / h).min(1.0)).collect());
+        let sides = self.node_films(motion, &Default::default()).map(|h| h.iter().map(|h| (film / h).min(1.0)).collect());
         Some(Fill { sides, liner: [liner.start(), liner.start()], axial })
     }
 
-    /// Both sides' film at the nodes at `motion`'s pose, m (the Reynolds film's, at least its floor).
-    fn node_films(&self, motion: &SkirtMotion) -> [Vec<f64>; 2] {
+    /// Both sides' film at the nodes at `motion`'s pose deflected by `deflection` (per side, on the
+    /// closed grid; empty: rigid), m (the Reynolds film's, at least its floor).
+    fn node_films(&self, motion: &SkirtMotion, deflection: &[Vec<f64>; 2]) -> [Vec<f64>; 2] {
         let mut workspace = self.scratch.lend(&self.grid);
         let s = &mut *workspace;
         let pose = self.pose(motion);
@@ -300,6 +326,7 @@ impl Skirt {
             s.face_rows.clear();
             s.face_rows.extend(self.rows.faces.iter().map(|r| pose(r).0));
             s.film.fill(&self.grid, (&s.film_rows, &s.face_rows), (&self.sides[side].nodes, &self.sides[side].faces), self.floor);
+            s.film.deform(&self.grid, &deflection[side], self.floor);
             s.film.node.clone()
         })
     }
@@ -318,7 +345,7 @@ impl Skirt {
         let (area, nx) = (self.grid.dx() * self.grid.dz(), self.grid.nx);
         let mut fill = Fill { liner: linear.fill.liner.clone(), axial: linear.fill.axial, ..Fill::default() };
         let mut lacked = 0.0;
-        for (side, after) in self.node_films(motion).iter().enumerate() {
+        for (side, after) in self.node_films(motion, &linear.deflection).iter().enumerate() {
             let (before, rates): (Vec<f64>, Vec<f64>) = linear.gaps[side].iter().copied().unzip();
             let (theta, rate) = (&linear.fill.sides[side], &linear.fill_rate.sides[side]);
             let (kept, held) = fill::advanced_conserving(theta, rate, dt, (&before, &rates, after));
@@ -364,7 +391,8 @@ impl Skirt {
     /// (minus the axial moment's weights). With a `fill` (mass-conserving), the wedge carries it upwind
     /// of each face along the sliding and its partly filled nodes are held at p = 0; with a `supply`
     /// (the liner's oil ahead of the leading edge per column), the oil crossing that edge fills
-    /// `supply::inlet_fill` of the gap (into `s.inlet`), full otherwise. Returns the active-set steps.
+    /// `supply::inlet_fill` of the gap (into `s.inlet`), full otherwise. The skirt deflected by
+    /// `deflection` (on the closed grid; empty: rigid). Returns the active-set steps.
     fn solve_side(
         &self,
         s: &mut Scratch,
@@ -372,6 +400,7 @@ impl Skirt {
         m: &SkirtMotion,
         cavitation: Cavitation,
         (fill, supply): (Option<&[f64]>, Option<&[f64]>),
+        deflection: &[f64],
     ) -> usize {
         let pose = self.pose(m);
         s.node_rows.clear();
@@ -383,6 +412,7 @@ impl Skirt {
         let side = &self.sides[side_index];
         let (nx, area) = (self.grid.nx, self.grid.dx() * self.grid.dz());
         s.film.fill(&self.grid, (&s.film_rows, &s.face_rows), (&side.nodes, &side.faces), self.floor);
+        s.film.deform(&self.grid, deflection, self.floor);
         s.wedge.fill(0.0);
         let forward = m.sliding_speed >= 0.0;
         if let Some(liner) = supply {
@@ -406,6 +436,38 @@ impl Skirt {
             }
         }
         s.reynolds[side_index].solve(&s.film, self.design.viscosity, &s.rhs, cavitation, &[&s.rate_x, &s.rate_tilt, &s.wedge, &s.arm_wedge])
+    }
+
+    /// One side's film and deflection solved together at `m` (`skirt/elastic.rs`): from `start` (empty:
+    /// the rigid skirt), the deflection relaxed toward the compliance's response to the film's and the
+    /// asperities' pressure at the nodes until it moves by less than its tolerance, each step a
+    /// [`Skirt::solve_side`] on the deflected skirt (its cavitation set the last step's); the last
+    /// solve is the deflection's. Returns the active-set steps of all solves and the deflection.
+    fn solve_elastic(
+        &self,
+        s: &mut Scratch,
+        (elastic, start): (&Elastic, &[f64]),
+        side: usize,
+        m: &SkirtMotion,
+        cavitation: Cavitation,
+        oil: (Option<&[f64]>, Option<&[f64]>),
+    ) -> (usize, Vec<f64>) {
+        let area = self.grid.dx() * self.grid.dz();
+        let mut deflection = if start.is_empty() { vec![0.0; s.target.len()] } else { start.to_vec() };
+        let mut relaxation = Relaxation::new();
+        let mut steps = 0;
+        for _ in 0..elastic::MOST_STEPS {
+            steps += self.solve_side(s, side, m, cavitation, oil, &deflection);
+            for ((f, &p), &h) in s.loads.iter_mut().zip(&s.reynolds[side].pressure).zip(&s.film.node) {
+                *f = (p + self.asperity.pressure(h)) * area;
+            }
+            elastic.deflect(&s.loads, &mut s.target);
+            let thinnest = s.film.node.iter().fold(f64::INFINITY, |a, &h| a.min(h));
+            if relaxation.step(&mut deflection, &s.target, elastic::tolerance(thinnest)) {
+                break;
+            }
+        }
+        (steps, deflection)
     }
 
     fn evaluate(&self, linear: &FilmLinear, m: &SkirtMotion, mut map: Option<&mut PressureMap>) -> SkirtLoads {
@@ -442,7 +504,10 @@ impl Skirt {
         // `boundary_damping`): the sign of V, were it Coulomb's, flips at every step of a skirt that
         // stops on its asperities.
         let (slip, within) = ((v / BOUNDARY_SLIP).clamp(-1.0, 1.0), v.abs() < BOUNDARY_SLIP);
-        let smallest = self.sides.each_ref().map(|side| thinnest(&s.closed_rows, &side.envelope));
+        let smallest: [f64; 2] = std::array::from_fn(|side| match &linear.deflection[side][..] {
+            [] => thinnest(&s.closed_rows, &self.sides[side].envelope),
+            deflection => thinnest_deflected(&s.closed_rows, &self.sides[side].closed, deflection),
+        });
         // The Couette shear: the solve's sums to first order in the pose where they serve, walked here otherwise.
         let at = Vector2::new(m.lateral, m.tilt);
         let reach = SHEAR_REACH * smallest[0].min(smallest[1]);
@@ -454,7 +519,7 @@ impl Skirt {
                     // The supply feeds the solve's leading edge.
                     let supply = if (v >= 0.0) == linear.shear.forward { &linear.supply[side][..] } else { &[] };
                     let wetted = (&linear.free[side][..], &linear.fill.sides[side][..], supply);
-                    self.shear_walk::<false>(&s.closed_rows, side, wetted, v >= 0.0, (s3, c3)).0
+                    self.shear_walk::<false>(&s.closed_rows, side, (wetted, &linear.deflection[side]), v >= 0.0, (s3, c3)).0
                 })
                 .sum()
         };
@@ -475,7 +540,7 @@ impl Skirt {
                 let held = SkirtMotion { lateral: linear.at.lateral, tilt: linear.at.tilt, ..*m };
                 let carried = Some(linear.fill.sides[side_index].as_slice()).filter(|f| !f.is_empty());
                 let supplied = Some(linear.supply[side_index].as_slice()).filter(|l| !l.is_empty());
-                self.solve_side(s, side_index, &held, Cavitation::Held, (carried, supplied));
+                self.solve_side(s, side_index, &held, Cavitation::Held, (carried, supplied), &linear.deflection[side_index]);
             }
             // Asperities on the closed grid (trapezoid weights), with the true film thickness down to
             // the film's floor σ/10, below which the corners carry the collapsed film (the asperities'
@@ -484,9 +549,11 @@ impl Skirt {
             // thinnest film is beyond their reach has none.
             let pressure = &s.reynolds[side_index].pressure;
             let rows = if side_map.is_some() || self.asperity.touches(smallest[side_index]) { &s.closed_rows[..] } else { &[] };
+            let deflection = &linear.deflection[side_index];
             for (jj, &((a, b), (alpha, beta), z, r)) in rows.iter().enumerate() {
                 for (ii, &(c, ov)) in side.closed.iter().enumerate() {
-                    let h = a + b * c + ov;
+                    let rigid = a + b * c + ov;
+                    let h = if deflection.is_empty() { rigid } else { rigid + deflection[jj * (nx + 2) + ii] };
                     let read = h.max(self.floor);
                     let pa = self.asperity.pressure(read);
                     if let Some(sm) = side_map.as_mut() {
@@ -526,17 +593,18 @@ impl Skirt {
     }
 
     /// One side's Couette shear sums (and with `GRADIENT` their gradient) at the pose of `rows`, its
-    /// film set, fill and supply `wetted` (`shear::walk`).
+    /// film set, fill and supply `wetted` and its deflection (`shear::walk`).
     fn shear_walk<const GRADIENT: bool>(
         &self,
         rows: &[RowTerms],
         side: usize,
-        wetted: (&[bool], &[f64], &[f64]),
+        (wetted, deflection): (Wetted, &[f64]),
         forward: bool,
         tilt: (f64, f64),
     ) -> (Vector2<f64>, Matrix2<f64>) {
         let area = self.grid.dx() * self.grid.dz();
-        shear::walk::<GRADIENT>(rows, &self.sides[side].closed, wetted, forward, self.floor, tilt, self.design.pin_offset, area)
+        let columns = (&self.sides[side].closed[..], deflection);
+        shear::walk::<GRADIENT>(rows, columns, wetted, forward, self.floor, tilt, self.design.pin_offset, area)
     }
 }
 
@@ -544,6 +612,13 @@ impl Skirt {
 /// at a column of the lower envelope of the lines `b ↦ b c + ov`, `envelope`.
 fn thinnest(rows: &[RowTerms], envelope: &[(f64, f64)]) -> f64 {
     rows.iter().flat_map(|&((a, b), ..)| envelope.iter().map(move |&(c, ov)| a + b * c + ov)).fold(f64::INFINITY, f64::min)
+}
+
+/// The smallest film over the closed grid at the pose of `rows`, `columns` the closed columns'
+/// (c, ov), the skirt deflected by `deflection` (closed grid, row-major).
+fn thinnest_deflected(rows: &[RowTerms], columns: &[(f64, f64)], deflection: &[f64]) -> f64 {
+    let films = rows.iter().flat_map(|&((a, b), ..)| columns.iter().map(move |&(c, ov)| a + b * c + ov));
+    films.zip(deflection).fold(f64::INFINITY, |m, (h, d)| m.min(h + d))
 }
 
 /// The columns `(c, ov)` on the lower envelope of the lines `b ↦ b c + ov`: the lower convex hull of

@@ -108,6 +108,9 @@ fn skirt(p: &Parameters) -> Result<Option<lubrication::Design>, ModelError> {
         cavitation: p.cavitation,
         oil_supply: p.oil_supply,
         liner_oil_film: p.liner_oil_film,
+        compliance: p.skirt_compliance,
+        wall: [p.skirt_wall_thickness, p.skirt_modulus],
+        compliance_file: p.skirt_compliance_file.clone(),
         grid: (grid("skirt_grid_circumferential", p.skirt_grid_circumferential)?, grid("skirt_grid_axial", p.skirt_grid_axial)?),
     }))
 }

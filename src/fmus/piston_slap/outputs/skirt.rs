@@ -53,6 +53,7 @@ pub(super) fn write(
     out.film_relaxation_work = work[IMPLICIT];
     out.skirt_wetted_fraction = lubrication.wetted_fraction(model.time());
     out.oil_left_on_liner = lubrication.oil().map_or(0.0, |oil| oil.liner / oil.area);
+    (out.film_peak_pressure, out.skirt_max_deflection) = lubrication.film_peaks((phi, trig), phid);
     // A side's moment about the pin is its push times the height above the pin (thrust), or
     // minus that (anti-thrust): about the skirt top, the push times the pin's depth less it.
     let pin = linkage.pin_depth();
