@@ -375,6 +375,20 @@ def cavitation_table(engine, speeds):
     return _table(header, rows)
 
 
+def _film_cells(m):
+    """A supply run's cells: the thinnest film per side, the wetted fraction's mean and least, the asperities' share of
+    the skirt's friction, the skirt FMEP and each wall's largest landing."""
+    return (
+        _thinnest(m, "thrust"),
+        _thinnest(m, "antithrust"),
+        f"{m['wetted_mean']:.2f} ({m['wetted_least']:.2f})",
+        f"{100 * m['asperity_share']:.1f} %",
+        f"{m['cycle_skirt_fmep'] * 1e-5:.4f} bar",
+        _landing(m, "thrust"),
+        _landing(m, "antithrust"),
+    )
+
+
 def oil_supply_table(engine, speeds):
     """Preset `engine` (a limited supply's) on the mass-conserving film, fully flooded (`oil_supply = 1`) against its
     limited supply: the thinnest film per side, the wetted fraction's mean and least, the asperities' share of the
@@ -387,13 +401,7 @@ def oil_supply_table(engine, speeds):
                 (
                     f"{rpm:g} rpm",
                     shown,
-                    _thinnest(m, "thrust"),
-                    _thinnest(m, "antithrust"),
-                    f"{m['wetted_mean']:.2f} ({m['wetted_least']:.2f})",
-                    f"{100 * m['asperity_share']:.1f} %",
-                    f"{m['cycle_skirt_fmep'] * 1e-5:.4f} bar",
-                    _landing(m, "thrust"),
-                    _landing(m, "antithrust"),
+                    *_film_cells(m),
                     f"{m['oil_left_on_liner'] * 1e6:.3g} µm" if supply == 2 else "–",
                 )
             )
@@ -433,13 +441,7 @@ def running_engine_table(engine, speeds):
                         f"{rpm:g} rpm",
                         f"{temperature}, {m['running_clearance'] * 1e6:.3g} µm",
                         shown,
-                        _thinnest(m, "thrust"),
-                        _thinnest(m, "antithrust"),
-                        f"{m['wetted_mean']:.2f} ({m['wetted_least']:.2f})",
-                        f"{100 * m['asperity_share']:.1f} %",
-                        f"{m['cycle_skirt_fmep'] * 1e-5:.4f} bar",
-                        _landing(m, "thrust"),
-                        _landing(m, "antithrust"),
+                        *_film_cells(m),
                     )
                 )
     header = (
