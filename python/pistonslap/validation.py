@@ -375,9 +375,21 @@ def cavitation_table(engine, speeds):
     return _table(header, rows)
 
 
+#: The columns of `_film_cells`.
+FILM_COLUMNS = (
+    "thinnest film, thrust",
+    "thinnest film, anti-thrust",
+    "wetted, mean (least)",
+    "asperity share of friction",
+    "skirt FMEP",
+    "largest landing, thrust",
+    "largest landing, anti-thrust",
+)
+
+
 def _film_cells(m):
-    """A supply run's cells: the thinnest film per side, the wetted fraction's mean and least, the asperities' share of
-    the skirt's friction, the skirt FMEP and each wall's largest landing."""
+    """A supply run's cells under `FILM_COLUMNS`: the thinnest film per side, the wetted fraction's mean and least,
+    the asperities' share of the skirt's friction, the skirt FMEP and each wall's largest landing."""
     return (
         _thinnest(m, "thrust"),
         _thinnest(m, "antithrust"),
@@ -408,13 +420,7 @@ def oil_supply_table(engine, speeds):
     header = (
         "speed",
         "supply",
-        "thinnest film, thrust",
-        "thinnest film, anti-thrust",
-        "wetted, mean (least)",
-        "asperity share of friction",
-        "skirt FMEP",
-        "largest landing, thrust",
-        "largest landing, anti-thrust",
+        *FILM_COLUMNS,
         "oil left on the liner",
     )
     return _table(header, rows)
@@ -448,13 +454,7 @@ def running_engine_table(engine, speeds):
         "speed",
         "temperature, running clearance",
         "supply",
-        "thinnest film, thrust",
-        "thinnest film, anti-thrust",
-        "wetted, mean (least)",
-        "asperity share of friction",
-        "skirt FMEP",
-        "largest landing, thrust",
-        "largest landing, anti-thrust",
+        *FILM_COLUMNS,
     )
     return _table(header, rows)
 
